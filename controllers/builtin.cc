@@ -1,0 +1,12 @@
+#include "builtin.h"
+
+#include "controllers.h"
+
+namespace sanet::controllers {
+
+void RegisterBuiltinControllers(ControllerRegistry& registry) {
+  registry.Add(ConstantVelocityInfo());
+  registry.Add(WaypointInfo());
+}
+
+}  // namespace sanet::controllers

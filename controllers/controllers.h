@@ -1,0 +1,11 @@
+// Descriptions of the built-in controllers, one function per controller file.
+#pragma once
+
+#include "sanet/controller.h"
+
+namespace sanet::controllers {
+
+ControllerInfo ConstantVelocityInfo();
+ControllerInfo WaypointInfo();
+
+}  // namespace sanet::controllers

@@ -1,0 +1,88 @@
+// The abstract node a controller sees: identity, time, sensors, actuators, messages and a view
+// of its network layer. The simulated node (physics + network simulation) and the remote node
+// (sensors over the simulation protocol, messages over real UDP) both implement it, so a
+// controller written against this header runs unchanged in every mode.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sanet/geometry.h"
+#include "sanet/message.h"
+
+namespace sanet {
+
+// Ranges from a ring of IR sensors or a planar laser, in the robot frame.
+struct RangeScan {
+  std::vector<double> angles;  // rad, counter-clockwise from the robot's forward axis
+  std::vector<double> ranges;  // m, max_range where nothing was seen
+  double max_range = 0;        // m
+};
+
+// Where another node lies, seen from this robot.
+struct BearingReading {
+  double distance = 0;  // m
+  double bearing = 0;   // rad, in the robot frame (0 = straight ahead, positive = left)
+};
+
+// One entry of the node's routing table.
+struct RouteEntry {
+  NodeId destination = 0;
+  NodeId next_hop = 0;
+  int hops = 0;
+  bool valid = false;
+  double expires_in = 0;  // s until the routing protocol drops the entry
+};
+
+// Read-mostly view of the node's own network layer.
+class NetworkView {
+ public:
+  virtual ~NetworkView() = default;
+  virtual std::string Protocol() const = 0;  // "none" when there is no routing layer
+  virtual std::vector<RouteEntry> RoutingTable() const = 0;
+  virtual std::vector<NodeId> Neighbours() const = 0;
+  // Marks the route to `destination` invalid so the protocol rediscovers it. False where the
+  // protocol offers no such operation.
+  virtual bool InvalidateRoute(NodeId destination) = 0;
+  // Starts a route discovery towards `destination` (by sending towards it).
+  virtual void RequestRoute(NodeId destination) = 0;
+};
+
+class Node {
+ public:
+  virtual ~Node() = default;
+
+  // Identity and time.
+  virtual double Now() const = 0;  // s since the start of the run
+  virtual NodeId Id() const = 0;
+  virtual const std::string& Name() const = 0;
+  virtual std::optional<NodeId> Lookup(const std::string& name) const = 0;
+  virtual std::size_t NodeCount() const = 0;
+
+  // Sensors: empty when the node has no such sensor (or, for the bearing, when the target is out
+  // of the sensor's range).
+  virtual std::optional<RangeScan> Ir() = 0;
+  virtual std::optional<RangeScan> Laser() = 0;
+  virtual std::optional<Pose2D> Odometry() = 0;     // pose integrated from wheel rotation
+  virtual std::optional<Pose2D> GroundTruth() = 0;  // true pose (simulation and tracked robots)
+  virtual std::optional<BearingReading> Bearing(NodeId target) = 0;
+
+  // Actuators. Drive takes a body velocity in the robot frame (vx forward, vy left, omega
+  // counter-clockwise); a differential drive ignores vy. Both return false on a node that
+  // cannot move.
+  virtual bool Drive(const Twist2D& velocity) = 0;
+  virtual bool SetWheelSpeeds(const std::vector<double>& rad_per_s) = 0;
+  // True for a holonomic drive (omni3), which honours vy.
+  virtual bool Holonomic() const = 0;
+
+  // Messages: unicast (routed where the network routes) and one-hop broadcast.
+  virtual void Send(NodeId to, const Bytes& payload) = 0;
+  virtual void Broadcast(const Bytes& payload) = 0;
+  virtual NetworkView& Network() = 0;
+
+  // A line in the run's log (time and node are added).
+  virtual void Log(const std::string& text) = 0;
+};
+
+}  // namespace sanet

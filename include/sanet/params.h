@@ -1,0 +1,154 @@
+// Parameters of a controller, as written in the scenario. Header-only so that a controller
+// library needs nothing but these headers. Every getter checks type and range and throws
+// ParamError naming the key and its line; keys that no getter asked for are reported by
+// CheckAllUsed() as unknown, so a typo in a scenario never passes silently.
+#pragma once
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sanet {
+
+class ParamError : public std::runtime_error {
+ public:
+  ParamError(std::string key, int line, const std::string& what)
+      : std::runtime_error(what), key_(std::move(key)), line_(line) {}
+  const std::string& key() const { return key_; }
+  int line() const { return line_; }  // 1-based line in the scenario file, 0 if unknown
+
+ private:
+  std::string key_;
+  int line_;
+};
+
+// One parameter value: a scalar, a list of scalars, or a list of lists (e.g. way points).
+struct ParamValue {
+  enum class Shape { kScalar, kList, kTable };
+  Shape shape = Shape::kScalar;
+  std::vector<std::vector<std::string>> rows;  // kScalar: 1x1; kList: 1xN; kTable: MxN
+  int line = 0;
+};
+
+class Params {
+ public:
+  Params() = default;
+  void Set(const std::string& key, ParamValue value) { values_[key] = std::move(value); }
+  bool Has(const std::string& key) const { return values_.count(key) != 0; }
+  // Line of `key` in the scenario (0 if absent).
+  int Line(const std::string& key) const {
+    auto it = values_.find(key);
+    return it == values_.end() ? 0 : it->second.line;
+  }
+
+  double Number(const std::string& key, double fallback, double min = -HUGE_VAL,
+                double max = HUGE_VAL) const {
+    const ParamValue* v = Find(key);
+    if (!v) return fallback;
+    return CheckRange(key, *v, ToNumber(key, *v, Scalar(key, *v)), min, max);
+  }
+
+  int Integer(const std::string& key, int fallback, int min = -2147483647, int max = 2147483647) const {
+    const ParamValue* v = Find(key);
+    if (!v) return fallback;
+    const double d = ToNumber(key, *v, Scalar(key, *v));
+    if (d != std::floor(d)) Fail(key, *v, "must be a whole number");
+    return static_cast<int>(CheckRange(key, *v, d, min, max));
+  }
+
+  bool Flag(const std::string& key, bool fallback) const {
+    const ParamValue* v = Find(key);
+    if (!v) return fallback;
+    const std::string& s = Scalar(key, *v);
+    if (s == "true" || s == "True" || s == "yes") return true;
+    if (s == "false" || s == "False" || s == "no") return false;
+    Fail(key, *v, "must be true or false, not '" + s + "'");
+  }
+
+  std::string Text(const std::string& key, const std::string& fallback) const {
+    const ParamValue* v = Find(key);
+    return v ? Scalar(key, *v) : fallback;
+  }
+
+  std::vector<double> Numbers(const std::string& key, std::vector<double> fallback) const {
+    const ParamValue* v = Find(key);
+    if (!v) return fallback;
+    if (v->shape == ParamValue::Shape::kTable) Fail(key, *v, "must be a list of numbers");
+    std::vector<double> out;
+    for (const auto& s : v->rows.at(0)) out.push_back(ToNumber(key, *v, s));
+    return out;
+  }
+
+  // A list of rows of `width` numbers each, e.g. way points [[x, y], [x, y]].
+  std::vector<std::vector<double>> Table(const std::string& key, std::size_t width,
+                                         std::vector<std::vector<double>> fallback) const {
+    const ParamValue* v = Find(key);
+    if (!v) return fallback;
+    if (v->shape != ParamValue::Shape::kTable)
+      Fail(key, *v, "must be a list of [" + std::to_string(width) + " numbers] lists");
+    std::vector<std::vector<double>> out;
+    for (const auto& row : v->rows) {
+      if (row.size() != width)
+        Fail(key, *v, "each entry must hold " + std::to_string(width) + " numbers");
+      std::vector<double> numbers;
+      for (const auto& s : row) numbers.push_back(ToNumber(key, *v, s));
+      out.push_back(numbers);
+    }
+    return out;
+  }
+
+  // Throws for the first key that no getter has read: an unknown parameter.
+  void CheckAllUsed() const {
+    for (const auto& [key, value] : values_)
+      if (!used_.count(key)) throw ParamError(key, value.line, "unknown parameter '" + key + "'");
+  }
+
+ private:
+  const ParamValue* Find(const std::string& key) const {
+    auto it = values_.find(key);
+    if (it == values_.end()) return nullptr;
+    used_.insert(key);
+    return &it->second;
+  }
+  [[noreturn]] static void Fail(const std::string& key, const ParamValue& v, const std::string& why) {
+    throw ParamError(key, v.line, "parameter '" + key + "' " + why);
+  }
+  static const std::string& Scalar(const std::string& key, const ParamValue& v) {
+    if (v.shape != ParamValue::Shape::kScalar) Fail(key, v, "must be a single value, not a list");
+    return v.rows.at(0).at(0);
+  }
+  static double ToNumber(const std::string& key, const ParamValue& v, const std::string& s) {
+    char* end = nullptr;
+    errno = 0;
+    const double d = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(d))
+      Fail(key, v, "must be a number, not '" + s + "'");
+    return d;
+  }
+  static double CheckRange(const std::string& key, const ParamValue& v, double d, double min,
+                           double max) {
+    if (d < min || d > max) {
+      auto fmt = [](double x) {
+        std::string s = std::to_string(x);
+        s.erase(s.find_last_not_of('0') + 1);
+        if (!s.empty() && s.back() == '.') s.pop_back();
+        return s;
+      };
+      std::string range = (min == -HUGE_VAL ? "" : ">= " + fmt(min)) +
+                          (min != -HUGE_VAL && max != HUGE_VAL ? " and " : "") +
+                          (max == HUGE_VAL ? "" : "<= " + fmt(max));
+      Fail(key, v, "is " + fmt(d) + ", must be " + range);
+    }
+    return d;
+  }
+
+  std::map<std::string, ParamValue> values_;
+  mutable std::set<std::string> used_;
+};
+
+}  // namespace sanet

@@ -1,0 +1,20 @@
+// Entry point of a controller library loaded from a scenario (`controller: {library: ...}`).
+//
+//   #include <sanet/plugin.h>
+//   SANET_CONTROLLER_PLUGIN(registry) {
+//     registry.Add({"my_controller", "what it does",
+//                   [](const sanet::Params& p) { return std::make_unique<Mine>(p); }});
+//   }
+//
+// sanet loads the library with dlopen, checks that it was built against the same interface
+// version, and calls the registration function once.
+#pragma once
+
+#include "sanet/controller.h"
+
+// Bump whenever a header under include/sanet changes in a way that breaks binary compatibility.
+#define SANET_CONTROLLER_API_VERSION 1
+
+#define SANET_CONTROLLER_PLUGIN(registry)                                                  \
+  extern "C" int sanet_controller_api_version() { return SANET_CONTROLLER_API_VERSION; } \
+  extern "C" void sanet_register_controllers(::sanet::ControllerRegistry& registry)

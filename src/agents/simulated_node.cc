@@ -1,0 +1,14 @@
+#include "agents/simulated_node.h"
+
+#include <ns3/simulator.h>
+
+namespace sanet::agents {
+
+double SimulatedNode::Now() const { return ns3::Simulator::Now().GetSeconds(); }
+
+std::optional<BearingReading> SimulatedNode::Bearing(NodeId target) {
+  if (target >= directory_.NodeCount() || target == id_) return std::nullopt;
+  return model_.Bearing(directory_.TruePose(target));
+}
+
+}  // namespace sanet::agents

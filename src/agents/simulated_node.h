@@ -1,0 +1,58 @@
+// The node a controller sees in a simulated run: physics model, simulation clock and the
+// run's transport behind the portable interface.
+#pragma once
+
+#include <string>
+
+#include "net/transport.h"
+#include "robots/node_model.h"
+#include "sanet/node.h"
+
+namespace sanet::agents {
+
+// What a node may ask of the run it belongs to.
+class NodeDirectory {
+ public:
+  virtual ~NodeDirectory() = default;
+  virtual std::optional<NodeId> Lookup(const std::string& name) const = 0;
+  virtual std::size_t NodeCount() const = 0;
+  virtual Pose2D TruePose(NodeId node) const = 0;
+  virtual void Log(NodeId node, const std::string& text) = 0;
+};
+
+class SimulatedNode : public Node {
+ public:
+  SimulatedNode(NodeId id, std::string name, robots::NodeModel& model, net::Transport& transport,
+                NodeDirectory& directory)
+      : id_(id), name_(std::move(name)), model_(model), transport_(transport), directory_(directory) {}
+
+  double Now() const override;
+  NodeId Id() const override { return id_; }
+  const std::string& Name() const override { return name_; }
+  std::optional<NodeId> Lookup(const std::string& name) const override { return directory_.Lookup(name); }
+  std::size_t NodeCount() const override { return directory_.NodeCount(); }
+
+  std::optional<RangeScan> Ir() override { return model_.Ir(); }
+  std::optional<RangeScan> Laser() override { return model_.Laser(); }
+  std::optional<Pose2D> Odometry() override { return model_.Odometry(); }
+  std::optional<Pose2D> GroundTruth() override { return model_.GroundTruth(); }
+  std::optional<BearingReading> Bearing(NodeId target) override;
+
+  bool Drive(const Twist2D& velocity) override { return model_.Drive(velocity); }
+  bool SetWheelSpeeds(const std::vector<double>& w) override { return model_.SetWheelSpeeds(w); }
+  bool Holonomic() const override { return model_.holonomic(); }
+
+  void Send(NodeId to, const Bytes& payload) override { transport_.Send(id_, to, payload); }
+  void Broadcast(const Bytes& payload) override { transport_.Broadcast(id_, payload); }
+  NetworkView& Network() override { return transport_.View(id_); }
+  void Log(const std::string& text) override { directory_.Log(id_, text); }
+
+ private:
+  NodeId id_;
+  std::string name_;
+  robots::NodeModel& model_;
+  net::Transport& transport_;
+  NodeDirectory& directory_;
+};
+
+}  // namespace sanet::agents

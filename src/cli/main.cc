@@ -1,0 +1,129 @@
+// The `sanet` command: parses the command line and calls the kernel; nothing else.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+#include "agents/controller_registry.h"
+#include "builtin.h"
+#include "robots/node_model.h"
+#include "scenario/scenario_loader.h"
+#include "sim/world.h"
+
+namespace {
+
+using namespace sanet;
+
+constexpr int kExitScenarioError = 2;
+constexpr int kExitRunFailed = 1;
+
+struct RunArgs {
+  std::string file;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> duration;
+  std::string output;
+  bool quiet = false;
+  bool no_progress = false;
+};
+
+scenario::Scenario LoadChecked(const std::string& file, agents::Registry& registry) {
+  scenario::Scenario sc = scenario::LoadScenario(file);
+  scenario::CheckControllers(sc, registry);
+  return sc;
+}
+
+int Run(const RunArgs& args, agents::Registry& registry) {
+  scenario::Scenario sc = LoadChecked(args.file, registry);
+  if (args.seed) sc.run.seed = *args.seed;
+  if (args.duration) sc.run.duration = *args.duration;
+  sim::RunOptions options;
+  options.output_dir = args.output.empty() ? sc.output_folder : args.output;
+  options.scenario_file = args.file;
+  options.progress = !args.quiet && !args.no_progress && isatty(STDERR_FILENO);
+  if (!args.quiet)
+    std::printf("sanet: running %s (%zu nodes, %.1f s simulated, seed %llu)\n", sc.run.name.c_str(),
+                sc.run.nodes.size(), sc.run.duration, static_cast<unsigned long long>(sc.run.seed));
+  sim::World world(sc.run, registry);
+  const sim::RunResult r = world.Run(options);
+  if (!args.quiet) {
+    std::printf("  simulated %.1f s in %.2f s wall (%.1fx real time), %llu events\n", r.simulated, r.wall,
+                r.real_time_factor, static_cast<unsigned long long>(r.events));
+    std::printf("  fingerprint %s\n  results in %s/\n", r.fingerprint.c_str(), options.output_dir.c_str());
+  }
+  return 0;
+}
+
+int Validate(const std::string& file, agents::Registry& registry) {
+  const scenario::Scenario sc = LoadChecked(file, registry);
+  std::size_t robots = 0, controlled = 0;
+  for (const auto& n : sc.run.nodes) {
+    robots += n.model.kind != robots::ModelKind::kMote;
+    controlled += n.controller.has_value();
+  }
+  std::printf("%s: valid: %zu nodes (%zu robots, %zu with controllers), %zu obstacles, %.1f s, seed %llu\n",
+              file.c_str(), sc.run.nodes.size(), robots, controlled, sc.run.obstacles.size(),
+              sc.run.duration, static_cast<unsigned long long>(sc.run.seed));
+  return 0;
+}
+
+int List(agents::Registry& registry) {
+  std::printf("models:\n");
+  std::printf("  mote       a 10 cm cube of 50 g that rests until pushed; no drive\n");
+  std::printf("  omni3      Robertino-like omnidirectional robot: three omni wheels, six IR sensors\n");
+  std::printf("  diffdrive  Pioneer-P2DX-like differential drive: two wheels and a caster, 180-degree laser\n");
+  std::printf("sensors:\n");
+  std::printf("  ir, laser, odometry, ground_truth, bearing (see docs/scenario.md)\n");
+  std::printf("controllers:\n");
+  for (const ControllerInfo* c : registry.List()) std::printf("  %-18s %s\n", c->name.c_str(), c->description.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"sanet: integrated simulator for sensor/actuator networks and networked robots.\n"
+               "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "sanet 0.1.0");
+
+  RunArgs run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Run a scenario and write its results folder "
+                                                "(trajectories.csv, log.csv, messages.csv, summary.json)");
+  run_cmd->add_option("scenario", run.file, "Scenario file (YAML)")->required();
+  run_cmd->add_option("--seed", run.seed, "Override the scenario's seed");
+  run_cmd->add_option("--duration", run.duration, "Override the simulated duration (s)")->check(CLI::PositiveNumber);
+  run_cmd->add_option("-o,--output", run.output, "Results folder (default: the scenario's outputs.folder, "
+                                                 "or results/<name>)");
+  run_cmd->add_flag("-q,--quiet", run.quiet, "Print nothing but errors");
+  run_cmd->add_flag("--no-progress", run.no_progress, "Do not show progress (shown only on a terminal)");
+
+  std::string validate_file;
+  CLI::App* validate_cmd = app.add_subcommand("validate", "Check a scenario without running it: structure, "
+                                                          "types, ranges, models, controllers and their parameters");
+  validate_cmd->add_option("scenario", validate_file, "Scenario file (YAML)")->required();
+
+  std::vector<std::string> libraries;
+  CLI::App* list_cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
+  list_cmd->add_option("--library", libraries, "Also load this controller library (repeatable)");
+
+  CLI11_PARSE(app, argc, argv);
+
+  agents::Registry registry;
+  controllers::RegisterBuiltinControllers(registry);
+  try {
+    if (*run_cmd) return Run(run, registry);
+    if (*validate_cmd) return Validate(validate_file, registry);
+    for (const auto& lib : libraries) registry.LoadLibrary(lib);
+    return List(registry);
+  } catch (const scenario::ScenarioError& e) {
+    std::fprintf(stderr, "sanet: error: %s\n", e.what());
+    return kExitScenarioError;
+  } catch (const agents::RegistryError& e) {
+    std::fprintf(stderr, "sanet: error: %s\n", e.what());
+    return kExitScenarioError;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sanet: run failed: %s\n", e.what());
+    return kExitRunFailed;
+  }
+}

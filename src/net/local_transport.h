@@ -1,0 +1,36 @@
+// Stand-in transport without radios: every message reaches its receiver (or, broadcast, every
+// other node) after a fixed latency, on the simulation clock. Routing views are empty.
+#pragma once
+
+#include <cstddef>
+
+#include "net/transport.h"
+
+namespace sanet::net {
+
+class LocalTransport : public Transport {
+ public:
+  LocalTransport(std::size_t node_count, double latency_s);
+  void SetReceiver(Receiver receiver) override { receiver_ = std::move(receiver); }
+  void Send(NodeId from, NodeId to, const Bytes& payload) override;
+  void Broadcast(NodeId from, const Bytes& payload) override;
+  NetworkView& View(NodeId) override { return view_; }
+
+ private:
+  class EmptyView : public NetworkView {
+   public:
+    std::string Protocol() const override { return "none"; }
+    std::vector<RouteEntry> RoutingTable() const override { return {}; }
+    std::vector<NodeId> Neighbours() const override { return {}; }
+    bool InvalidateRoute(NodeId) override { return false; }
+    void RequestRoute(NodeId) override {}
+  };
+  void Deliver(NodeId receiver, NodeId from, NodeId to, const Bytes& payload);
+
+  std::size_t node_count_;
+  double latency_;
+  Receiver receiver_;
+  EmptyView view_;
+};
+
+}  // namespace sanet::net

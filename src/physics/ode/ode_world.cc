@@ -1,0 +1,250 @@
+#include "physics/ode/ode_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+namespace sanet::physics {
+
+std::unique_ptr<PhysicsWorld> CreateOdeWorld(const WorldSettings& settings) {
+  return std::make_unique<ode::OdeWorld>(settings);
+}
+
+namespace ode {
+namespace {
+
+constexpr int kMaxContactsPerPair = 4;
+
+void InitOdeOnce() {
+  static std::once_flag once;
+  std::call_once(once, [] { dInitODE2(0); });
+}
+
+const GeomInfo& InfoOf(dGeomID g) { return *static_cast<const GeomInfo*>(dGeomGetData(g)); }
+
+bool Moving(dBodyID body) { return body && dBodyIsEnabled(body); }
+
+}  // namespace
+
+// ---- bodies ------------------------------------------------------------------------------
+
+Pose2D OdeBody::pose() const {
+  const Vec3 p = position3();
+  const dReal* r = dBodyGetRotation(main_);
+  return {p.x, p.y, std::atan2(r[4], r[0])};
+}
+
+Vec3 OdeBody::position3() const {
+  dVector3 world;
+  dBodyGetRelPointPos(main_, reference_offset_.x, reference_offset_.y, reference_offset_.z, world);
+  return {world[0], world[1], world[2]};
+}
+
+Twist2D OdeBody::velocity() const {
+  dVector3 v;
+  dBodyGetRelPointVel(main_, reference_offset_.x, reference_offset_.y, reference_offset_.z, v);
+  return {v[0], v[1], dBodyGetAngularVel(main_)[2]};
+}
+
+void OdeVehicle::set_wheel_speed(std::size_t wheel, double rad_per_s) {
+  dJointSetHingeParam(wheels_.at(wheel).hinge, dParamVel, rad_per_s);
+}
+
+void OdeVehicle::add_wheel(dBodyID body, dJointID hinge, double max_torque) {
+  dJointSetHingeParam(hinge, dParamFMax, max_torque);
+  dJointSetHingeParam(hinge, dParamVel, 0);
+  wheels_.push_back({body, hinge, 0, dJointGetHingeAngle(hinge)});
+}
+
+void OdeVehicle::update_wheel_angles() {
+  for (auto& w : wheels_) {
+    const double raw = dJointGetHingeAngle(w.hinge);
+    w.angle += WrapAngle(raw - w.last_raw);
+    w.last_raw = raw;
+  }
+}
+
+// ---- world -------------------------------------------------------------------------------
+
+OdeWorld::OdeWorld(const WorldSettings& settings) : settings_(settings) {
+  InitOdeOnce();
+  world_ = dWorldCreate();
+  dWorldSetGravity(world_, 0, 0, -settings.gravity);
+  dWorldSetQuickStepNumIterations(world_, settings.solver_iterations);
+  dWorldSetERP(world_, 0.2);
+  dWorldSetCFM(world_, 1e-5);
+  dWorldSetContactSurfaceLayer(world_, 0.001);
+  dWorldSetContactMaxCorrectingVel(world_, 1.0);
+  moving_ = dHashSpaceCreate(nullptr);
+  still_ = dHashSpaceCreate(nullptr);
+  resting_ = dHashSpaceCreate(nullptr);
+  contacts_ = dJointGroupCreate(0);
+  dGeomID ground = dCreatePlane(still_, 0, 0, 1, 0);
+  dGeomSetData(ground, make_info({Part::kGround, nullptr, nullptr, settings.ground_friction, 0}));
+}
+
+OdeWorld::~OdeWorld() {
+  if (ray_) dGeomDestroy(ray_);
+  dJointGroupDestroy(contacts_);
+  dSpaceDestroy(moving_);  // spaces destroy their geoms (cleanup mode is on by default)
+  dSpaceDestroy(still_);
+  dSpaceDestroy(resting_);
+  dWorldDestroy(world_);  // and the world its bodies and joints
+}
+
+GeomInfo* OdeWorld::make_info(GeomInfo info) {
+  infos_.push_back(std::make_unique<GeomInfo>(info));
+  return infos_.back().get();
+}
+
+void OdeWorld::add_static_box(const StaticBox& box) {
+  dGeomID g = dCreateBox(still_, box.size.x, box.size.y, box.size.z);
+  dGeomSetPosition(g, box.center.x, box.center.y, box.center.z);
+  dMatrix3 r;
+  dRFromAxisAndAngle(r, 0, 0, 1, box.yaw);
+  dGeomSetRotation(g, r);
+  dGeomSetData(g, make_info({Part::kStatic, nullptr, nullptr, settings_.ground_friction, 0}));
+}
+
+Body* OdeWorld::add_mote(const MoteSpec& spec, const Pose2D& pose) {
+  dBodyID body = dBodyCreate(world_);
+  dBodySetPosition(body, pose.x, pose.y, spec.size / 2);
+  dMatrix3 r;
+  dRFromAxisAndAngle(r, 0, 0, 1, pose.theta);
+  dBodySetRotation(body, r);
+  dMass mass;
+  dMassSetBoxTotal(&mass, spec.mass, spec.size, spec.size, spec.size);
+  dBodySetMass(body, &mass);
+  // Rests until touched, and goes back to rest once still again.
+  dBodySetAutoDisableFlag(body, 1);
+  dBodySetAutoDisableSteps(body, 20);
+  dBodyDisable(body);
+  motes_.push_back(std::make_unique<OdeBody>(body, Vec3{0, 0, 0}));
+  dGeomID g = dCreateBox(resting_, spec.size, spec.size, spec.size);
+  dGeomSetBody(g, body);
+  GeomInfo* info = make_info({Part::kMote, motes_.back().get(), nullptr, kMoteFriction, 0,
+                              static_cast<int>(motes_.size() - 1)});
+  dGeomSetData(g, info);
+  mote_geoms_.push_back(g);
+  mote_awake_.push_back(false);
+  return motes_.back().get();
+}
+
+void OdeWorld::NearCallback(void* data, dGeomID a, dGeomID b) {
+  static_cast<OdeWorld*>(data)->Collide(a, b);
+}
+
+void OdeWorld::Collide(dGeomID a, dGeomID b) {
+  if (a == b) return;
+  dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
+  if (!Moving(ba) && !Moving(bb)) return;  // nothing to do between things at rest
+  const GeomInfo& ia = InfoOf(a);
+  const GeomInfo& ib = InfoOf(b);
+  if (ia.owner && ia.owner == ib.owner) return;  // parts of one robot
+  if (ba && bb && dAreConnected(ba, bb)) return;
+
+  dContact contact[kMaxContactsPerPair];
+  const int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
+  if (n == 0) return;
+  for (const GeomInfo* info : {&ia, &ib})
+    if (info->part == Part::kMote) WakeMote(info->index);
+
+  const GeomInfo* omni = ia.part == Part::kOmniWheel ? &ia : ib.part == Part::kOmniWheel ? &ib : nullptr;
+  const bool caster = ia.part == Part::kCaster || ib.part == Part::kCaster;
+  for (int i = 0; i < n; ++i) {
+    dSurfaceParameters& s = contact[i].surface;
+    s.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
+    s.soft_erp = 0.2;
+    s.soft_cfm = 1e-4;
+    s.mu = caster ? 0.0 : std::min(ia.friction, ib.friction);
+    if (omni) {
+      // Grip along the rolling direction (perpendicular to the hinge axis, in the contact
+      // plane); slip along the axis, where a Swedish wheel's rollers turn freely.
+      dVector3 axis;
+      dJointGetHingeAxis(omni->hinge, axis);
+      const dReal* nrm = contact[i].geom.normal;
+      dVector3 roll = {axis[1] * nrm[2] - axis[2] * nrm[1], axis[2] * nrm[0] - axis[0] * nrm[2],
+                       axis[0] * nrm[1] - axis[1] * nrm[0], 0};
+      const double len = std::sqrt(roll[0] * roll[0] + roll[1] * roll[1] + roll[2] * roll[2]);
+      if (len > 1e-9) {
+        s.mode |= dContactMu2 | dContactFDir1;
+        for (int k = 0; k < 3; ++k) contact[i].fdir1[k] = roll[k] / len;
+        s.mu = omni->friction;
+        s.mu2 = omni->slip_friction;
+      }
+    }
+    dJointID joint = dJointCreateContact(world_, contacts_, &contact[i]);
+    dJointAttach(joint, ba, bb);
+  }
+}
+
+void OdeWorld::WakeMote(int index) {
+  if (mote_awake_[index]) return;
+  mote_awake_[index] = true;
+  awake_motes_.push_back(index);
+}
+
+void OdeWorld::step(double dt) {
+  dSpaceCollide(moving_, this, &NearCallback);
+  dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(still_), this,
+                 &NearCallback);
+  dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(resting_), this,
+                 &NearCallback);
+  // Motes that are awake (or were touched just now) meet the ground, obstacles and other motes;
+  // the list may grow while we go through it when one mote pushes another.
+  for (std::size_t i = 0; i < awake_motes_.size(); ++i) {
+    dGeomID g = mote_geoms_[awake_motes_[i]];
+    dSpaceCollide2(g, reinterpret_cast<dGeomID>(still_), this, &NearCallback);
+    dSpaceCollide2(g, reinterpret_cast<dGeomID>(resting_), this, &NearCallback);
+  }
+  dWorldQuickStep(world_, dt);
+  dJointGroupEmpty(contacts_);
+  for (auto& v : vehicles_) v->update_wheel_angles();
+  // Motes that have come to rest again leave the awake list (in a stable order).
+  std::size_t kept = 0;
+  for (int index : awake_motes_) {
+    if (dBodyIsEnabled(dGeomGetBody(mote_geoms_[index])))
+      awake_motes_[kept++] = index;
+    else
+      mote_awake_[index] = false;
+  }
+  awake_motes_.resize(kept);
+}
+
+std::size_t OdeWorld::awake_body_count() const { return vehicles_.size() + awake_motes_.size(); }
+
+namespace {
+
+struct RayQuery {
+  const Body* ignore;
+  double nearest;
+};
+
+void RayCallback(void* data, dGeomID ray, dGeomID other) {
+  auto* q = static_cast<RayQuery*>(data);
+  const GeomInfo& info = InfoOf(other);
+  if (info.part == Part::kGround) return;
+  if (q->ignore && info.owner == q->ignore) return;
+  dContactGeom hit;
+  if (dCollide(ray, other, 1, &hit, sizeof hit) > 0) q->nearest = std::min(q->nearest, double(hit.depth));
+}
+
+}  // namespace
+
+double OdeWorld::cast_ray(const Vec3& origin, const Vec3& direction, double max_range,
+                          const Body* ignore) const {
+  if (!ray_) {
+    ray_ = dCreateRay(nullptr, max_range);
+    dGeomSetData(ray_, const_cast<OdeWorld*>(this)->make_info({Part::kStatic, nullptr, nullptr, 0, 0}));
+  }
+  dGeomRaySetLength(ray_, max_range);
+  dGeomRaySet(ray_, origin.x, origin.y, origin.z, direction.x, direction.y, direction.z);
+  RayQuery query{ignore, max_range};
+  for (dSpaceID space : {moving_, still_, resting_})
+    dSpaceCollide2(ray_, reinterpret_cast<dGeomID>(space), &query, &RayCallback);
+  return query.nearest;
+}
+
+}  // namespace ode
+}  // namespace sanet::physics

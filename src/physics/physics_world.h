@@ -1,0 +1,116 @@
+// The physical world as the rest of sanet sees it: static obstacles, wheeled vehicles, resting
+// bodies (motes), ray casts and a fixed-length step. No engine header leaks through here; the
+// ODE implementation lives in physics/ode/.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "sanet/geometry.h"
+
+namespace sanet::physics {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+
+struct WorldSettings {
+  double gravity = 9.81;          // m/s^2, pointing down (-z)
+  double ground_friction = 1.0;   // Coulomb coefficient for bodies on the ground
+  int solver_iterations = 20;     // iterations of the quick-step solver per step
+};
+
+// An axis-aligned box on the ground, turned by `yaw` about its vertical axis.
+struct StaticBox {
+  Vec3 center;  // m
+  Vec3 size;    // m: length (along yaw), width, height
+  double yaw = 0;
+};
+
+// Robertino-like omnidirectional robot: two stacked cylinders, three sphere wheels on radial
+// hinges; anisotropic friction (grip along the rolling direction, slip along the wheel axis)
+// stands in for the rollers of a Swedish wheel.
+struct Omni3Spec {
+  double body_radius = 0.19;     // m, lower cylinder; the upper one is 80 % of it
+  double body_height = 0.2;      // m, both cylinders together
+  double body_mass = 3.2;        // kg
+  double ground_clearance = 0.02;  // m, under the lower cylinder
+  double wheel_radius = 0.04;    // m
+  double wheel_mass = 0.1;       // kg each
+  double wheel_distance = 0.13;  // m, from the centre to each wheel's contact point
+  std::array<double, 3> wheel_angles{kPi / 3, kPi, 5 * kPi / 3};  // rad, from forward
+  double max_wheel_torque = 0.5;  // N m, the motors' limit
+  double grip_friction = 1.0;     // along the rolling direction
+  double slip_friction = 0.01;    // along the wheel axis
+};
+
+// Pioneer-P2DX-like differential drive: a box chassis, two driven wheels on one axle and a
+// passive (frictionless) caster behind.
+struct DiffDriveSpec {
+  double body_length = 0.44;    // m
+  double body_width = 0.38;     // m
+  double body_height = 0.22;    // m
+  double body_mass = 9.0;       // kg
+  double ground_clearance = 0.05;  // m
+  double wheel_radius = 0.0975;  // m
+  double wheel_mass = 0.5;       // kg each
+  double axle_length = 0.33;     // m, between the wheels' contact points
+  double caster_offset = 0.2;    // m, behind the axle
+  double caster_radius = 0.03;   // m
+  double max_wheel_torque = 3.0;  // N m
+  double wheel_friction = 1.0;
+};
+
+// A sensor mote: a small box that rests until something pushes it.
+struct MoteSpec {
+  double size = 0.1;   // m, cube side
+  double mass = 0.05;  // kg
+};
+
+// Handle on a body made of one or more rigid parts (vehicle or mote).
+class Body {
+ public:
+  virtual ~Body() = default;
+  // Pose of the body's reference point (a vehicle's centre between its wheels) on the ground.
+  virtual Pose2D pose() const = 0;
+  virtual Vec3 position3() const = 0;
+  // World-frame velocity of the reference point and yaw rate.
+  virtual Twist2D velocity() const = 0;
+  // True while the engine integrates it (resting motes are not).
+  virtual bool awake() const = 0;
+};
+
+class Vehicle : public virtual Body {
+ public:
+  virtual std::size_t wheel_count() const = 0;
+  // Speed the wheel's motor drives towards, limited by its maximum torque (rad/s, positive =
+  // the direction the kinematics of the model define as forward rolling).
+  virtual void set_wheel_speed(std::size_t wheel, double rad_per_s) = 0;
+  // Accumulated wheel rotation since creation (rad), unwrapped.
+  virtual double wheel_angle(std::size_t wheel) const = 0;
+};
+
+class PhysicsWorld {
+ public:
+  virtual ~PhysicsWorld() = default;
+
+  virtual void add_static_box(const StaticBox& box) = 0;
+  // The world owns the returned bodies; the pointers stay valid for its lifetime.
+  virtual Vehicle* add_omni3(const Omni3Spec& spec, const Pose2D& pose) = 0;
+  virtual Vehicle* add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose) = 0;
+  virtual Body* add_mote(const MoteSpec& spec, const Pose2D& pose) = 0;
+
+  // Distance along the ray from `origin` in direction `direction` (unit) to the first surface,
+  // ignoring the ground and the parts of `ignore`; `max_range` if nothing is nearer.
+  virtual double cast_ray(const Vec3& origin, const Vec3& direction, double max_range,
+                          const Body* ignore) const = 0;
+
+  virtual void step(double dt) = 0;
+  virtual std::size_t awake_body_count() const = 0;
+};
+
+std::unique_ptr<PhysicsWorld> CreateOdeWorld(const WorldSettings& settings);
+
+}  // namespace sanet::physics

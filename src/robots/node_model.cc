@@ -1,0 +1,118 @@
+#include "robots/node_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sanet::robots {
+
+const char* ModelName(ModelKind kind) {
+  switch (kind) {
+    case ModelKind::kMote: return "mote";
+    case ModelKind::kOmni3: return "omni3";
+    case ModelKind::kDiffDrive: return "diffdrive";
+  }
+  return "?";
+}
+
+ModelSpec ModelSpec::Defaults(ModelKind kind) {
+  ModelSpec s;
+  s.kind = kind;
+  switch (kind) {
+    case ModelKind::kMote:
+      break;
+    case ModelKind::kOmni3:
+      s.max_speed = 1.0;
+      s.max_turn_rate = 3.0;
+      // Low on the body so that they also see motes (10 cm tall).
+      s.sensors.ir = RangeSensorSpec::Ring(6, s.omni3.body_radius, 0.06, 0.8);
+      break;
+    case ModelKind::kDiffDrive:
+      s.max_speed = 1.2;
+      s.max_turn_rate = 3.0;
+      s.sensors.laser = RangeSensorSpec::Fan(kPi, 181, 0.18, 0.2, 8.0);
+      break;
+  }
+  return s;
+}
+
+NodeModel::NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const Pose2D& pose,
+                     std::uint64_t seed, const std::string& stream_prefix)
+    : world_(world),
+      spec_(spec),
+      ground_truth_(spec.sensors.ground_truth_noise_position, spec.sensors.ground_truth_noise_angle,
+                    RandomStream(seed, stream_prefix + "/ground_truth")) {
+  switch (spec.kind) {
+    case ModelKind::kMote:
+      body_ = world.add_mote(spec.mote, pose);
+      break;
+    case ModelKind::kOmni3:
+      vehicle_ = world.add_omni3(spec.omni3, pose);
+      kinematics_ = std::make_unique<Omni3Kinematics>(spec.omni3.wheel_angles,
+                                                      spec.omni3.wheel_distance, spec.omni3.wheel_radius);
+      break;
+    case ModelKind::kDiffDrive:
+      vehicle_ = world.add_diffdrive(spec.diffdrive, pose);
+      kinematics_ = std::make_unique<DiffDriveKinematics>(spec.diffdrive.axle_length,
+                                                          spec.diffdrive.wheel_radius);
+      break;
+  }
+  if (vehicle_) {
+    body_ = vehicle_;
+    odometry_.emplace(*kinematics_, pose, spec.sensors.odometry_noise,
+                      RandomStream(seed, stream_prefix + "/odometry"));
+  }
+  if (spec.sensors.ir) ir_.emplace(*spec.sensors.ir, RandomStream(seed, stream_prefix + "/ir"));
+  if (spec.sensors.laser) laser_.emplace(*spec.sensors.laser, RandomStream(seed, stream_prefix + "/laser"));
+  if (spec.sensors.bearing)
+    bearing_.emplace(*spec.sensors.bearing, RandomStream(seed, stream_prefix + "/bearing"));
+}
+
+bool NodeModel::Drive(const Twist2D& velocity) {
+  if (!vehicle_) return false;
+  Twist2D v = velocity;
+  if (!kinematics_->holonomic()) v.vy = 0;
+  const double speed = std::hypot(v.vx, v.vy);
+  if (speed > spec_.max_speed) {
+    v.vx *= spec_.max_speed / speed;
+    v.vy *= spec_.max_speed / speed;
+  }
+  v.omega = std::clamp(v.omega, -spec_.max_turn_rate, spec_.max_turn_rate);
+  return SetWheelSpeeds(kinematics_->WheelSpeeds(v));
+}
+
+bool NodeModel::SetWheelSpeeds(const std::vector<double>& rad_per_s) {
+  if (!vehicle_ || rad_per_s.size() != vehicle_->wheel_count()) return false;
+  for (std::size_t i = 0; i < rad_per_s.size(); ++i) {
+    const double w = std::isfinite(rad_per_s[i]) ? rad_per_s[i] : 0.0;
+    vehicle_->set_wheel_speed(i, w);
+  }
+  return true;
+}
+
+void NodeModel::AfterPhysicsStep() {
+  if (odometry_) odometry_->Update(*vehicle_);
+}
+
+std::optional<RangeScan> NodeModel::Ir() {
+  if (!ir_) return std::nullopt;
+  return ir_->Read(world_, *body_);
+}
+
+std::optional<RangeScan> NodeModel::Laser() {
+  if (!laser_) return std::nullopt;
+  return laser_->Read(world_, *body_);
+}
+
+std::optional<Pose2D> NodeModel::Odometry() const {
+  if (!odometry_) return std::nullopt;
+  return odometry_->pose();
+}
+
+Pose2D NodeModel::GroundTruth() { return ground_truth_.Read(body_->pose()); }
+
+std::optional<BearingReading> NodeModel::Bearing(const Pose2D& target) {
+  if (!bearing_) return std::nullopt;
+  return bearing_->Read(body_->pose(), target);
+}
+
+}  // namespace sanet::robots

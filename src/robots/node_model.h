@@ -1,0 +1,77 @@
+// A node's physical side: its body in the physics world, its drive and its sensors. Motes have
+// a body and sensors but no drive.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "physics/physics_world.h"
+#include "robots/kinematics.h"
+#include "robots/sensors.h"
+
+namespace sanet::robots {
+
+enum class ModelKind { kMote, kOmni3, kDiffDrive };
+
+const char* ModelName(ModelKind kind);
+
+struct SensorSuite {
+  std::optional<RangeSensorSpec> ir;
+  std::optional<RangeSensorSpec> laser;
+  std::optional<BearingSpec> bearing;
+  double odometry_noise = 0;               // relative, per increment
+  double ground_truth_noise_position = 0;  // m
+  double ground_truth_noise_angle = 0;     // rad
+};
+
+struct ModelSpec {
+  ModelKind kind = ModelKind::kMote;
+  physics::MoteSpec mote;
+  physics::Omni3Spec omni3;
+  physics::DiffDriveSpec diffdrive;
+  double max_speed = 0;      // m/s, commands are clamped to it
+  double max_turn_rate = 0;  // rad/s
+  SensorSuite sensors;
+
+  // The model's defaults: omni3 carries six IR sensors, diffdrive a 180-degree laser.
+  static ModelSpec Defaults(ModelKind kind);
+};
+
+class NodeModel {
+ public:
+  // `seed` and `stream_prefix` give each sensor its own random stream.
+  NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const Pose2D& pose,
+            std::uint64_t seed, const std::string& stream_prefix);
+
+  const ModelSpec& spec() const { return spec_; }
+  const physics::Body& body() const { return *body_; }
+  bool mobile() const { return vehicle_ != nullptr; }
+  bool holonomic() const { return kinematics_ && kinematics_->holonomic(); }
+
+  // Actuators: clamp and hand the wheel speeds to the motors. False on a mote.
+  bool Drive(const Twist2D& velocity);
+  bool SetWheelSpeeds(const std::vector<double>& rad_per_s);
+
+  // Called after every physics step.
+  void AfterPhysicsStep();
+
+  std::optional<RangeScan> Ir();
+  std::optional<RangeScan> Laser();
+  std::optional<Pose2D> Odometry() const;
+  Pose2D GroundTruth();
+  std::optional<BearingReading> Bearing(const Pose2D& target);
+
+ private:
+  physics::PhysicsWorld& world_;
+  ModelSpec spec_;
+  physics::Body* body_ = nullptr;
+  physics::Vehicle* vehicle_ = nullptr;
+  std::unique_ptr<Kinematics> kinematics_;
+  std::optional<RangeSensor> ir_, laser_;
+  std::optional<BearingSensor> bearing_;
+  std::optional<robots::Odometry> odometry_;
+  GroundTruthSensor ground_truth_;
+};
+
+}  // namespace sanet::robots

@@ -1,0 +1,341 @@
+#include "scenario/scenario_loader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "sim/world.h"
+
+namespace sanet::scenario {
+namespace {
+
+namespace fs = std::filesystem;
+using robots::ModelKind;
+using robots::ModelSpec;
+using robots::RangeSensorSpec;
+
+constexpr double kInf = HUGE_VAL;
+
+Vec2 ReadPoint(const Field& f) {
+  const auto v = f.Numbers(2);
+  return {v[0], v[1]};
+}
+
+sim::Obstacle ReadObstacle(const Field& f) {
+  f.ExpectKeys({"box", "wall"});
+  if (auto box = f.Get("box")) {
+    if (f.Get("wall")) f.Fail("an obstacle is either a box or a wall, not both");
+    box->ExpectKeys({"center", "size", "yaw"});
+    const Vec2 c = ReadPoint(box->Require("center"));
+    const Field size_field = box->Require("size");
+    const auto size = size_field.Numbers(3);
+    for (double s : size)
+      if (s <= 0) size_field.Fail("every side must be greater than 0");
+    const double yaw = box->Get("yaw") ? box->Get("yaw")->Number(-kInf, kInf) : 0;
+    return {"box", {{c.x, c.y, size[2] / 2}, {size[0], size[1], size[2]}, yaw}};
+  }
+  auto wall = f.Get("wall");
+  if (!wall) f.Fail("an obstacle needs a 'box' or a 'wall'");
+  wall->ExpectKeys({"from", "to", "height", "thickness"});
+  const Vec2 a = ReadPoint(wall->Require("from"));
+  const Vec2 b = ReadPoint(wall->Require("to"));
+  if (Norm(b - a) < 1e-6) wall->Require("to").Fail("a wall's two ends must differ");
+  const double height = wall->Get("height") ? wall->Get("height")->NumberAbove(0, 1000) : 1.0;
+  const double thickness = wall->Get("thickness") ? wall->Get("thickness")->NumberAbove(0, 1000) : 0.2;
+  const Vec2 mid = (a + b) * 0.5;
+  return {"wall",
+          {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
+}
+
+ModelKind ReadModel(const Field& f) {
+  const std::string name = f.Text();
+  for (ModelKind k : {ModelKind::kMote, ModelKind::kOmni3, ModelKind::kDiffDrive})
+    if (name == robots::ModelName(k)) return k;
+  f.Fail("unknown model '" + name + "' (known: mote, omni3, diffdrive)");
+}
+
+// Sets `target` from `key` when present, checking its range.
+void Optional(const Field& f, const char* key, double& target, double min, double max) {
+  if (auto v = f.Get(key)) target = v->Number(min, max);
+}
+
+void ReadBody(const Field& f, ModelSpec& m) {
+  switch (m.kind) {
+    case ModelKind::kMote:
+      f.ExpectKeys({"size", "mass"});
+      Optional(f, "size", m.mote.size, 0.005, 10);
+      Optional(f, "mass", m.mote.mass, 0.001, 1000);
+      break;
+    case ModelKind::kOmni3:
+      f.ExpectKeys({"body_radius", "body_height", "body_mass", "ground_clearance", "wheel_radius",
+                    "wheel_mass", "wheel_distance", "max_wheel_torque", "grip_friction",
+                    "slip_friction", "max_speed", "max_turn_rate"});
+      Optional(f, "body_radius", m.omni3.body_radius, 0.02, 5);
+      Optional(f, "body_height", m.omni3.body_height, 0.02, 5);
+      Optional(f, "body_mass", m.omni3.body_mass, 0.01, 1000);
+      Optional(f, "ground_clearance", m.omni3.ground_clearance, 0, 1);
+      Optional(f, "wheel_radius", m.omni3.wheel_radius, 0.005, 1);
+      Optional(f, "wheel_mass", m.omni3.wheel_mass, 0.001, 100);
+      Optional(f, "wheel_distance", m.omni3.wheel_distance, 0.01, 5);
+      Optional(f, "max_wheel_torque", m.omni3.max_wheel_torque, 0.001, 1000);
+      Optional(f, "grip_friction", m.omni3.grip_friction, 0, 10);
+      Optional(f, "slip_friction", m.omni3.slip_friction, 0, 10);
+      break;
+    case ModelKind::kDiffDrive:
+      f.ExpectKeys({"body_length", "body_width", "body_height", "body_mass", "ground_clearance",
+                    "wheel_radius", "wheel_mass", "axle_length", "caster_offset", "caster_radius",
+                    "max_wheel_torque", "wheel_friction", "max_speed", "max_turn_rate"});
+      Optional(f, "body_length", m.diffdrive.body_length, 0.02, 10);
+      Optional(f, "body_width", m.diffdrive.body_width, 0.02, 10);
+      Optional(f, "body_height", m.diffdrive.body_height, 0.02, 10);
+      Optional(f, "body_mass", m.diffdrive.body_mass, 0.01, 10000);
+      Optional(f, "ground_clearance", m.diffdrive.ground_clearance, 0, 1);
+      Optional(f, "wheel_radius", m.diffdrive.wheel_radius, 0.005, 2);
+      Optional(f, "wheel_mass", m.diffdrive.wheel_mass, 0.001, 100);
+      Optional(f, "axle_length", m.diffdrive.axle_length, 0.02, 10);
+      Optional(f, "caster_offset", m.diffdrive.caster_offset, 0.01, 10);
+      Optional(f, "caster_radius", m.diffdrive.caster_radius, 0.005, 1);
+      Optional(f, "max_wheel_torque", m.diffdrive.max_wheel_torque, 0.001, 10000);
+      Optional(f, "wheel_friction", m.diffdrive.wheel_friction, 0, 10);
+      break;
+  }
+  if (m.kind != ModelKind::kMote) {
+    Optional(f, "max_speed", m.max_speed, 0, 100);
+    Optional(f, "max_turn_rate", m.max_turn_rate, 0, 100);
+  }
+  if (m.kind == ModelKind::kOmni3 && m.omni3.wheel_distance >= m.omni3.body_radius + m.omni3.wheel_radius)
+    f.Fail("wheel_distance must keep the wheels under the body (less than body_radius + wheel_radius)");
+}
+
+void ReadSensors(const Field& f, ModelSpec& m) {
+  f.ExpectKeys({"ir", "laser", "odometry", "ground_truth", "bearing"});
+  robots::SensorSuite& s = m.sensors;
+  const bool mote = m.kind == ModelKind::kMote;
+  if (auto ir = f.Get("ir")) {
+    if (ir->IsScalar() && !ir->Bool()) {
+      s.ir.reset();
+    } else {
+      ir->ExpectKeys({"count", "max_range", "height", "noise"});
+      const double radius = m.kind == ModelKind::kOmni3 ? m.omni3.body_radius
+                            : m.kind == ModelKind::kDiffDrive ? m.diffdrive.body_width / 2
+                                                              : m.mote.size / 2;
+      const int count = ir->Get("count") ? ir->Get("count")->Integer(1, 360) : 6;
+      const double max_range = ir->Get("max_range") ? ir->Get("max_range")->NumberAbove(0, 100) : 0.8;
+      const double height = ir->Get("height") ? ir->Get("height")->Number(0, 10) : 0.06;
+      s.ir = RangeSensorSpec::Ring(count, radius, height, max_range);
+      Optional(*ir, "noise", s.ir->noise, 0, 100);
+    }
+  }
+  if (auto laser = f.Get("laser")) {
+    if (laser->IsScalar() && !laser->Bool()) {
+      s.laser.reset();
+    } else {
+      laser->ExpectKeys({"fov", "beams", "max_range", "height", "mount_x", "noise"});
+      const double fov = laser->Get("fov") ? laser->Get("fov")->NumberAbove(0, 2 * kPi) : kPi;
+      const int beams = laser->Get("beams") ? laser->Get("beams")->Integer(1, 10000) : 181;
+      const double max_range = laser->Get("max_range") ? laser->Get("max_range")->NumberAbove(0, 1000) : 8.0;
+      const double height = laser->Get("height") ? laser->Get("height")->Number(0, 10) : 0.2;
+      const double mount_x = laser->Get("mount_x") ? laser->Get("mount_x")->Number(-10, 10)
+                             : m.kind == ModelKind::kDiffDrive ? 0.18 : 0.0;
+      s.laser = RangeSensorSpec::Fan(fov, beams, mount_x, height, max_range);
+      if (m.kind == ModelKind::kOmni3) s.laser->mount_radius = 0;
+      Optional(*laser, "noise", s.laser->noise, 0, 100);
+    }
+  }
+  if (auto odo = f.Get("odometry")) {
+    if (mote) odo->Fail("a mote has no wheels, so no odometry");
+    odo->ExpectKeys({"noise"});
+    Optional(*odo, "noise", s.odometry_noise, 0, 10);
+  }
+  if (auto gt = f.Get("ground_truth")) {
+    gt->ExpectKeys({"noise_position", "noise_angle"});
+    Optional(*gt, "noise_position", s.ground_truth_noise_position, 0, 1000);
+    Optional(*gt, "noise_angle", s.ground_truth_noise_angle, 0, 10);
+  }
+  if (auto b = f.Get("bearing")) {
+    b->ExpectKeys({"range", "noise_distance", "noise_angle"});
+    robots::BearingSpec spec;
+    spec.range = b->Require("range").NumberAbove(0, 1e6);
+    Optional(*b, "noise_distance", spec.noise_distance, 0, 1000);
+    Optional(*b, "noise_angle", spec.noise_angle, 0, 10);
+    s.bearing = spec;
+  }
+}
+
+ParamValue ReadParamValue(const Field& f) {
+  ParamValue v;
+  v.line = f.line();
+  auto scalar = [](const Field& item) {
+    if (!item.IsScalar()) item.Fail("controller parameters are numbers, words or lists of them");
+    return item.node().Scalar();
+  };
+  if (f.IsScalar()) {
+    v.rows = {{f.node().Scalar()}};
+  } else if (f.IsSequence()) {
+    const auto items = f.Items();
+    const bool table = !items.empty() && items[0].IsSequence();
+    v.shape = table ? ParamValue::Shape::kTable : ParamValue::Shape::kList;
+    if (!table) v.rows.emplace_back();
+    for (const Field& item : items) {
+      if (table) {
+        std::vector<std::string> row;
+        for (const Field& cell : item.Items()) row.push_back(scalar(cell));
+        v.rows.push_back(row);
+      } else {
+        v.rows[0].push_back(scalar(item));
+      }
+    }
+  } else {
+    f.Fail("controller parameters are numbers, words or lists of them");
+  }
+  return v;
+}
+
+// Fills a controller's parameters (any keys: the controller judges them later).
+void ReadParams(const Field& controller, sim::ControllerSpec& c) {
+  auto params = controller.Get("params");
+  if (!params || params->node().IsNull()) return;
+  if (!params->IsMap()) params->Fail("must be a mapping of parameter names to values");
+  for (const auto& entry : params->node()) {
+    const std::string key = entry.first.Scalar();
+    if (c.params.Has(key))
+      throw ScenarioError(controller.file(), entry.first.Mark().line + 1, params->path() + "." + key,
+                          "key given twice");
+    c.params.Set(key, ReadParamValue(Field(entry.second, params->path() + "." + key,
+                                           std::make_shared<const std::string>(controller.file()))));
+  }
+}
+
+struct NodeTemplate {
+  ModelSpec model;
+  std::optional<sim::ControllerSpec> controller;
+  int controller_line = 0;
+};
+
+NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir) {
+  NodeTemplate t;
+  t.model = ModelSpec::Defaults(ReadModel(f.Require("model")));
+  if (auto body = f.Get("body")) ReadBody(*body, t.model);
+  if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
+  if (auto c = f.Get("controller")) {
+    c->ExpectKeys({"name", "library", "rate", "params"});
+    sim::ControllerSpec spec;
+    spec.name = c->Require("name").Text();
+    if (auto lib = c->Get("library")) {
+      fs::path p = lib->Text();
+      if (p.is_relative()) p = dir / p;
+      if (!fs::exists(p)) lib->Fail("no such file: " + p.string());
+      spec.library = p.string();
+    }
+    if (auto rate = c->Get("rate")) spec.rate = rate->NumberAbove(0, 10000);
+    ReadParams(*c, spec);
+    t.controller = spec;
+    t.controller_line = c->line();
+  }
+  return t;
+}
+
+}  // namespace
+
+Scenario LoadScenario(const std::string& path) {
+  const Field root = ParseYamlFile(path);
+  const fs::path dir = fs::path(path).parent_path();
+  Scenario sc;
+  sc.file = path;
+  sim::RunSpec& run = sc.run;
+  root.ExpectKeys({"name", "seed", "duration", "world", "nodes", "messages", "outputs"});
+  run.name = root.Get("name") ? root.Get("name")->Text() : fs::path(path).stem().string();
+  if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
+  run.duration = root.Require("duration").NumberAbove(0, 1e9);
+
+  if (auto world = root.Get("world")) {
+    world->ExpectKeys({"size", "physics_step", "gravity", "ground_friction", "solver_iterations", "obstacles"});
+    if (auto size = world->Get("size")) {
+      run.world_size = ReadPoint(*size);
+      if (run.world_size.x <= 0 || run.world_size.y <= 0) size->Fail("both sides must be greater than 0");
+    }
+    if (auto step = world->Get("physics_step")) run.physics_step = step->NumberAbove(0, 0.1);
+    Optional(*world, "gravity", run.physics.gravity, 0, 100);
+    Optional(*world, "ground_friction", run.physics.ground_friction, 0, 10);
+    if (auto it = world->Get("solver_iterations")) run.physics.solver_iterations = it->Integer(1, 1000);
+    if (auto obstacles = world->Get("obstacles"))
+      if (!obstacles->node().IsNull())
+        for (const Field& o : obstacles->Items()) run.obstacles.push_back(ReadObstacle(o));
+  }
+
+  std::map<std::string, int> names;  // name -> line where it was defined
+  auto add_node = [&](const Field& where, sim::NodeSpec node, int controller_line) {
+    auto [it, fresh] = names.emplace(node.name, where.line());
+    if (!fresh) where.Fail("node name '" + node.name + "' is already used on line " + std::to_string(it->second));
+    run.nodes.push_back(std::move(node));
+    sc.controller_lines.push_back(controller_line);
+  };
+  const Field nodes = root.Require("nodes");
+  for (const Field& n : nodes.Items()) {
+    if (n.IsMap() && n.Get("grid")) {
+      n.ExpectKeys({"grid", "model", "body", "sensors", "controller"});
+      const Field g = n.Require("grid");
+      g.ExpectKeys({"name", "rows", "cols", "origin", "spacing", "heading"});
+      const std::string prefix = g.Require("name").Text();
+      const int rows = g.Require("rows").Integer(1, 10000);
+      const int cols = g.Require("cols").Integer(1, 10000);
+      const Vec2 origin = g.Get("origin") ? ReadPoint(*g.Get("origin")) : Vec2{0, 0};
+      Vec2 spacing{1, 1};
+      if (auto s = g.Get("spacing")) {
+        spacing = s->IsSequence() ? ReadPoint(*s) : Vec2{s->Number(0, 1e6), s->Number(0, 1e6)};
+        if (spacing.x <= 0 || spacing.y <= 0) s->Fail("spacing must be greater than 0");
+      }
+      const double heading = g.Get("heading") ? g.Get("heading")->Number(-kInf, kInf) : 0;
+      const NodeTemplate t = ReadNodeTemplate(n, dir);
+      for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c)
+          add_node(g.Require("name"),
+                   {prefix + std::to_string(r * cols + c), t.model,
+                    {origin.x + c * spacing.x, origin.y + r * spacing.y, heading}, t.controller},
+                   t.controller_line);
+      continue;
+    }
+    n.ExpectKeys({"name", "model", "pose", "body", "sensors", "controller"});
+    const NodeTemplate t = ReadNodeTemplate(n, dir);
+    const auto pose = n.Require("pose").Numbers(3);
+    add_node(n.Require("name"), {n.Require("name").Text(), t.model, {pose[0], pose[1], pose[2]}, t.controller},
+             t.controller_line);
+  }
+  if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
+
+  if (auto messages = root.Get("messages")) {
+    messages->ExpectKeys({"latency"});
+    Optional(*messages, "latency", run.message_latency, 0, 1000);
+  }
+  sc.output_folder = "results/" + run.name;
+  if (auto outputs = root.Get("outputs")) {
+    outputs->ExpectKeys({"folder", "trajectory_interval"});
+    if (auto folder = outputs->Get("folder")) sc.output_folder = folder->Text();
+    if (auto interval = outputs->Get("trajectory_interval"))
+      run.trajectory_interval = interval->NumberAbove(0, 1e6);
+  }
+  if (run.trajectory_interval < run.physics_step)
+    root.Fail("outputs.trajectory_interval must be at least world.physics_step");
+  return sc;
+}
+
+void CheckControllers(const Scenario& scenario, agents::Registry& registry) {
+  for (std::size_t i = 0; i < scenario.run.nodes.size(); ++i) {
+    const auto& node = scenario.run.nodes[i];
+    if (!node.controller) continue;
+    const int line = scenario.controller_lines[i];
+    const std::string field = "nodes." + node.name + ".controller";
+    try {
+      sim::MakeController(*node.controller, registry);
+    } catch (const ParamError& e) {
+      const int at = e.line() ? e.line() : node.controller->params.Line(e.key());
+      throw ScenarioError(scenario.file, at ? at : line, field + ".params." + e.key(), e.what());
+    } catch (const agents::RegistryError& e) {
+      throw ScenarioError(scenario.file, line, field + ".name", e.what());
+    } catch (const std::exception& e) {
+      throw ScenarioError(scenario.file, line, field, std::string("cannot be created: ") + e.what());
+    }
+  }
+}
+
+}  // namespace sanet::scenario

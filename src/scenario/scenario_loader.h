@@ -1,0 +1,26 @@
+// Loads a scenario file into a validated RunSpec. Every mistake is a ScenarioError naming the
+// file, line and field. The format is documented in docs/scenario.md.
+#pragma once
+
+#include <string>
+
+#include "agents/controller_registry.h"
+#include "scenario/yaml_reader.h"
+#include "sim/run_spec.h"
+
+namespace sanet::scenario {
+
+struct Scenario {
+  std::string file;
+  sim::RunSpec run;
+  std::string output_folder;  // as given, or results/<name>
+  std::vector<int> controller_lines;  // per node: line of its controller (0 if none)
+};
+
+// Reads and checks the file (structure, types, ranges, names). Does not look at controllers.
+Scenario LoadScenario(const std::string& path);
+
+// Checks that every node's controller exists (loading libraries) and accepts its parameters.
+void CheckControllers(const Scenario& scenario, agents::Registry& registry);
+
+}  // namespace sanet::scenario

@@ -1,0 +1,48 @@
+// The immutable description of one run, as the scenario loader produces it and tests and
+// benchmarks build it directly. Units are SI; defaults are the documented scenario defaults.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "physics/physics_world.h"
+#include "robots/node_model.h"
+#include "sanet/params.h"
+
+namespace sanet::sim {
+
+struct ControllerSpec {
+  std::string name;     // registered name
+  std::string library;  // shared library to load first ("" for built-in controllers)
+  double rate = 10;     // Hz, control steps per second
+  Params params;
+};
+
+struct NodeSpec {
+  std::string name;
+  robots::ModelSpec model;
+  Pose2D pose;
+  std::optional<ControllerSpec> controller;
+};
+
+struct Obstacle {
+  std::string kind;  // "box" or "wall", for plots
+  physics::StaticBox box;
+};
+
+struct RunSpec {
+  std::string name = "run";
+  std::uint64_t seed = 1;
+  double duration = 60;        // s of simulated time
+  double physics_step = 0.005;  // s
+  Vec2 world_size{100, 100};   // m, extent of the field around the origin-based area (for plots)
+  physics::WorldSettings physics;
+  std::vector<Obstacle> obstacles;
+  std::vector<NodeSpec> nodes;
+  double message_latency = 0.001;  // s, of the local transport
+  double trajectory_interval = 0.1;  // s between trajectory samples
+};
+
+}  // namespace sanet::sim

@@ -1,0 +1,299 @@
+#include "sim/world.h"
+
+#include <ns3/core-module.h>
+#include <ns3/mobility-model.h>
+#include <ns3/node-container.h>
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "core/atomic_file.h"
+#include "core/fingerprint.h"
+#include "net/body_mobility_model.h"
+#include "net/local_transport.h"
+
+namespace sanet::sim {
+namespace {
+
+bool g_world_exists = false;
+
+ns3::Time Period(double seconds) { return ns3::NanoSeconds(std::llround(seconds * 1e9)); }
+
+double Since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Adds the wall time of a scope to one stage of the profile.
+class StageTimer {
+ public:
+  explicit StageTimer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~StageTimer() { total_ += Since(start_); }
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string Format(const char* format, ...) {
+  char line[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(line, sizeof line, format, args);
+  va_end(args);
+  return line;
+}
+
+}  // namespace
+
+std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, agents::Registry& registry) {
+  if (!spec.library.empty()) registry.LoadLibrary(spec.library);
+  const ControllerInfo* info = registry.Find(spec.name);
+  if (!info) throw agents::RegistryError("unknown controller '" + spec.name + "'");
+  std::unique_ptr<Controller> controller = info->create(spec.params);
+  spec.params.CheckAllUsed();
+  return controller;
+}
+
+struct World::Outputs {
+  trace::CsvSink trajectories, log, messages;
+  std::string failure;  // first controller error, which ends the run early
+  Outputs(const std::string& dir)
+      : trajectories(dir.empty() ? std::nullopt : std::optional(dir + "/trajectories.csv"),
+                     "time,node,x,y,theta"),
+        log(dir.empty() ? std::nullopt : std::optional(dir + "/log.csv"), "time,node,text"),
+        messages(dir.empty() ? std::nullopt : std::optional(dir + "/messages.csv"),
+                 "time_received,from,to,time_sent,bytes") {}
+};
+
+World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
+  if (g_world_exists) throw WorldError("only one World may exist at a time (ns-3 is process-wide)");
+  if (spec.physics_step <= 0) throw WorldError("physics step must be positive");
+  g_world_exists = true;
+  try {
+    ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(spec.seed % 4294967295u) + 1);
+    physics_ = physics::CreateOdeWorld(spec.physics);
+    for (const Obstacle& o : spec.obstacles) physics_->add_static_box(o.box);
+
+    transport_ = std::make_unique<net::LocalTransport>(spec.nodes.size(), spec.message_latency);
+    transport_->SetReceiver([this](NodeId to, const Message& m) { Deliver(to, m); });
+
+    ns3::NodeContainer ns3_nodes;
+    ns3_nodes.Create(spec.nodes.size());
+    for (NodeId id = 0; id < spec.nodes.size(); ++id) {
+      const NodeSpec& n = spec.nodes[id];
+      models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose, spec.seed,
+                                                            "node/" + n.name));
+      const physics::Body& body = models_.back()->body();
+      auto mobility = ns3::CreateObject<net::BodyMobilityModel>();
+      mobility->Bind(
+          [&body] {
+            const physics::Vec3 p = body.position3();
+            return ns3::Vector(p.x, p.y, p.z);
+          },
+          [&body] {
+            const Twist2D v = body.velocity();
+            return ns3::Vector(v.vx, v.vy, 0);
+          });
+      ns3_nodes.Get(id)->AggregateObject(mobility);
+      nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_.back(),
+                                                               *transport_, *this));
+      controllers_.push_back(n.controller ? MakeController(*n.controller, registry) : nullptr);
+    }
+  } catch (...) {
+    ns3::Simulator::Destroy();
+    g_world_exists = false;
+    throw;
+  }
+  last_recorded_.resize(spec.nodes.size());
+}
+
+World::~World() {
+  // Controllers may hold code from libraries and state tied to nodes: drop them first.
+  controllers_.clear();
+  ns3::Simulator::Destroy();
+  g_world_exists = false;
+}
+
+std::optional<NodeId> World::Lookup(const std::string& name) const {
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id)
+    if (spec_.nodes[id].name == name) return id;
+  return std::nullopt;
+}
+
+Pose2D World::TruePose(NodeId node) const { return models_.at(node)->body().pose(); }
+
+void World::Log(NodeId node, const std::string& text) {
+  if (!out_) return;
+  out_->log.Row(Format("%.6f,", ns3::Simulator::Now().GetSeconds()) +
+                trace::CsvField(spec_.nodes.at(node).name) + "," + trace::CsvField(text));
+}
+
+void World::Deliver(NodeId to, const Message& m) {
+  out_->messages.Row(Format("%.6f,%s,%s,%.6f,%zu", m.time_received, spec_.nodes.at(m.from).name.c_str(),
+                            m.to == kBroadcast ? "*" : spec_.nodes.at(m.to).name.c_str(), m.time_sent,
+                            m.payload.size()));
+  if (!controllers_.at(to)) return;
+  StageTimer timer(profile_.controllers);
+  try {
+    controllers_[to]->OnMessage(*nodes_[to], m);
+  } catch (const std::exception& e) {
+    out_->failure = "controller of " + spec_.nodes[to].name + " failed on a message: " + e.what();
+    ns3::Simulator::Stop();
+  }
+}
+
+void World::PhysicsStep() {
+  {
+    StageTimer timer(profile_.physics);
+    physics_->step(spec_.physics_step);
+  }
+  {
+    StageTimer timer(profile_.sensing);
+    for (auto& m : models_) m->AfterPhysicsStep();
+  }
+  ++physics_steps_;
+  if (step_observer_) step_observer_(ns3::Simulator::Now().GetSeconds());
+  ns3::Simulator::Schedule(Period(spec_.physics_step), &World::PhysicsStep, this);
+}
+
+void World::ControlStep(std::size_t index) {
+  {
+    StageTimer timer(profile_.controllers);
+    try {
+      controllers_[index]->ControlStep(*nodes_[index]);
+    } catch (const std::exception& e) {
+      out_->failure = "controller of " + spec_.nodes[index].name + " failed: " + e.what();
+      ns3::Simulator::Stop();
+      return;
+    }
+  }
+  ns3::Simulator::Schedule(Period(1.0 / spec_.nodes[index].controller->rate), &World::ControlStep,
+                           this, index);
+}
+
+void World::Record() {
+  StageTimer timer(profile_.recording);
+  const double now = ns3::Simulator::Now().GetSeconds();
+  for (NodeId id = 0; id < models_.size(); ++id) {
+    const Pose2D p = models_[id]->body().pose();
+    auto& last = last_recorded_[id];
+    // Nodes at rest add no rows: a mote appears once unless something moves it.
+    if (last && std::fabs(p.x - last->x) < 5e-5 && std::fabs(p.y - last->y) < 5e-5 &&
+        std::fabs(WrapAngle(p.theta - last->theta)) < 5e-5)
+      continue;
+    last = p;
+    out_->trajectories.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, spec_.nodes[id].name.c_str(), p.x,
+                                  p.y, p.theta));
+  }
+}
+
+void World::ShowProgress() {
+  const auto now = std::chrono::steady_clock::now();
+  if (std::chrono::duration<double>(now - last_progress_).count() >= 0.5) {
+    last_progress_ = now;
+    const double t = ns3::Simulator::Now().GetSeconds();
+    const double wall = Since(wall_start_);
+    const double rtf = wall > 0 ? t / wall : 0;
+    const double eta = rtf > 0 ? (spec_.duration - t) / rtf : 0;
+    std::fprintf(stderr, "\r  t = %.1f / %.1f s   %.1fx real time   ETA %.0f s   ", t,
+                 spec_.duration, rtf, eta);
+    std::fflush(stderr);
+  }
+  ns3::Simulator::Schedule(ns3::Seconds(1), &World::ShowProgress, this);
+}
+
+RunResult World::Run(const RunOptions& options) {
+  if (ran_) throw WorldError("a World runs once");
+  ran_ = true;
+  if (!options.output_dir.empty()) std::filesystem::create_directories(options.output_dir);
+  out_ = std::make_unique<Outputs>(options.output_dir);
+
+  // Order at equal times follows scheduling order: controllers start, then record, physics.
+  ns3::Simulator::ScheduleNow([this] {
+    StageTimer timer(profile_.controllers);
+    for (std::size_t i = 0; i < controllers_.size(); ++i)
+      if (controllers_[i]) controllers_[i]->Start(*nodes_[i]);
+  });
+  for (std::size_t i = 0; i < controllers_.size(); ++i)
+    if (controllers_[i]) ns3::Simulator::ScheduleNow(&World::ControlStep, this, i);
+  std::function<void()> record = [this, &record] {
+    Record();
+    ns3::Simulator::Schedule(Period(spec_.trajectory_interval), record);
+  };
+  ns3::Simulator::ScheduleNow(record);
+  ns3::Simulator::Schedule(Period(spec_.physics_step), &World::PhysicsStep, this);
+  wall_start_ = last_progress_ = std::chrono::steady_clock::now();
+  if (options.progress) ns3::Simulator::ScheduleNow(&World::ShowProgress, this);
+
+  ns3::Simulator::Stop(Period(spec_.duration));
+  ns3::Simulator::Run();
+  if (options.progress) std::fprintf(stderr, "\r%78s\r", "");
+
+  RunResult result;
+  result.simulated = ns3::Simulator::Now().GetSeconds();
+  if (out_->failure.empty()) {
+    last_recorded_.assign(last_recorded_.size(), std::nullopt);  // final poses of every node
+    Record();
+  }
+  result.wall = Since(wall_start_);
+  result.real_time_factor = result.wall > 0 ? result.simulated / result.wall : 0;
+  result.events = ns3::Simulator::GetEventCount();
+  result.physics_steps = physics_steps_;
+  out_->trajectories.Commit();
+  out_->log.Commit();
+  out_->messages.Commit();
+  Fingerprint fp;
+  fp.Add(spec_.seed);
+  fp.Add(out_->trajectories.hash());
+  fp.Add(out_->log.hash());
+  fp.Add(out_->messages.hash());
+  result.fingerprint = fp.Hex();
+  result.profile = profile_;
+  if (!options.output_dir.empty()) {
+    result.files = {"trajectories.csv", "log.csv", "messages.csv", "summary.json"};
+    WriteSummary(options, result);
+  }
+  if (!out_->failure.empty()) throw WorldError(out_->failure);
+  return result;
+}
+
+void World::WriteSummary(const RunOptions& options, RunResult& result) {
+  nlohmann::ordered_json j;
+  j["scenario"] = options.scenario_file;
+  j["name"] = spec_.name;
+  j["status"] = out_->failure.empty() ? "completed" : "failed: " + out_->failure;
+  j["seed"] = spec_.seed;
+  j["duration_s"] = spec_.duration;
+  j["simulated_s"] = result.simulated;
+  j["wall_time_s"] = result.wall;
+  j["real_time_factor"] = result.real_time_factor;
+  j["events"] = result.events;
+  j["physics_steps"] = result.physics_steps;
+  j["physics_step_s"] = spec_.physics_step;
+  j["fingerprint"] = result.fingerprint;
+  j["profile_s"] = {{"physics", profile_.physics},
+                    {"sensing", profile_.sensing},
+                    {"controllers", profile_.controllers},
+                    {"recording", profile_.recording}};
+  nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
+  for (NodeId id = 0; id < models_.size(); ++id) {
+    const Pose2D p = models_[id]->body().pose();
+    nodes.push_back({{"name", spec_.nodes[id].name},
+                     {"model", robots::ModelName(spec_.nodes[id].model.kind)},
+                     {"controller", spec_.nodes[id].controller ? spec_.nodes[id].controller->name : ""},
+                     {"final_pose", {p.x, p.y, p.theta}}});
+  }
+  j["nodes"] = nodes;
+  j["rows"] = {{"trajectories", out_->trajectories.rows()},
+               {"log", out_->log.rows()},
+               {"messages", out_->messages.rows()}};
+  j["files"] = result.files;
+  WriteFileAtomically(options.output_dir + "/summary.json", j.dump(2) + "\n");
+}
+
+}  // namespace sanet::sim

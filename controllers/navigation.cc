@@ -19,7 +19,7 @@ PilotSettings PilotSettings::FromParams(const Params& p) {
   return s;
 }
 
-double Pilot::ChooseHeading(const Pose2D& pose, Vec2 goal, const RangeScan* scan) {
+double Pilot::ChooseHeading(const Pose2D& pose, Vec2 goal, const RangeScan* scan, double dt) {
   const Vec2 to_goal = goal - pose.position();
   const double goal_heading = std::atan2(to_goal.y, to_goal.x);
   const double distance = Norm(to_goal);
@@ -49,8 +49,10 @@ double Pilot::ChooseHeading(const Pose2D& pose, Vec2 goal, const RangeScan* scan
   }
 
   if (nearest >= scan->max_range) {
-    // Lost the boundary (past a corner): curve towards the side it was on.
-    last_heading_ = WrapAngle(last_heading_ - side_ * kPi / 8);
+    // Lost the boundary (past a corner): curve towards the side it was on, on a circle a little
+    // wider than the distance kept, so as to come round the corner without hitting it.
+    const double radius = s_.follow_distance + s_.safe_distance;
+    last_heading_ = WrapAngle(last_heading_ - side_ * s_.speed * dt / radius);
     return last_heading_;
   }
   // Move along the boundary: perpendicular to the nearest reading, leaning in when too far and
@@ -60,8 +62,10 @@ double Pilot::ChooseHeading(const Pose2D& pose, Vec2 goal, const RangeScan* scan
   return last_heading_;
 }
 
-Twist2D Pilot::Steer(const Pose2D& pose, Vec2 goal, const RangeScan* scan, bool holonomic) {
-  const double heading = ChooseHeading(pose, goal, scan);
+Twist2D Pilot::Steer(double now, const Pose2D& pose, Vec2 goal, const RangeScan* scan, bool holonomic) {
+  const double dt = last_time_ ? std::clamp(now - *last_time_, 0.0, 1.0) : 0.1;
+  last_time_ = now;
+  const double heading = ChooseHeading(pose, goal, scan, dt);
   const double distance = Norm(goal - pose.position());
   const double speed = std::min(s_.speed, 0.8 * distance + 0.05);
   if (holonomic) {

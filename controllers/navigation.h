@@ -24,15 +24,16 @@ class Pilot {
  public:
   explicit Pilot(PilotSettings settings) : s_(settings) {}
 
-  // Velocity (robot frame) that moves `pose` towards `goal`, given the latest ranges (robot frame).
-  Twist2D Steer(const Pose2D& pose, Vec2 goal, const RangeScan* scan, bool holonomic);
+  // Velocity (robot frame) that moves `pose` towards `goal`, given the latest ranges (robot frame)
+  // at time `now` (s).
+  Twist2D Steer(double now, const Pose2D& pose, Vec2 goal, const RangeScan* scan, bool holonomic);
   bool following() const { return mode_ == Mode::kFollow; }
   void Reset() { mode_ = Mode::kGoal; }
 
  private:
   enum class Mode { kGoal, kFollow };
   // World heading to move along; sets `speed_scale` lower near obstacles.
-  double ChooseHeading(const Pose2D& pose, Vec2 goal, const RangeScan* scan);
+  double ChooseHeading(const Pose2D& pose, Vec2 goal, const RangeScan* scan, double dt);
 
   PilotSettings s_;
   Mode mode_ = Mode::kGoal;
@@ -40,6 +41,7 @@ class Pilot {
   double hit_distance_ = 0;  // distance to the goal where the obstacle was met
   double last_heading_ = 0;  // world heading while following
   std::optional<double> hold_heading_;  // holonomic robots keep their initial heading
+  std::optional<double> last_time_;
 };
 
 }  // namespace sanet::controllers

@@ -40,7 +40,7 @@ class Waypoint : public Controller {
     std::optional<RangeScan> scan = node.Laser();
     if (!scan) scan = node.Ir();
     const bool was_following = pilot_.following();
-    node.Drive(pilot_.Steer(*pose, points_[next_], scan ? &*scan : nullptr, node.Holonomic()));
+    node.Drive(pilot_.Steer(node.Now(), *pose, points_[next_], scan ? &*scan : nullptr, node.Holonomic()));
     if (pilot_.following() != was_following)
       node.Log(pilot_.following() ? "obstacle: following its boundary" : "way clear: heading for the goal");
   }

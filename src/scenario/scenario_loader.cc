@@ -249,7 +249,13 @@ Scenario LoadScenario(const std::string& path) {
   run.duration = root.Require("duration").NumberAbove(0, 1e9);
 
   if (auto world = root.Get("world")) {
-    world->ExpectKeys({"size", "physics_step", "gravity", "ground_friction", "solver_iterations", "obstacles"});
+    world->ExpectKeys({"size", "physics_step", "gravity", "ground_friction", "solver", "solver_iterations",
+                       "obstacles"});
+    if (auto solver = world->Get("solver")) {
+      const std::string name = solver->Text();
+      if (name != "exact" && name != "quick") solver->Fail("must be exact or quick, not '" + name + "'");
+      run.physics.solver = name == "exact" ? physics::Solver::kExact : physics::Solver::kQuick;
+    }
     if (auto size = world->Get("size")) {
       run.world_size = ReadPoint(*size);
       if (run.world_size.x <= 0 || run.world_size.y <= 0) size->Fail("both sides must be greater than 0");

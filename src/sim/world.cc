@@ -4,6 +4,7 @@
 #include <ns3/mobility-model.h>
 #include <ns3/node-container.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -176,17 +177,19 @@ void World::ControlStep(std::size_t index) {
                            this, index);
 }
 
-void World::Record() {
+void World::Record(bool final_row) {
   StageTimer timer(profile_.recording);
-  const double now = ns3::Simulator::Now().GetSeconds();
+  const double now = std::min(ns3::Simulator::Now().GetSeconds(), spec_.duration);
   for (NodeId id = 0; id < models_.size(); ++id) {
     const Pose2D p = models_[id]->body().pose();
     auto& last = last_recorded_[id];
-    // Nodes at rest add no rows: a mote appears once unless something moves it.
-    if (last && std::fabs(p.x - last->x) < 5e-5 && std::fabs(p.y - last->y) < 5e-5 &&
-        std::fabs(WrapAngle(p.theta - last->theta)) < 5e-5)
+    // Nodes at rest add no rows (a mote appears at the start and the end unless something moves
+    // it); the last row of every node is its final pose.
+    if (last && (final_row ? last->time >= spec_.duration
+                           : std::fabs(p.x - last->pose.x) < 5e-5 && std::fabs(p.y - last->pose.y) < 5e-5 &&
+                                 std::fabs(WrapAngle(p.theta - last->pose.theta)) < 5e-5))
       continue;
-    last = p;
+    last = Recorded{p, now};
     out_->trajectories.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, spec_.nodes[id].name.c_str(), p.x,
                                   p.y, p.theta));
   }
@@ -222,7 +225,7 @@ RunResult World::Run(const RunOptions& options) {
   for (std::size_t i = 0; i < controllers_.size(); ++i)
     if (controllers_[i]) ns3::Simulator::ScheduleNow(&World::ControlStep, this, i);
   std::function<void()> record = [this, &record] {
-    Record();
+    Record(false);
     ns3::Simulator::Schedule(Period(spec_.trajectory_interval), record);
   };
   ns3::Simulator::ScheduleNow(record);
@@ -230,16 +233,14 @@ RunResult World::Run(const RunOptions& options) {
   wall_start_ = last_progress_ = std::chrono::steady_clock::now();
   if (options.progress) ns3::Simulator::ScheduleNow(&World::ShowProgress, this);
 
-  ns3::Simulator::Stop(Period(spec_.duration));
+  // Events at exactly `duration` still run: the run covers [0, duration].
+  ns3::Simulator::Stop(Period(spec_.duration) + ns3::NanoSeconds(1));
   ns3::Simulator::Run();
   if (options.progress) std::fprintf(stderr, "\r%78s\r", "");
 
   RunResult result;
-  result.simulated = ns3::Simulator::Now().GetSeconds();
-  if (out_->failure.empty()) {
-    last_recorded_.assign(last_recorded_.size(), std::nullopt);  // final poses of every node
-    Record();
-  }
+  result.simulated = std::min(ns3::Simulator::Now().GetSeconds(), spec_.duration);
+  Record(/*final_row=*/true);
   result.wall = Since(wall_start_);
   result.real_time_factor = result.wall > 0 ? result.simulated / result.wall : 0;
   result.events = ns3::Simulator::GetEventCount();

@@ -78,7 +78,7 @@ class World : public agents::NodeDirectory {
   struct Outputs;
   void PhysicsStep();
   void ControlStep(std::size_t index);
-  void Record();
+  void Record(bool final_row);
   void Deliver(NodeId to, const Message& message);
   void ShowProgress();
   void WriteSummary(const RunOptions& options, RunResult& result);
@@ -89,7 +89,11 @@ class World : public agents::NodeDirectory {
   std::unique_ptr<net::Transport> transport_;
   std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
   std::vector<std::unique_ptr<Controller>> controllers_;  // null where a node has none
-  std::vector<std::optional<Pose2D>> last_recorded_;
+  struct Recorded {
+    Pose2D pose;
+    double time;
+  };
+  std::vector<std::optional<Recorded>> last_recorded_;
   std::unique_ptr<Outputs> out_;
   std::function<void(double)> step_observer_;
   Profile profile_;

@@ -69,6 +69,9 @@ void OdeVehicle::update_wheel_angles() {
 
 OdeWorld::OdeWorld(const WorldSettings& settings) : settings_(settings) {
   InitOdeOnce();
+  // The quick-step solver shuffles constraints with ODE's own (process-wide) generator; start it
+  // from the same seed in every world so that a run never depends on what ran before it.
+  dRandSetSeed(0);
   world_ = dWorldCreate();
   dWorldSetGravity(world_, 0, 0, -settings.gravity);
   dWorldSetQuickStepNumIterations(world_, settings.solver_iterations);
@@ -198,7 +201,10 @@ void OdeWorld::step(double dt) {
     dSpaceCollide2(g, reinterpret_cast<dGeomID>(still_), this, &NearCallback);
     dSpaceCollide2(g, reinterpret_cast<dGeomID>(resting_), this, &NearCallback);
   }
-  dWorldQuickStep(world_, dt);
+  if (settings_.solver == Solver::kExact)
+    dWorldStep(world_, dt);
+  else
+    dWorldQuickStep(world_, dt);
   dJointGroupEmpty(contacts_);
   for (auto& v : vehicles_) v->update_wheel_angles();
   // Motes that have come to rest again leave the awake list (in a stable order).

@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""The sanet command as a user runs it: help, validate, run, results, reproducibility, errors."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SANET = sys.argv.pop(1)
+SOURCE = sys.argv.pop(1)
+SCENARIO = os.path.join(SOURCE, "scenarios", "around-the-wall.yaml")
+
+
+def sanet(*args):
+    return subprocess.run([SANET, *args], capture_output=True, text=True, timeout=300)
+
+
+class Cli(unittest.TestCase):
+    def test_help_describes_every_subcommand_and_option(self):
+        out = sanet("--help")
+        self.assertEqual(out.returncode, 0)
+        for word in ("run", "validate", "list"):
+            self.assertIn(word, out.stdout)
+        run_help = sanet("run", "--help").stdout
+        for option in ("--seed", "--duration", "--output", "--quiet", "--no-progress"):
+            self.assertIn(option, run_help)
+
+    def test_validate_accepts_the_shipped_scenario(self):
+        out = sanet("validate", SCENARIO)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertIn("valid", out.stdout)
+
+    def test_validate_names_file_and_line_of_a_mistake(self):
+        with tempfile.NamedTemporaryFile("w", suffix=".yaml", delete=False) as f:
+            f.write("duration: 10\nnodes:\n  - name: r\n    model: omni4\n    pose: [0, 0, 0]\n")
+        out = sanet("validate", f.name)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn(f"{f.name}:4: 'nodes[0].model': unknown model 'omni4'", out.stderr)
+        os.unlink(f.name)
+
+    def test_list_shows_models_and_controllers(self):
+        out = sanet("list").stdout
+        for word in ("omni3", "diffdrive", "mote", "waypoint", "constant_velocity"):
+            self.assertIn(word, out)
+
+    def test_run_writes_results_that_are_byte_identical_for_the_same_seed(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            a, b, c = (os.path.join(tmp, x) for x in "abc")
+            for folder, seed in ((a, "3"), (b, "3")):
+                out = sanet("run", SCENARIO, "-o", folder, "--seed", seed, "--duration", "30", "-q")
+                self.assertEqual(out.returncode, 0, out.stderr)
+                self.assertEqual(out.stdout, "")
+            for name in ("trajectories.csv", "log.csv", "messages.csv"):
+                with open(os.path.join(a, name), "rb") as fa, open(os.path.join(b, name), "rb") as fb:
+                    self.assertEqual(fa.read(), fb.read(), name)
+            summary = json.load(open(os.path.join(a, "summary.json")))
+            for key in ("duration_s", "wall_time_s", "real_time_factor", "events", "seed", "fingerprint"):
+                self.assertIn(key, summary)
+            self.assertEqual(summary["seed"], 3)
+            self.assertEqual(summary["status"], "completed")
+            self.assertEqual(summary["fingerprint"], json.load(open(os.path.join(b, "summary.json")))["fingerprint"])
+            self.assertFalse([n for n in os.listdir(a) if n.endswith(".tmp")])
+
+    def test_the_readme_scenario_reaches_its_way_point(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = sanet("run", SCENARIO, "-o", tmp, "-q")
+            self.assertEqual(out.returncode, 0, out.stderr)
+            log = open(os.path.join(tmp, "log.csv")).read()
+            self.assertIn("robot,arrived", log)
+
+    def test_missing_scenario_file_is_an_error_not_a_crash(self):
+        out = sanet("run", "/no/such/file.yaml")
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("/no/such/file.yaml", out.stderr)
+        self.assertIn("cannot open", out.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

@@ -1,0 +1,105 @@
+// Every kind of mistake in a scenario is reported with file, line and field.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scenario/scenario_loader.h"
+#include "support/test_world.h"
+
+namespace sanet {
+namespace {
+
+struct Case {
+  const char* name;
+  const char* yaml;
+  int line;
+  const char* field;    // expected dotted path ("" to skip the check)
+  const char* message;  // expected part of the message
+};
+
+constexpr const char* kHeader = "duration: 10\n";  // line 1 of every case below
+
+const Case kCases[] = {
+    {"syntax_error", "nodes: [\n  - {name: a, model: mote, pose: [0, 0, 0]\n", 3, "", "YAML syntax error"},
+    {"unknown_key", "duraton: 10\nnodes: []\n", 2, "duraton", "unknown key"},
+    {"wrong_type", "world:\n  physics_step: fast\nnodes: []\n", 3, "world.physics_step", "must be a number"},
+    {"out_of_range", "world:\n  physics_step: 0.5\nnodes: []\n", 3, "world.physics_step", "must be at most 0.1"},
+    {"unknown_model",
+     "nodes:\n  - name: r\n    model: omni4\n    pose: [0, 0, 0]\n", 4, "nodes[0].model", "unknown model 'omni4'"},
+    {"missing_pose", "nodes:\n  - name: r\n    model: omni3\n", 3, "nodes[0]", "missing required key 'pose'"},
+    {"pose_too_short", "nodes:\n  - name: r\n    model: omni3\n    pose: [1, 2]\n", 5, "nodes[0].pose",
+     "list of 3 numbers"},
+    {"duplicate_name",
+     "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\n  - {name: a, model: mote, pose: [1, 0, 0]}\n", 4,
+     "nodes[1].name", "already used on line 3"},
+    {"unknown_controller",
+     "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: wayponit\n", 7,
+     "nodes.r.controller.name", "unknown controller 'wayponit'"},
+    {"controller_param_out_of_range",
+     "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: waypoint\n"
+     "      params:\n        waypoints: [[1, 1]]\n        speed: -1\n",
+     10, "nodes.r.controller.params.speed", "parameter 'speed' is -1"},
+    {"unknown_controller_param",
+     "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: waypoint\n"
+     "      params:\n        waypoints: [[1, 1]]\n        sped: 1\n",
+     10, "nodes.r.controller.params.sped", "unknown parameter 'sped'"},
+    {"missing_library",
+     "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: mine\n"
+     "      library: no/such/lib.so\n",
+     8, "nodes[0].controller.library", "no such file"},
+    {"degenerate_wall", "world:\n  obstacles:\n    - wall: {from: [1, 1], to: [1, 1]}\nnodes: []\n", 4,
+     "world.obstacles[0].wall.to", "must differ"},
+    {"duplicate_key", "seed: 1\nseed: 2\nnodes: []\n", 3, "seed", "key given twice"},
+    {"negative_seed", "seed: -4\nnodes: []\n", 2, "seed", "whole number >= 0"},
+    {"unknown_sensor", "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    sensors: {sonar: {}}\n",
+     6, "nodes[0].sensors.sonar", "unknown key"},
+    {"body_param_of_other_model",
+     "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    body: {axle_length: 0.3}\n", 6,
+     "nodes[0].body.axle_length", "unknown key"},
+    {"no_nodes", "nodes: []\n", 2, "nodes", "at least one node"},
+    {"grid_rows_zero", "nodes:\n  - grid: {name: m, rows: 0, cols: 2}\n    model: mote\n", 3, "nodes[0].grid.rows",
+     "must be between 1"},
+    {"odometry_on_a_mote", "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {odometry: {noise: 0.1}}\n",
+     6, "nodes[0].sensors.odometry", "no odometry"},
+};
+
+class Malformed : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Malformed, IsRejectedWithFileLineAndField) {
+  const Case& c = GetParam();
+  const std::string path = ::testing::TempDir() + "/malformed-" + c.name + ".yaml";
+  std::ofstream(path) << kHeader << c.yaml;
+  try {
+    scenario::Scenario sc = scenario::LoadScenario(path);
+    scenario::CheckControllers(sc, testing::BuiltinRegistry());
+    FAIL() << c.name << " was accepted";
+  } catch (const scenario::ScenarioError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), c.line) << e.what();
+    if (*c.field) EXPECT_EQ(e.field(), c.field) << e.what();
+    EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind(path + ":" + std::to_string(c.line) + ": ", 0), 0u) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenario, Malformed, ::testing::ValuesIn(kCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Scenario, MissingFileIsReported) {
+  EXPECT_THROW(scenario::LoadScenario("/no/such/scenario.yaml"), scenario::ScenarioError);
+}
+
+TEST(Scenario, GridPlacesNodesRowByRow) {
+  const std::string path = ::testing::TempDir() + "/grid.yaml";
+  std::ofstream(path) << "duration: 1\nnodes:\n  - grid: {name: m, rows: 2, cols: 3, origin: [10, 20], spacing: [5, 7]}\n"
+                         "    model: mote\n";
+  const scenario::Scenario sc = scenario::LoadScenario(path);
+  ASSERT_EQ(sc.run.nodes.size(), 6u);
+  EXPECT_EQ(sc.run.nodes[4].name, "m4");
+  EXPECT_DOUBLE_EQ(sc.run.nodes[4].pose.x, 15);
+  EXPECT_DOUBLE_EQ(sc.run.nodes[4].pose.y, 27);
+}
+
+}  // namespace
+}  // namespace sanet

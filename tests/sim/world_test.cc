@@ -1,0 +1,146 @@
+// The run as a whole: one clock, ns-3 mobility reading physics, messages, failures, outputs.
+#include <gtest/gtest.h>
+
+#include <ns3/mobility-model.h>
+#include <ns3/node-list.h>
+#include <ns3/node.h>
+#include <ns3/simulator.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/test_world.h"
+
+namespace sanet {
+namespace {
+
+using namespace sanet::testing;
+using robots::ModelKind;
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(World, Ns3MobilityAnswersWithThePhysicsPoseAtTheTimeItAsks) {
+  sim::World world(Spec(4, {Robot("r", ModelKind::kOmni3, {0, 0, 0},
+                                  UseController("constant_velocity", {{"vx", Scalar(0.5)}}))}),
+                   BuiltinRegistry());
+  std::vector<std::pair<ns3::Vector, Pose2D>> samples;
+  world.SetStepObserver([&](double t) {
+    if (std::fmod(t, 1.0) < 1e-9) {
+      auto mobility = ns3::NodeList::GetNode(0)->GetObject<ns3::MobilityModel>();
+      samples.emplace_back(mobility->GetPosition(), world.model(0).body().pose());
+    }
+  });
+  world.Run({});
+  ASSERT_GE(samples.size(), 3u);
+  for (const auto& [ns3_pos, pose] : samples) {
+    EXPECT_DOUBLE_EQ(ns3_pos.x, pose.x);
+    EXPECT_DOUBLE_EQ(ns3_pos.y, pose.y);
+  }
+  EXPECT_GT(samples.back().first.x, 1.0) << "the robot moved and ns-3 saw it";
+}
+
+// Replies to every message with the same payload plus one byte; records what it got.
+class Echo : public Controller {
+ public:
+  explicit Echo(std::vector<Message>* inbox, bool starter) : inbox_(inbox), starter_(starter) {}
+  void Start(Node& node) override {
+    if (starter_) node.Send(*node.Lookup("b"), Bytes{1});
+  }
+  void ControlStep(Node&) override {}
+  void OnMessage(Node& node, const Message& m) override {
+    inbox_->push_back(m);
+    if (m.payload.size() < 4) {
+      Bytes reply = m.payload;
+      reply.push_back(static_cast<std::uint8_t>(reply.size() + 1));
+      node.Send(m.from, reply);
+    }
+  }
+
+ private:
+  std::vector<Message>* inbox_;
+  bool starter_;
+};
+
+TEST(World, MessagesTravelBetweenControllersOnTheSimulationClock) {
+  agents::Registry registry;
+  std::vector<Message> inbox_a, inbox_b;
+  registry.Add({"echo_a", "", [&](const Params&) { return std::make_unique<Echo>(&inbox_a, true); }});
+  registry.Add({"echo_b", "", [&](const Params&) { return std::make_unique<Echo>(&inbox_b, false); }});
+  sim::RunSpec spec = Spec(1, {Robot("a", ModelKind::kMote, {0, 0, 0}, UseController("echo_a", {})),
+                               Robot("b", ModelKind::kMote, {5, 0, 0}, UseController("echo_b", {}))});
+  spec.message_latency = 0.01;
+  sim::World world(spec, registry);
+  world.Run({});
+  ASSERT_EQ(inbox_b.size(), 2u);
+  ASSERT_EQ(inbox_a.size(), 2u);
+  EXPECT_EQ(inbox_b[0].from, 0u);
+  EXPECT_EQ(inbox_b[0].payload, Bytes{1});
+  EXPECT_NEAR(inbox_b[0].time_received - inbox_b[0].time_sent, 0.01, 1e-9);
+  EXPECT_EQ(inbox_a[1].payload, (Bytes{1, 2, 3, 4}));
+  EXPECT_NEAR(inbox_a[1].time_received, 0.04, 1e-9);
+}
+
+class Thrower : public Controller {
+ public:
+  void ControlStep(Node& node) override {
+    if (node.Now() > 0.5) throw std::runtime_error("sensor exploded");
+  }
+};
+
+TEST(World, AFailingControllerEndsTheRunButKeepsItsResults) {
+  agents::Registry registry;
+  registry.Add({"thrower", "", [](const Params&) { return std::make_unique<Thrower>(); }});
+  const std::string dir = ::testing::TempDir() + "/sanet-failing-run";
+  std::filesystem::remove_all(dir);
+  sim::World world(Spec(10, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("thrower", {}))}), registry);
+  try {
+    world.Run({dir, "test", false});
+    FAIL() << "the failure was not reported";
+  } catch (const sim::WorldError& e) {
+    EXPECT_NE(std::string(e.what()).find("sensor exploded"), std::string::npos);
+  }
+  const std::string summary = ReadFile(dir + "/summary.json");
+  EXPECT_NE(summary.find("failed: controller of r failed: sensor exploded"), std::string::npos) << summary;
+  EXPECT_NE(ReadFile(dir + "/trajectories.csv").find("0.000,r,"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/trajectories.csv.tmp"));
+}
+
+TEST(World, OnlyOneWorldAtATime) {
+  sim::World world(Spec(1, {Robot("m", ModelKind::kMote, {0, 0, 0})}), BuiltinRegistry());
+  EXPECT_THROW(sim::World(Spec(1, {Robot("m", ModelKind::kMote, {0, 0, 0})}), BuiltinRegistry()),
+               sim::WorldError);
+}
+
+TEST(World, WritesTrajectoriesForMovingNodesAndOnceForRestingOnes) {
+  const std::string dir = ::testing::TempDir() + "/sanet-outputs";
+  std::filesystem::remove_all(dir);
+  sim::World world(Spec(2, {Robot("r", ModelKind::kOmni3, {0, 0, 0},
+                                  UseController("constant_velocity", {{"vx", Scalar(0.3)}})),
+                            Robot("m", ModelKind::kMote, {5, 5, 0})}),
+                   BuiltinRegistry());
+  const sim::RunResult r = world.Run({dir, "test", false});
+  const std::string csv = ReadFile(dir + "/trajectories.csv");
+  std::size_t robot_rows = 0, mote_rows = 0;
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "time,node,x,y,theta");
+  while (std::getline(lines, line)) {
+    robot_rows += line.find(",r,") != std::string::npos;
+    mote_rows += line.find(",m,") != std::string::npos;
+  }
+  EXPECT_EQ(robot_rows, 21u) << "every 0.1 s from 0 to 2 s";
+  EXPECT_EQ(mote_rows, 2u) << "the start and the final pose";
+  EXPECT_EQ(r.physics_steps, 400u);
+  EXPECT_GT(r.events, r.physics_steps);
+  EXPECT_NE(ReadFile(dir + "/summary.json").find("\"fingerprint\": \"" + r.fingerprint + "\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sanet

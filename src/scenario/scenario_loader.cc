@@ -115,7 +115,7 @@ void ReadSensors(const Field& f, ModelSpec& m) {
     if (ir->IsScalar() && !ir->Bool()) {
       s.ir.reset();
     } else {
-      ir->ExpectKeys({"count", "max_range", "height", "noise"});
+      ir->ExpectKeys({"count", "angles", "max_range", "height", "noise"});
       const double radius = m.kind == ModelKind::kOmni3 ? m.omni3.body_radius
                             : m.kind == ModelKind::kDiffDrive ? m.diffdrive.body_width / 2
                                                               : m.mote.size / 2;
@@ -123,6 +123,12 @@ void ReadSensors(const Field& f, ModelSpec& m) {
       const double max_range = ir->Get("max_range") ? ir->Get("max_range")->NumberAbove(0, 100) : 0.8;
       const double height = ir->Get("height") ? ir->Get("height")->Number(0, 10) : 0.06;
       s.ir = RangeSensorSpec::Ring(count, radius, height, max_range);
+      if (auto angles = ir->Get("angles")) {
+        if (ir->Get("count")) angles->Fail("give either count (evenly spaced) or angles, not both");
+        s.ir->angles.clear();
+        for (const Field& a : angles->Items()) s.ir->angles.push_back(a.Number(-2 * kPi, 2 * kPi));
+        if (s.ir->angles.empty()) angles->Fail("needs at least one angle");
+      }
       Optional(*ir, "noise", s.ir->noise, 0, 100);
     }
   }

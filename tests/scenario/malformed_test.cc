@@ -103,3 +103,20 @@ TEST(Scenario, GridPlacesNodesRowByRow) {
 
 }  // namespace
 }  // namespace sanet
+
+namespace sanet {
+namespace {
+
+TEST(Scenario, IrAnglesReplaceTheEvenRing) {
+  const std::string path = ::testing::TempDir() + "/ir-angles.yaml";
+  std::ofstream(path) << "duration: 1\nnodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n"
+                         "    sensors: {ir: {angles: [0, 1.5708, -1.5708], max_range: 1.5}}\n";
+  const scenario::Scenario sc = scenario::LoadScenario(path);
+  const auto& ir = *sc.run.nodes[0].model.sensors.ir;
+  ASSERT_EQ(ir.angles.size(), 3u);
+  EXPECT_DOUBLE_EQ(ir.angles[2], -1.5708);
+  EXPECT_DOUBLE_EQ(ir.max_range, 1.5);
+}
+
+}  // namespace
+}  // namespace sanet

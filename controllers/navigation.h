@@ -32,7 +32,7 @@ class Pilot {
 
  private:
   enum class Mode { kGoal, kFollow };
-  // World heading to move along; sets `speed_scale` lower near obstacles.
+  // World heading to move along.
   double ChooseHeading(const Pose2D& pose, Vec2 goal, const RangeScan* scan, double dt);
 
   PilotSettings s_;

@@ -14,6 +14,22 @@ const char* ModelName(ModelKind kind) {
   return "?";
 }
 
+RangeSensorSpec DefaultIr(const ModelSpec& m) {
+  const double radius = m.kind == ModelKind::kOmni3 ? m.omni3.body_radius
+                        : m.kind == ModelKind::kDiffDrive ? m.diffdrive.body_width / 2
+                                                          : m.mote.size / 2;
+  return RangeSensorSpec::Ring(6, radius, 0.06, 0.8);
+}
+
+RangeSensorSpec DefaultLaser(const ModelSpec& m) {
+  // The diffdrive chassis is centred a quarter of the caster offset behind the axle.
+  const double front = m.kind == ModelKind::kDiffDrive
+                           ? m.diffdrive.body_length / 2 - m.diffdrive.caster_offset / 4 + 0.01
+                       : m.kind == ModelKind::kOmni3 ? m.omni3.body_radius
+                                                     : m.mote.size / 2;
+  return RangeSensorSpec::Fan(kPi, 181, front, 0.2, 8.0);
+}
+
 ModelSpec ModelSpec::Defaults(ModelKind kind) {
   ModelSpec s;
   s.kind = kind;
@@ -23,13 +39,12 @@ ModelSpec ModelSpec::Defaults(ModelKind kind) {
     case ModelKind::kOmni3:
       s.max_speed = 1.0;
       s.max_turn_rate = 3.0;
-      // Low on the body so that they also see motes (10 cm tall).
-      s.sensors.ir = RangeSensorSpec::Ring(6, s.omni3.body_radius, 0.06, 0.8);
+      s.sensors.ir = DefaultIr(s);
       break;
     case ModelKind::kDiffDrive:
       s.max_speed = 1.2;
       s.max_turn_rate = 3.0;
-      s.sensors.laser = RangeSensorSpec::Fan(kPi, 181, 0.18, 0.2, 8.0);
+      s.sensors.laser = DefaultLaser(s);
       break;
   }
   return s;

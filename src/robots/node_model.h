@@ -38,6 +38,11 @@ struct ModelSpec {
   static ModelSpec Defaults(ModelKind kind);
 };
 
+// The IR ring and the laser a model carries by default, placed on its body: the ring at the
+// body's edge, 6 cm up (low enough to see motes); the laser at the front, 20 cm up.
+RangeSensorSpec DefaultIr(const ModelSpec& model);
+RangeSensorSpec DefaultLaser(const ModelSpec& model);
+
 class NodeModel {
  public:
   // `seed` and `stream_prefix` give each sensor its own random stream.

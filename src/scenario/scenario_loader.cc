@@ -1,5 +1,6 @@
 #include "scenario/scenario_loader.h"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -15,6 +16,16 @@ using robots::ModelSpec;
 using robots::RangeSensorSpec;
 
 constexpr double kInf = HUGE_VAL;
+
+// Names end up in CSV files and folder names: keep them to letters, digits, '_', '-' and '.'.
+std::string ReadName(const Field& f) {
+  const std::string name = f.Text();
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
+      f.Fail("'" + name + "' may hold only letters, digits, '_', '-' and '.'");
+  if (name == "." || name == "..") f.Fail("'" + name + "' is not a name");
+  return name;
+}
 
 Vec2 ReadPoint(const Field& f) {
   const auto v = f.Numbers(2);
@@ -111,40 +122,46 @@ void ReadSensors(const Field& f, ModelSpec& m) {
   f.ExpectKeys({"ir", "laser", "odometry", "ground_truth", "bearing"});
   robots::SensorSuite& s = m.sensors;
   const bool mote = m.kind == ModelKind::kMote;
+  // `ir: false` removes a sensor, `ir: true` adds the default one, a mapping changes the keys it
+  // names on the default (or already present) sensor.
   if (auto ir = f.Get("ir")) {
-    if (ir->IsScalar() && !ir->Bool()) {
+    if (ir->IsScalar()) {
       s.ir.reset();
+      if (ir->Bool()) s.ir = robots::DefaultIr(m);
     } else {
       ir->ExpectKeys({"count", "angles", "max_range", "height", "noise"});
-      const double radius = m.kind == ModelKind::kOmni3 ? m.omni3.body_radius
-                            : m.kind == ModelKind::kDiffDrive ? m.diffdrive.body_width / 2
-                                                              : m.mote.size / 2;
-      const int count = ir->Get("count") ? ir->Get("count")->Integer(1, 360) : 6;
-      const double max_range = ir->Get("max_range") ? ir->Get("max_range")->NumberAbove(0, 100) : 0.8;
-      const double height = ir->Get("height") ? ir->Get("height")->Number(0, 10) : 0.06;
-      s.ir = RangeSensorSpec::Ring(count, radius, height, max_range);
+      if (!s.ir) s.ir = robots::DefaultIr(m);
+      if (auto count = ir->Get("count"))
+        s.ir->angles = RangeSensorSpec::Ring(count->Integer(1, 360), 0, 0, 1).angles;
       if (auto angles = ir->Get("angles")) {
         if (ir->Get("count")) angles->Fail("give either count (evenly spaced) or angles, not both");
         s.ir->angles.clear();
         for (const Field& a : angles->Items()) s.ir->angles.push_back(a.Number(-2 * kPi, 2 * kPi));
         if (s.ir->angles.empty()) angles->Fail("needs at least one angle");
       }
+      if (auto range = ir->Get("max_range")) s.ir->max_range = range->NumberAbove(0, 100);
+      Optional(*ir, "height", s.ir->mount_height, 0, 10);
       Optional(*ir, "noise", s.ir->noise, 0, 100);
     }
   }
   if (auto laser = f.Get("laser")) {
-    if (laser->IsScalar() && !laser->Bool()) {
+    if (laser->IsScalar()) {
       s.laser.reset();
+      if (laser->Bool()) s.laser = robots::DefaultLaser(m);
     } else {
       laser->ExpectKeys({"fov", "beams", "max_range", "height", "mount_x", "noise"});
-      const double fov = laser->Get("fov") ? laser->Get("fov")->NumberAbove(0, 2 * kPi) : kPi;
-      const int beams = laser->Get("beams") ? laser->Get("beams")->Integer(1, 10000) : 181;
-      const double max_range = laser->Get("max_range") ? laser->Get("max_range")->NumberAbove(0, 1000) : 8.0;
-      const double height = laser->Get("height") ? laser->Get("height")->Number(0, 10) : 0.2;
-      const double mount_x = laser->Get("mount_x") ? laser->Get("mount_x")->Number(-10, 10)
-                             : m.kind == ModelKind::kDiffDrive ? 0.18 : 0.0;
+      if (!s.laser) s.laser = robots::DefaultLaser(m);
+      const RangeSensorSpec& d = *s.laser;
+      const double fov = laser->Get("fov") ? laser->Get("fov")->NumberAbove(0, 2 * kPi)
+                                           : d.angles.back() - d.angles.front();
+      const int beams = laser->Get("beams") ? laser->Get("beams")->Integer(1, 10000)
+                                            : static_cast<int>(d.angles.size());
+      const double max_range = laser->Get("max_range") ? laser->Get("max_range")->NumberAbove(0, 1000) : d.max_range;
+      const double height = laser->Get("height") ? laser->Get("height")->Number(0, 10) : d.mount_height;
+      const double mount_x = laser->Get("mount_x") ? laser->Get("mount_x")->Number(-10, 10) : d.mount_x;
+      const double noise = d.noise;
       s.laser = RangeSensorSpec::Fan(fov, beams, mount_x, height, max_range);
-      if (m.kind == ModelKind::kOmni3) s.laser->mount_radius = 0;
+      s.laser->noise = noise;
       Optional(*laser, "noise", s.laser->noise, 0, 100);
     }
   }
@@ -221,7 +238,12 @@ struct NodeTemplate {
 NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir) {
   NodeTemplate t;
   t.model = ModelSpec::Defaults(ReadModel(f.Require("model")));
-  if (auto body = f.Get("body")) ReadBody(*body, t.model);
+  if (auto body = f.Get("body")) {
+    ReadBody(*body, t.model);
+    // The default sensors sit on the body: follow its new dimensions.
+    if (t.model.sensors.ir) t.model.sensors.ir = robots::DefaultIr(t.model);
+    if (t.model.sensors.laser) t.model.sensors.laser = robots::DefaultLaser(t.model);
+  }
   if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
   if (auto c = f.Get("controller")) {
     c->ExpectKeys({"name", "library", "rate", "params"});
@@ -229,7 +251,9 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir) {
     spec.name = c->Require("name").Text();
     if (auto lib = c->Get("library")) {
       fs::path p = lib->Text();
-      if (p.is_relative()) p = dir / p;
+      // Relative to the scenario's folder, and absolute so that dlopen does not search the
+      // system library path for a bare file name.
+      if (p.is_relative()) p = fs::absolute(dir / p);
       if (!fs::exists(p)) lib->Fail("no such file: " + p.string());
       spec.library = p.string();
     }
@@ -250,7 +274,7 @@ Scenario LoadScenario(const std::string& path) {
   sc.file = path;
   sim::RunSpec& run = sc.run;
   root.ExpectKeys({"name", "seed", "duration", "world", "nodes", "messages", "outputs"});
-  run.name = root.Get("name") ? root.Get("name")->Text() : fs::path(path).stem().string();
+  run.name = root.Get("name") ? ReadName(*root.Get("name")) : fs::path(path).stem().string();
   if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
   run.duration = root.Require("duration").NumberAbove(0, 1e9);
 
@@ -281,6 +305,7 @@ Scenario LoadScenario(const std::string& path) {
     if (!fresh) where.Fail("node name '" + node.name + "' is already used on line " + std::to_string(it->second));
     run.nodes.push_back(std::move(node));
     sc.controller_lines.push_back(controller_line);
+    sc.controller_fields.push_back(controller_line ? where.path().substr(0, where.path().find(']') + 1) + ".controller" : "");
   };
   const Field nodes = root.Require("nodes");
   for (const Field& n : nodes.Items()) {
@@ -288,7 +313,7 @@ Scenario LoadScenario(const std::string& path) {
       n.ExpectKeys({"grid", "model", "body", "sensors", "controller"});
       const Field g = n.Require("grid");
       g.ExpectKeys({"name", "rows", "cols", "origin", "spacing", "heading"});
-      const std::string prefix = g.Require("name").Text();
+      const std::string prefix = ReadName(g.Require("name"));
       const int rows = g.Require("rows").Integer(1, 10000);
       const int cols = g.Require("cols").Integer(1, 10000);
       const Vec2 origin = g.Get("origin") ? ReadPoint(*g.Get("origin")) : Vec2{0, 0};
@@ -310,7 +335,7 @@ Scenario LoadScenario(const std::string& path) {
     n.ExpectKeys({"name", "model", "pose", "body", "sensors", "controller"});
     const NodeTemplate t = ReadNodeTemplate(n, dir);
     const auto pose = n.Require("pose").Numbers(3);
-    add_node(n.Require("name"), {n.Require("name").Text(), t.model, {pose[0], pose[1], pose[2]}, t.controller},
+    add_node(n.Require("name"), {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller},
              t.controller_line);
   }
   if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
@@ -326,8 +351,12 @@ Scenario LoadScenario(const std::string& path) {
     if (auto interval = outputs->Get("trajectory_interval"))
       run.trajectory_interval = interval->NumberAbove(0, 1e6);
   }
-  if (run.trajectory_interval < run.physics_step)
-    root.Fail("outputs.trajectory_interval must be at least world.physics_step");
+  if (run.trajectory_interval < run.physics_step) {
+    const auto outputs = root.Get("outputs");
+    const auto interval = outputs ? outputs->Get("trajectory_interval") : std::nullopt;
+    (interval ? *interval : root).Fail("must be at least world.physics_step (" +
+                                        std::to_string(run.physics_step) + " s)");
+  }
   return sc;
 }
 
@@ -336,7 +365,14 @@ void CheckControllers(const Scenario& scenario, agents::Registry& registry) {
     const auto& node = scenario.run.nodes[i];
     if (!node.controller) continue;
     const int line = scenario.controller_lines[i];
-    const std::string field = "nodes." + node.name + ".controller";
+    const std::string& field = scenario.controller_fields[i];
+    if (!node.controller->library.empty()) {
+      try {
+        registry.LoadLibrary(node.controller->library);
+      } catch (const agents::RegistryError& e) {
+        throw ScenarioError(scenario.file, line, field + ".library", e.what());
+      }
+    }
     try {
       sim::MakeController(*node.controller, registry);
     } catch (const ParamError& e) {

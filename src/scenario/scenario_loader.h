@@ -15,6 +15,7 @@ struct Scenario {
   sim::RunSpec run;
   std::string output_folder;  // as given, or results/<name>
   std::vector<int> controller_lines;  // per node: line of its controller (0 if none)
+  std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"
 };
 
 // Reads and checks the file (structure, types, ranges, names). Does not look at controllers.

@@ -1,5 +1,6 @@
 // The immutable description of one run, as the scenario loader produces it and tests and
-// benchmarks build it directly. Units are SI; defaults are the documented scenario defaults.
+// benchmarks build it directly. Units are SI. Defaults match the scenario format's, except
+// that a scenario must give its duration and is named after its file by default.
 #pragma once
 
 #include <cstdint>

@@ -276,6 +276,7 @@ void World::WriteSummary(const RunOptions& options, RunResult& result) {
   j["events"] = result.events;
   j["physics_steps"] = result.physics_steps;
   j["physics_step_s"] = spec_.physics_step;
+  j["world_size_m"] = {spec_.world_size.x, spec_.world_size.y};
   j["fingerprint"] = result.fingerprint;
   j["profile_s"] = {{"physics", profile_.physics},
                     {"sensing", profile_.sensing},

@@ -35,15 +35,15 @@ const Case kCases[] = {
      "nodes[1].name", "already used on line 3"},
     {"unknown_controller",
      "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: wayponit\n", 7,
-     "nodes.r.controller.name", "unknown controller 'wayponit'"},
+     "nodes[0].controller.name", "unknown controller 'wayponit'"},
     {"controller_param_out_of_range",
      "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: waypoint\n"
      "      params:\n        waypoints: [[1, 1]]\n        speed: -1\n",
-     10, "nodes.r.controller.params.speed", "parameter 'speed' is -1"},
+     10, "nodes[0].controller.params.speed", "parameter 'speed' is -1"},
     {"unknown_controller_param",
      "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: waypoint\n"
      "      params:\n        waypoints: [[1, 1]]\n        sped: 1\n",
-     10, "nodes.r.controller.params.sped", "unknown parameter 'sped'"},
+     10, "nodes[0].controller.params.sped", "unknown parameter 'sped'"},
     {"missing_library",
      "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: mine\n"
      "      library: no/such/lib.so\n",
@@ -60,6 +60,14 @@ const Case kCases[] = {
     {"no_nodes", "nodes: []\n", 2, "nodes", "at least one node"},
     {"grid_rows_zero", "nodes:\n  - grid: {name: m, rows: 0, cols: 2}\n    model: mote\n", 3, "nodes[0].grid.rows",
      "must be between 1"},
+    {"name_with_a_comma", "nodes:\n  - {name: 'a,b', model: mote, pose: [0, 0, 0]}\n", 3, "nodes[0].name",
+     "may hold only letters"},
+    {"library_that_is_not_a_plugin",
+     "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: mine\n"
+     "      library: /lib/x86_64-linux-gnu/libm.so.6\n",
+     7, "nodes[0].controller.library", "not a sanet controller library"},
+    {"interval_below_physics_step", "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\noutputs:\n  trajectory_interval: 0.001\n",
+     5, "outputs.trajectory_interval", "at least world.physics_step"},
     {"odometry_on_a_mote", "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {odometry: {noise: 0.1}}\n",
      6, "nodes[0].sensors.odometry", "no odometry"},
 };
@@ -106,6 +114,19 @@ TEST(Scenario, GridPlacesNodesRowByRow) {
 
 namespace sanet {
 namespace {
+
+TEST(Scenario, DefaultSensorsFollowTheBodyAndTrueAddsOne) {
+  const std::string path = ::testing::TempDir() + "/sensor-defaults.yaml";
+  std::ofstream(path) << "duration: 1\nnodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n"
+                         "    body: {body_radius: 0.3}\n    sensors: {laser: true, ir: {noise: 0.01}}\n";
+  const scenario::Scenario sc = scenario::LoadScenario(path);
+  const auto& s = sc.run.nodes[0].model.sensors;
+  ASSERT_TRUE(s.ir && s.laser);
+  EXPECT_DOUBLE_EQ(s.ir->mount_radius, 0.3);
+  EXPECT_EQ(s.ir->angles.size(), 6u);
+  EXPECT_DOUBLE_EQ(s.ir->noise, 0.01);
+  EXPECT_EQ(s.laser->angles.size(), 181u);
+}
 
 TEST(Scenario, IrAnglesReplaceTheEvenRing) {
   const std::string path = ::testing::TempDir() + "/ir-angles.yaml";

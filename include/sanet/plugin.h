@@ -15,6 +15,9 @@
 // Bump whenever a header under include/sanet changes in a way that breaks binary compatibility.
 #define SANET_CONTROLLER_API_VERSION 1
 
-#define SANET_CONTROLLER_PLUGIN(registry)                                                  \
-  extern "C" int sanet_controller_api_version() { return SANET_CONTROLLER_API_VERSION; } \
-  extern "C" void sanet_register_controllers(::sanet::ControllerRegistry& registry)
+// The entry points stay visible when a library hides its other symbols (-fvisibility=hidden).
+#define SANET_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
+
+#define SANET_CONTROLLER_PLUGIN(registry)                                                      \
+  SANET_PLUGIN_EXPORT int sanet_controller_api_version() { return SANET_CONTROLLER_API_VERSION; } \
+  SANET_PLUGIN_EXPORT void sanet_register_controllers(::sanet::ControllerRegistry& registry)

@@ -7,6 +7,7 @@ namespace sanet::controllers {
 void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(ConstantVelocityInfo());
   registry.Add(WaypointInfo());
+  registry.Add(PingerInfo());
 }
 
 }  // namespace sanet::controllers

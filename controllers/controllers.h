@@ -7,5 +7,6 @@ namespace sanet::controllers {
 
 ControllerInfo ConstantVelocityInfo();
 ControllerInfo WaypointInfo();
+ControllerInfo PingerInfo();
 
 }  // namespace sanet::controllers

@@ -1,13 +1,9 @@
-// Messages between controllers. Payloads are bytes; TypedMessage helps to define small
-// fixed records without hand-packing.
+// Messages between controllers. Payloads are bytes; sanet/codec.h writes and reads typed fields.
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 #include <optional>
-#include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace sanet {
@@ -18,32 +14,18 @@ constexpr NodeId kBroadcast = 0xFFFFFFFFu;
 
 using Bytes = std::vector<std::uint8_t>;
 
+// How a message travelled: to one node (routed), to the neighbours (one hop), or flooded
+// through the whole network.
+enum class Delivery { kUnicast, kBroadcast, kFlood };
+
 struct Message {
+  Delivery delivery = Delivery::kUnicast;
   NodeId from = 0;
-  NodeId to = kBroadcast;        // kBroadcast for a one-hop broadcast
+  NodeId to = kBroadcast;        // kBroadcast for a broadcast or a flood
   double time_sent = 0;          // s, simulated (or wall) clock of the sender
   double time_received = 0;      // s
   std::optional<int> hops;       // hops travelled, where the transport knows it
   Bytes payload;
 };
-
-// Packs a trivially copyable struct into bytes and back, checking the size on the way in.
-// Both ends must be built for the same architecture (the same struct layout).
-template <typename T>
-Bytes Pack(const T& value) {
-  static_assert(std::is_trivially_copyable_v<T>, "Pack needs a trivially copyable type");
-  Bytes out(sizeof(T));
-  std::memcpy(out.data(), &value, sizeof(T));
-  return out;
-}
-
-template <typename T>
-std::optional<T> Unpack(const Bytes& bytes) {
-  static_assert(std::is_trivially_copyable_v<T>, "Unpack needs a trivially copyable type");
-  if (bytes.size() != sizeof(T)) return std::nullopt;
-  T value;
-  std::memcpy(&value, bytes.data(), sizeof(T));
-  return value;
-}
 
 }  // namespace sanet

@@ -76,9 +76,11 @@ class Node {
   // True for a holonomic drive (omni3), which honours vy.
   virtual bool Holonomic() const = 0;
 
-  // Messages: unicast (routed where the network routes) and one-hop broadcast.
+  // Messages: unicast (routed where the network routes), one-hop broadcast, and flooding
+  // through the whole network (every node relays it once).
   virtual void Send(NodeId to, const Bytes& payload) = 0;
   virtual void Broadcast(const Bytes& payload) = 0;
+  virtual void Flood(const Bytes& payload) = 0;
   virtual NetworkView& Network() = 0;
 
   // A line in the run's log (time and node are added).

@@ -44,6 +44,7 @@ class SimulatedNode : public Node {
 
   void Send(NodeId to, const Bytes& payload) override { transport_.Send(id_, to, payload); }
   void Broadcast(const Bytes& payload) override { transport_.Broadcast(id_, payload); }
+  void Flood(const Bytes& payload) override { transport_.Flood(id_, payload); }
   NetworkView& Network() override { return transport_.View(id_); }
   void Log(const std::string& text) override { directory_.Log(id_, text); }
 

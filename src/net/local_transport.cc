@@ -7,8 +7,10 @@ namespace sanet::net {
 LocalTransport::LocalTransport(std::size_t node_count, double latency_s)
     : node_count_(node_count), latency_(latency_s) {}
 
-void LocalTransport::Deliver(NodeId receiver, NodeId from, NodeId to, const Bytes& payload) {
+void LocalTransport::Deliver(NodeId receiver, NodeId from, NodeId to, Delivery delivery,
+                             const Bytes& payload) {
   Message m;
+  m.delivery = delivery;
   m.from = from;
   m.to = to;
   m.time_sent = ns3::Simulator::Now().GetSeconds();
@@ -22,12 +24,17 @@ void LocalTransport::Deliver(NodeId receiver, NodeId from, NodeId to, const Byte
 
 void LocalTransport::Send(NodeId from, NodeId to, const Bytes& payload) {
   if (to >= node_count_ || to == from) return;
-  Deliver(to, from, to, payload);
+  Deliver(to, from, to, Delivery::kUnicast, payload);
 }
 
 void LocalTransport::Broadcast(NodeId from, const Bytes& payload) {
   for (NodeId receiver = 0; receiver < node_count_; ++receiver)
-    if (receiver != from) Deliver(receiver, from, kBroadcast, payload);
+    if (receiver != from) Deliver(receiver, from, kBroadcast, Delivery::kBroadcast, payload);
+}
+
+void LocalTransport::Flood(NodeId from, const Bytes& payload) {
+  for (NodeId receiver = 0; receiver < node_count_; ++receiver)
+    if (receiver != from) Deliver(receiver, from, kBroadcast, Delivery::kFlood, payload);
 }
 
 }  // namespace sanet::net

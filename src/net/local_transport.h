@@ -14,6 +14,8 @@ class LocalTransport : public Transport {
   void SetReceiver(Receiver receiver) override { receiver_ = std::move(receiver); }
   void Send(NodeId from, NodeId to, const Bytes& payload) override;
   void Broadcast(NodeId from, const Bytes& payload) override;
+  // Without a network every node is a neighbour: a flood is a broadcast.
+  void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId) override { return view_; }
 
  private:
@@ -25,7 +27,7 @@ class LocalTransport : public Transport {
     bool InvalidateRoute(NodeId) override { return false; }
     void RequestRoute(NodeId) override {}
   };
-  void Deliver(NodeId receiver, NodeId from, NodeId to, const Bytes& payload);
+  void Deliver(NodeId receiver, NodeId from, NodeId to, Delivery delivery, const Bytes& payload);
 
   std::size_t node_count_;
   double latency_;

@@ -3,7 +3,9 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <algorithm>
 #include <map>
+#include <sstream>
 
 #include "sim/world.h"
 
@@ -25,6 +27,12 @@ std::string ReadName(const Field& f) {
       f.Fail("'" + name + "' may hold only letters, digits, '_', '-' and '.'");
   if (name == "." || name == "..") f.Fail("'" + name + "' is not a name");
   return name;
+}
+
+std::string FormatNumber(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
 }
 
 Vec2 ReadPoint(const Field& f) {
@@ -229,14 +237,88 @@ void ReadParams(const Field& controller, sim::ControllerSpec& c) {
   }
 }
 
+// Picks one of `choices` (name -> value) by the field's text.
+template <typename T>
+T ReadChoice(const Field& f, std::initializer_list<std::pair<const char*, T>> choices) {
+  const std::string text = f.Text();
+  std::string list;
+  for (const auto& [name, value] : choices) {
+    if (text == name) return value;
+    list += std::string(list.empty() ? "" : ", ") + name;
+  }
+  f.Fail("unknown value '" + text + "' (expected one of: " + list + ")");
+}
+
+net::NetworkSpec ReadNetwork(const Field& f) {
+  using namespace net;
+  f.ExpectKeys({"radio", "data_rate", "tx_power", "rx_threshold", "propagation", "delay", "routing",
+                "aodv_hello", "flood_ttl", "port", "pcap", "flow_monitor", "packet_log"});
+  NetworkSpec n;
+  if (auto radio = f.Get("radio")) {
+    const std::string text = radio->Text();
+    if (text == "802.15.4" || text == "lr-wpan" || text == "lrwpan")
+      radio->Fail("802.15.4 is not available: ns-3 carries only IPv6 (6LoWPAN) over it, and its AODV, "
+                  "OLSR, DSDV and DSR route IPv4 only");
+    n.standard = ReadChoice<WifiStandard>(
+        *radio, {{"802.11b", WifiStandard::k80211b}, {"802.11g", WifiStandard::k80211g}, {"802.11a", WifiStandard::k80211a}});
+  }
+  const std::vector<double> rates = DataRates(n.standard);
+  n.data_rate = rates.front();
+  if (auto rate = f.Get("data_rate")) {
+    n.data_rate = rate->Number(0, 1000);
+    if (std::find(rates.begin(), rates.end(), n.data_rate) == rates.end()) {
+      std::string list;
+      for (double r : rates) list += (list.empty() ? "" : ", ") + FormatNumber(r);
+      rate->Fail(std::string(StandardName(n.standard)) + " offers " + list + " Mbps");
+    }
+  }
+  Optional(f, "tx_power", n.tx_power, -50, 60);
+  Optional(f, "rx_threshold", n.rx_threshold, -150, 0);
+  if (auto p = f.Get("propagation")) {
+    p->ExpectKeys({"model", "exponent", "reference_loss", "reference_distance", "antenna_height", "max_range"});
+    if (auto model = p->Get("model"))
+      n.loss = ReadChoice<LossModel>(*model, {{"log_distance", LossModel::kLogDistance},
+                                             {"friis", LossModel::kFriis},
+                                             {"two_ray_ground", LossModel::kTwoRayGround}});
+    if (n.loss != LossModel::kLogDistance)
+      for (const char* key : {"exponent", "reference_loss", "reference_distance"})
+        if (auto k = p->Get(key)) k->Fail("applies to the log_distance model only");
+    if (n.loss != LossModel::kTwoRayGround)
+      if (auto k = p->Get("antenna_height")) k->Fail("applies to the two_ray_ground model only");
+    Optional(*p, "exponent", n.exponent, 1, 10);
+    Optional(*p, "reference_loss", n.reference_loss, 0, 200);
+    if (auto d = p->Get("reference_distance")) n.reference_distance = d->NumberAbove(0, 1e6);
+    Optional(*p, "antenna_height", n.antenna_height, 0, 1000);
+    Optional(*p, "max_range", n.max_range, 0, 1e7);
+  }
+  if (auto delay = f.Get("delay"))
+    n.delay = ReadChoice<DelayModel>(*delay, {{"constant_speed", DelayModel::kConstantSpeed}, {"random", DelayModel::kRandom}});
+  if (auto routing = f.Get("routing"))
+    n.routing = ReadChoice<Routing>(*routing, {{"aodv", Routing::kAodv}, {"olsr", Routing::kOlsr}, {"dsdv", Routing::kDsdv},
+                                               {"dsr", Routing::kDsr}, {"none", Routing::kNone}});
+  if (auto hello = f.Get("aodv_hello")) n.aodv_hello = hello->Bool();
+  if (auto ttl = f.Get("flood_ttl")) n.flood_ttl = ttl->Integer(1, 255);
+  if (auto port = f.Get("port")) n.port = static_cast<std::uint16_t>(port->Integer(1, 65535));
+  if (auto pcap = f.Get("pcap")) n.pcap = pcap->Bool();
+  if (auto fm = f.Get("flow_monitor")) n.flow_monitor = fm->Bool();
+  if (auto log = f.Get("packet_log")) n.packet_log = log->Bool();
+  return n;
+}
+
 struct NodeTemplate {
   ModelSpec model;
   std::optional<sim::ControllerSpec> controller;
   int controller_line = 0;
+  net::NodeRadio radio;
 };
 
-NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir) {
+NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_network) {
   NodeTemplate t;
+  if (auto radio = f.Get("radio")) {
+    if (!has_network) radio->Fail("a node's radio needs a 'network' section in the scenario");
+    radio->ExpectKeys({"tx_power"});
+    if (auto power = radio->Get("tx_power")) t.radio.tx_power = power->Number(-50, 60);
+  }
   t.model = ModelSpec::Defaults(ReadModel(f.Require("model")));
   if (auto body = f.Get("body")) {
     ReadBody(*body, t.model);
@@ -273,7 +355,8 @@ Scenario LoadScenario(const std::string& path) {
   Scenario sc;
   sc.file = path;
   sim::RunSpec& run = sc.run;
-  root.ExpectKeys({"name", "seed", "duration", "world", "nodes", "messages", "outputs"});
+  root.ExpectKeys({"name", "seed", "duration", "world", "network", "nodes", "messages", "outputs"});
+  if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   run.name = root.Get("name") ? ReadName(*root.Get("name")) : fs::path(path).stem().string();
   if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
   run.duration = root.Require("duration").NumberAbove(0, 1e9);
@@ -310,7 +393,7 @@ Scenario LoadScenario(const std::string& path) {
   const Field nodes = root.Require("nodes");
   for (const Field& n : nodes.Items()) {
     if (n.IsMap() && n.Get("grid")) {
-      n.ExpectKeys({"grid", "model", "body", "sensors", "controller"});
+      n.ExpectKeys({"grid", "model", "body", "sensors", "radio", "controller"});
       const Field g = n.Require("grid");
       g.ExpectKeys({"name", "rows", "cols", "origin", "spacing", "heading"});
       const std::string prefix = ReadName(g.Require("name"));
@@ -323,24 +406,25 @@ Scenario LoadScenario(const std::string& path) {
         if (spacing.x <= 0 || spacing.y <= 0) s->Fail("spacing must be greater than 0");
       }
       const double heading = g.Get("heading") ? g.Get("heading")->Number(-kInf, kInf) : 0;
-      const NodeTemplate t = ReadNodeTemplate(n, dir);
+      const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
       for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c)
           add_node(g.Require("name"),
                    {prefix + std::to_string(r * cols + c), t.model,
-                    {origin.x + c * spacing.x, origin.y + r * spacing.y, heading}, t.controller},
+                    {origin.x + c * spacing.x, origin.y + r * spacing.y, heading}, t.controller, t.radio},
                    t.controller_line);
       continue;
     }
-    n.ExpectKeys({"name", "model", "pose", "body", "sensors", "controller"});
-    const NodeTemplate t = ReadNodeTemplate(n, dir);
+    n.ExpectKeys({"name", "model", "pose", "body", "sensors", "radio", "controller"});
+    const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
     const auto pose = n.Require("pose").Numbers(3);
-    add_node(n.Require("name"), {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller},
+    add_node(n.Require("name"), {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
              t.controller_line);
   }
   if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
 
   if (auto messages = root.Get("messages")) {
+    if (run.network) messages->Fail("messages.latency is for runs without a network; with one, the network delivers");
     messages->ExpectKeys({"latency"});
     Optional(*messages, "latency", run.message_latency, 0, 1000);
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "net/network_spec.h"
 #include "physics/physics_world.h"
 #include "robots/node_model.h"
 #include "sanet/params.h"
@@ -26,6 +27,7 @@ struct NodeSpec {
   robots::ModelSpec model;
   Pose2D pose;
   std::optional<ControllerSpec> controller;
+  net::NodeRadio radio;  // overrides of the network's radio settings
 };
 
 struct Obstacle {
@@ -42,6 +44,8 @@ struct RunSpec {
   physics::WorldSettings physics;
   std::vector<Obstacle> obstacles;
   std::vector<NodeSpec> nodes;
+  // The wireless network; without one, messages are delivered locally after message_latency.
+  std::optional<net::NetworkSpec> network;
   double message_latency = 0.001;  // s, of the local transport
   double trajectory_interval = 0.1;  // s between trajectory samples
 };

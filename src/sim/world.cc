@@ -15,7 +15,9 @@
 #include "core/atomic_file.h"
 #include "core/fingerprint.h"
 #include "net/body_mobility_model.h"
+#include "core/statistics.h"
 #include "net/local_transport.h"
+#include "net/wireless_network.h"
 
 namespace sanet::sim {
 namespace {
@@ -62,13 +64,14 @@ std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, agents::R
 
 struct World::Outputs {
   trace::CsvSink trajectories, log, messages;
+  std::vector<double> delays;  // of every message delivered, s
   std::string failure;  // first controller error, which ends the run early
   Outputs(const std::string& dir)
       : trajectories(dir.empty() ? std::nullopt : std::optional(dir + "/trajectories.csv"),
                      "time,node,x,y,theta"),
         log(dir.empty() ? std::nullopt : std::optional(dir + "/log.csv"), "time,node,text"),
         messages(dir.empty() ? std::nullopt : std::optional(dir + "/messages.csv"),
-                 "time_received,from,to,time_sent,bytes") {}
+                 "time_sent,from,to,delivery,bytes,time_received,delay,hops") {}
 };
 
 World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
@@ -79,9 +82,6 @@ World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
     ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(spec.seed % 4294967295u) + 1);
     physics_ = physics::CreateOdeWorld(spec.physics);
     for (const Obstacle& o : spec.obstacles) physics_->add_static_box(o.box);
-
-    transport_ = std::make_unique<net::LocalTransport>(spec.nodes.size(), spec.message_latency);
-    transport_->SetReceiver([this](NodeId to, const Message& m) { Deliver(to, m); });
 
     ns3::NodeContainer ns3_nodes;
     ns3_nodes.Create(spec.nodes.size());
@@ -101,8 +101,22 @@ World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
             return ns3::Vector(v.vx, v.vy, 0);
           });
       ns3_nodes.Get(id)->AggregateObject(mobility);
-      nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_.back(),
-                                                               *transport_, *this));
+    }
+    if (spec.network) {
+      std::vector<std::string> names;
+      std::vector<net::NodeRadio> radios;
+      for (const NodeSpec& n : spec.nodes) {
+        names.push_back(n.name);
+        radios.push_back(n.radio);
+      }
+      transport_ = std::make_unique<net::WirelessNetwork>(*spec.network, ns3_nodes, names, radios);
+    } else {
+      transport_ = std::make_unique<net::LocalTransport>(spec.nodes.size(), spec.message_latency);
+    }
+    transport_->SetReceiver([this](NodeId to, const Message& m) { Deliver(to, m); });
+    for (NodeId id = 0; id < spec.nodes.size(); ++id) {
+      const NodeSpec& n = spec.nodes[id];
+      nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this));
       controllers_.push_back(n.controller ? MakeController(*n.controller, registry) : nullptr);
     }
   } catch (...) {
@@ -135,9 +149,13 @@ void World::Log(NodeId node, const std::string& text) {
 }
 
 void World::Deliver(NodeId to, const Message& m) {
-  out_->messages.Row(Format("%.6f,%s,%s,%.6f,%zu", m.time_received, spec_.nodes.at(m.from).name.c_str(),
-                            m.to == kBroadcast ? "*" : spec_.nodes.at(m.to).name.c_str(), m.time_sent,
-                            m.payload.size()));
+  static const char* kDelivery[] = {"unicast", "broadcast", "flood"};
+  const double delay = m.time_received - m.time_sent;
+  out_->delays.push_back(delay);
+  out_->messages.Row(Format("%.6f,%s,%s,%s,%zu,%.6f,%.6f,%s", m.time_sent, spec_.nodes.at(m.from).name.c_str(),
+                            spec_.nodes.at(to).name.c_str(), kDelivery[static_cast<int>(m.delivery)],
+                            m.payload.size(), m.time_received, delay,
+                            m.hops ? std::to_string(*m.hops).c_str() : ""));
   if (!controllers_.at(to)) return;
   StageTimer timer(profile_.controllers);
   try {
@@ -229,7 +247,11 @@ RunResult World::Run(const RunOptions& options) {
     ns3::Simulator::Schedule(Period(spec_.trajectory_interval), record);
   };
   ns3::Simulator::ScheduleNow(record);
-  ns3::Simulator::Schedule(Period(spec_.physics_step), &World::PhysicsStep, this);
+  // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
+  bool vehicles = false;
+  for (const auto& m : models_) vehicles = vehicles || m->mobile();
+  if (vehicles) ns3::Simulator::Schedule(Period(spec_.physics_step), &World::PhysicsStep, this);
+  transport_->Open(options.output_dir);
   wall_start_ = last_progress_ = std::chrono::steady_clock::now();
   if (options.progress) ns3::Simulator::ScheduleNow(&World::ShowProgress, this);
 
@@ -253,17 +275,19 @@ RunResult World::Run(const RunOptions& options) {
   fp.Add(out_->trajectories.hash());
   fp.Add(out_->log.hash());
   fp.Add(out_->messages.hash());
+  nlohmann::ordered_json network_summary;
+  transport_->Finish(fp, network_summary, result.files);
   result.fingerprint = fp.Hex();
   result.profile = profile_;
   if (!options.output_dir.empty()) {
-    result.files = {"trajectories.csv", "log.csv", "messages.csv", "summary.json"};
-    WriteSummary(options, result);
+    for (const char* f : {"trajectories.csv", "log.csv", "messages.csv", "summary.json"}) result.files.push_back(f);
+    WriteSummary(options, result, network_summary);
   }
   if (!out_->failure.empty()) throw WorldError(out_->failure);
   return result;
 }
 
-void World::WriteSummary(const RunOptions& options, RunResult& result) {
+void World::WriteSummary(const RunOptions& options, RunResult& result, const nlohmann::ordered_json& extra) {
   nlohmann::ordered_json j;
   j["scenario"] = options.scenario_file;
   j["name"] = spec_.name;
@@ -294,6 +318,8 @@ void World::WriteSummary(const RunOptions& options, RunResult& result) {
   j["rows"] = {{"trajectories", out_->trajectories.rows()},
                {"log", out_->log.rows()},
                {"messages", out_->messages.rows()}};
+  j["message_delay_s"] = Quartiles(out_->delays);
+  for (const auto& [key, value] : extra.items()) j[key] = value;
   j["files"] = result.files;
   WriteFileAtomically(options.output_dir + "/summary.json", j.dump(2) + "\n");
 }

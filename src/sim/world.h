@@ -7,6 +7,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -81,7 +82,7 @@ class World : public agents::NodeDirectory {
   void Record(bool final_row);
   void Deliver(NodeId to, const Message& message);
   void ShowProgress();
-  void WriteSummary(const RunOptions& options, RunResult& result);
+  void WriteSummary(const RunOptions& options, RunResult& result, const nlohmann::ordered_json& extra);
 
   RunSpec spec_;
   std::unique_ptr<physics::PhysicsWorld> physics_;

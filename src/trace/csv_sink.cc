@@ -2,7 +2,8 @@
 
 namespace sanet::trace {
 
-CsvSink::CsvSink(std::optional<std::string> path, std::string_view header) {
+CsvSink::CsvSink(std::optional<std::string> path, std::string_view header, std::size_t buffer_bytes)
+    : buffer_bytes_(buffer_bytes) {
   if (path) file_ = std::make_unique<AtomicFile>(*path);
   buffer_.append(header);
   buffer_.push_back('\n');
@@ -12,7 +13,7 @@ void CsvSink::Row(std::string_view line) {
   buffer_.append(line);
   buffer_.push_back('\n');
   ++rows_;
-  if (buffer_.size() > (1u << 20)) Flush();
+  if (buffer_.size() > buffer_bytes_) Flush();
 }
 
 void CsvSink::Flush() {

@@ -14,7 +14,8 @@ namespace sanet::trace {
 
 class CsvSink {
  public:
-  CsvSink(std::optional<std::string> path, std::string_view header);
+  // Rows are buffered up to `buffer_bytes` before they go to the file.
+  CsvSink(std::optional<std::string> path, std::string_view header, std::size_t buffer_bytes = 1 << 20);
   void Row(std::string_view line);  // without the newline
   void Commit();                    // flush and move into place
   std::uint64_t hash() const { return fingerprint_.Value(); }
@@ -26,6 +27,7 @@ class CsvSink {
   std::string buffer_;
   Fingerprint fingerprint_;
   std::size_t rows_ = 0;
+  std::size_t buffer_bytes_;
 };
 
 // Quotes a CSV field when it holds a comma, quote or newline.

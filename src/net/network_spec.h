@@ -1,0 +1,51 @@
+// The wireless network of a run: radio, propagation, routing and what to trace. All of it is
+// built from ns-3's own models (see wireless_network.cc); defaults are the scenario defaults.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sanet::net {
+
+enum class WifiStandard { k80211b, k80211g, k80211a };
+enum class LossModel { kLogDistance, kFriis, kTwoRayGround };
+enum class DelayModel { kConstantSpeed, kRandom };
+enum class Routing { kNone, kAodv, kOlsr, kDsdv, kDsr };
+
+const char* RoutingName(Routing routing);
+const char* StandardName(WifiStandard standard);
+// The data rates (Mbps) a standard offers.
+std::vector<double> DataRates(WifiStandard standard);
+
+struct NetworkSpec {
+  WifiStandard standard = WifiStandard::k80211b;
+  double data_rate = 1;       // Mbps, one of the standard's rates; broadcasts go at the lowest
+  double tx_power = 16;       // dBm, every node unless it overrides it
+  double rx_threshold = -82;  // dBm: frames received weaker than this are not detected
+
+  LossModel loss = LossModel::kLogDistance;
+  double exponent = 3.0;            // log-distance path-loss exponent
+  double reference_loss = 46.6777;  // dB at reference_distance (log-distance)
+  double reference_distance = 1.0;  // m
+  double antenna_height = 1.0;      // m above each node, for two-ray ground
+  double max_range = 0;             // m; beyond it nothing is received (0: no cut-off)
+  DelayModel delay = DelayModel::kConstantSpeed;
+
+  Routing routing = Routing::kAodv;
+  bool aodv_hello = true;  // AODV hello messages (neighbour sensing)
+  int flood_ttl = 16;      // hops a flooded message may travel
+
+  std::uint16_t port = 9000;  // UDP port of controller messages
+  bool pcap = false;          // a pcap file per node (802.11 frames)
+  bool flow_monitor = false;  // ns-3 FlowMonitor statistics (XML)
+  bool packet_log = true;     // a CSV of packet events per node
+};
+
+// Radio settings a node may override.
+struct NodeRadio {
+  std::optional<double> tx_power;  // dBm
+};
+
+}  // namespace sanet::net

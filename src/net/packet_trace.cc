@@ -1,0 +1,188 @@
+#include "net/packet_trace.h"
+
+#include <ns3/aodv-packet.h>
+#include <ns3/node.h>
+#include <ns3/simulator.h>
+#include <ns3/udp-header.h>
+#include <ns3/wifi-mac.h>
+#include <ns3/wifi-net-device.h>
+
+#include <cstdio>
+
+namespace sanet::net {
+namespace {
+
+constexpr std::uint8_t kUdp = 17;
+constexpr std::uint16_t kAodvPort = 654, kOlsrPort = 698, kDsdvPort = 269;
+
+const char* EventName(int e) {
+  static const char* names[] = {"sent", "received", "forwarded", "dropped"};
+  return names[e];
+}
+
+const char* DropName(ns3::Ipv4L3Protocol::DropReason reason) {
+  switch (reason) {
+    case ns3::Ipv4L3Protocol::DROP_TTL_EXPIRED: return "ttl_expired";
+    case ns3::Ipv4L3Protocol::DROP_NO_ROUTE: return "no_route";
+    case ns3::Ipv4L3Protocol::DROP_BAD_CHECKSUM: return "bad_checksum";
+    case ns3::Ipv4L3Protocol::DROP_INTERFACE_DOWN: return "interface_down";
+    case ns3::Ipv4L3Protocol::DROP_ROUTE_ERROR: return "route_error";
+    case ns3::Ipv4L3Protocol::DROP_FRAGMENT_TIMEOUT: return "fragment_timeout";
+    case ns3::Ipv4L3Protocol::DROP_DUPLICATE: return "duplicate";
+  }
+  return "other";
+}
+
+}  // namespace
+
+PacketTrace::PacketTrace(const NetworkSpec& spec, const AddressBook& book, std::vector<std::string> names)
+    : spec_(spec), book_(book), names_(std::move(names)), counts_(names_.size()) {}
+
+void PacketTrace::Open(const std::string& dir) {
+  logs_.clear();
+  if (!spec_.packet_log) return;
+  for (const std::string& name : names_)
+    logs_.push_back(std::make_unique<trace::CsvSink>(
+        dir.empty() ? std::nullopt : std::optional(dir + "/packets/" + name + ".csv"),
+        "time,event,protocol,bytes,peer,reason", 64 * 1024));
+}
+
+void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {
+  auto ip = n->GetObject<ns3::Ipv4L3Protocol>();
+  ip->TraceConnectWithoutContext(
+      "SendOutgoing", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
+                          [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                            Record(node, Event::kSent, h, p);
+                          }));
+  ip->TraceConnectWithoutContext(
+      "UnicastForward", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
+                            [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                              Record(node, Event::kForwarded, h, p);
+                            }));
+  ip->TraceConnectWithoutContext(
+      "LocalDeliver", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
+                          [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                            Record(node, Event::kReceived, h, p);
+                            if (spec_.routing == Routing::kAodv) CheckRouteReply(node, h, p);
+                          }));
+  ip->TraceConnectWithoutContext(
+      "Drop", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>,
+                            ns3::Ipv4L3Protocol::DropReason, ns3::Ptr<ns3::Ipv4>, uint32_t>(
+                  [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p,
+                               ns3::Ipv4L3Protocol::DropReason reason, ns3::Ptr<ns3::Ipv4>, uint32_t) {
+                    Record(node, Event::kDropped, h, p, DropName(reason));
+                  }));
+  for (std::uint32_t i = 0; i < n->GetNDevices(); ++i) {
+    auto wifi = ns3::DynamicCast<ns3::WifiNetDevice>(n->GetDevice(i));
+    if (!wifi) continue;
+    wifi->GetMac()->TraceConnectWithoutContext(
+        "MacTxDrop", ns3::Callback<void, ns3::Ptr<const ns3::Packet>>([this, node](ns3::Ptr<const ns3::Packet> p) {
+          ++counts_[node].dropped;
+          if (!logs_.empty())
+            logs_[node]->Row(std::to_string(ns3::Simulator::Now().GetSeconds()) + ",dropped,mac," +
+                             std::to_string(p->GetSize()) + ",,retries_exhausted");
+        }));
+  }
+}
+
+std::string PacketTrace::Protocol(const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) const {
+  if (ip.GetProtocol() != kUdp) return ip.GetProtocol() == 48 ? "dsr" : "ip";
+  ns3::UdpHeader udp;
+  if (packet->PeekHeader(udp) == 0) return "udp";
+  const std::uint16_t port = udp.GetDestinationPort();
+  if (port == spec_.port) return "sanet";
+  if (port == kAodvPort) return "aodv";
+  if (port == kOlsrPort) return "olsr";
+  if (port == kDsdvPort) return "dsdv";
+  return "udp";
+}
+
+std::string PacketTrace::Peer(ns3::Ipv4Address address) const {
+  if (auto id = book_.Find(address)) return names_[*id];
+  if (address.IsBroadcast() || address.IsSubnetDirectedBroadcast(ns3::Ipv4Mask(AddressBook::kMask))) return "*";
+  std::ostringstream s;
+  address.Print(s);
+  return s.str();
+}
+
+void PacketTrace::Record(NodeId node, Event event, const ns3::Ipv4Header& ip,
+                         ns3::Ptr<const ns3::Packet> packet, const char* why) {
+  PacketCounts& c = counts_[node];
+  switch (event) {
+    case Event::kSent: ++c.sent; break;
+    case Event::kReceived: ++c.received; break;
+    case Event::kForwarded: ++c.forwarded; break;
+    case Event::kDropped: ++c.dropped; break;
+  }
+  if (logs_.empty()) return;
+  char time[32];
+  std::snprintf(time, sizeof time, "%.6f", ns3::Simulator::Now().GetSeconds());
+  const ns3::Ipv4Address peer = event == Event::kReceived ? ip.GetSource() : ip.GetDestination();
+  logs_[node]->Row(std::string(time) + "," + EventName(static_cast<int>(event)) + "," + Protocol(ip, packet) +
+                   "," + std::to_string(packet->GetSize()) + "," + Peer(peer) + "," + why);
+}
+
+void PacketTrace::RouteNeeded(NodeId node, NodeId destination, double now) {
+  if (pending_.count({node, destination})) return;
+  pending_[{node, destination}] = discoveries_.size();
+  discoveries_.push_back({node, destination, now, std::nullopt});
+}
+
+// A route reply addressed to the node that asked ends that node's discovery.
+void PacketTrace::CheckRouteReply(NodeId node, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) {
+  if (ip.GetProtocol() != kUdp || pending_.empty()) return;
+  ns3::Ptr<ns3::Packet> p = packet->Copy();
+  ns3::UdpHeader udp;
+  p->RemoveHeader(udp);
+  if (udp.GetDestinationPort() != kAodvPort) return;
+  ns3::aodv::TypeHeader type;
+  p->RemoveHeader(type);
+  if (!type.IsValid() || type.Get() != ns3::aodv::AODVTYPE_RREP) return;
+  ns3::aodv::RrepHeader reply;
+  p->RemoveHeader(reply);
+  const auto origin = book_.Find(reply.GetOrigin());
+  const auto destination = book_.Find(reply.GetDst());
+  if (!origin || *origin != node || !destination) return;
+  auto it = pending_.find({node, *destination});
+  if (it == pending_.end()) return;
+  discoveries_[it->second].established = ns3::Simulator::Now().GetSeconds();
+  pending_.erase(it);
+}
+
+std::vector<std::string> PacketTrace::Write(const std::string& dir, Fingerprint& fingerprint) {
+  const auto path = [&](const char* name) { return dir.empty() ? std::nullopt : std::optional(dir + "/" + name); };
+  trace::CsvSink packets(path("packets.csv"),
+                         "node,sent,received,forwarded,dropped,messages_sent,messages_received");
+  for (NodeId id = 0; id < counts_.size(); ++id) {
+    const PacketCounts& c = counts_[id];
+    char row[256];
+    std::snprintf(row, sizeof row, "%s,%llu,%llu,%llu,%llu,%llu,%llu", names_[id].c_str(),
+                  (unsigned long long)c.sent, (unsigned long long)c.received, (unsigned long long)c.forwarded,
+                  (unsigned long long)c.dropped, (unsigned long long)c.messages_sent,
+                  (unsigned long long)c.messages_received);
+    packets.Row(row);
+  }
+  packets.Commit();
+  trace::CsvSink routes(path("routes.csv"), "node,destination,started,established,duration");
+  for (const Discovery& d : discoveries_) {
+    char row[256];
+    if (d.established)
+      std::snprintf(row, sizeof row, "%s,%s,%.6f,%.6f,%.6f", names_[d.node].c_str(), names_[d.destination].c_str(),
+                    d.started, *d.established, *d.established - d.started);
+    else
+      std::snprintf(row, sizeof row, "%s,%s,%.6f,,", names_[d.node].c_str(), names_[d.destination].c_str(), d.started);
+    routes.Row(row);
+  }
+  routes.Commit();
+  fingerprint.Add(packets.hash());
+  fingerprint.Add(routes.hash());
+  std::vector<std::string> files = {"packets.csv", "routes.csv"};
+  for (auto& log : logs_) {
+    log->Commit();
+    fingerprint.Add(log->hash());
+  }
+  if (!logs_.empty()) files.push_back("packets/");
+  return files;
+}
+
+}  // namespace sanet::net

@@ -1,0 +1,70 @@
+// What the network did, per node: IP packets sent (originated, including routing traffic),
+// received (delivered locally, broadcasts included), forwarded and dropped (by IP: no route,
+// TTL, ...; by the MAC: retries exhausted), controller messages sent and received; and every
+// AODV route discovery (from the first packet that needed the route to the route reply).
+#pragma once
+
+#include <ns3/ipv4-header.h>
+#include <ns3/ipv4-l3-protocol.h>
+#include <ns3/packet.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "net/address_book.h"
+#include "net/network_spec.h"
+#include "trace/csv_sink.h"
+
+namespace sanet::net {
+
+struct PacketCounts {
+  std::uint64_t sent = 0, received = 0, forwarded = 0, dropped = 0;
+  std::uint64_t messages_sent = 0, messages_received = 0;
+};
+
+struct Discovery {
+  NodeId node, destination;
+  double started;
+  std::optional<double> established;
+};
+
+class PacketTrace {
+ public:
+  PacketTrace(const NetworkSpec& spec, const AddressBook& book, std::vector<std::string> names);
+
+  // Connects to the node's IP layer and MAC (before the run).
+  void Attach(NodeId node, ns3::Ptr<ns3::Node> ns3_node);
+  // Opens the per-node packet logs under `dir` ("" for none).
+  void Open(const std::string& dir);
+
+  void MessageSent(NodeId node) { ++counts_[node].messages_sent; }
+  void MessageReceived(NodeId node) { ++counts_[node].messages_received; }
+  // A packet to `destination` is waiting for a route (AODV): a discovery starts unless one is on.
+  void RouteNeeded(NodeId node, NodeId destination, double now);
+
+  const std::vector<PacketCounts>& counts() const { return counts_; }
+  const std::vector<Discovery>& discoveries() const { return discoveries_; }
+  // Writes packets.csv, routes.csv and the packet logs; returns the names written.
+  std::vector<std::string> Write(const std::string& dir, Fingerprint& fingerprint);
+
+ private:
+  enum class Event { kSent, kReceived, kForwarded, kDropped };
+  void Record(NodeId node, Event event, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet,
+              const char* why = "");
+  void CheckRouteReply(NodeId node, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet);
+  std::string Protocol(const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) const;
+  std::string Peer(ns3::Ipv4Address address) const;
+
+  const NetworkSpec& spec_;
+  const AddressBook& book_;
+  std::vector<std::string> names_;
+  std::vector<PacketCounts> counts_;
+  std::vector<std::unique_ptr<trace::CsvSink>> logs_;
+  std::vector<Discovery> discoveries_;
+  std::map<std::pair<NodeId, NodeId>, std::size_t> pending_;  // (node, destination) -> discovery
+};
+
+}  // namespace sanet::net

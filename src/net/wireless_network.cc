@@ -1,0 +1,338 @@
+#include "net/wireless_network.h"
+
+#include <ns3/aodv-helper.h>
+#include <ns3/double.h>
+#include <ns3/boolean.h>
+#include <ns3/dsdv-helper.h>
+#include <ns3/dsr-helper.h>
+#include <ns3/dsr-main-helper.h>
+#include <ns3/inet-socket-address.h>
+#include <ns3/internet-stack-helper.h>
+#include <ns3/ipv4-address-helper.h>
+#include <ns3/ipv4-static-routing-helper.h>
+#include <ns3/olsr-helper.h>
+#include <ns3/simulator.h>
+#include <ns3/string.h>
+#include <ns3/udp-socket-factory.h>
+#include <ns3/wifi-helper.h>
+#include <ns3/wifi-net-device.h>
+#include <ns3/yans-wifi-helper.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/statistics.h"
+
+namespace sanet::net {
+namespace {
+
+constexpr std::uint8_t kDefaultTtl = 64;  // ns-3's Ipv4L3Protocol::DefaultTtl
+constexpr std::uint32_t kDltIeee80211 = 105;
+
+std::string RateName(double mbps) {
+  char s[32];
+  if (mbps == 5.5) return "5_5";
+  std::snprintf(s, sizeof s, "%g", mbps);
+  return s;
+}
+
+// ns-3's names of the modes (data rates) of each standard.
+std::string ModeName(WifiStandard standard, double mbps) {
+  switch (standard) {
+    case WifiStandard::k80211b: return "DsssRate" + RateName(mbps) + "Mbps";
+    case WifiStandard::k80211g: return "ErpOfdmRate" + RateName(mbps) + "Mbps";
+    case WifiStandard::k80211a: return "OfdmRate" + RateName(mbps) + "Mbps";
+  }
+  return "";
+}
+
+double FrequencyHz(WifiStandard standard) {
+  return standard == WifiStandard::k80211a ? 5.18e9 : 2.412e9;  // channel 36, channel 1
+}
+
+}  // namespace
+
+WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes,
+                                 std::vector<std::string> names, const std::vector<NodeRadio>& radios)
+    : spec_(spec),
+      nodes_(nodes),
+      book_(nodes.GetN()),
+      names_(names),
+      trace_(spec_, book_, std::move(names)),
+      next_sequence_(nodes.GetN(), 0),
+      floods_seen_(nodes.GetN()) {
+  InstallRadios(radios);
+  InstallInternet();
+  OpenSockets();
+  jitter_ = ns3::CreateObject<ns3::UniformRandomVariable>();
+  jitter_->SetAttribute("Min", ns3::DoubleValue(0));
+  jitter_->SetAttribute("Max", ns3::DoubleValue(0.01));
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) trace_.Attach(id, nodes_.Get(id));
+  if (spec_.flow_monitor) {
+    flow_helper_ = std::make_unique<ns3::FlowMonitorHelper>();
+    flow_monitor_ = flow_helper_->Install(nodes_);
+  }
+}
+
+WirelessNetwork::~WirelessNetwork() {
+  for (auto& socket : sockets_) socket->SetRecvCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>());
+}
+
+void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
+  ns3::WifiHelper wifi;
+  wifi.SetStandard(spec_.standard == WifiStandard::k80211b   ? ns3::WIFI_STANDARD_80211b
+                   : spec_.standard == WifiStandard::k80211g ? ns3::WIFI_STANDARD_80211g
+                                                             : ns3::WIFI_STANDARD_80211a);
+  const std::string data_mode = ModeName(spec_.standard, spec_.data_rate);
+  const std::string control_mode = ModeName(spec_.standard, DataRates(spec_.standard).front());
+  wifi.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode),
+                               "ControlMode", ns3::StringValue(control_mode));
+
+  ns3::YansWifiChannelHelper channel;
+  channel.SetPropagationDelay(spec_.delay == DelayModel::kConstantSpeed ? "ns3::ConstantSpeedPropagationDelayModel"
+                                                                        : "ns3::RandomPropagationDelayModel");
+  switch (spec_.loss) {
+    case LossModel::kLogDistance:
+      channel.AddPropagationLoss("ns3::LogDistancePropagationLossModel", "Exponent", ns3::DoubleValue(spec_.exponent),
+                                 "ReferenceDistance", ns3::DoubleValue(spec_.reference_distance),
+                                 "ReferenceLoss", ns3::DoubleValue(spec_.reference_loss));
+      break;
+    case LossModel::kFriis:
+      channel.AddPropagationLoss("ns3::FriisPropagationLossModel", "Frequency",
+                                 ns3::DoubleValue(FrequencyHz(spec_.standard)));
+      break;
+    case LossModel::kTwoRayGround:
+      channel.AddPropagationLoss("ns3::TwoRayGroundPropagationLossModel", "Frequency",
+                                 ns3::DoubleValue(FrequencyHz(spec_.standard)), "HeightAboveZ",
+                                 ns3::DoubleValue(spec_.antenna_height));
+      break;
+  }
+  if (spec_.max_range > 0)
+    channel.AddPropagationLoss("ns3::RangePropagationLossModel", "MaxRange", ns3::DoubleValue(spec_.max_range));
+
+  ns3::YansWifiPhyHelper phy;
+  phy.SetChannel(channel.Create());
+  phy.SetPreambleDetectionModel("ns3::ThresholdPreambleDetectionModel", "MinimumRssi",
+                                ns3::DoubleValue(spec_.rx_threshold));
+  ns3::WifiMacHelper mac;
+  mac.SetType("ns3::AdhocWifiMac");
+  // One node at a time: a node may transmit with its own power.
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
+    const double power = radios.at(id).tx_power.value_or(spec_.tx_power);
+    phy.Set("TxPowerStart", ns3::DoubleValue(power));
+    phy.Set("TxPowerEnd", ns3::DoubleValue(power));
+    devices_.Add(wifi.Install(phy, mac, nodes_.Get(id)));
+  }
+}
+
+void WirelessNetwork::InstallInternet() {
+  ns3::InternetStackHelper internet;
+  ns3::AodvHelper aodv;
+  ns3::OlsrHelper olsr;
+  ns3::DsdvHelper dsdv;
+  ns3::Ipv4StaticRoutingHelper one_hop;  // the subnet route: neighbours only
+  switch (spec_.routing) {
+    case Routing::kAodv:
+      aodv.Set("EnableHello", ns3::BooleanValue(spec_.aodv_hello));
+      internet.SetRoutingHelper(aodv);
+      break;
+    case Routing::kOlsr: internet.SetRoutingHelper(olsr); break;
+    case Routing::kDsdv: internet.SetRoutingHelper(dsdv); break;
+    case Routing::kNone:
+    case Routing::kDsr: internet.SetRoutingHelper(one_hop); break;
+  }
+  internet.Install(nodes_);
+  if (spec_.routing == Routing::kDsr) {
+    ns3::DsrHelper dsr;
+    ns3::DsrMainHelper dsr_main;
+    dsr_main.Install(dsr, nodes_);
+  }
+  ns3::Ipv4AddressHelper addresses;
+  addresses.SetBase(AddressBook::kNetwork, AddressBook::kMask);
+  addresses.Assign(devices_);
+}
+
+void WirelessNetwork::OpenSockets() {
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
+    auto socket = ns3::Socket::CreateSocket(nodes_.Get(id), ns3::UdpSocketFactory::GetTypeId());
+    socket->Bind(ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), spec_.port));
+    socket->SetAllowBroadcast(true);
+    socket->SetIpRecvTtl(true);
+    socket->SetRecvCallback(ns3::Callback<void, ns3::Ptr<ns3::Socket>>(
+        [this, id](ns3::Ptr<ns3::Socket> s) { Receive(id, s); }));
+    sockets_.push_back(socket);
+    views_.push_back(std::make_unique<RoutingView>(spec_.routing, nodes_.Get(id), book_, [this, id](NodeId to) {
+      if (to >= nodes_.GetN() || to == id) return;
+      if (spec_.routing == Routing::kAodv && !views_[id]->HasValidRoute(to))
+        trace_.RouteNeeded(id, to, ns3::Simulator::Now().GetSeconds());
+      Transmit(id, book_.Of(to), NewHeader(id, MessageHeader::kRouteProbe, to), {});
+    }));
+  }
+}
+
+MessageHeader WirelessNetwork::NewHeader(NodeId from, MessageHeader::Kind kind, NodeId destination) {
+  MessageHeader h;
+  h.kind = kind;
+  h.origin = from;
+  h.destination = destination;
+  h.sequence = next_sequence_[from]++;
+  h.time_sent_ns = ns3::Simulator::Now().GetNanoSeconds();
+  h.ttl = static_cast<std::uint8_t>(spec_.flood_ttl);
+  return h;
+}
+
+void WirelessNetwork::Transmit(NodeId from, ns3::Ipv4Address to, const MessageHeader& header, const Bytes& payload) {
+  auto packet = ns3::Create<ns3::Packet>(payload.data(), payload.size());
+  packet->AddHeader(header);
+  sockets_[from]->SendTo(packet, 0, ns3::InetSocketAddress(to, spec_.port));
+}
+
+void WirelessNetwork::Send(NodeId from, NodeId to, const Bytes& payload) {
+  if (to >= nodes_.GetN() || to == from) return;
+  trace_.MessageSent(from);
+  if (spec_.routing == Routing::kAodv && !views_[from]->HasValidRoute(to))
+    trace_.RouteNeeded(from, to, ns3::Simulator::Now().GetSeconds());
+  Transmit(from, book_.Of(to), NewHeader(from, MessageHeader::kUnicast, to), payload);
+}
+
+void WirelessNetwork::Broadcast(NodeId from, const Bytes& payload) {
+  trace_.MessageSent(from);
+  Transmit(from, ns3::Ipv4Address::GetBroadcast(), NewHeader(from, MessageHeader::kBroadcast, kBroadcast), payload);
+}
+
+void WirelessNetwork::Flood(NodeId from, const Bytes& payload) {
+  trace_.MessageSent(from);
+  MessageHeader h = NewHeader(from, MessageHeader::kFlood, kBroadcast);
+  floods_seen_[from].insert({h.origin, h.sequence});
+  Transmit(from, ns3::Ipv4Address::GetBroadcast(), h, payload);
+}
+
+void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
+  ns3::Address from;
+  while (ns3::Ptr<ns3::Packet> packet = socket->RecvFrom(from)) {
+    ns3::SocketIpTtlTag ttl;
+    const bool has_ttl = packet->RemovePacketTag(ttl);
+    MessageHeader h;
+    if (packet->RemoveHeader(h) == 0 || h.origin >= nodes_.GetN()) continue;  // not ours
+    if (h.kind == MessageHeader::kRouteProbe || h.origin == node) continue;
+    Message m;
+    m.from = h.origin;
+    m.time_sent = h.time_sent_ns * 1e-9;
+    m.time_received = ns3::Simulator::Now().GetSeconds();
+    m.payload.resize(packet->GetSize());
+    packet->CopyData(m.payload.data(), m.payload.size());
+    switch (h.kind) {
+      case MessageHeader::kUnicast:
+        if (h.destination != node) continue;
+        m.delivery = Delivery::kUnicast;
+        m.to = node;
+        if (has_ttl) m.hops = kDefaultTtl - ttl.GetTtl() + 1;
+        break;
+      case MessageHeader::kBroadcast:
+        m.delivery = Delivery::kBroadcast;
+        m.hops = 1;
+        break;
+      case MessageHeader::kFlood: {
+        if (!floods_seen_[node].insert({h.origin, h.sequence}).second) continue;  // seen already
+        m.delivery = Delivery::kFlood;
+        m.hops = h.hops + 1;
+        if (h.ttl > 1) {
+          // Relay once, after a short random wait so that neighbours do not all collide.
+          MessageHeader relay = h;
+          relay.hops = static_cast<std::uint8_t>(h.hops + 1);
+          relay.ttl = static_cast<std::uint8_t>(h.ttl - 1);
+          ns3::Simulator::Schedule(ns3::Seconds(jitter_->GetValue()), [this, node, relay, payload = m.payload] {
+            Transmit(node, ns3::Ipv4Address::GetBroadcast(), relay, payload);
+          });
+        }
+        break;
+      }
+      default:
+        continue;
+    }
+    trace_.MessageReceived(node);
+    if (receiver_) receiver_(node, m);
+  }
+}
+
+void WirelessNetwork::Open(const std::string& output_dir) {
+  dir_ = output_dir;
+  if (!dir_.empty() && spec_.packet_log) std::filesystem::create_directories(dir_ + "/packets");
+  trace_.Open(dir_);
+  if (spec_.pcap && !dir_.empty()) OpenPcap(dir_);
+}
+
+// One file per node with every 802.11 frame its radio sent or received, written to pcap.tmp/
+// and moved to pcap/ when the run ends.
+void WirelessNetwork::OpenPcap(const std::string& dir) {
+  const std::string tmp = dir + "/pcap.tmp";
+  std::filesystem::remove_all(tmp);
+  std::filesystem::create_directories(tmp);
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
+    auto file = ns3::CreateObject<ns3::PcapFileWrapper>();
+    file->Open(tmp + "/" + names_[id] + ".pcap", std::ios::out | std::ios::binary);
+    file->Init(kDltIeee80211);
+    pcap_.push_back(file);
+    auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(id))->GetPhy();
+    phy->TraceConnectWithoutContext(
+        "MonitorSnifferTx",
+        ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t>(
+            [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t) {
+              if (pcap_[id]) pcap_[id]->Write(ns3::Simulator::Now(), p);
+            }));
+    phy->TraceConnectWithoutContext(
+        "MonitorSnifferRx",
+        ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
+                      ns3::SignalNoiseDbm, uint16_t>(
+            [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
+                       ns3::SignalNoiseDbm, uint16_t) {
+              if (pcap_[id]) pcap_[id]->Write(ns3::Simulator::Now(), p);
+            }));
+  }
+}
+
+void WirelessNetwork::Finish(Fingerprint& fingerprint, nlohmann::ordered_json& summary,
+                             std::vector<std::string>& files) {
+  for (const std::string& f : trace_.Write(dir_, fingerprint)) files.push_back(f);
+  if (!pcap_.empty()) {
+    for (auto& file : pcap_) file->Close();
+    pcap_.clear();
+    std::filesystem::remove_all(dir_ + "/pcap");
+    std::filesystem::rename(dir_ + "/pcap.tmp", dir_ + "/pcap");
+    files.push_back("pcap/");
+  }
+  if (flow_monitor_ && !dir_.empty()) {
+    flow_monitor_->CheckForLostPackets();
+    flow_monitor_->SerializeToXmlFile(dir_ + "/flowmon.xml.tmp", true, true);
+    std::filesystem::rename(dir_ + "/flowmon.xml.tmp", dir_ + "/flowmon.xml");
+    files.push_back("flowmon.xml");
+  }
+
+  PacketCounts total;
+  for (const PacketCounts& c : trace_.counts()) {
+    total.sent += c.sent;
+    total.received += c.received;
+    total.forwarded += c.forwarded;
+    total.dropped += c.dropped;
+    total.messages_sent += c.messages_sent;
+    total.messages_received += c.messages_received;
+  }
+  std::vector<double> discovery_times;
+  for (const Discovery& d : trace_.discoveries())
+    if (d.established) discovery_times.push_back(*d.established - d.started);
+  nlohmann::ordered_json& n = summary["network"];
+  n["radio"] = StandardName(spec_.standard);
+  n["data_rate_mbps"] = spec_.data_rate;
+  n["tx_power_dbm"] = spec_.tx_power;
+  n["routing"] = RoutingName(spec_.routing);
+  n["packets"] = {{"sent", total.sent},           {"received", total.received},
+                  {"forwarded", total.forwarded}, {"dropped", total.dropped},
+                  {"messages_sent", total.messages_sent}, {"messages_received", total.messages_received}};
+  n["route_discoveries"] = {{"started", trace_.discoveries().size()},
+                            {"established", discovery_times.size()},
+                            {"time_s", Quartiles(discovery_times)}};
+}
+
+}  // namespace sanet::net

@@ -1,0 +1,72 @@
+// The simulated wireless network: ns-3 802.11 ad hoc radios on one channel with the scenario's
+// propagation models, an IPv4 stack with the chosen routing protocol, and a UDP socket per node
+// carrying controller messages. Positions come from the nodes' mobility models (physics).
+#pragma once
+
+#include <ns3/flow-monitor-helper.h>
+#include <ns3/net-device-container.h>
+#include <ns3/node-container.h>
+#include <ns3/pcap-file-wrapper.h>
+#include <ns3/random-variable-stream.h>
+#include <ns3/socket.h>
+
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "net/address_book.h"
+#include "net/message_header.h"
+#include "net/network_spec.h"
+#include "net/packet_trace.h"
+#include "net/routing_view.h"
+#include "net/transport.h"
+
+namespace sanet::net {
+
+class WirelessNetwork : public Transport {
+ public:
+  // `nodes` already carry their mobility models; `radios` holds per-node overrides.
+  WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes, std::vector<std::string> names,
+                  const std::vector<NodeRadio>& radios);
+  ~WirelessNetwork() override;
+
+  void SetReceiver(Receiver receiver) override { receiver_ = std::move(receiver); }
+  void Send(NodeId from, NodeId to, const Bytes& payload) override;
+  void Broadcast(NodeId from, const Bytes& payload) override;
+  void Flood(NodeId from, const Bytes& payload) override;
+  NetworkView& View(NodeId node) override { return *views_.at(node); }
+  void Open(const std::string& output_dir) override;
+  void Finish(Fingerprint& fingerprint, nlohmann::ordered_json& summary, std::vector<std::string>& files) override;
+
+  const AddressBook& addresses() const { return book_; }
+  const PacketTrace& packet_trace() const { return trace_; }
+
+ private:
+  void InstallRadios(const std::vector<NodeRadio>& radios);
+  void InstallInternet();
+  void OpenSockets();
+  void Receive(NodeId node, ns3::Ptr<ns3::Socket> socket);
+  void Transmit(NodeId from, ns3::Ipv4Address to, const MessageHeader& header, const Bytes& payload);
+  MessageHeader NewHeader(NodeId from, MessageHeader::Kind kind, NodeId destination);
+  void OpenPcap(const std::string& dir);
+
+  NetworkSpec spec_;
+  ns3::NodeContainer nodes_;
+  ns3::NetDeviceContainer devices_;
+  AddressBook book_;
+  std::vector<std::string> names_;
+  PacketTrace trace_;
+  std::vector<ns3::Ptr<ns3::Socket>> sockets_;
+  std::vector<std::unique_ptr<RoutingView>> views_;
+  std::vector<std::uint32_t> next_sequence_;
+  std::vector<std::set<std::pair<std::uint32_t, std::uint32_t>>> floods_seen_;  // (origin, sequence)
+  ns3::Ptr<ns3::UniformRandomVariable> jitter_;
+  Receiver receiver_;
+  std::string dir_;
+  std::vector<ns3::Ptr<ns3::PcapFileWrapper>> pcap_;
+  std::unique_ptr<ns3::FlowMonitorHelper> flow_helper_;
+  ns3::Ptr<ns3::FlowMonitor> flow_monitor_;
+};
+
+}  // namespace sanet::net

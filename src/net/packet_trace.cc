@@ -57,7 +57,9 @@ void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {
   ip->TraceConnectWithoutContext(
       "UnicastForward", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
                             [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
-                              Record(node, Event::kForwarded, h, p);
+                              // AODV sends a packet that waited for a route back through the
+                              // forwarding path of its own node: that is not relaying.
+                              if (book_.Find(h.GetSource()) != node) Record(node, Event::kForwarded, h, p);
                             }));
   ip->TraceConnectWithoutContext(
       "LocalDeliver", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(

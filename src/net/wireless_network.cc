@@ -1,6 +1,11 @@
 #include "net/wireless_network.h"
 
 #include <ns3/aodv-helper.h>
+#include <ns3/aodv-routing-protocol.h>
+#include <ns3/dsdv-routing-protocol.h>
+#include <ns3/dsr-routing.h>
+#include <ns3/olsr-routing-protocol.h>
+#include <ns3/yans-wifi-channel.h>
 #include <ns3/double.h>
 #include <ns3/boolean.h>
 #include <ns3/dsdv-helper.h>
@@ -69,6 +74,7 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
   jitter_ = ns3::CreateObject<ns3::UniformRandomVariable>();
   jitter_->SetAttribute("Min", ns3::DoubleValue(0));
   jitter_->SetAttribute("Max", ns3::DoubleValue(0.01));
+  AssignStreams();
   for (NodeId id = 0; id < nodes_.GetN(); ++id) trace_.Attach(id, nodes_.Get(id));
   if (spec_.flow_monitor) {
     flow_helper_ = std::make_unique<ns3::FlowMonitorHelper>();
@@ -125,6 +131,24 @@ void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
     phy.Set("TxPowerEnd", ns3::DoubleValue(power));
     devices_.Add(wifi.Install(phy, mac, nodes_.Get(id)));
   }
+}
+
+// ns-3 numbers random streams from a process-wide counter as objects are created, so a second
+// run in one process would draw other numbers: give every random consumer a fixed stream.
+void WirelessNetwork::AssignStreams() {
+  std::int64_t stream = 0;
+  stream += ns3::WifiHelper().AssignStreams(devices_, stream);
+  stream += ns3::YansWifiChannelHelper().AssignStreams(
+      ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel()), stream);
+  stream += ns3::InternetStackHelper().AssignStreams(nodes_, stream);
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
+    auto routing = nodes_.Get(id)->GetObject<ns3::Ipv4>()->GetRoutingProtocol();
+    if (auto aodv = ns3::DynamicCast<ns3::aodv::RoutingProtocol>(routing)) stream += aodv->AssignStreams(stream);
+    if (auto olsr = ns3::DynamicCast<ns3::olsr::RoutingProtocol>(routing)) stream += olsr->AssignStreams(stream);
+    if (auto dsdv = ns3::DynamicCast<ns3::dsdv::RoutingProtocol>(routing)) stream += dsdv->AssignStreams(stream);
+    if (auto dsr = nodes_.Get(id)->GetObject<ns3::dsr::DsrRouting>()) stream += dsr->AssignStreams(stream);
+  }
+  jitter_->SetStream(stream);
 }
 
 void WirelessNetwork::InstallInternet() {

@@ -45,6 +45,7 @@ class WirelessNetwork : public Transport {
  private:
   void InstallRadios(const std::vector<NodeRadio>& radios);
   void InstallInternet();
+  void AssignStreams();
   void OpenSockets();
   void Receive(NodeId node, ns3::Ptr<ns3::Socket> socket);
   void Transmit(NodeId from, ns3::Ipv4Address to, const MessageHeader& header, const Bytes& payload);

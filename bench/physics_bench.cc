@@ -47,7 +47,7 @@ sim::RunSpec Motes(int count, double duration) {
   spec.duration = duration;
   for (int i = 0; i < count; ++i)
     spec.nodes.push_back({"m" + std::to_string(i), robots::ModelSpec::Defaults(robots::ModelKind::kMote),
-                          {10.0 * (i % 5), 10.0 * (i / 5), 0}, std::nullopt});
+                          {10.0 * (i % 20), 10.0 * (i / 20), 0}, std::nullopt});
   return spec;
 }
 
@@ -74,11 +74,14 @@ int main(int argc, char** argv) {
   Row("25 motes", motes, "-", 1.0);
   const Measure one = Time(Robots(1, duration, physics::Solver::kExact), registry);
   Row("1 omni3", one, "-", 1.0);
-  sim::RunSpec among = Motes(25, duration);
-  among.nodes.push_back(Robots(1, duration, physics::Solver::kExact).nodes[0]);
-  among.nodes.back().pose = {5, 5, 0};  // between the motes, touching none
-  const Measure robot_and_motes = Time(among, registry);
-  Row("1 omni3 + 25 motes", robot_and_motes, "wall of 1 omni3", robot_and_motes.wall / one.wall);
+  for (int motes : {25, 400}) {
+    sim::RunSpec among = Motes(motes, duration);
+    among.nodes.push_back(Robots(1, duration, physics::Solver::kExact).nodes[0]);
+    among.nodes.back().pose = {5, 5, 0};  // between the motes, touching none
+    const Measure m = Time(among, registry);
+    const std::string name = "1 omni3 + " + std::to_string(motes) + " motes";
+    Row(name.c_str(), m, "wall of 1 omni3", m.wall / one.wall);
+  }
   for (int n : {10, 100}) {
     const Measure m = Time(Robots(n, duration, physics::Solver::kExact), registry);
     const std::string name = std::to_string(n) + " omni3";

@@ -173,7 +173,7 @@ void World::PhysicsStep() {
   }
   {
     StageTimer timer(profile_.sensing);
-    for (auto& m : models_) m->AfterPhysicsStep();
+    for (robots::NodeModel* m : vehicles_) m->AfterPhysicsStep();
   }
   ++physics_steps_;
   if (step_observer_) step_observer_(ns3::Simulator::Now().GetSeconds());
@@ -248,9 +248,9 @@ RunResult World::Run(const RunOptions& options) {
   };
   ns3::Simulator::ScheduleNow(record);
   // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
-  bool vehicles = false;
-  for (const auto& m : models_) vehicles = vehicles || m->mobile();
-  if (vehicles) ns3::Simulator::Schedule(Period(spec_.physics_step), &World::PhysicsStep, this);
+  for (const auto& m : models_)
+    if (m->mobile()) vehicles_.push_back(m.get());
+  if (!vehicles_.empty()) ns3::Simulator::Schedule(Period(spec_.physics_step), &World::PhysicsStep, this);
   transport_->Open(options.output_dir);
   wall_start_ = last_progress_ = std::chrono::steady_clock::now();
   if (options.progress) ns3::Simulator::ScheduleNow(&World::ShowProgress, this);

@@ -87,6 +87,7 @@ class World : public agents::NodeDirectory {
   RunSpec spec_;
   std::unique_ptr<physics::PhysicsWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
+  std::vector<robots::NodeModel*> vehicles_;  // the models that move by themselves
   std::unique_ptr<net::Transport> transport_;
   std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
   std::vector<std::unique_ptr<Controller>> controllers_;  // null where a node has none

@@ -110,27 +110,60 @@ void OdeWorld::add_static_box(const StaticBox& box) {
   dGeomSetData(g, make_info({Part::kStatic, nullptr, nullptr, settings_.ground_friction, 0}));
 }
 
+Pose2D OdeMote::pose() const {
+  const dReal* p = dGeomGetPosition(geom_);
+  const dReal* r = dGeomGetRotation(geom_);
+  return {p[0], p[1], std::atan2(r[4], r[0])};
+}
+
+Vec3 OdeMote::position3() const {
+  const dReal* p = dGeomGetPosition(geom_);
+  return {p[0], p[1], p[2]};
+}
+
+Twist2D OdeMote::velocity() const {
+  if (!body_) return {};
+  const dReal* v = dBodyGetLinearVel(body_);
+  return {v[0], v[1], dBodyGetAngularVel(body_)[2]};
+}
+
+void OdeMote::Wake(dWorldID world) {
+  if (body_) return;  // ODE itself enables a resting body that a moving one touches
+  body_ = dBodyCreate(world);
+  const dReal* p = dGeomGetPosition(geom_);
+  dBodySetPosition(body_, p[0], p[1], p[2]);
+  dBodySetRotation(body_, dGeomGetRotation(geom_));
+  dMass mass;
+  dMassSetBoxTotal(&mass, spec_.mass, spec_.size, spec_.size, spec_.size);
+  dBodySetMass(body_, &mass);
+  // Goes back to rest once it has been still for 20 steps.
+  dBodySetAutoDisableFlag(body_, 1);
+  dBodySetAutoDisableSteps(body_, 20);
+  dGeomSetBody(geom_, body_);
+}
+
+void OdeMote::Rest() {
+  dGeomSetBody(geom_, nullptr);  // the geom keeps the body's last position and rotation
+  dBodyDestroy(body_);
+  body_ = nullptr;
+}
+
 Body* OdeWorld::add_mote(const MoteSpec& spec, const Pose2D& pose) {
-  dBodyID body = dBodyCreate(world_);
-  dBodySetPosition(body, pose.x, pose.y, spec.size / 2);
+  dGeomID g = dCreateBox(resting_, spec.size, spec.size, spec.size);
+  dGeomSetPosition(g, pose.x, pose.y, spec.size / 2);
   dMatrix3 r;
   dRFromAxisAndAngle(r, 0, 0, 1, pose.theta);
-  dBodySetRotation(body, r);
-  dMass mass;
-  dMassSetBoxTotal(&mass, spec.mass, spec.size, spec.size, spec.size);
-  dBodySetMass(body, &mass);
-  // Rests until touched, and goes back to rest once still again.
-  dBodySetAutoDisableFlag(body, 1);
-  dBodySetAutoDisableSteps(body, 20);
-  dBodyDisable(body);
-  motes_.push_back(std::make_unique<OdeBody>(body, Vec3{0, 0, 0}));
-  dGeomID g = dCreateBox(resting_, spec.size, spec.size, spec.size);
-  dGeomSetBody(g, body);
+  dGeomSetRotation(g, r);
+  motes_.push_back(std::make_unique<OdeMote>(g, spec));
   GeomInfo* info = make_info({Part::kMote, motes_.back().get(), nullptr, kMoteFriction, 0,
                               static_cast<int>(motes_.size() - 1)});
   dGeomSetData(g, info);
   mote_geoms_.push_back(g);
   mote_awake_.push_back(false);
+  mote_done_.push_back(false);
+  mote_cell_.emplace_back();
+  max_mote_reach_ = std::max(max_mote_reach_, spec.size * 0.87);  // half the cube's diagonal
+  PlaceInGrid(static_cast<int>(mote_geoms_.size() - 1));
   return motes_.back().get();
 }
 
@@ -152,6 +185,8 @@ void OdeWorld::Collide(dGeomID a, dGeomID b) {
   if (n == 0) return;
   for (const GeomInfo* info : {&ia, &ib})
     if (info->part == Part::kMote) WakeMote(info->index);
+  ba = dGeomGetBody(a);  // a mote touched just now has a body from here on
+  bb = dGeomGetBody(b);
 
   const GeomInfo* omni = ia.part == Part::kOmniWheel ? &ia : ib.part == Part::kOmniWheel ? &ib : nullptr;
   const bool caster = ia.part == Part::kCaster || ib.part == Part::kCaster;
@@ -183,24 +218,66 @@ void OdeWorld::Collide(dGeomID a, dGeomID b) {
 }
 
 void OdeWorld::WakeMote(int index) {
+  motes_[index]->Wake(world_);
   if (mote_awake_[index]) return;
   mote_awake_[index] = true;
   awake_motes_.push_back(index);
+}
+
+std::int64_t OdeWorld::CellOf(double x, double y) {
+  const auto cx = static_cast<std::int64_t>(std::floor(x / kMoteCell));
+  const auto cy = static_cast<std::int64_t>(std::floor(y / kMoteCell));
+  return (cx << 32) ^ (cy & 0xFFFFFFFF);
+}
+
+void OdeWorld::PlaceInGrid(int mote) {
+  const dReal* p = dGeomGetPosition(mote_geoms_[mote]);
+  const std::int64_t cell = CellOf(p[0], p[1]);
+  if (mote_cell_[mote] && *mote_cell_[mote] == cell) return;
+  if (mote_cell_[mote]) {
+    auto& old = mote_grid_[*mote_cell_[mote]];
+    old.erase(std::find(old.begin(), old.end(), mote));
+  }
+  auto& members = mote_grid_[cell];
+  members.insert(std::upper_bound(members.begin(), members.end(), mote), mote);  // sorted: a fixed order
+  mote_cell_[mote] = cell;
+}
+
+// Collides `geom` with the motes whose grid cells its bounding box touches (except `self` and
+// motes whose own pass has run this step), so that resting motes cost nothing far from anything.
+void OdeWorld::CollideWithMotes(dGeomID geom, int self) {
+  dReal box[6];
+  dGeomGetAABB(geom, box);
+  const double m = max_mote_reach_;
+  const auto x0 = static_cast<std::int64_t>(std::floor((box[0] - m) / kMoteCell));
+  const auto x1 = static_cast<std::int64_t>(std::floor((box[1] + m) / kMoteCell));
+  const auto y0 = static_cast<std::int64_t>(std::floor((box[2] - m) / kMoteCell));
+  const auto y1 = static_cast<std::int64_t>(std::floor((box[3] + m) / kMoteCell));
+  for (auto cx = x0; cx <= x1; ++cx)
+    for (auto cy = y0; cy <= y1; ++cy) {
+      auto it = mote_grid_.find((cx << 32) ^ (cy & 0xFFFFFFFF));
+      if (it == mote_grid_.end()) continue;
+      for (int other : it->second)
+        if (other != self && !mote_done_[other]) Collide(geom, mote_geoms_[other]);
+    }
 }
 
 void OdeWorld::step(double dt) {
   dSpaceCollide(moving_, this, &NearCallback);
   dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(still_), this,
                  &NearCallback);
-  dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(resting_), this,
-                 &NearCallback);
+  if (!motes_.empty())
+    for (int i = 0, n = dSpaceGetNumGeoms(moving_); i < n; ++i) CollideWithMotes(dSpaceGetGeom(moving_, i), -1);
   // Motes that are awake (or were touched just now) meet the ground, obstacles and other motes;
   // the list may grow while we go through it when one mote pushes another.
   for (std::size_t i = 0; i < awake_motes_.size(); ++i) {
-    dGeomID g = mote_geoms_[awake_motes_[i]];
+    const int mote = awake_motes_[i];
+    dGeomID g = mote_geoms_[mote];
     dSpaceCollide2(g, reinterpret_cast<dGeomID>(still_), this, &NearCallback);
-    dSpaceCollide2(g, reinterpret_cast<dGeomID>(resting_), this, &NearCallback);
+    CollideWithMotes(g, mote);
+    mote_done_[mote] = true;
   }
+  for (int mote : awake_motes_) mote_done_[mote] = false;
   if (settings_.solver == Solver::kExact)
     dWorldStep(world_, dt);
   else
@@ -210,10 +287,13 @@ void OdeWorld::step(double dt) {
   // Motes that have come to rest again leave the awake list (in a stable order).
   std::size_t kept = 0;
   for (int index : awake_motes_) {
-    if (dBodyIsEnabled(dGeomGetBody(mote_geoms_[index])))
+    PlaceInGrid(index);  // it may have moved
+    if (motes_[index]->awake()) {
       awake_motes_[kept++] = index;
-    else
+    } else {
+      motes_[index]->Rest();
       mote_awake_[index] = false;
+    }
   }
   awake_motes_.resize(kept);
 }

@@ -7,7 +7,10 @@
 
 #include <ode/ode.h>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "physics/physics_world.h"
@@ -45,6 +48,25 @@ class OdeBody : public virtual Body {
  protected:
   dBodyID main_;
   Vec3 reference_offset_;  // body frame: from the centre of mass to the reference point
+};
+
+// A mote is a static box (a geom without a body) until something moving touches it; then it
+// gets a body, and loses it again once it has come to rest. At rest it costs the solver nothing.
+class OdeMote : public Body {
+ public:
+  OdeMote(dGeomID geom, const MoteSpec& spec) : geom_(geom), spec_(spec) {}
+  Pose2D pose() const override;
+  Vec3 position3() const override;
+  Twist2D velocity() const override;
+  bool awake() const override { return body_ && dBodyIsEnabled(body_); }
+  bool has_body() const { return body_ != nullptr; }
+  void Wake(dWorldID world);  // gives it a body where it stands
+  void Rest();                // a static box again, where the body came to rest
+
+ private:
+  dGeomID geom_;
+  MoteSpec spec_;
+  dBodyID body_ = nullptr;
 };
 
 class OdeVehicle : public OdeBody, public Vehicle {
@@ -89,6 +111,9 @@ class OdeWorld : public PhysicsWorld {
   static void NearCallback(void* data, dGeomID a, dGeomID b);
   void Collide(dGeomID a, dGeomID b);
   void WakeMote(int index);
+  static std::int64_t CellOf(double x, double y);
+  void PlaceInGrid(int mote);
+  void CollideWithMotes(dGeomID geom, int self);
 
   WorldSettings settings_;
   dWorldID world_;
@@ -96,8 +121,15 @@ class OdeWorld : public PhysicsWorld {
   dJointGroupID contacts_;
   std::vector<std::unique_ptr<GeomInfo>> infos_;
   std::vector<std::unique_ptr<OdeVehicle>> vehicles_;
-  std::vector<std::unique_ptr<OdeBody>> motes_;
+  std::vector<std::unique_ptr<OdeMote>> motes_;
   std::vector<dGeomID> mote_geoms_;
+  // Motes are found through a grid of square cells (by their centre) rather than a space, whose
+  // queries cost as much as it holds: a robot then costs the same among 4 motes or 4000.
+  static constexpr double kMoteCell = 1.0;  // m
+  std::unordered_map<std::int64_t, std::vector<int>> mote_grid_;  // cell -> motes, sorted
+  std::vector<std::optional<std::int64_t>> mote_cell_;
+  double max_mote_reach_ = 0;     // m, from a mote's centre to its farthest corner
+  std::vector<char> mote_done_;    // per mote: its pass ran in this step
   std::vector<char> mote_awake_;   // per mote: listed in awake_motes_
   std::vector<int> awake_motes_;   // motes awake or touched this step, in the order they woke
   mutable dGeomID ray_ = nullptr;  // reused by cast_ray, in no space

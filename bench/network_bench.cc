@@ -1,0 +1,125 @@
+// Cost of coupling the network with the rest of sanet. For 25, 100 and 400 static motes on a
+// grid (40 m apart, so routes are multi-hop) with AODV and light traffic (a tenth of the motes
+// send 64 bytes to a far mote every 2 s), it times
+//   sanet:  a whole sanet run (physics world, controllers, recording, outputs in memory)
+//   ns-3:   the same wireless network alone, sockets fed by plain ns-3 events
+// and prints the real-time factors and their ratio (the coupling overhead), measured in the
+// same process so that machine noise affects both alike.
+//
+//   bench/network_bench [simulated seconds, default 30]
+#include <ns3/constant-position-mobility-model.h>
+#include <ns3/node-container.h>
+#include <ns3/rng-seed-manager.h>
+#include <ns3/simulator.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "agents/controller_registry.h"
+#include "builtin.h"
+#include "net/wireless_network.h"
+#include "sim/world.h"
+
+namespace {
+
+using namespace sanet;
+constexpr double kSpacing = 40;
+constexpr double kInterval = 2;
+
+struct Layout {
+  int side;
+  std::vector<std::pair<NodeId, NodeId>> flows;  // (source, destination)
+};
+
+Layout MakeLayout(int count) {
+  Layout l{static_cast<int>(std::lround(std::sqrt(count))), {}};
+  for (int s = 0; s < count; s += 10) l.flows.push_back({static_cast<NodeId>(s), static_cast<NodeId>(count - 1 - s)});
+  return l;
+}
+
+double WallSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double RunSanet(int count, double duration, agents::Registry& registry) {
+  const Layout layout = MakeLayout(count);
+  sim::RunSpec spec;
+  spec.duration = duration;
+  spec.network = net::NetworkSpec{};
+  spec.network->packet_log = false;
+  for (int i = 0; i < count; ++i)
+    spec.nodes.push_back({"m" + std::to_string(i), robots::ModelSpec::Defaults(robots::ModelKind::kMote),
+                          {kSpacing * (i % layout.side), kSpacing * (i / layout.side), 0}, std::nullopt});
+  for (const auto& [source, destination] : layout.flows) {
+    sim::ControllerSpec c;
+    c.name = "pinger";
+    for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{
+             {"to", "m" + std::to_string(destination)}, {"interval", "2"}, {"size", "64"}, {"start", "1"}}) {
+      ParamValue v;
+      v.rows = {{value}};
+      c.params.Set(key, v);
+    }
+    spec.nodes[source].controller = c;
+  }
+  sim::World world(spec, registry);
+  return world.Run({}).wall;
+}
+
+double RunNs3Alone(int count, double duration) {
+  const Layout layout = MakeLayout(count);
+  ns3::RngSeedManager::SetSeed(2);
+  ns3::NodeContainer nodes;
+  nodes.Create(count);
+  std::vector<std::string> names;
+  for (int i = 0; i < count; ++i) {
+    auto mobility = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
+    mobility->SetPosition(ns3::Vector(kSpacing * (i % layout.side), kSpacing * (i / layout.side), 0.05));
+    nodes.Get(i)->AggregateObject(mobility);
+    names.push_back("m" + std::to_string(i));
+  }
+  net::NetworkSpec spec;
+  spec.packet_log = false;
+  {
+    net::WirelessNetwork network(spec, nodes, names, std::vector<net::NodeRadio>(count));
+    network.Open("");
+    const Bytes payload(64, 0);
+    std::vector<std::function<void()>> senders(layout.flows.size());
+    for (std::size_t i = 0; i < layout.flows.size(); ++i) {
+      senders[i] = [&, i] {
+        network.Send(layout.flows[i].first, layout.flows[i].second, payload);
+        ns3::Simulator::Schedule(ns3::Seconds(kInterval), senders[i]);
+      };
+      ns3::Simulator::Schedule(ns3::Seconds(1), senders[i]);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    ns3::Simulator::Stop(ns3::Seconds(duration));
+    ns3::Simulator::Run();
+    const double wall = WallSince(start);
+    ns3::Simulator::Destroy();
+    return wall;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double duration = argc > 1 ? std::atof(argv[1]) : 30;
+  agents::Registry registry;
+  controllers::RegisterBuiltinControllers(registry);
+  std::printf("sanet network benchmark: static motes 40 m apart, AODV, 802.11b 1 Mbps, a tenth of the\n"
+              "motes send 64 B to a far mote every 2 s; %.0f s simulated per case\n", duration);
+  std::printf("%-8s %12s %12s %12s %12s %10s\n", "motes", "sanet wall", "sanet RTF", "ns-3 wall", "ns-3 RTF",
+              "overhead");
+  for (int count : {25, 100, 400}) {
+    const double ns3_wall = RunNs3Alone(count, duration);
+    const double sanet_wall = RunSanet(count, duration, registry);
+    std::printf("%-8d %11.3fs %12.1f %11.3fs %12.1f %9.2fx\n", count, sanet_wall, duration / sanet_wall, ns3_wall,
+                duration / ns3_wall, sanet_wall / ns3_wall);
+    std::fflush(stdout);
+  }
+  return 0;
+}

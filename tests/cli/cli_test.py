@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
 """The sanet command as a user runs it: help, validate, run, results, reproducibility, errors."""
+import csv
 import json
 import os
 import subprocess
@@ -68,6 +69,20 @@ class Cli(unittest.TestCase):
             self.assertEqual(out.returncode, 0, out.stderr)
             log = open(os.path.join(tmp, "log.csv")).read()
             self.assertIn("robot,arrived", log)
+
+    def test_the_sensor_network_scenario_carries_messages_over_many_hops(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = sanet("run", os.path.join(SOURCE, "scenarios", "sensor-network.yaml"), "-o", tmp, "-q")
+            self.assertEqual(out.returncode, 0, out.stderr)
+            summary = json.load(open(os.path.join(tmp, "summary.json")))
+            self.assertEqual(summary["network"]["routing"], "aodv")
+            self.assertGreater(summary["network"]["route_discoveries"]["established"], 0)
+            rows = list(csv.DictReader(open(os.path.join(tmp, "messages.csv"))))
+            corner = [r for r in rows if r["from"] == "reporter" and r["to"] == "m24"]
+            self.assertGreater(len(corner), 5)
+            self.assertTrue(all(int(r["hops"]) >= 8 for r in corner), corner)
+            for name in ("packets.csv", "routes.csv", "flowmon.xml", "packets/m12.csv"):
+                self.assertTrue(os.path.exists(os.path.join(tmp, name)), name)
 
     def test_missing_scenario_file_is_an_error_not_a_crash(self):
         out = sanet("run", "/no/such/file.yaml")

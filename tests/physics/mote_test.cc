@@ -17,6 +17,12 @@ TEST(Mote, UntouchedMotesAreNotIntegrated) {
   EXPECT_EQ(world->awake_body_count(), 0u);
 }
 
+TEST(Mote, AWorldOfMotesNeedsNoPhysicsSteps) {
+  sim::World world(Spec(10, {Robot("a", ModelKind::kMote, {0, 0, 0}), Robot("b", ModelKind::kMote, {1, 0, 0})}),
+                   BuiltinRegistry());
+  EXPECT_EQ(world.Run({}).physics_steps, 0u);
+}
+
 TEST(Mote, ARobotPushesAMoteAndTheMoteComesToRestAgain) {
   sim::RunSpec spec = Spec(12, {Robot("r", ModelKind::kOmni3, {0, 0, 0},
                                       UseController("constant_velocity", {{"vx", Scalar(0.4)},

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "sanet/message.h"
 
@@ -46,7 +47,7 @@ class Writer {
 // Reads fields back; reading past the end yields zeros and makes ok() false.
 class Reader {
  public:
-  explicit Reader(const Bytes& bytes) : bytes_(bytes) {}
+  explicit Reader(Bytes bytes) : bytes_(std::move(bytes)) {}  // its own copy: never dangles
   std::uint8_t U8() { return static_cast<std::uint8_t>(Raw(1)); }
   std::uint16_t U16() { return static_cast<std::uint16_t>(Raw(2)); }
   std::uint32_t U32() { return static_cast<std::uint32_t>(Raw(4)); }
@@ -83,7 +84,7 @@ class Reader {
     pos_ += n;
     return v;
   }
-  const Bytes& bytes_;
+  Bytes bytes_;
   std::size_t pos_ = 0;
   bool ok_ = true;
 };

@@ -109,6 +109,30 @@ TEST(Network, AodvCarriesAMessageFiveHopsAlongALine) {
   }
 }
 
+class ProactiveRouting : public ::testing::TestWithParam<net::Routing> {};
+
+TEST_P(ProactiveRouting, BuildsTablesAndCarriesMessagesFourHops) {
+  std::vector<RouteEntry> table;
+  auto read = [&](Node& node) {
+    if (node.Now() >= 14 && table.empty()) table = node.Network().RoutingTable();
+  };
+  Probes probes({{{15, 4}, {16, 4}, {17, 4}}, {}}, {read, nullptr});
+  sim::RunSpec spec = MoteLine(5, 40, GetParam(), 20);
+  spec.nodes[0].controller = UseController("p0", {});
+  spec.nodes[4].controller = UseController("p1", {});
+  sim::World world(spec, probes.registry);
+  world.Run({});
+  bool found = false;
+  for (const RouteEntry& e : table)
+    if (e.destination == 4) found = e.valid && e.hops == 4 && e.next_hop == 1;
+  EXPECT_TRUE(found) << "m0 knows m4, four hops away through m1";
+  EXPECT_GE(probes.inboxes[1].size(), 2u);
+  for (const Message& m : probes.inboxes[1]) EXPECT_EQ(*m.hops, 4);
+}
+
+INSTANTIATE_TEST_SUITE_P(Network, ProactiveRouting, ::testing::Values(net::Routing::kOlsr, net::Routing::kDsdv),
+                         [](const auto& info) { return std::string(net::RoutingName(info.param)); });
+
 TEST(Network, WithoutRoutingAMessageDoesNotGoBeyondOneHop) {
   Probes probes({{{2, 5}, {4, 5}, {6, 1}}, {}, {}});
   sim::RunSpec spec = MoteLine(6, 40, net::Routing::kNone, 10);

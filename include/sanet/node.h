@@ -83,7 +83,13 @@ class Node {
   virtual void Flood(const Bytes& payload) = 0;
   virtual NetworkView& Network() = 0;
 
-  // A line in the run's log (time and node are added).
+  // A uniform random number in [0, 1) from this node's own seeded stream: the same run
+  // draws the same numbers.
+  virtual double Random() = 0;
+
+  // A line in the run's log (time and node are added). Two forms are also collected:
+  //   "transition FROM -> TO: why"  a state machine's step, into transitions.csv
+  //   "metric NAME VALUE"           a measurement, summarised (quartiles) in summary.json
   virtual void Log(const std::string& text) = 0;
 };
 

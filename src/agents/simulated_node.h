@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "core/random_stream.h"
 #include "net/transport.h"
 #include "robots/node_model.h"
 #include "sanet/node.h"
@@ -23,8 +24,9 @@ class NodeDirectory {
 class SimulatedNode : public Node {
  public:
   SimulatedNode(NodeId id, std::string name, robots::NodeModel& model, net::Transport& transport,
-                NodeDirectory& directory)
-      : id_(id), name_(std::move(name)), model_(model), transport_(transport), directory_(directory) {}
+                NodeDirectory& directory, RandomStream random)
+      : id_(id), name_(std::move(name)), model_(model), transport_(transport), directory_(directory),
+        random_(random) {}
 
   double Now() const override;
   NodeId Id() const override { return id_; }
@@ -47,6 +49,7 @@ class SimulatedNode : public Node {
   void Flood(const Bytes& payload) override { transport_.Flood(id_, payload); }
   NetworkView& Network() override { return transport_.View(id_); }
   void Log(const std::string& text) override { directory_.Log(id_, text); }
+  double Random() override { return random_.Uniform(); }
 
  private:
   NodeId id_;
@@ -54,6 +57,7 @@ class SimulatedNode : public Node {
   robots::NodeModel& model_;
   net::Transport& transport_;
   NodeDirectory& directory_;
+  RandomStream random_;
 };
 
 }  // namespace sanet::agents

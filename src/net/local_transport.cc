@@ -5,10 +5,11 @@
 namespace sanet::net {
 
 LocalTransport::LocalTransport(std::size_t node_count, double latency_s)
-    : node_count_(node_count), latency_(latency_s) {}
+    : node_count_(node_count), latency_(latency_s), off_(node_count, false) {}
 
 void LocalTransport::Deliver(NodeId receiver, NodeId from, NodeId to, Delivery delivery,
                              const Bytes& payload) {
+  if (off_[from] || off_[receiver]) return;
   Message m;
   m.delivery = delivery;
   m.from = from;
@@ -18,7 +19,7 @@ void LocalTransport::Deliver(NodeId receiver, NodeId from, NodeId to, Delivery d
   m.payload = payload;
   ns3::Simulator::Schedule(ns3::Seconds(latency_), [this, receiver, m]() mutable {
     m.time_received = ns3::Simulator::Now().GetSeconds();
-    if (receiver_) receiver_(receiver, m);
+    if (receiver_ && !off_[receiver]) receiver_(receiver, m);
   });
 }
 

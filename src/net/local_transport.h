@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "net/transport.h"
 
@@ -17,6 +18,7 @@ class LocalTransport : public Transport {
   // Without a network every node is a neighbour: a flood is a broadcast.
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId) override { return view_; }
+  void SwitchOff(NodeId node) override { off_.at(node) = true; }
 
  private:
   class EmptyView : public NetworkView {
@@ -33,6 +35,7 @@ class LocalTransport : public Transport {
   double latency_;
   Receiver receiver_;
   EmptyView view_;
+  std::vector<bool> off_;
 };
 
 }  // namespace sanet::net

@@ -23,6 +23,8 @@ class Transport {
   virtual void Broadcast(NodeId from, const Bytes& payload) = 0;
   virtual void Flood(NodeId from, const Bytes& payload) = 0;
   virtual NetworkView& View(NodeId node) = 0;
+  // The node's radio goes silent: it neither sends nor receives from now on.
+  virtual void SwitchOff(NodeId node) = 0;
 
   // Before the run: where to write traces ("" for nowhere).
   virtual void Open(const std::string& output_dir) { (void)output_dir; }

@@ -281,6 +281,10 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
   }
 }
 
+void WirelessNetwork::SwitchOff(NodeId node) {
+  ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy()->SetOffMode();
+}
+
 void WirelessNetwork::Open(const std::string& output_dir) {
   dir_ = output_dir;
   if (!dir_.empty() && spec_.packet_log) std::filesystem::create_directories(dir_ + "/packets");

@@ -36,6 +36,7 @@ class WirelessNetwork : public Transport {
   void Broadcast(NodeId from, const Bytes& payload) override;
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId node) override { return *views_.at(node); }
+  void SwitchOff(NodeId node) override;
   void Open(const std::string& output_dir) override;
   void Finish(Fingerprint& fingerprint, nlohmann::ordered_json& summary, std::vector<std::string>& files) override;
 

@@ -355,7 +355,7 @@ Scenario LoadScenario(const std::string& path) {
   Scenario sc;
   sc.file = path;
   sim::RunSpec& run = sc.run;
-  root.ExpectKeys({"name", "seed", "duration", "world", "network", "nodes", "messages", "outputs"});
+  root.ExpectKeys({"name", "seed", "duration", "world", "network", "nodes", "messages", "events", "end", "outputs"});
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   run.name = root.Get("name") ? ReadName(*root.Get("name")) : fs::path(path).stem().string();
   if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
@@ -428,9 +428,31 @@ Scenario LoadScenario(const std::string& path) {
     messages->ExpectKeys({"latency"});
     Optional(*messages, "latency", run.message_latency, 0, 1000);
   }
+  if (auto events = root.Get("events")) {
+    for (const Field& e : events->Items()) {
+      e.ExpectKeys({"time", "node", "action"});
+      sim::NodeEvent event;
+      event.time = e.Require("time").Number(0, 1e9);
+      const Field node = e.Require("node");
+      const auto it = names.find(node.Text());
+      if (it == names.end()) node.Fail("no node named '" + node.Text() + "'");
+      for (std::size_t i = 0; i < run.nodes.size(); ++i)
+        if (run.nodes[i].name == node.Text()) event.node = static_cast<std::uint32_t>(i);
+      event.action = ReadChoice<sim::NodeEvent::Action>(e.Require("action"), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}});
+      run.events.push_back(event);
+    }
+  }
+  if (auto end = root.Get("end")) {
+    end->ExpectKeys({"when_logged"});
+    const Field logged = end->Require("when_logged");
+    if (logged.IsScalar()) run.end_when_logged.push_back(logged.Text());
+    else for (const Field& line : logged.Items()) run.end_when_logged.push_back(line.Text());
+  }
   sc.output_folder = "results/" + run.name;
   if (auto outputs = root.Get("outputs")) {
-    outputs->ExpectKeys({"folder", "trajectory_interval"});
+    outputs->ExpectKeys({"folder", "trajectory_interval", "figures", "figure_tick"});
+    if (auto figures = outputs->Get("figures")) run.figures = figures->Bool();
+    if (auto tick = outputs->Get("figure_tick")) run.figure_tick = tick->NumberAbove(0, 1e9);
     if (auto folder = outputs->Get("folder")) sc.output_folder = folder->Text();
     if (auto interval = outputs->Get("trajectory_interval"))
       run.trajectory_interval = interval->NumberAbove(0, 1e6);

@@ -35,6 +35,14 @@ struct Obstacle {
   physics::StaticBox box;
 };
 
+// Something that happens to a node at a given time.
+struct NodeEvent {
+  enum class Action { kSwitchOff };  // the node stops: controller, radio and motors
+  double time = 0;                   // s
+  std::uint32_t node = 0;
+  Action action = Action::kSwitchOff;
+};
+
 struct RunSpec {
   std::string name = "run";
   std::uint64_t seed = 1;
@@ -48,6 +56,11 @@ struct RunSpec {
   std::optional<net::NetworkSpec> network;
   double message_latency = 0.001;  // s, of the local transport
   double trajectory_interval = 0.1;  // s between trajectory samples
+  std::vector<NodeEvent> events;
+  // The run ends early when a controller logs one of these lines.
+  std::vector<std::string> end_when_logged;
+  bool figures = false;       // draw map.svg and packets.svg
+  double figure_tick = 50;    // s between time marks on trajectories
 };
 
 }  // namespace sanet::sim

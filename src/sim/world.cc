@@ -9,6 +9,8 @@
 #include <cstdarg>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -63,15 +65,18 @@ std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, agents::R
 }
 
 struct World::Outputs {
-  trace::CsvSink trajectories, log, messages;
+  trace::CsvSink trajectories, log, messages, transitions;
   std::vector<double> delays;  // of every message delivered, s
+  std::map<std::string, std::map<std::string, std::vector<double>>> metrics;  // node -> name -> values
+  std::string ended_by;  // the end condition met, if any
   std::string failure;  // first controller error, which ends the run early
   Outputs(const std::string& dir)
       : trajectories(dir.empty() ? std::nullopt : std::optional(dir + "/trajectories.csv"),
                      "time,node,x,y,theta"),
         log(dir.empty() ? std::nullopt : std::optional(dir + "/log.csv"), "time,node,text"),
         messages(dir.empty() ? std::nullopt : std::optional(dir + "/messages.csv"),
-                 "time_sent,from,to,delivery,bytes,time_received,delay,hops") {}
+                 "time_sent,from,to,delivery,bytes,time_received,delay,hops"),
+        transitions(dir.empty() ? std::nullopt : std::optional(dir + "/transitions.csv"), "time,node,from,to,why") {}
 };
 
 World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
@@ -116,7 +121,8 @@ World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
     transport_->SetReceiver([this](NodeId to, const Message& m) { Deliver(to, m); });
     for (NodeId id = 0; id < spec.nodes.size(); ++id) {
       const NodeSpec& n = spec.nodes[id];
-      nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this));
+      nodes_.push_back(std::make_unique<agents::SimulatedNode>(
+          id, n.name, *models_[id], *transport_, *this, RandomStream(spec.seed, "node/" + n.name + "/controller")));
       controllers_.push_back(n.controller ? MakeController(*n.controller, registry) : nullptr);
     }
   } catch (...) {
@@ -125,6 +131,7 @@ World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
     throw;
   }
   last_recorded_.resize(spec.nodes.size());
+  switched_off_.assign(spec.nodes.size(), false);
 }
 
 World::~World() {
@@ -144,8 +151,39 @@ Pose2D World::TruePose(NodeId node) const { return models_.at(node)->body().pose
 
 void World::Log(NodeId node, const std::string& text) {
   if (!out_) return;
-  out_->log.Row(Format("%.6f,", ns3::Simulator::Now().GetSeconds()) +
-                trace::CsvField(spec_.nodes.at(node).name) + "," + trace::CsvField(text));
+  const double now = ns3::Simulator::Now().GetSeconds();
+  const std::string& name = spec_.nodes.at(node).name;
+  out_->log.Row(Format("%.6f,", now) + trace::CsvField(name) + "," + trace::CsvField(text));
+  // "transition FROM -> TO: why"
+  if (text.rfind("transition ", 0) == 0) {
+    const auto arrow = text.find(" -> "), colon = text.find(": ", text.find(" -> ") + 4);
+    if (arrow != std::string::npos) {
+      const std::string from = text.substr(11, arrow - 11);
+      const std::string to = text.substr(arrow + 4, colon == std::string::npos ? std::string::npos : colon - arrow - 4);
+      const std::string why = colon == std::string::npos ? "" : text.substr(colon + 2);
+      out_->transitions.Row(Format("%.6f,", now) + trace::CsvField(name) + "," + trace::CsvField(from) + "," +
+                            trace::CsvField(to) + "," + trace::CsvField(why));
+    }
+  }
+  // "metric NAME VALUE"
+  if (text.rfind("metric ", 0) == 0) {
+    std::istringstream words(text.substr(7));
+    std::string metric;
+    double value;
+    if (words >> metric >> value) out_->metrics[name][metric].push_back(value);
+  }
+  for (const std::string& end : spec_.end_when_logged)
+    if (text == end && out_->ended_by.empty()) {
+      out_->ended_by = "'" + end + "' logged by " + name;
+      ns3::Simulator::Stop();
+    }
+}
+
+void World::SwitchOff(NodeId node) {
+  switched_off_.at(node) = true;
+  models_[node]->Drive({});
+  transport_->SwitchOff(node);
+  Log(node, "switched off");
 }
 
 void World::Deliver(NodeId to, const Message& m) {
@@ -156,7 +194,7 @@ void World::Deliver(NodeId to, const Message& m) {
                             spec_.nodes.at(to).name.c_str(), kDelivery[static_cast<int>(m.delivery)],
                             m.payload.size(), m.time_received, delay,
                             m.hops ? std::to_string(*m.hops).c_str() : ""));
-  if (!controllers_.at(to)) return;
+  if (!controllers_.at(to) || switched_off_[to]) return;
   StageTimer timer(profile_.controllers);
   try {
     controllers_[to]->OnMessage(*nodes_[to], m);
@@ -181,6 +219,7 @@ void World::PhysicsStep() {
 }
 
 void World::ControlStep(std::size_t index) {
+  if (switched_off_[index]) return;
   {
     StageTimer timer(profile_.controllers);
     try {
@@ -242,6 +281,8 @@ RunResult World::Run(const RunOptions& options) {
   });
   for (std::size_t i = 0; i < controllers_.size(); ++i)
     if (controllers_[i]) ns3::Simulator::ScheduleNow(&World::ControlStep, this, i);
+  for (const NodeEvent& e : spec_.events)
+    ns3::Simulator::Schedule(Period(e.time), &World::SwitchOff, this, static_cast<NodeId>(e.node));
   std::function<void()> record = [this, &record] {
     Record(false);
     ns3::Simulator::Schedule(Period(spec_.trajectory_interval), record);
@@ -270,17 +311,20 @@ RunResult World::Run(const RunOptions& options) {
   out_->trajectories.Commit();
   out_->log.Commit();
   out_->messages.Commit();
+  out_->transitions.Commit();
   Fingerprint fp;
   fp.Add(spec_.seed);
   fp.Add(out_->trajectories.hash());
   fp.Add(out_->log.hash());
   fp.Add(out_->messages.hash());
+  fp.Add(out_->transitions.hash());
   nlohmann::ordered_json network_summary;
   transport_->Finish(fp, network_summary, result.files);
   result.fingerprint = fp.Hex();
   result.profile = profile_;
   if (!options.output_dir.empty()) {
-    for (const char* f : {"trajectories.csv", "log.csv", "messages.csv", "summary.json"}) result.files.push_back(f);
+    for (const char* f : {"trajectories.csv", "log.csv", "messages.csv", "transitions.csv", "summary.json"})
+      result.files.push_back(f);
     WriteSummary(options, result, network_summary);
   }
   if (!out_->failure.empty()) throw WorldError(out_->failure);
@@ -318,7 +362,12 @@ void World::WriteSummary(const RunOptions& options, RunResult& result, const nlo
   j["rows"] = {{"trajectories", out_->trajectories.rows()},
                {"log", out_->log.rows()},
                {"messages", out_->messages.rows()}};
+  j["ended_by"] = out_->ended_by.empty() ? "duration" : out_->ended_by;
   j["message_delay_s"] = Quartiles(out_->delays);
+  nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
+  for (const auto& [node, named] : out_->metrics)
+    for (const auto& [metric, values] : named) metrics[node][metric] = Quartiles(values);
+  j["metrics"] = metrics;
   for (const auto& [key, value] : extra.items()) j[key] = value;
   j["files"] = result.files;
   WriteFileAtomically(options.output_dir + "/summary.json", j.dump(2) + "\n");

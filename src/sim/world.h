@@ -82,6 +82,7 @@ class World : public agents::NodeDirectory {
   void Record(bool final_row);
   void Deliver(NodeId to, const Message& message);
   void ShowProgress();
+  void SwitchOff(NodeId node);
   void WriteSummary(const RunOptions& options, RunResult& result, const nlohmann::ordered_json& extra);
 
   RunSpec spec_;
@@ -101,6 +102,7 @@ class World : public agents::NodeDirectory {
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   bool ran_ = false;
+  std::vector<bool> switched_off_;
   std::chrono::steady_clock::time_point wall_start_, last_progress_;
 };
 

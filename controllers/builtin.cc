@@ -8,6 +8,8 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(ConstantVelocityInfo());
   registry.Add(WaypointInfo());
   registry.Add(PingerInfo());
+  registry.Add(HelpRequestMoteInfo());
+  registry.Add(HelpRequestRobotInfo());
 }
 
 }  // namespace sanet::controllers

@@ -8,5 +8,7 @@ namespace sanet::controllers {
 ControllerInfo ConstantVelocityInfo();
 ControllerInfo WaypointInfo();
 ControllerInfo PingerInfo();
+ControllerInfo HelpRequestMoteInfo();
+ControllerInfo HelpRequestRobotInfo();
 
 }  // namespace sanet::controllers

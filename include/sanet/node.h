@@ -58,6 +58,7 @@ class Node {
   virtual NodeId Id() const = 0;
   virtual const std::string& Name() const = 0;
   virtual std::optional<NodeId> Lookup(const std::string& name) const = 0;
+  virtual std::string NameOf(NodeId id) const = 0;  // "" for an unknown id
   virtual std::size_t NodeCount() const = 0;
 
   // Sensors: empty when the node has no such sensor (or, for the bearing, when the target is out

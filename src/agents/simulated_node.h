@@ -16,6 +16,7 @@ class NodeDirectory {
  public:
   virtual ~NodeDirectory() = default;
   virtual std::optional<NodeId> Lookup(const std::string& name) const = 0;
+  virtual std::string NameOf(NodeId id) const = 0;
   virtual std::size_t NodeCount() const = 0;
   virtual Pose2D TruePose(NodeId node) const = 0;
   virtual void Log(NodeId node, const std::string& text) = 0;
@@ -32,6 +33,7 @@ class SimulatedNode : public Node {
   NodeId Id() const override { return id_; }
   const std::string& Name() const override { return name_; }
   std::optional<NodeId> Lookup(const std::string& name) const override { return directory_.Lookup(name); }
+  std::string NameOf(NodeId id) const override { return directory_.NameOf(id); }
   std::size_t NodeCount() const override { return directory_.NodeCount(); }
 
   std::optional<RangeScan> Ir() override { return model_.Ir(); }

@@ -26,6 +26,9 @@ class Transport {
   // The node's radio goes silent: it neither sends nor receives from now on.
   virtual void SwitchOff(NodeId node) = 0;
 
+  // IP packets each node received (empty where the transport does not count them).
+  virtual std::vector<std::uint64_t> PacketsReceived() const { return {}; }
+
   // Before the run: where to write traces ("" for nowhere).
   virtual void Open(const std::string& output_dir) { (void)output_dir; }
   // After the run: write the traces whole, add them to the fingerprint, the summary and the list

@@ -281,6 +281,12 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
   }
 }
 
+std::vector<std::uint64_t> WirelessNetwork::PacketsReceived() const {
+  std::vector<std::uint64_t> out;
+  for (const PacketCounts& c : trace_.counts()) out.push_back(c.received);
+  return out;
+}
+
 void WirelessNetwork::SwitchOff(NodeId node) {
   ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy()->SetOffMode();
 }

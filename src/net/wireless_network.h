@@ -40,6 +40,7 @@ class WirelessNetwork : public Transport {
   void Open(const std::string& output_dir) override;
   void Finish(Fingerprint& fingerprint, nlohmann::ordered_json& summary, std::vector<std::string>& files) override;
 
+  std::vector<std::uint64_t> PacketsReceived() const override;
   const AddressBook& addresses() const { return book_; }
   const PacketTrace& packet_trace() const { return trace_; }
 

@@ -443,7 +443,8 @@ Scenario LoadScenario(const std::string& path) {
     }
   }
   if (auto end = root.Get("end")) {
-    end->ExpectKeys({"when_logged"});
+    end->ExpectKeys({"when_logged", "grace"});
+    if (auto grace = end->Get("grace")) run.end_grace = grace->Number(0, 1e6);
     const Field logged = end->Require("when_logged");
     if (logged.IsScalar()) run.end_when_logged.push_back(logged.Text());
     else for (const Field& line : logged.Items()) run.end_when_logged.push_back(line.Text());

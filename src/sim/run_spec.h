@@ -59,6 +59,7 @@ struct RunSpec {
   std::vector<NodeEvent> events;
   // The run ends early when a controller logs one of these lines.
   std::vector<std::string> end_when_logged;
+  double end_grace = 0;  // s the run goes on after the end condition, for messages in flight
   bool figures = false;       // draw map.svg and packets.svg
   double figure_tick = 50;    // s between time marks on trajectories
 };

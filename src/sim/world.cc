@@ -20,6 +20,7 @@
 #include "core/statistics.h"
 #include "net/local_transport.h"
 #include "net/wireless_network.h"
+#include "trace/figures.h"
 
 namespace sanet::sim {
 namespace {
@@ -69,6 +70,7 @@ struct World::Outputs {
   std::vector<double> delays;  // of every message delivered, s
   std::map<std::string, std::map<std::string, std::vector<double>>> metrics;  // node -> name -> values
   std::string ended_by;  // the end condition met, if any
+  std::map<NodeId, trace::Track> tracks;  // of robots, for the figures
   std::string failure;  // first controller error, which ends the run early
   Outputs(const std::string& dir)
       : trajectories(dir.empty() ? std::nullopt : std::optional(dir + "/trajectories.csv"),
@@ -175,7 +177,7 @@ void World::Log(NodeId node, const std::string& text) {
   for (const std::string& end : spec_.end_when_logged)
     if (text == end && out_->ended_by.empty()) {
       out_->ended_by = "'" + end + "' logged by " + name;
-      ns3::Simulator::Stop();
+      ns3::Simulator::Stop(Period(spec_.end_grace));  // let the last messages arrive
     }
 }
 
@@ -247,6 +249,10 @@ void World::Record(bool final_row) {
                                  std::fabs(WrapAngle(p.theta - last->pose.theta)) < 5e-5))
       continue;
     last = Recorded{p, now};
+    if (spec_.figures && models_[id]->mobile()) {
+      trace::Track& track = out_->tracks[id];
+      track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
+    }
     out_->trajectories.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, spec_.nodes[id].name.c_str(), p.x,
                                   p.y, p.theta));
   }
@@ -325,10 +331,26 @@ RunResult World::Run(const RunOptions& options) {
   if (!options.output_dir.empty()) {
     for (const char* f : {"trajectories.csv", "log.csv", "messages.csv", "transitions.csv", "summary.json"})
       result.files.push_back(f);
+    if (spec_.figures) WriteFigures(options.output_dir, result);
     WriteSummary(options, result, network_summary);
   }
   if (!out_->failure.empty()) throw WorldError(out_->failure);
   return result;
+}
+
+void World::WriteFigures(const std::string& dir, RunResult& result) {
+  trace::FigureInput in{spec_, {}, {}, transport_->PacketsReceived()};
+  for (const auto& m : models_) in.final_poses.push_back(m->body().pose());
+  for (auto& [id, track] : out_->tracks) {
+    track.node = spec_.nodes[id].name;
+    in.tracks.push_back(track);
+  }
+  WriteFileAtomically(dir + "/map.svg", trace::MapSvg(in, spec_.figure_tick));
+  result.files.push_back("map.svg");
+  if (!in.received.empty()) {
+    WriteFileAtomically(dir + "/packets.svg", trace::PacketsSvg(in));
+    result.files.push_back("packets.svg");
+  }
 }
 
 void World::WriteSummary(const RunOptions& options, RunResult& result, const nlohmann::ordered_json& extra) {

@@ -71,6 +71,7 @@ class World : public agents::NodeDirectory {
 
   // NodeDirectory
   std::optional<NodeId> Lookup(const std::string& name) const override;
+  std::string NameOf(NodeId id) const override { return id < spec_.nodes.size() ? spec_.nodes[id].name : ""; }
   std::size_t NodeCount() const override { return spec_.nodes.size(); }
   Pose2D TruePose(NodeId node) const override;
   void Log(NodeId node, const std::string& text) override;
@@ -83,6 +84,7 @@ class World : public agents::NodeDirectory {
   void Deliver(NodeId to, const Message& message);
   void ShowProgress();
   void SwitchOff(NodeId node);
+  void WriteFigures(const std::string& dir, RunResult& result);
   void WriteSummary(const RunOptions& options, RunResult& result, const nlohmann::ordered_json& extra);
 
   RunSpec spec_;

@@ -1,0 +1,159 @@
+#include "trace/figures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace sanet::trace {
+namespace {
+
+constexpr double kWidth = 800;  // px
+constexpr const char* kColors[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+
+std::string Num(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.1f", v);
+  return s;
+}
+
+std::string Escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
+
+// World metres to picture pixels, y up, with a margin around everything drawn.
+class Frame {
+ public:
+  explicit Frame(const FigureInput& in) {
+    auto grow = [&](double x, double y) {
+      x0_ = std::min(x0_, x), x1_ = std::max(x1_, x), y0_ = std::min(y0_, y), y1_ = std::max(y1_, y);
+    };
+    for (const Pose2D& p : in.final_poses) grow(p.x, p.y);
+    for (const auto& n : in.spec.nodes) grow(n.pose.x, n.pose.y);
+    for (const Track& t : in.tracks)
+      for (std::size_t i = 0; i < t.x.size(); ++i) grow(t.x[i], t.y[i]);
+    for (const auto& o : in.spec.obstacles) {
+      const double r = std::hypot(o.box.size.x, o.box.size.y) / 2;
+      grow(o.box.center.x - r, o.box.center.y - r);
+      grow(o.box.center.x + r, o.box.center.y + r);
+    }
+    const double pad = 0.06 * std::max({x1_ - x0_, y1_ - y0_, 1.0});
+    x0_ -= pad, x1_ += pad, y0_ -= pad, y1_ += pad;
+    scale_ = kWidth / (x1_ - x0_);
+  }
+  double X(double x) const { return (x - x0_) * scale_; }
+  double Y(double y) const { return (y1_ - y) * scale_; }
+  double height() const { return (y1_ - y0_) * scale_; }
+  double scale() const { return scale_; }
+  std::string Point(double x, double y) const { return Num(X(x)) + "," + Num(Y(y)); }
+
+ private:
+  double x0_ = 1e300, x1_ = -1e300, y0_ = 1e300, y1_ = -1e300, scale_ = 1;
+};
+
+std::string Header(const Frame& f, const std::string& title) {
+  std::ostringstream s;
+  s << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+    << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << Num(kWidth) << "\" height=\"" << Num(f.height() + 40)
+    << "\" viewBox=\"0 -40 " << Num(kWidth) << " " << Num(f.height() + 40) << "\" font-family=\"sans-serif\">\n"
+    << "<title>" << Escape(title) << "</title>\n"
+    << "<rect x=\"0\" y=\"0\" width=\"" << Num(kWidth) << "\" height=\"" << Num(f.height())
+    << "\" fill=\"#fafafa\" stroke=\"#999\"/>\n"
+    << "<text x=\"8\" y=\"-14\" font-size=\"16\">" << Escape(title) << "</text>\n";
+  return s.str();
+}
+
+void Obstacles(std::ostringstream& s, const Frame& f, const FigureInput& in) {
+  for (const auto& o : in.spec.obstacles) {
+    // Outlined as well, so that a thin wall stays visible on a large field.
+    s << "<polygon fill=\"#555\" stroke=\"#555\" stroke-width=\"3\" stroke-linejoin=\"round\" points=\"";
+    for (auto [u, v] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+      const Vec2 corner = Rotate({u * o.box.size.x / 2, v * o.box.size.y / 2}, o.box.yaw);
+      s << f.Point(o.box.center.x + corner.x, o.box.center.y + corner.y) << " ";
+    }
+    s << "\"><title>" << o.kind << "</title></polygon>\n";
+  }
+}
+
+// A scale bar of a round length in the bottom-left corner.
+void ScaleBar(std::ostringstream& s, const Frame& f) {
+  double metres = std::pow(10.0, std::floor(std::log10(150 / f.scale())));
+  if (metres * f.scale() < 60) metres *= 5;
+  const double y = f.height() - 12;
+  s << "<line x1=\"12\" y1=\"" << Num(y) << "\" x2=\"" << Num(12 + metres * f.scale()) << "\" y2=\"" << Num(y)
+    << "\" stroke=\"#000\" stroke-width=\"2\"/><text x=\"12\" y=\"" << Num(y - 5) << "\" font-size=\"11\">"
+    << Num(metres) << " m</text>\n";
+}
+
+}  // namespace
+
+std::string MapSvg(const FigureInput& in, double tick) {
+  const Frame f(in);
+  std::ostringstream s;
+  s << Header(f, in.spec.name + ": trajectories (a mark every " + Num(tick) + " s)");
+  Obstacles(s, f, in);
+  for (std::size_t i = 0; i < in.spec.nodes.size(); ++i) {
+    if (in.spec.nodes[i].model.kind != robots::ModelKind::kMote) continue;
+    const Pose2D& p = in.final_poses[i];
+    s << "<rect x=\"" << Num(f.X(p.x) - 3) << "\" y=\"" << Num(f.Y(p.y) - 3)
+      << "\" width=\"6\" height=\"6\" fill=\"#1a7f37\"/><text x=\"" << Num(f.X(p.x) + 5) << "\" y=\""
+      << Num(f.Y(p.y) - 5) << "\" font-size=\"10\" fill=\"#1a7f37\">" << Escape(in.spec.nodes[i].name) << "</text>\n";
+  }
+  for (std::size_t k = 0; k < in.tracks.size(); ++k) {
+    const Track& t = in.tracks[k];
+    const char* color = kColors[k % 6];
+    s << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\" points=\"";
+    for (std::size_t i = 0; i < t.x.size(); ++i) s << f.Point(t.x[i], t.y[i]) << " ";
+    s << "\"><title>" << Escape(t.node) << "</title></polyline>\n";
+    double next_tick = tick;
+    for (std::size_t i = 0; i < t.x.size(); ++i) {
+      if (t.t[i] + 1e-9 < next_tick) continue;
+      s << "<circle cx=\"" << Num(f.X(t.x[i])) << "\" cy=\"" << Num(f.Y(t.y[i])) << "\" r=\"3\" fill=\"" << color
+        << "\"/><text x=\"" << Num(f.X(t.x[i]) + 4) << "\" y=\"" << Num(f.Y(t.y[i]) + 12) << "\" font-size=\"9\" fill=\""
+        << color << "\">" << Num(next_tick).substr(0, Num(next_tick).size() - 2) << " s</text>\n";
+      while (next_tick <= t.t[i] + 1e-9) next_tick += tick;
+    }
+    if (!t.x.empty())
+      s << "<text x=\"" << Num(f.X(t.x.front()) + 6) << "\" y=\"" << Num(f.Y(t.y.front()) + 4) << "\" font-size=\"12\" fill=\""
+        << color << "\">" << Escape(t.node) << " (start)</text>\n";
+  }
+  ScaleBar(s, f);
+  s << "</svg>\n";
+  return s.str();
+}
+
+std::string PacketsSvg(const FigureInput& in) {
+  const Frame f(in);
+  std::ostringstream s;
+  s << Header(f, in.spec.name + ": packets received per node (darker = more)");
+  Obstacles(s, f, in);
+  // Shades span the range received, from the fewest (light) to the most (dark).
+  const auto [few_it, most_it] = std::minmax_element(in.received.begin(), in.received.end());
+  const double few = in.received.empty() ? 0 : *few_it, most = in.received.empty() ? 0 : *most_it;
+  for (std::size_t i = 0; i < in.spec.nodes.size() && i < in.received.size(); ++i) {
+    const Pose2D& p = in.final_poses[i];
+    const double share = most > few ? (in.received[i] - few) / (most - few) : 1;
+    const int level = static_cast<int>(std::lround(235 - 200 * share));
+    char fill[16];
+    std::snprintf(fill, sizeof fill, "#%02x%02x%02x", level, level, level);
+    const bool mote = in.spec.nodes[i].model.kind == robots::ModelKind::kMote;
+    s << "<circle cx=\"" << Num(f.X(p.x)) << "\" cy=\"" << Num(f.Y(p.y)) << "\" r=\"" << (mote ? 14 : 9) << "\" fill=\""
+      << fill << "\" stroke=\"" << (mote ? "#333" : "#d62728") << "\"><title>" << Escape(in.spec.nodes[i].name) << ": "
+      << in.received[i] << " packets</title></circle>\n"
+      << "<text x=\"" << Num(f.X(p.x)) << "\" y=\"" << Num(f.Y(p.y) + 26) << "\" font-size=\"10\" text-anchor=\"middle\">"
+      << Escape(in.spec.nodes[i].name) << " " << in.received[i] << "</text>\n";
+    if (!mote) s << "<!-- robots are drawn where they ended -->\n";
+  }
+  ScaleBar(s, f);
+  s << "</svg>\n";
+  return s.str();
+}
+
+}  // namespace sanet::trace

@@ -1,0 +1,28 @@
+// Figures of a run as SVG files a browser opens: the map (obstacles, motes, trajectories with a
+// mark every `tick` seconds) and the packets map (each node shaded by the packets it received).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/run_spec.h"
+
+namespace sanet::trace {
+
+struct Track {
+  std::string node;
+  std::vector<double> t, x, y;
+};
+
+struct FigureInput {
+  const sim::RunSpec& spec;
+  std::vector<Pose2D> final_poses;        // per node
+  std::vector<Track> tracks;              // of the nodes that moved
+  std::vector<std::uint64_t> received;    // per node, empty without a network
+};
+
+std::string MapSvg(const FigureInput& in, double tick);
+std::string PacketsSvg(const FigureInput& in);
+
+}  // namespace sanet::trace

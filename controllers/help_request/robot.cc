@@ -44,7 +44,7 @@ class HelpRequestRobot : public Controller {
     if (!m) return;
     const NodeId from = message.from;
     if (m->kind == Kind::kRequest) {
-      if (std::find(waiting_.begin(), waiting_.end(), from) == waiting_.end() && from != dest_) {
+      if (std::find(waiting_.begin(), waiting_.end(), from) == waiting_.end() && !(has_dest_ && from == dest_)) {
         waiting_.push_back(from);
         node.Log("help request from " + node.NameOf(from));
       }

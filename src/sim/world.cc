@@ -71,6 +71,7 @@ struct World::Outputs {
   std::map<std::string, std::map<std::string, std::vector<double>>> metrics;  // node -> name -> values
   std::string ended_by;  // the end condition met, if any
   std::map<NodeId, trace::Track> tracks;  // of robots, for the figures
+  std::map<std::string, int> transitions_to;  // state -> transitions into it
   std::string failure;  // first controller error, which ends the run early
   Outputs(const std::string& dir)
       : trajectories(dir.empty() ? std::nullopt : std::optional(dir + "/trajectories.csv"),
@@ -163,6 +164,7 @@ void World::Log(NodeId node, const std::string& text) {
       const std::string from = text.substr(11, arrow - 11);
       const std::string to = text.substr(arrow + 4, colon == std::string::npos ? std::string::npos : colon - arrow - 4);
       const std::string why = colon == std::string::npos ? "" : text.substr(colon + 2);
+      ++out_->transitions_to[to];
       out_->transitions.Row(Format("%.6f,", now) + trace::CsvField(name) + "," + trace::CsvField(from) + "," +
                             trace::CsvField(to) + "," + trace::CsvField(why));
     }
@@ -390,6 +392,7 @@ void World::WriteSummary(const RunOptions& options, RunResult& result, const nlo
   for (const auto& [node, named] : out_->metrics)
     for (const auto& [metric, values] : named) metrics[node][metric] = Quartiles(values);
   j["metrics"] = metrics;
+  j["transitions_to"] = out_->transitions_to;
   for (const auto& [key, value] : extra.items()) j[key] = value;
   j["files"] = result.files;
   WriteFileAtomically(options.output_dir + "/summary.json", j.dump(2) + "\n");

@@ -3,12 +3,14 @@
 
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <unistd.h>
 
 #include "agents/controller_registry.h"
 #include "builtin.h"
 #include "robots/node_model.h"
 #include "scenario/scenario_loader.h"
+#include "sim/sweep.h"
 #include "sim/world.h"
 
 namespace {
@@ -51,6 +53,47 @@ int Run(const RunArgs& args, agents::Registry& registry) {
                 r.real_time_factor, static_cast<unsigned long long>(r.events));
     std::printf("  fingerprint %s\n  results in %s/\n", r.fingerprint.c_str(), options.output_dir.c_str());
   }
+  return 0;
+}
+
+// "1-10" or "1,4,7" or a mix ("1-3,8").
+std::vector<std::uint64_t> ParseSeeds(const std::string& text) {
+  std::vector<std::uint64_t> seeds;
+  std::stringstream parts(text);
+  for (std::string part; std::getline(parts, part, ',');) {
+    const auto dash = part.find('-');
+    try {
+      std::size_t used = 0;
+      const std::uint64_t first = std::stoull(part.substr(0, dash), &used);
+      if (used != (dash == std::string::npos ? part.size() : dash)) throw std::invalid_argument(part);
+      const std::uint64_t last = dash == std::string::npos ? first : std::stoull(part.substr(dash + 1), &used);
+      if (dash != std::string::npos && used != part.size() - dash - 1) throw std::invalid_argument(part);
+      if (last < first || last - first > 100000) throw std::invalid_argument(part);
+      for (std::uint64_t s = first; s <= last; ++s) seeds.push_back(s);
+    } catch (const std::exception&) {
+      throw CLI::ValidationError("--seeds", "'" + part + "' is not a seed or a range like 1-10");
+    }
+  }
+  return seeds;
+}
+
+int Sweep(const std::string& file, const std::string& seeds_text, const std::string& output, bool quiet,
+          agents::Registry& registry) {
+  const scenario::Scenario sc = LoadChecked(file, registry);
+  const std::vector<std::uint64_t> seeds = ParseSeeds(seeds_text);
+  const std::string dir = output.empty() ? sc.output_folder + "-sweep" : output;
+  const sim::SweepResult r = sim::RunSweep(sc.run, seeds, dir, file, registry, [&](const sim::SweepRun& run) {
+    if (!quiet)
+      std::printf("  seed %llu: %s, ended by %s at %.1f s (%.1f s wall)\n", (unsigned long long)run.seed,
+                  run.status.c_str(), run.ended_by.c_str(), run.ended_at, run.wall);
+    std::fflush(stdout);
+  });
+  if (!quiet)
+    std::printf("%d of %zu runs met the end condition; end time %.1f s +/- %.1f s (95 %% confidence)\n"
+                "results in %s/ (sweep.csv, sweep.json, seed-*/)\n",
+                r.ended_by_condition, r.runs.size(), r.mean, r.ci95, dir.c_str());
+  for (const auto& run : r.runs)
+    if (run.status != "completed") return kExitRunFailed;
   return 0;
 }
 
@@ -103,6 +146,16 @@ int main(int argc, char** argv) {
                                                           "types, ranges, models, controllers and their parameters");
   validate_cmd->add_option("scenario", validate_file, "Scenario file (YAML)")->required();
 
+  std::string sweep_file, sweep_seeds = "1-10", sweep_output;
+  bool sweep_quiet = false;
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a scenario once per seed (replications) and summarise "
+                                                    "when the runs met their end condition (mean, 95% confidence)");
+  sweep_cmd->add_option("scenario", sweep_file, "Scenario file (YAML)")->required();
+  sweep_cmd->add_option("--seeds", sweep_seeds, "Seeds: a list and/or ranges, e.g. 1-10 or 1,5,9")->capture_default_str();
+  sweep_cmd->add_option("-o,--output", sweep_output, "Folder for the runs and sweep.csv/sweep.json "
+                                                     "(default: results/<name>-sweep)");
+  sweep_cmd->add_flag("-q,--quiet", sweep_quiet, "Print nothing but errors");
+
   std::vector<std::string> libraries;
   CLI::App* list_cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
   list_cmd->add_option("--library", libraries, "Also load this controller library (repeatable)");
@@ -114,8 +167,12 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) return Run(run, registry);
     if (*validate_cmd) return Validate(validate_file, registry);
+    if (*sweep_cmd) return Sweep(sweep_file, sweep_seeds, sweep_output, sweep_quiet, registry);
     for (const auto& lib : libraries) registry.LoadLibrary(lib);
     return List(registry);
+  } catch (const CLI::ValidationError& e) {
+    std::fprintf(stderr, "sanet: error: %s\n", e.what());
+    return kExitScenarioError;
   } catch (const scenario::ScenarioError& e) {
     std::fprintf(stderr, "sanet: error: %s\n", e.what());
     return kExitScenarioError;

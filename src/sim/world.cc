@@ -70,6 +70,7 @@ struct World::Outputs {
   std::vector<double> delays;  // of every message delivered, s
   std::map<std::string, std::map<std::string, std::vector<double>>> metrics;  // node -> name -> values
   std::string ended_by;  // the end condition met, if any
+  double ended_at = 0;   // s, when it was met
   std::map<NodeId, trace::Track> tracks;  // of robots, for the figures
   std::map<std::string, int> transitions_to;  // state -> transitions into it
   std::string failure;  // first controller error, which ends the run early
@@ -179,6 +180,7 @@ void World::Log(NodeId node, const std::string& text) {
   for (const std::string& end : spec_.end_when_logged)
     if (text == end && out_->ended_by.empty()) {
       out_->ended_by = "'" + end + "' logged by " + name;
+      out_->ended_at = now;
       ns3::Simulator::Stop(Period(spec_.end_grace));  // let the last messages arrive
     }
 }
@@ -312,6 +314,8 @@ RunResult World::Run(const RunOptions& options) {
   RunResult result;
   result.simulated = std::min(ns3::Simulator::Now().GetSeconds(), spec_.duration);
   Record(/*final_row=*/true);
+  ended_by_ = out_->ended_by;
+  ended_at_ = out_->ended_at;
   result.wall = Since(wall_start_);
   result.real_time_factor = result.wall > 0 ? result.simulated / result.wall : 0;
   result.events = ns3::Simulator::GetEventCount();
@@ -387,6 +391,7 @@ void World::WriteSummary(const RunOptions& options, RunResult& result, const nlo
                {"log", out_->log.rows()},
                {"messages", out_->messages.rows()}};
   j["ended_by"] = out_->ended_by.empty() ? "duration" : out_->ended_by;
+  j["ended_at_s"] = out_->ended_by.empty() ? result.simulated : out_->ended_at;
   j["message_delay_s"] = Quartiles(out_->delays);
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
   for (const auto& [node, named] : out_->metrics)

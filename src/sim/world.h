@@ -65,6 +65,9 @@ class World : public agents::NodeDirectory {
   RunResult Run(const RunOptions& options);
 
   const RunSpec& spec() const { return spec_; }
+  // After Run: the end condition that stopped the run ("" if it ran its duration).
+  const std::string& ended_by() const { return ended_by_; }
+  double ended_at() const { return ended_at_; }  // s, when the end condition was met
   robots::NodeModel& model(NodeId id) { return *models_.at(id); }
   // Called after every physics step with the simulated time (tests watch the world with it).
   void SetStepObserver(std::function<void(double)> observer) { step_observer_ = std::move(observer); }
@@ -104,6 +107,8 @@ class World : public agents::NodeDirectory {
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   bool ran_ = false;
+  std::string ended_by_;
+  double ended_at_ = 0;
   std::vector<bool> switched_off_;
   std::chrono::steady_clock::time_point wall_start_, last_progress_;
 };

@@ -7,6 +7,7 @@ import subprocess
 import sys
 import tempfile
 import unittest
+import xml.dom.minidom
 
 SANET = sys.argv.pop(1)
 SOURCE = sys.argv.pop(1)
@@ -83,6 +84,37 @@ class Cli(unittest.TestCase):
             self.assertTrue(all(int(r["hops"]) >= 8 for r in corner), corner)
             for name in ("packets.csv", "routes.csv", "flowmon.xml", "packets/m12.csv"):
                 self.assertTrue(os.path.exists(os.path.join(tmp, name)), name)
+
+    def test_sweep_runs_each_seed_and_summarises_the_end_times(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = sanet("sweep", SCENARIO, "--seeds", "1-2,5", "-o", tmp, "-q")
+            self.assertEqual(out.returncode, 0, out.stderr)
+            sweep = json.load(open(os.path.join(tmp, "sweep.json")))
+            self.assertEqual(sweep["runs"], 3)
+            self.assertEqual(sweep["ended_by_condition"], 3)
+            self.assertEqual([r["seed"] for r in sweep["per_seed"]], [1, 2, 5])
+            self.assertTrue(os.path.exists(os.path.join(tmp, "seed-5", "trajectories.csv")))
+        bad = sanet("sweep", SCENARIO, "--seeds", "3-x")
+        self.assertEqual(bad.returncode, 2)
+        self.assertIn("'3-x' is not a seed", bad.stderr)
+
+    def test_the_help_request_case_study_runs_to_arrival_with_its_figures(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = sanet("run", os.path.join(SOURCE, "scenarios", "help-request.yaml"), "-o", tmp, "-q")
+            self.assertEqual(out.returncode, 0, out.stderr)
+            summary = json.load(open(os.path.join(tmp, "summary.json")))
+            self.assertEqual(summary["ended_by"], "'arrived' logged by robot")
+            self.assertEqual(summary["transitions_to"]["done"], 1)
+            for key in ("min", "q1", "median", "q3", "max"):
+                self.assertIn(key, summary["network"]["route_discoveries"]["time_s"])
+                self.assertIn(key, summary["message_delay_s"])
+            self.assertIn("hop_time", summary["metrics"]["robot"])
+            self.assertIn("time_avoiding_obstacles", summary["metrics"]["robot"])
+            for figure in ("map.svg", "packets.svg"):
+                document = xml.dom.minidom.parse(os.path.join(tmp, figure))
+                self.assertEqual(document.documentElement.tagName, "svg")
+            marks = xml.dom.minidom.parse(os.path.join(tmp, "map.svg")).getElementsByTagName("circle")
+            self.assertGreater(len(marks), 15, "a mark every 50 s over about 1100 s")
 
     def test_missing_scenario_file_is_an_error_not_a_crash(self):
         out = sanet("run", "/no/such/file.yaml")

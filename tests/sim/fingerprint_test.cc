@@ -12,7 +12,7 @@ namespace {
 TEST(Fingerprint, ReadmeScenarioMatchesTheCommittedValue) {
   const scenario::Scenario sc = scenario::LoadScenario(SANET_SOURCE_DIR "/scenarios/around-the-wall.yaml");
   sim::World world(sc.run, testing::BuiltinRegistry());
-  EXPECT_EQ(world.Run({}).fingerprint, "8bb5c0b96539c811");
+  EXPECT_EQ(world.Run({}).fingerprint, "0b442ab1cc663678");
 }
 
 }  // namespace

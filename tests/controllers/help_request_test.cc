@@ -15,12 +15,6 @@ namespace {
 using namespace sanet::testing;
 using robots::ModelKind;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 struct Transition {
   double time;

@@ -23,12 +23,6 @@ namespace {
 using namespace sanet::testing;
 using robots::ModelKind;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Range of the default radio (16 dBm, log-distance exponent 3, 46.6777 dB at 1 m, frames
 // detected above -82 dBm): 16 - 46.6777 - 30 log10(d) = -82.

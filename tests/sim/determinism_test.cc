@@ -13,12 +13,6 @@ namespace {
 
 using namespace sanet::testing;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 struct Outputs {
   std::string fingerprint, trajectories, log;

@@ -18,12 +18,6 @@ namespace {
 using namespace sanet::testing;
 using robots::ModelKind;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 TEST(World, Ns3MobilityAnswersWithThePhysicsPoseAtTheTimeItAsks) {
   sim::World world(Spec(4, {Robot("r", ModelKind::kOmni3, {0, 0, 0},

@@ -1,6 +1,8 @@
 // Builders shared by tests: small run specs and a registry with the built-in controllers.
 #pragma once
 
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,6 +68,14 @@ inline agents::Registry& BuiltinRegistry() {
     return r;
   }();
   return *registry;
+}
+
+// The whole content of a file ("" if it cannot be read).
+inline std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 // Distance from point p to a static box (in the plane), 0 inside.

@@ -10,6 +10,8 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(PingerInfo());
   registry.Add(HelpRequestMoteInfo());
   registry.Add(HelpRequestRobotInfo());
+  registry.Add(FormationLeaderInfo());
+  registry.Add(FormationFollowerInfo());
 }
 
 }  // namespace sanet::controllers

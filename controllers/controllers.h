@@ -10,5 +10,7 @@ ControllerInfo WaypointInfo();
 ControllerInfo PingerInfo();
 ControllerInfo HelpRequestMoteInfo();
 ControllerInfo HelpRequestRobotInfo();
+ControllerInfo FormationLeaderInfo();
+ControllerInfo FormationFollowerInfo();
 
 }  // namespace sanet::controllers

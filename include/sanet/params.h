@@ -75,6 +75,14 @@ class Params {
     return v ? Scalar(key, *v) : fallback;
   }
 
+  // A word or a list of words, e.g. node names.
+  std::vector<std::string> Words(const std::string& key, std::vector<std::string> fallback) const {
+    const ParamValue* v = Find(key);
+    if (!v) return fallback;
+    if (v->shape == ParamValue::Shape::kTable) Fail(key, *v, "must be a word or a list of words");
+    return v->rows.at(0);
+  }
+
   std::vector<double> Numbers(const std::string& key, std::vector<double> fallback) const {
     const ParamValue* v = Find(key);
     if (!v) return fallback;

@@ -424,9 +424,12 @@ Scenario LoadScenario(const std::string& path) {
   if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
 
   if (auto messages = root.Get("messages")) {
-    if (run.network) messages->Fail("messages.latency is for runs without a network; with one, the network delivers");
-    messages->ExpectKeys({"latency"});
+    if (run.network && messages->Get("latency"))
+      messages->Get("latency")->Fail("is for runs without a network; with one, the network delivers");
+    messages->ExpectKeys({"latency", "loss", "delay"});
     Optional(*messages, "latency", run.message_latency, 0, 1000);
+    Optional(*messages, "loss", run.message_loss, 0, 1);
+    Optional(*messages, "delay", run.message_delay, 0, 1000);
   }
   if (auto events = root.Get("events")) {
     for (const Field& e : events->Items()) {
@@ -451,7 +454,13 @@ Scenario LoadScenario(const std::string& path) {
   }
   sc.output_folder = "results/" + run.name;
   if (auto outputs = root.Get("outputs")) {
-    outputs->ExpectKeys({"folder", "trajectory_interval", "figures", "figure_tick"});
+    outputs->ExpectKeys({"folder", "trajectory_interval", "figures", "figure_tick", "min_distance",
+                         "distance_reference"});
+    if (auto md = outputs->Get("min_distance")) run.min_distance = md->Bool();
+    if (auto ref = outputs->Get("distance_reference")) {
+      run.distance_reference = ref->NumberAbove(0, 1e6);
+      run.min_distance = true;
+    }
     if (auto figures = outputs->Get("figures")) run.figures = figures->Bool();
     if (auto tick = outputs->Get("figure_tick")) run.figure_tick = tick->NumberAbove(0, 1e9);
     if (auto folder = outputs->Get("folder")) sc.output_folder = folder->Text();

@@ -55,12 +55,16 @@ struct RunSpec {
   // The wireless network; without one, messages are delivered locally after message_latency.
   std::optional<net::NetworkSpec> network;
   double message_latency = 0.001;  // s, of the local transport
+  double message_loss = 0;         // probability that a controller never gets a message
+  double message_delay = 0;        // s added before a controller gets a message
   double trajectory_interval = 0.1;  // s between trajectory samples
   std::vector<NodeEvent> events;
   // The run ends early when a controller logs one of these lines.
   std::vector<std::string> end_when_logged;
   double end_grace = 0;  // s the run goes on after the end condition, for messages in flight
-  bool figures = false;       // draw map.svg and packets.svg
+  bool figures = false;       // draw map.svg and packets.svg (and min_distance.svg)
+  bool min_distance = false;  // record the smallest distance between robots over time
+  double distance_reference = 0;  // m; the summary says how long the smallest distance stayed within 10 % of it
   double figure_tick = 50;    // s between time marks on trajectories
 };
 

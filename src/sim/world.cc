@@ -66,8 +66,10 @@ std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, agents::R
 }
 
 struct World::Outputs {
-  trace::CsvSink trajectories, log, messages, transitions;
+  trace::CsvSink trajectories, log, messages, transitions, min_distance;
+  std::vector<std::pair<double, double>> min_distances;  // (time, smallest distance between robots)
   std::vector<double> delays;  // of every message delivered, s
+  std::uint64_t messages_lost = 0;  // dropped by the added message_loss
   std::map<std::string, std::map<std::string, std::vector<double>>> metrics;  // node -> name -> values
   std::string ended_by;  // the end condition met, if any
   double ended_at = 0;   // s, when it was met
@@ -80,10 +82,12 @@ struct World::Outputs {
         log(dir.empty() ? std::nullopt : std::optional(dir + "/log.csv"), "time,node,text"),
         messages(dir.empty() ? std::nullopt : std::optional(dir + "/messages.csv"),
                  "time_sent,from,to,delivery,bytes,time_received,delay,hops"),
-        transitions(dir.empty() ? std::nullopt : std::optional(dir + "/transitions.csv"), "time,node,from,to,why") {}
+        transitions(dir.empty() ? std::nullopt : std::optional(dir + "/transitions.csv"), "time,node,from,to,why"),
+        min_distance(std::nullopt, "time,min_distance,a,b") {}
 };
 
-World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
+World::World(const RunSpec& spec, agents::Registry& registry)
+    : spec_(spec), impairments_(spec.seed, "messages/impairments") {
   if (g_world_exists) throw WorldError("only one World may exist at a time (ns-3 is process-wide)");
   if (spec.physics_step <= 0) throw WorldError("physics step must be positive");
   g_world_exists = true;
@@ -122,7 +126,7 @@ World::World(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
     } else {
       transport_ = std::make_unique<net::LocalTransport>(spec.nodes.size(), spec.message_latency);
     }
-    transport_->SetReceiver([this](NodeId to, const Message& m) { Deliver(to, m); });
+    transport_->SetReceiver([this](NodeId to, const Message& m) { Receive(to, m); });
     for (NodeId id = 0; id < spec.nodes.size(); ++id) {
       const NodeSpec& n = spec.nodes[id];
       nodes_.push_back(std::make_unique<agents::SimulatedNode>(
@@ -192,6 +196,24 @@ void World::SwitchOff(NodeId node) {
   Log(node, "switched off");
 }
 
+// Impairments added on top of the network, as the receiving controller sees them: a message is
+// lost with probability `message_loss`, or reaches the controller `message_delay` later.
+void World::Receive(NodeId to, const Message& m) {
+  if (spec_.message_loss > 0 && impairments_.Uniform() < spec_.message_loss) {
+    ++out_->messages_lost;
+    return;
+  }
+  if (spec_.message_delay > 0) {
+    Message later = m;
+    ns3::Simulator::Schedule(Period(spec_.message_delay), [this, to, later]() mutable {
+      later.time_received = ns3::Simulator::Now().GetSeconds();
+      Deliver(to, later);
+    });
+    return;
+  }
+  Deliver(to, m);
+}
+
 void World::Deliver(NodeId to, const Message& m) {
   static const char* kDelivery[] = {"unicast", "broadcast", "flood"};
   const double delay = m.time_received - m.time_sent;
@@ -240,8 +262,23 @@ void World::ControlStep(std::size_t index) {
                            this, index);
 }
 
+// The smallest distance between any two robots (centre to centre), with the pair.
+void World::RecordMinDistance(double now) {
+  double best = HUGE_VAL;
+  std::size_t a = 0, b = 0;
+  for (std::size_t i = 0; i < vehicles_.size(); ++i)
+    for (std::size_t j = i + 1; j < vehicles_.size(); ++j) {
+      const double d = Norm(vehicles_[i]->body().pose().position() - vehicles_[j]->body().pose().position());
+      if (d < best) best = d, a = i, b = j;
+    }
+  if (best == HUGE_VAL) return;
+  out_->min_distances.push_back({now, best});
+  out_->min_distance.Row(Format("%.3f,%.4f,%s,%s", now, best, vehicle_names_[a].c_str(), vehicle_names_[b].c_str()));
+}
+
 void World::Record(bool final_row) {
   StageTimer timer(profile_.recording);
+  if (spec_.min_distance && !final_row) RecordMinDistance(std::min(ns3::Simulator::Now().GetSeconds(), spec_.duration));
   const double now = std::min(ns3::Simulator::Now().GetSeconds(), spec_.duration);
   for (NodeId id = 0; id < models_.size(); ++id) {
     const Pose2D p = models_[id]->body().pose();
@@ -282,6 +319,8 @@ RunResult World::Run(const RunOptions& options) {
   ran_ = true;
   if (!options.output_dir.empty()) std::filesystem::create_directories(options.output_dir);
   out_ = std::make_unique<Outputs>(options.output_dir);
+  if (spec_.min_distance && !options.output_dir.empty())
+    out_->min_distance = trace::CsvSink(options.output_dir + "/min_distance.csv", "time,min_distance,a,b");
 
   // Order at equal times follows scheduling order: controllers start, then record, physics.
   ns3::Simulator::ScheduleNow([this] {
@@ -299,8 +338,8 @@ RunResult World::Run(const RunOptions& options) {
   };
   ns3::Simulator::ScheduleNow(record);
   // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
-  for (const auto& m : models_)
-    if (m->mobile()) vehicles_.push_back(m.get());
+  for (NodeId id = 0; id < models_.size(); ++id)
+    if (models_[id]->mobile()) vehicles_.push_back(models_[id].get()), vehicle_names_.push_back(spec_.nodes[id].name);
   if (!vehicles_.empty()) ns3::Simulator::Schedule(Period(spec_.physics_step), &World::PhysicsStep, this);
   transport_->Open(options.output_dir);
   wall_start_ = last_progress_ = std::chrono::steady_clock::now();
@@ -324,12 +363,14 @@ RunResult World::Run(const RunOptions& options) {
   out_->log.Commit();
   out_->messages.Commit();
   out_->transitions.Commit();
+  out_->min_distance.Commit();
   Fingerprint fp;
   fp.Add(spec_.seed);
   fp.Add(out_->trajectories.hash());
   fp.Add(out_->log.hash());
   fp.Add(out_->messages.hash());
   fp.Add(out_->transitions.hash());
+  if (spec_.min_distance) fp.Add(out_->min_distance.hash());
   nlohmann::ordered_json network_summary;
   transport_->Finish(fp, network_summary, result.files);
   result.fingerprint = fp.Hex();
@@ -337,6 +378,7 @@ RunResult World::Run(const RunOptions& options) {
   if (!options.output_dir.empty()) {
     for (const char* f : {"trajectories.csv", "log.csv", "messages.csv", "transitions.csv", "summary.json"})
       result.files.push_back(f);
+    if (spec_.min_distance) result.files.push_back("min_distance.csv");
     if (spec_.figures) WriteFigures(options.output_dir, result);
     WriteSummary(options, result, network_summary);
   }
@@ -353,6 +395,12 @@ void World::WriteFigures(const std::string& dir, RunResult& result) {
   }
   WriteFileAtomically(dir + "/map.svg", trace::MapSvg(in, spec_.figure_tick));
   result.files.push_back("map.svg");
+  if (!out_->min_distances.empty()) {
+    WriteFileAtomically(dir + "/min_distance.svg",
+                        trace::LineSvg(spec_.name + ": smallest distance between robots", "time (s)", "distance (m)",
+                                       out_->min_distances, spec_.distance_reference));
+    result.files.push_back("min_distance.svg");
+  }
   if (!in.received.empty()) {
     WriteFileAtomically(dir + "/packets.svg", trace::PacketsSvg(in));
     result.files.push_back("packets.svg");
@@ -393,11 +441,24 @@ void World::WriteSummary(const RunOptions& options, RunResult& result, const nlo
   j["ended_by"] = out_->ended_by.empty() ? "duration" : out_->ended_by;
   j["ended_at_s"] = out_->ended_by.empty() ? result.simulated : out_->ended_at;
   j["message_delay_s"] = Quartiles(out_->delays);
+  j["messages_dropped_by_impairment"] = out_->messages_lost;
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
   for (const auto& [node, named] : out_->metrics)
     for (const auto& [metric, values] : named) metrics[node][metric] = Quartiles(values);
   j["metrics"] = metrics;
   j["transitions_to"] = out_->transitions_to;
+  if (spec_.min_distance && !out_->min_distances.empty()) {
+    auto lowest = std::min_element(out_->min_distances.begin(), out_->min_distances.end(),
+                                   [](const auto& a, const auto& b) { return a.second < b.second; });
+    nlohmann::ordered_json md = {{"min_m", lowest->second}, {"at_s", lowest->first}};
+    if (spec_.distance_reference > 0) {
+      std::size_t near = 0;
+      for (const auto& [t, d] : out_->min_distances) near += std::fabs(d - spec_.distance_reference) <= 0.1 * spec_.distance_reference;
+      md["reference_m"] = spec_.distance_reference;
+      md["fraction_within_10_percent"] = double(near) / out_->min_distances.size();
+    }
+    j["min_distance"] = md;
+  }
   for (const auto& [key, value] : extra.items()) j[key] = value;
   j["files"] = result.files;
   WriteFileAtomically(options.output_dir + "/summary.json", j.dump(2) + "\n");

@@ -14,6 +14,7 @@
 
 #include "agents/controller_registry.h"
 #include "agents/simulated_node.h"
+#include "core/random_stream.h"
 #include "net/transport.h"
 #include "sim/run_spec.h"
 #include "trace/csv_sink.h"
@@ -84,6 +85,8 @@ class World : public agents::NodeDirectory {
   void PhysicsStep();
   void ControlStep(std::size_t index);
   void Record(bool final_row);
+  void RecordMinDistance(double now);
+  void Receive(NodeId to, const Message& message);
   void Deliver(NodeId to, const Message& message);
   void ShowProgress();
   void SwitchOff(NodeId node);
@@ -91,9 +94,11 @@ class World : public agents::NodeDirectory {
   void WriteSummary(const RunOptions& options, RunResult& result, const nlohmann::ordered_json& extra);
 
   RunSpec spec_;
+  RandomStream impairments_;
   std::unique_ptr<physics::PhysicsWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
   std::vector<robots::NodeModel*> vehicles_;  // the models that move by themselves
+  std::vector<std::string> vehicle_names_;
   std::unique_ptr<net::Transport> transport_;
   std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
   std::vector<std::unique_ptr<Controller>> controllers_;  // null where a node has none

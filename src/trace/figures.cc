@@ -157,3 +157,43 @@ std::string PacketsSvg(const FigureInput& in) {
 }
 
 }  // namespace sanet::trace
+
+namespace sanet::trace {
+
+std::string LineSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
+                    const std::vector<std::pair<double, double>>& points, double reference) {
+  const double w = 800, h = 360, left = 60, bottom = 40, top = 40, right = 20;
+  double x0 = 0, x1 = 1, y1 = std::max(reference * 1.3, 1e-6);
+  for (const auto& [x, y] : points) x1 = std::max(x1, x), y1 = std::max(y1, y);
+  y1 *= 1.05;
+  const auto px = [&](double x) { return left + (x - x0) / (x1 - x0) * (w - left - right); };
+  const auto py = [&](double y) { return h - bottom - y / y1 * (h - top - bottom); };
+  std::ostringstream s;
+  s << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w
+    << "\" height=\"" << h << "\" font-family=\"sans-serif\">\n<title>" << Escape(title) << "</title>\n"
+    << "<rect width=\"" << w << "\" height=\"" << h << "\" fill=\"#fff\"/>\n"
+    << "<text x=\"8\" y=\"22\" font-size=\"16\">" << Escape(title) << "</text>\n"
+    << "<line x1=\"" << left << "\" y1=\"" << h - bottom << "\" x2=\"" << w - right << "\" y2=\"" << h - bottom
+    << "\" stroke=\"#000\"/><line x1=\"" << left << "\" y1=\"" << top << "\" x2=\"" << left << "\" y2=\"" << h - bottom
+    << "\" stroke=\"#000\"/>\n";
+  for (int i = 0; i <= 5; ++i) {
+    const double xv = x0 + (x1 - x0) * i / 5, yv = y1 * i / 5;
+    s << "<text x=\"" << Num(px(xv)) << "\" y=\"" << h - bottom + 16 << "\" font-size=\"11\" text-anchor=\"middle\">"
+      << Num(xv) << "</text><text x=\"" << left - 6 << "\" y=\"" << Num(py(yv) + 4)
+      << "\" font-size=\"11\" text-anchor=\"end\">" << Num(yv) << "</text>\n";
+  }
+  s << "<text x=\"" << Num((left + w - right) / 2) << "\" y=\"" << h - 6 << "\" font-size=\"12\" text-anchor=\"middle\">"
+    << Escape(x_label) << "</text><text x=\"14\" y=\"" << Num(top + 10) << "\" font-size=\"12\">" << Escape(y_label)
+    << "</text>\n";
+  if (reference > 0)
+    s << "<line x1=\"" << left << "\" x2=\"" << w - right << "\" y1=\"" << Num(py(reference)) << "\" y2=\""
+      << Num(py(reference)) << "\" stroke=\"#888\" stroke-dasharray=\"6,4\"/><text x=\"" << w - right - 4 << "\" y=\""
+      << Num(py(reference) - 4) << "\" font-size=\"11\" text-anchor=\"end\" fill=\"#555\">" << Num(reference)
+      << " m</text>\n";
+  s << "<polyline fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.2\" points=\"";
+  for (const auto& [x, y] : points) s << Num(px(x)) << "," << Num(py(y)) << " ";
+  s << "\"/>\n</svg>\n";
+  return s.str();
+}
+
+}  // namespace sanet::trace

@@ -78,7 +78,7 @@ const Case kCases[] = {
     {"radio_without_network", "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0], radio: {tx_power: 5}}\n", 3,
      "nodes[0].radio", "needs a 'network' section"},
     {"latency_with_network", "network: {}\nmessages: {latency: 0.1}\nnodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\n",
-     3, "messages", "for runs without a network"},
+     3, "messages.latency", "for runs without a network"},
     {"odometry_on_a_mote", "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {odometry: {noise: 0.1}}\n",
      6, "nodes[0].sensors.odometry", "no odometry"},
 };

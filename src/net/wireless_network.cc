@@ -314,7 +314,7 @@ void WirelessNetwork::OpenPcap(const std::string& dir) {
         "MonitorSnifferTx",
         ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t>(
             [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t) {
-              if (pcap_[id]) pcap_[id]->Write(ns3::Simulator::Now(), p);
+              if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
             }));
     phy->TraceConnectWithoutContext(
         "MonitorSnifferRx",
@@ -322,7 +322,7 @@ void WirelessNetwork::OpenPcap(const std::string& dir) {
                       ns3::SignalNoiseDbm, uint16_t>(
             [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
                        ns3::SignalNoiseDbm, uint16_t) {
-              if (pcap_[id]) pcap_[id]->Write(ns3::Simulator::Now(), p);
+              if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
             }));
   }
 }

@@ -6,7 +6,13 @@
 #include <sstream>
 #include <unistd.h>
 
+#include <ns3/global-value.h>
+#include <ns3/string.h>
+
+#include <nlohmann/json.hpp>
+
 #include "agents/controller_registry.h"
+#include "hil/sim_server.h"
 #include "builtin.h"
 #include "robots/node_model.h"
 #include "scenario/scenario_loader.h"
@@ -97,6 +103,36 @@ int Sweep(const std::string& file, const std::string& seeds_text, const std::str
   return 0;
 }
 
+int Serve(const std::string& file, const std::string& bind, int port, const std::string& output, bool quiet,
+          agents::Registry& registry) {
+  scenario::Scenario sc = LoadChecked(file, registry);
+  sc.run.robots_remote = true;
+  // The same schedule, run against the wall clock.
+  ns3::GlobalValue::Bind("SimulatorImplementationType", ns3::StringValue("ns3::RealtimeSimulatorImpl"));
+  sim::World world(sc.run, registry);
+  hil::ServerSettings settings;
+  settings.bind = bind;
+  settings.port = static_cast<std::uint16_t>(port);
+  hil::SimServer server(world, settings);
+  server.Start();
+  std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), bind.c_str(), server.port(),
+              sc.run.duration);
+  std::fflush(stdout);
+  sim::RunOptions options;
+  options.output_dir = output.empty() ? sc.output_folder : output;
+  options.scenario_file = file;
+  options.add_to_summary = [&](nlohmann::ordered_json& j) { j["real_time_lag"] = server.LagSummary(); };
+  const sim::RunResult r = world.Run(options);
+  if (!quiet) {
+    const auto lag = server.LagSummary();
+    std::printf("  served %.1f s; lag behind the wall clock p50 %.4f s, p99 %.4f s, max %.4f s, %lld missed deadlines\n"
+                "  results in %s/\n",
+                r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
+                static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), options.output_dir.c_str());
+  }
+  return 0;
+}
+
 int Validate(const std::string& file, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, registry);
   std::size_t robots = 0, controlled = 0;
@@ -156,6 +192,17 @@ int main(int argc, char** argv) {
                                                      "(default: results/<name>-sweep)");
   sweep_cmd->add_flag("-q,--quiet", sweep_quiet, "Print nothing but errors");
 
+  std::string serve_file, serve_bind = "127.0.0.1", serve_output;
+  int serve_port = 3000;
+  bool serve_quiet = false;
+  CLI::App* serve_cmd = app.add_subcommand("serve", "Serve a scenario's world in real time over the robot protocol "
+                                                    "(USARSim-compatible; docs/protocol.md): clients drive its robots");
+  serve_cmd->add_option("scenario", serve_file, "Scenario file (YAML)")->required();
+  serve_cmd->add_option("--bind", serve_bind, "Address to listen on (loopback by default)")->capture_default_str();
+  serve_cmd->add_option("--port", serve_port, "TCP port (0: any free port)")->check(CLI::Range(0, 65535))->capture_default_str();
+  serve_cmd->add_option("-o,--output", serve_output, "Results folder (default: the scenario's)");
+  serve_cmd->add_flag("-q,--quiet", serve_quiet, "Print only the listening line and errors");
+
   std::vector<std::string> libraries;
   CLI::App* list_cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
   list_cmd->add_option("--library", libraries, "Also load this controller library (repeatable)");
@@ -168,6 +215,7 @@ int main(int argc, char** argv) {
     if (*run_cmd) return Run(run, registry);
     if (*validate_cmd) return Validate(validate_file, registry);
     if (*sweep_cmd) return Sweep(sweep_file, sweep_seeds, sweep_output, sweep_quiet, registry);
+    if (*serve_cmd) return Serve(serve_file, serve_bind, serve_port, serve_output, serve_quiet, registry);
     for (const auto& lib : libraries) registry.LoadLibrary(lib);
     return List(registry);
   } catch (const CLI::ValidationError& e) {

@@ -59,6 +59,9 @@ struct RunSpec {
   double message_delay = 0;        // s added before a controller gets a message
   double trajectory_interval = 0.1;  // s between trajectory samples
   std::vector<NodeEvent> events;
+  // Robots are driven by clients of the simulation server: their scenario controllers do not run
+  // here (motes' controllers still do).
+  bool robots_remote = false;
   // The run ends early when a controller logs one of these lines.
   std::vector<std::string> end_when_logged;
   double end_grace = 0;  // s the run goes on after the end condition, for messages in flight

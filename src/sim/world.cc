@@ -131,7 +131,8 @@ World::World(const RunSpec& spec, agents::Registry& registry)
       const NodeSpec& n = spec.nodes[id];
       nodes_.push_back(std::make_unique<agents::SimulatedNode>(
           id, n.name, *models_[id], *transport_, *this, RandomStream(spec.seed, "node/" + n.name + "/controller")));
-      controllers_.push_back(n.controller ? MakeController(*n.controller, registry) : nullptr);
+      const bool remote = spec.robots_remote && n.model.kind != robots::ModelKind::kMote;
+      controllers_.push_back(n.controller && !remote ? MakeController(*n.controller, registry) : nullptr);
     }
   } catch (...) {
     ns3::Simulator::Destroy();
@@ -460,6 +461,7 @@ void World::WriteSummary(const RunOptions& options, RunResult& result, const nlo
     j["min_distance"] = md;
   }
   for (const auto& [key, value] : extra.items()) j[key] = value;
+  if (options.add_to_summary) options.add_to_summary(j);
   j["files"] = result.files;
   WriteFileAtomically(options.output_dir + "/summary.json", j.dump(2) + "\n");
 }

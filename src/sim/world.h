@@ -34,6 +34,8 @@ struct RunOptions {
   std::string output_dir;     // "" writes nothing (tests, benchmarks)
   std::string scenario_file;  // recorded in the summary
   bool progress = false;      // print simulated time, real-time factor and ETA to stderr
+  // Adds fields of its own to summary.json (the server adds its lag).
+  std::function<void(nlohmann::ordered_json&)> add_to_summary;
 };
 
 // Wall-clock seconds spent in each stage of the run.

@@ -1,0 +1,52 @@
+// The robot protocol, compatible with USARSim's text protocol: one message per line,
+// `TYPE {Key Value} {Key Value} ...`. Commands and keys are case-insensitive; inside braces the
+// first word is the key and the rest the value; braces may touch. Lines end with CR LF (we
+// accept CR LF, LF CR, LF or CR). docs/protocol.md lists every message.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace sanet::hil {
+
+struct ProtocolMessage {
+  explicit ProtocolMessage(std::string message_type = "") : type(std::move(message_type)) {}
+  std::string type;                                         // upper case
+  std::vector<std::pair<std::string, std::string>> fields;  // key as written, value trimmed
+
+  ProtocolMessage& Add(std::string key, std::string value) {
+    fields.emplace_back(std::move(key), std::move(value));
+    return *this;
+  }
+  ProtocolMessage& Add(std::string key, double value);
+  ProtocolMessage& Add(std::string key, const std::vector<double>& values);
+  // First field whose key matches (case-insensitive).
+  const std::string* Get(std::string_view key) const;
+  std::optional<double> Number(std::string_view key) const;
+  // Comma- or space-separated numbers.
+  std::optional<std::vector<double>> Numbers(std::string_view key) const;
+};
+
+// Parses one line (without its end). On failure returns nullopt and says why in `error`.
+std::optional<ProtocolMessage> ParseLine(std::string_view line, std::string* error);
+// "TYPE {Key Value} ...\r\n"
+std::string FormatLine(const ProtocolMessage& message);
+std::string FormatNumber(double value);
+
+// Splits a byte stream into lines; refuses lines longer than a limit.
+class LineReader {
+ public:
+  explicit LineReader(std::size_t max_line) : max_line_(max_line) {}
+  void Append(std::string_view bytes) { buffer_.append(bytes); }
+  // The next complete line, if any. Sets `too_long` when the pending line exceeds the limit.
+  std::optional<std::string> Next(bool* too_long);
+
+ private:
+  std::size_t max_line_;
+  std::string buffer_;
+};
+
+}  // namespace sanet::hil

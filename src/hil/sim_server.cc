@@ -1,0 +1,296 @@
+#include "hil/sim_server.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <ns3/simulator.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "core/statistics.h"
+
+namespace sanet::hil {
+namespace {
+
+double WallNow() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// sanet's frame is z up (x forward, y left, angles counter-clockwise); USARSim's is z down
+// (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
+std::vector<double> ToUsarsim(const Pose2D& p) { return {p.x, -p.y, -p.theta}; }
+
+}  // namespace
+
+SimServer::SimServer(sim::World& world, ServerSettings settings)
+    : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
+  listener_ = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (listener_ < 0) throw std::runtime_error(std::string("cannot open a socket: ") + std::strerror(errno));
+  const int yes = 1;
+  ::setsockopt(listener_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(settings_.port);
+  if (::inet_pton(AF_INET, settings_.bind.c_str(), &address.sin_addr) != 1)
+    throw std::runtime_error("not an IPv4 address to bind to: " + settings_.bind);
+  if (::bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(listener_, 16) != 0) {
+    const std::string why = std::strerror(errno);
+    ::close(listener_);
+    throw std::runtime_error("cannot listen on " + settings_.bind + ":" + std::to_string(settings_.port) + ": " + why);
+  }
+  ::fcntl(listener_, F_SETFL, O_NONBLOCK);
+  socklen_t size = sizeof address;
+  ::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &size);
+  port_ = ntohs(address.sin_port);
+}
+
+SimServer::~SimServer() {
+  for (auto& c : clients_) ::close(c->fd);
+  if (listener_ >= 0) ::close(listener_);
+}
+
+void SimServer::Start() {
+  ns3::Simulator::ScheduleNow(&SimServer::Poll, this);
+  world_.SetStepObserver([this](double t) { MeasureLag(t); });
+}
+
+void SimServer::MeasureLag(double simulated) {
+  const double now = WallNow();
+  if (wall_start_ < 0) wall_start_ = now - simulated;
+  lags_.push_back(std::max(0.0, (now - wall_start_) - simulated));
+}
+
+nlohmann::ordered_json SimServer::LagSummary() const {
+  std::vector<double> sorted = lags_;
+  std::sort(sorted.begin(), sorted.end());
+  const auto at = [&](double q) { return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))]; };
+  const double step = world_.spec().physics_step;
+  const auto missed = std::count_if(lags_.begin(), lags_.end(), [&](double l) { return l > step; });
+  return {{"steps", lags_.size()}, {"p50_s", at(0.5)}, {"p99_s", at(0.99)}, {"max_s", sorted.empty() ? 0 : sorted.back()},
+          {"missed_deadlines", missed}, {"deadline_s", step}};
+}
+
+void SimServer::Poll() {
+  Accept();
+  const double now = ns3::Simulator::Now().GetSeconds();
+  for (std::size_t i = 0; i < clients_.size(); ++i) {
+    Client& c = *clients_[i];
+    if (c.fd >= 0) Read(c);
+    if (c.fd >= 0 && c.robot) SendSensors(c, now);
+    if (c.fd >= 0) Flush(c);
+  }
+  clients_.erase(std::remove_if(clients_.begin(), clients_.end(), [](const auto& c) { return c->fd < 0; }), clients_.end());
+  ns3::Simulator::Schedule(ns3::Seconds(settings_.poll_period), &SimServer::Poll, this);
+}
+
+void SimServer::Accept() {
+  while (true) {
+    sockaddr_in peer{};
+    socklen_t size = sizeof peer;
+    const int fd = ::accept(listener_, reinterpret_cast<sockaddr*>(&peer), &size);
+    if (fd < 0) return;
+    ::fcntl(fd, F_SETFL, O_NONBLOCK);
+    const int yes = 1;
+    ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+    char host[INET_ADDRSTRLEN];
+    ::inet_ntop(AF_INET, &peer.sin_addr, host, sizeof host);
+    clients_.push_back(std::make_unique<Client>(
+        Client{fd, std::string(host) + ":" + std::to_string(ntohs(peer.sin_port)), LineReader(settings_.max_line), "", {}}));
+    ProtocolMessage hello{"NFO"};
+    hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
+    Send(*clients_.back(), hello);
+  }
+}
+
+void SimServer::Read(Client& c) {
+  char buffer[8192];
+  while (true) {
+    const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
+    if (n == 0) return Drop(c, "disconnected");
+    if (n < 0) {
+      if (errno == EAGAIN || errno == EWOULDBLOCK) break;
+      return Drop(c, std::strerror(errno));
+    }
+    c.reader.Append(std::string_view(buffer, n));
+  }
+  bool too_long = false;
+  while (auto line = c.reader.Next(&too_long)) {
+    if (line->find_first_not_of(" \t") == std::string::npos) continue;
+    std::string error;
+    if (auto m = ParseLine(*line, &error)) Handle(c, *m);
+    else Error(c, "malformed line: " + error);
+    if (c.fd < 0) return;
+  }
+  if (too_long) {
+    Error(c, "line longer than " + std::to_string(settings_.max_line) + " bytes: closing");
+    Flush(c);
+    Drop(c, "line too long");
+  }
+}
+
+void SimServer::Handle(Client& c, const ProtocolMessage& m) {
+  if (m.type == "INIT") return Init(c, m);
+  if (m.type == "GETSTARTPOSES") {
+    ProtocolMessage reply{"NFO"};
+    std::string poses;
+    int count = 0;
+    for (NodeId id = 0; id < world_.NodeCount(); ++id) {
+      if (world_.spec().nodes[id].model.kind == robots::ModelKind::kMote) continue;
+      const auto p = ToUsarsim(world_.spec().nodes[id].pose);
+      poses += (count++ ? " " : "") + world_.NameOf(id) + " " + FormatNumber(p[0]) + "," + FormatNumber(p[1]) +
+               ",0.0000 0.0000,0.0000," + FormatNumber(p[2]);
+    }
+    reply.Add("StartPoses", count).Add(poses.empty() ? "None" : poses, "");
+    return Send(c, reply);
+  }
+  if (!c.robot) return Error(c, m.type + " before INIT");
+  const NodeId id = *c.robot;
+  const auto& spec = world_.spec().nodes[id].model;
+  if (m.type == "DRIVE") return Drive(c, m);
+  if (m.type == "LOG") {  // sanet extension: a line in the run's log, from this robot
+    if (const std::string* text = m.Get("Text")) world_.Log(id, *text);
+    return;
+  }
+  if (m.type == "GETCONF") {
+    ProtocolMessage reply{"CONF"};
+    reply.Add("Type", "GroundVehicle").Add("Name", world_.NameOf(id))
+        .Add("SteeringType", spec.kind == robots::ModelKind::kOmni3 ? "OmniDrive" : "SkidSteered")
+        .Add("MaxSpeed", spec.max_speed).Add("MaxTurnRate", spec.max_turn_rate);
+    return Send(c, reply);
+  }
+  if (m.type == "GETGEO") {
+    ProtocolMessage reply{"GEO"};
+    const bool omni = spec.kind == robots::ModelKind::kOmni3;
+    reply.Add("Type", "GroundVehicle").Add("Name", world_.NameOf(id))
+        .Add("WheelRadius", omni ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius)
+        .Add("WheelSeparation", omni ? 2 * spec.omni3.wheel_distance : spec.diffdrive.axle_length);
+    return Send(c, reply);
+  }
+  Error(c, "unknown command " + m.type);
+}
+
+void SimServer::Init(Client& c, const ProtocolMessage& m) {
+  if (c.robot) return Error(c, "this connection already drives " + world_.NameOf(*c.robot));
+  const std::string* name = m.Get("Name");
+  if (!name) return Error(c, "INIT needs {Name robot}: one of the scenario's robots");
+  const auto id = world_.Lookup(*name);
+  if (!id || world_.spec().nodes[*id].model.kind == robots::ModelKind::kMote)
+    return Error(c, "no robot named '" + *name + "' in this scenario");
+  if (claimed_[*id]) return Error(c, "robot '" + *name + "' is already driven by another client");
+  claimed_[*id] = true;
+  c.robot = *id;
+  c.next_sensors = c.next_status = ns3::Simulator::Now().GetSeconds();
+  world_.Log(*id, "client " + c.peer + " drives this robot");
+}
+
+void SimServer::Drive(Client& c, const ProtocolMessage& m) {
+  robots::NodeModel& model = world_.model(*c.robot);
+  const auto& spec = world_.spec().nodes[*c.robot].model;
+  if (m.Get("Left") || m.Get("Right")) {
+    const auto left = m.Number("Left"), right = m.Number("Right");
+    if (!left || !right) return Error(c, "DRIVE needs numbers for both {Left} and {Right}");
+    double l = *left, r = *right;
+    if (const std::string* normalized = m.Get("Normalized"); normalized && (*normalized == "True" || *normalized == "true")) {
+      const double radius = spec.kind == robots::ModelKind::kOmni3 ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius;
+      const double top = spec.max_speed / radius;  // rad/s at 100 %
+      l = std::clamp(l, -100.0, 100.0) / 100 * top, r = std::clamp(r, -100.0, 100.0) / 100 * top;
+    }
+    if (spec.kind != robots::ModelKind::kDiffDrive) return Error(c, "{Left} {Right} drive a diffdrive; use {LinearVelocity} ... for omni3");
+    model.SetWheelSpeeds({l, r});
+    return;
+  }
+  if (m.Get("LinearVelocity") || m.Get("RotationalVelocity") || m.Get("LateralVelocity")) {
+    const auto v = m.Number("LinearVelocity"), lateral = m.Number("LateralVelocity"), w = m.Number("RotationalVelocity");
+    if ((m.Get("LinearVelocity") && !v) || (m.Get("LateralVelocity") && !lateral) || (m.Get("RotationalVelocity") && !w))
+      return Error(c, "DRIVE velocities must be numbers");
+    model.Drive({v.value_or(0), -lateral.value_or(0), -w.value_or(0)});  // USARSim: y right, yaw clockwise
+    return;
+  }
+  Error(c, "DRIVE needs {Left l} {Right r}, or {LinearVelocity} {LateralVelocity} {RotationalVelocity}");
+}
+
+void SimServer::SendSensors(Client& c, double now) {
+  robots::NodeModel& model = world_.model(*c.robot);
+  if (now + 1e-9 >= c.next_sensors) {
+    c.next_sensors = now + settings_.sensor_period;
+    const std::string time = FormatNumber(now);
+    const Pose2D truth = model.GroundTruth();
+    ProtocolMessage gt{"SEN"};
+    const auto p = ToUsarsim(truth);
+    gt.Add("Time", time).Add("Type", "GroundTruth").Add("Name", "GroundTruth")
+        .Add("Location", std::vector<double>{p[0], p[1], model.body().position3().z})
+        .Add("Orientation", std::vector<double>{0, 0, p[2]});
+    Send(c, gt);
+    if (auto odometry = model.Odometry()) {
+      ProtocolMessage odo{"SEN"};
+      odo.Add("Time", time).Add("Type", "Odometry").Add("Name", "Odometry").Add("Pose", ToUsarsim(*odometry));
+      Send(c, odo);
+    }
+    if (auto scan = model.Laser()) {
+      ProtocolMessage laser{"SEN"};
+      const double resolution = scan->angles.size() > 1 ? scan->angles[1] - scan->angles[0] : 0;
+      const double fov = scan->angles.empty() ? 0 : scan->angles.back() - scan->angles.front();
+      laser.Add("Time", time).Add("Type", "RangeScanner").Add("Name", "Scanner1").Add("Resolution", resolution)
+          .Add("FOV", fov).Add("Range", scan->ranges);
+      Send(c, laser);
+    }
+    if (auto ir = model.Ir()) {
+      ProtocolMessage sonar{"SEN"};
+      sonar.Add("Time", time).Add("Type", "IR");
+      for (std::size_t i = 0; i < ir->ranges.size(); ++i)
+        sonar.Add("Name", "IR" + std::to_string(i) + " Range " + FormatNumber(ir->ranges[i]));
+      Send(c, sonar);
+    }
+  }
+  if (now + 1e-9 >= c.next_status) {
+    c.next_status = now + settings_.status_period;
+    ProtocolMessage status{"STA"};
+    status.Add("Type", "GroundVehicle").Add("Time", now).Add("FrontSteer", 0.0).Add("RearSteer", 0.0)
+        .Add("LightToggle", "False").Add("LightIntensity", "0").Add("Battery", "3600").Add("View", "-1");
+    Send(c, status);
+  }
+}
+
+void SimServer::Send(Client& c, const ProtocolMessage& m) {
+  if (c.fd < 0) return;
+  c.out += FormatLine(m);
+  if (c.out.size() > settings_.max_backlog) Drop(c, "not reading (more than " + std::to_string(settings_.max_backlog) + " bytes waiting)");
+}
+
+void SimServer::Error(Client& c, const std::string& why) {
+  ProtocolMessage error{"ERR"};
+  error.Add("Message", why);
+  Send(c, error);
+}
+
+void SimServer::Flush(Client& c) {
+  while (c.fd >= 0 && !c.out.empty()) {
+    const ssize_t n = ::send(c.fd, c.out.data(), c.out.size(), MSG_NOSIGNAL);
+    if (n < 0) {
+      if (errno != EAGAIN && errno != EWOULDBLOCK) Drop(c, std::strerror(errno));
+      return;
+    }
+    c.out.erase(0, n);
+  }
+}
+
+void SimServer::Drop(Client& c, const std::string& why) {
+  if (c.fd < 0) return;
+  ::close(c.fd);
+  c.fd = -1;
+  if (c.robot) {
+    world_.model(*c.robot).Drive({});  // a robot without its client stops
+    claimed_[*c.robot] = false;
+    world_.Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
+  }
+}
+
+}  // namespace sanet::hil

@@ -1,0 +1,72 @@
+// The simulation server of communication-in-the-loop runs: a TCP server speaking the
+// USARSim-compatible protocol (protocol.h) on top of a World that runs against the wall clock.
+// A client claims one of the scenario's robots with INIT, drives it with DRIVE and receives its
+// sensors as SEN lines and its status as STA lines. It is polled from an ns-3 event, so it lives
+// on the one clock like everything else; no client can block it (non-blocking sockets, bounded
+// buffers, line length limit).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/protocol.h"
+#include "sim/world.h"
+
+namespace sanet::hil {
+
+struct ServerSettings {
+  std::string bind = "127.0.0.1";   // loopback unless told otherwise
+  std::uint16_t port = 3000;        // 0: any free port
+  double sensor_period = 0.1;       // s between SEN lines per sensor
+  double status_period = 0.2;       // s between STA lines
+  double poll_period = 0.005;       // s between socket polls
+  std::size_t max_line = 4096;      // bytes; a longer line closes the connection
+  std::size_t max_backlog = 1 << 20;  // bytes waiting for a client that does not read: then it is dropped
+};
+
+class SimServer {
+ public:
+  SimServer(sim::World& world, ServerSettings settings);  // listens; throws std::runtime_error
+  ~SimServer();
+  std::uint16_t port() const { return port_; }
+  void Start();  // schedules polling and lag measurement on the simulation clock
+  // Lag of every physics step behind the wall clock: p50, p99, max, missed deadlines.
+  nlohmann::ordered_json LagSummary() const;
+
+ private:
+  struct Client {
+    int fd;
+    std::string peer;
+    LineReader reader;
+    std::string out;
+    std::optional<NodeId> robot;
+    double next_sensors = 0, next_status = 0;
+  };
+  void Poll();
+  void Accept();
+  void Read(Client& c);
+  void Handle(Client& c, const ProtocolMessage& m);
+  void Init(Client& c, const ProtocolMessage& m);
+  void Drive(Client& c, const ProtocolMessage& m);
+  void SendSensors(Client& c, double now);
+  void Send(Client& c, const ProtocolMessage& m);
+  void Error(Client& c, const std::string& why);
+  void Drop(Client& c, const std::string& why);
+  void Flush(Client& c);
+  void MeasureLag(double simulated);
+
+  sim::World& world_;
+  ServerSettings settings_;
+  int listener_ = -1;
+  std::uint16_t port_ = 0;
+  std::vector<std::unique_ptr<Client>> clients_;
+  std::vector<bool> claimed_;
+  std::vector<double> lags_;  // s, per physics step
+  double wall_start_ = -1;
+};
+
+}  // namespace sanet::hil

@@ -3,6 +3,10 @@
 
 #include <cstdio>
 #include <iostream>
+#include <csignal>
+#include <filesystem>
+#include <sys/wait.h>
+#include <thread>
 #include <sstream>
 #include <unistd.h>
 
@@ -12,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "agents/controller_registry.h"
+#include "hil/remote_node.h"
 #include "hil/sim_server.h"
 #include "builtin.h"
 #include "robots/node_model.h"
@@ -104,8 +109,9 @@ int Sweep(const std::string& file, const std::string& seeds_text, const std::str
 }
 
 int Serve(const std::string& file, const std::string& bind, int port, const std::string& output, bool quiet,
-          agents::Registry& registry) {
+          std::optional<double> duration, agents::Registry& registry) {
   scenario::Scenario sc = LoadChecked(file, registry);
+  if (duration) sc.run.duration = *duration;
   sc.run.robots_remote = true;
   // The same schedule, run against the wall clock.
   ns3::GlobalValue::Bind("SimulatorImplementationType", ns3::StringValue("ns3::RealtimeSimulatorImpl"));
@@ -115,6 +121,8 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   settings.port = static_cast<std::uint16_t>(port);
   hil::SimServer server(world, settings);
   server.Start();
+  std::signal(SIGINT, [](int) { hil::RequestStop(); });
+  std::signal(SIGTERM, [](int) { hil::RequestStop(); });
   std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), bind.c_str(), server.port(),
               sc.run.duration);
   std::fflush(stdout);
@@ -131,6 +139,110 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
                 static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), options.output_dir.c_str());
   }
   return 0;
+}
+
+int Agent(const std::string& file, const std::string& robot, const std::string& server, std::uint16_t udp_base,
+          agents::Registry& registry) {
+  const scenario::Scenario sc = LoadChecked(file, registry);
+  const auto colon = server.rfind(':');
+  if (colon == std::string::npos) throw CLI::ValidationError("--server", "expected HOST:PORT, not '" + server + "'");
+  hil::AgentSettings settings;
+  settings.server_host = server.substr(0, colon);
+  settings.server_port = static_cast<std::uint16_t>(std::stoi(server.substr(colon + 1)));
+  settings.udp_base_port = udp_base;
+  std::optional<NodeId> id;
+  for (NodeId i = 0; i < sc.run.nodes.size(); ++i)
+    if (sc.run.nodes[i].name == robot) id = i;
+  if (!id || !sc.run.nodes[*id].controller)
+    throw CLI::ValidationError("--robot", "'" + robot + "' is not a robot with a controller in " + file);
+  std::unique_ptr<Controller> controller = sim::MakeController(*sc.run.nodes[*id].controller, registry);
+  hil::RemoteNode node(sc.run, *id, settings);
+  const auto deliver = [&](const Message& m) { controller->OnMessage(node, m); };
+  while (!node.HasPose())  // the first sensor lines tell where the robot is and what time it is
+    if (!node.Poll(deliver)) return 0;
+    else std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  controller->Start(node);
+  const double period = 1.0 / sc.run.nodes[*id].controller->rate;
+  double next = node.Now();
+  while (node.Poll(deliver)) {
+    if (node.Now() >= next) {
+      controller->ControlStep(node);
+      next = std::max(next + period, node.Now() - period);  // no burst of steps after a stall
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return 0;  // the server ended the run
+}
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+// Starts the server and one agent per robot with a controller, as processes of this program;
+// ends them all when the server's run ends or on Ctrl-C.
+int Launch(const std::string& file, const std::string& output, std::uint16_t udp_base, std::optional<double> duration,
+           agents::Registry& registry) {
+  const scenario::Scenario sc = LoadChecked(file, registry);
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe");
+  const std::string out = output.empty() ? sc.output_folder : output;
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) throw std::runtime_error("cannot create a pipe");
+  const pid_t server = ::fork();
+  if (server == 0) {
+    ::dup2(pipe_fds[1], STDOUT_FILENO);
+    ::close(pipe_fds[0]);
+    const std::string seconds = duration ? std::to_string(*duration) : "0";
+    if (duration)
+      ::execl(self.c_str(), "sanet", "serve", file.c_str(), "--port", "0", "-o", out.c_str(), "-q", "--duration",
+              seconds.c_str(), nullptr);
+    else
+      ::execl(self.c_str(), "sanet", "serve", file.c_str(), "--port", "0", "-o", out.c_str(), "-q", nullptr);
+    std::_Exit(127);
+  }
+  ::close(pipe_fds[1]);
+  std::signal(SIGINT, [](int) { g_interrupted = 1; });
+  std::signal(SIGTERM, [](int) { g_interrupted = 1; });
+  // "sanet: serving NAME on HOST:PORT for T s"
+  std::string first;
+  char c;
+  while (::read(pipe_fds[0], &c, 1) == 1 && c != '\n') first += c;
+  const auto on = first.rfind(" on "), colon = first.rfind(':'), space = first.find(' ', colon);
+  if (on == std::string::npos || colon == std::string::npos) {
+    ::waitpid(server, nullptr, 0);
+    throw std::runtime_error("the server did not start");
+  }
+  const std::string address = first.substr(on + 4, space - on - 4);
+  std::printf("%s\n", first.c_str());
+  std::vector<pid_t> agents;
+  for (const auto& node : sc.run.nodes) {
+    if (node.model.kind == robots::ModelKind::kMote || !node.controller) continue;
+    const pid_t agent = ::fork();
+    if (agent == 0) {
+      const std::string base = std::to_string(udp_base);
+      ::execl(self.c_str(), "sanet", "agent", "--server", address.c_str(), "--scenario", file.c_str(), "--robot",
+              node.name.c_str(), "--udp-base", base.c_str(), nullptr);
+      std::_Exit(127);
+    }
+    std::printf("  agent %s: process %d\n", node.name.c_str(), agent);
+    agents.push_back(agent);
+  }
+  std::fflush(stdout);
+  int status = 0;
+  bool forwarded = false;
+  while (::waitpid(server, &status, WNOHANG) == 0) {
+    if (g_interrupted && !forwarded) {
+      ::kill(server, SIGINT);  // the server ends its run and writes its results
+      forwarded = true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  for (pid_t a : agents) ::kill(a, SIGTERM);
+  for (pid_t a : agents) ::waitpid(a, nullptr, 0);
+  // Pass on what the server said after its first line.
+  std::string rest;
+  while (::read(pipe_fds[0], &c, 1) == 1) rest += c;
+  ::close(pipe_fds[0]);
+  std::fputs(rest.c_str(), stdout);
+  std::printf("  results in %s/\n", out.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : kExitRunFailed;
 }
 
 int Validate(const std::string& file, agents::Registry& registry) {
@@ -202,6 +314,27 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--port", serve_port, "TCP port (0: any free port)")->check(CLI::Range(0, 65535))->capture_default_str();
   serve_cmd->add_option("-o,--output", serve_output, "Results folder (default: the scenario's)");
   serve_cmd->add_flag("-q,--quiet", serve_quiet, "Print only the listening line and errors");
+  std::optional<double> serve_duration, launch_duration;
+  serve_cmd->add_option("--duration", serve_duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+
+  std::string agent_file, agent_robot, agent_server = "127.0.0.1:3000";
+  int udp_base = 47000;
+  CLI::App* agent_cmd = app.add_subcommand("agent", "Run one robot's controller as its own process: sensors and "
+                                                    "motors through a `sanet serve` server, messages over real UDP");
+  agent_cmd->add_option("--scenario", agent_file, "Scenario file: the robot's controller and parameters, the peers")->required();
+  agent_cmd->add_option("--robot", agent_robot, "The robot to drive (its name in the scenario)")->required();
+  agent_cmd->add_option("--server", agent_server, "The server, HOST:PORT")->capture_default_str();
+  agent_cmd->add_option("--udp-base", udp_base, "UDP port of node 0; node i uses base + i")
+      ->check(CLI::Range(1024, 60000))->capture_default_str();
+
+  std::string launch_file, launch_output;
+  CLI::App* launch_cmd = app.add_subcommand("launch", "Start a server and one agent process per robot on this "
+                                                      "machine, run the scenario in real time, stop them all (also on Ctrl-C)");
+  launch_cmd->add_option("scenario", launch_file, "Scenario file (YAML)")->required();
+  launch_cmd->add_option("-o,--output", launch_output, "Results folder (default: the scenario's)");
+  launch_cmd->add_option("--duration", launch_duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  launch_cmd->add_option("--udp-base", udp_base, "UDP port of node 0; node i uses base + i")
+      ->check(CLI::Range(1024, 60000))->capture_default_str();
 
   std::vector<std::string> libraries;
   CLI::App* list_cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
@@ -215,7 +348,10 @@ int main(int argc, char** argv) {
     if (*run_cmd) return Run(run, registry);
     if (*validate_cmd) return Validate(validate_file, registry);
     if (*sweep_cmd) return Sweep(sweep_file, sweep_seeds, sweep_output, sweep_quiet, registry);
-    if (*serve_cmd) return Serve(serve_file, serve_bind, serve_port, serve_output, serve_quiet, registry);
+    if (*serve_cmd) return Serve(serve_file, serve_bind, serve_port, serve_output, serve_quiet, serve_duration, registry);
+    if (*agent_cmd) return Agent(agent_file, agent_robot, agent_server, static_cast<std::uint16_t>(udp_base), registry);
+    if (*launch_cmd)
+      return Launch(launch_file, launch_output, static_cast<std::uint16_t>(udp_base), launch_duration, registry);
     for (const auto& lib : libraries) registry.LoadLibrary(lib);
     return List(registry);
   } catch (const CLI::ValidationError& e) {

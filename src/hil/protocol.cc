@@ -39,6 +39,12 @@ std::string FormatNumber(double value) {
   return s;
 }
 
+std::string FormatPrecise(double value) {
+  char s[40];
+  std::snprintf(s, sizeof s, "%.6f", value);
+  return s;
+}
+
 ProtocolMessage& ProtocolMessage::Add(std::string key, double value) { return Add(std::move(key), FormatNumber(value)); }
 
 ProtocolMessage& ProtocolMessage::Add(std::string key, const std::vector<double>& values) {

@@ -34,7 +34,8 @@ struct ProtocolMessage {
 std::optional<ProtocolMessage> ParseLine(std::string_view line, std::string* error);
 // "TYPE {Key Value} ...\r\n"
 std::string FormatLine(const ProtocolMessage& message);
-std::string FormatNumber(double value);
+std::string FormatNumber(double value);   // 4 decimals: metres, radians, seconds
+std::string FormatPrecise(double value);  // 6 decimals
 
 // Splits a byte stream into lines; refuses lines longer than a limit.
 class LineReader {

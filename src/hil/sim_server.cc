@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -28,7 +29,11 @@ double WallNow() {
 // (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
 std::vector<double> ToUsarsim(const Pose2D& p) { return {p.x, -p.y, -p.theta}; }
 
+volatile std::sig_atomic_t g_stop = 0;
+
 }  // namespace
+
+void RequestStop() { g_stop = 1; }
 
 SimServer::SimServer(sim::World& world, ServerSettings settings)
     : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
@@ -79,6 +84,11 @@ nlohmann::ordered_json SimServer::LagSummary() const {
 }
 
 void SimServer::Poll() {
+  if (g_stop) {
+    world_.Log(0, "stopped by a signal");
+    ns3::Simulator::Stop();
+    return;
+  }
   Accept();
   const double now = ns3::Simulator::Now().GetSeconds();
   for (std::size_t i = 0; i < clients_.size(); ++i) {
@@ -106,6 +116,9 @@ void SimServer::Accept() {
         Client{fd, std::string(host) + ":" + std::to_string(ntohs(peer.sin_port)), LineReader(settings_.max_line), "", {}}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
+    // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
+    // on this machine share the simulation's time to the microsecond.
+    hello.Add("ClockOrigin", FormatPrecise(WallNow() - ns3::Simulator::Now().GetSeconds()));
     Send(*clients_.back(), hello);
   }
 }

@@ -28,6 +28,9 @@ struct ServerSettings {
   std::size_t max_backlog = 1 << 20;  // bytes waiting for a client that does not read: then it is dropped
 };
 
+// Asks a running server to end its run as if its duration were over (safe in a signal handler).
+void RequestStop();
+
 class SimServer {
  public:
   SimServer(sim::World& world, ServerSettings settings);  // listens; throws std::runtime_error

@@ -1,0 +1,243 @@
+#include "hil/remote_node.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <functional>
+#include <stdexcept>
+#include <thread>
+
+#include "robots/kinematics.h"
+#include "sanet/codec.h"
+
+namespace sanet::hil {
+namespace {
+
+constexpr std::uint8_t kUdpMagic = 0x53;  // 'S'
+constexpr std::uint8_t kUnicast = 1, kBroadcast = 2;
+
+sockaddr_in Address(const std::string& host, std::uint16_t port) {
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(port);
+  if (::inet_pton(AF_INET, host.c_str(), &a.sin_addr) != 1) throw std::runtime_error("not an IPv4 address: " + host);
+  return a;
+}
+
+// USARSim frame (y right, yaw clockwise) back to sanet's.
+Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
+
+}  // namespace
+
+RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings)
+    : spec_(spec), id_(robot), settings_(std::move(settings)),
+      random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
+      server_time_at_(std::chrono::steady_clock::now()) {
+  const sockaddr_in server = Address(settings_.server_host, settings_.server_port);
+  for (int attempt = 0; attempt < 100; ++attempt) {  // the server may still be starting
+    tcp_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (::connect(tcp_, reinterpret_cast<const sockaddr*>(&server), sizeof server) == 0) break;
+    ::close(tcp_);
+    tcp_ = -1;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  if (tcp_ < 0)
+    throw std::runtime_error("cannot reach the server at " + settings_.server_host + ":" + std::to_string(settings_.server_port));
+  const int yes = 1;
+  ::setsockopt(tcp_, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+  ::fcntl(tcp_, F_SETFL, O_NONBLOCK);
+
+  udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
+  const sockaddr_in mine = Address(settings_.udp_host, static_cast<std::uint16_t>(settings_.udp_base_port + id_));
+  if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
+    throw std::runtime_error("cannot bind UDP port " + std::to_string(settings_.udp_base_port + id_) + ": " + std::strerror(errno));
+  ::fcntl(udp_, F_SETFL, O_NONBLOCK);
+
+  ProtocolMessage init("INIT");
+  init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());
+  Command(init);
+}
+
+RemoteNode::~RemoteNode() {
+  if (tcp_ >= 0) {
+    ProtocolMessage stop("DRIVE");
+    Holonomic() ? stop.Add("LinearVelocity", 0.0) : stop.Add("Left", 0.0).Add("Right", 0.0);
+    Command(stop);
+    ::close(tcp_);
+  }
+  if (udp_ >= 0) ::close(udp_);
+}
+
+void RemoteNode::Command(const ProtocolMessage& m) {
+  const std::string line = FormatLine(m);
+  std::size_t sent = 0;
+  while (tcp_ >= 0 && sent < line.size()) {
+    const ssize_t n = ::send(tcp_, line.data() + sent, line.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      continue;
+    }
+    if (n <= 0) return;
+    sent += n;
+  }
+}
+
+double RemoteNode::Now() const {
+  const auto now = std::chrono::steady_clock::now();
+  if (clock_origin_) return std::chrono::duration<double>(now.time_since_epoch()).count() - *clock_origin_;
+  return server_time_ + std::chrono::duration<double>(now - server_time_at_).count();
+}
+
+std::optional<NodeId> RemoteNode::Lookup(const std::string& name) const {
+  for (NodeId i = 0; i < spec_.nodes.size(); ++i)
+    if (spec_.nodes[i].name == name) return i;
+  return std::nullopt;
+}
+
+bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
+  char buffer[65536];
+  while (tcp_ >= 0) {
+    const ssize_t n = ::recv(tcp_, buffer, sizeof buffer, 0);
+    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)) {
+      ::close(tcp_);
+      tcp_ = -1;
+      break;
+    }
+    if (n < 0) break;
+    reader_.Append(std::string_view(buffer, n));
+  }
+  bool too_long = false;
+  while (auto line = reader_.Next(&too_long)) {
+    std::string error;
+    if (auto m = ParseLine(*line, &error)) Take(*m);
+  }
+  while (true) {
+    const ssize_t n = ::recv(udp_, buffer, sizeof buffer, 0);
+    if (n <= 0) break;
+    const Bytes datagram(buffer, buffer + n);
+    Reader r(datagram);
+    if (r.U8() != kUdpMagic) continue;
+    Message m;
+    m.from = r.U32();
+    m.to = r.U32();
+    const std::uint8_t kind = r.U8();
+    m.time_sent = r.F64();
+    if (!r.ok() || m.from >= spec_.nodes.size()) continue;
+    m.delivery = kind == kUnicast ? Delivery::kUnicast : Delivery::kBroadcast;
+    m.time_received = Now();
+    m.hops = 1;
+    m.payload.assign(datagram.begin() + 18, datagram.end());
+    deliver(m);
+  }
+  return tcp_ >= 0;
+}
+
+// Sensor and status lines from the server.
+void RemoteNode::Take(const ProtocolMessage& m) {
+  if (auto t = m.Number("Time")) {
+    server_time_ = *t;
+    server_time_at_ = std::chrono::steady_clock::now();
+  }
+  // On this machine the server's clock origin gives the simulation time exactly; a server
+  // elsewhere has another monotonic clock, and its time is estimated from its messages.
+  if (m.type == "NFO" && settings_.server_host.rfind("127.", 0) == 0)
+    if (auto origin = m.Number("ClockOrigin")) clock_origin_ = *origin;
+  if (m.type == "ERR") {
+    const std::string* text = m.Get("Message");
+    throw std::runtime_error("server: " + (text ? *text : std::string("error")));
+  }
+  if (m.type != "SEN") return;
+  const std::string* type = m.Get("Type");
+  if (!type) return;
+  if (*type == "GroundTruth") {
+    const auto at = m.Numbers("Location"), o = m.Numbers("Orientation");
+    if (at && o && at->size() >= 2 && o->size() >= 3) truth_ = FromUsarsim((*at)[0], (*at)[1], (*o)[2]);
+  } else if (*type == "Odometry") {
+    const auto p = m.Numbers("Pose");
+    if (p && p->size() >= 3) odometry_ = FromUsarsim((*p)[0], (*p)[1], (*p)[2]);
+  } else if (*type == "RangeScanner") {
+    const auto ranges = m.Numbers("Range");
+    const auto fov = m.Number("FOV");
+    const auto& laser = spec_.nodes[id_].model.sensors.laser;
+    if (!ranges || !fov || ranges->empty()) return;
+    RangeScan scan;
+    scan.ranges = *ranges;
+    scan.max_range = laser ? laser->max_range : 0;
+    for (std::size_t i = 0; i < ranges->size(); ++i)  // right to left
+      scan.angles.push_back(ranges->size() == 1 ? 0 : -*fov / 2 + *fov * i / (ranges->size() - 1));
+    laser_ = scan;
+  } else if (*type == "IR") {
+    const auto& ir = spec_.nodes[id_].model.sensors.ir;
+    if (!ir) return;
+    RangeScan scan;
+    scan.angles = ir->angles;
+    scan.max_range = ir->max_range;
+    for (const auto& [key, value] : m.fields)  // {Name IR0 Range 0.8}
+      if (key == "Name") {
+        const auto at = value.rfind(' ');
+        scan.ranges.push_back(at == std::string::npos ? 0 : std::atof(value.c_str() + at + 1));
+      }
+    if (scan.ranges.size() == scan.angles.size()) ir_ = scan;
+  }
+}
+
+bool RemoteNode::Drive(const Twist2D& v) {
+  const auto& model = spec_.nodes[id_].model;
+  ProtocolMessage drive("DRIVE");
+  if (model.kind == robots::ModelKind::kDiffDrive) {
+    // The server clamps nothing for wheel speeds: apply the model's limits here, as the
+    // simulated node does.
+    Twist2D c = v;
+    c.vx = std::clamp(c.vx, -model.max_speed, model.max_speed);
+    c.omega = std::clamp(c.omega, -model.max_turn_rate, model.max_turn_rate);
+    const auto w = robots::DiffDriveKinematics(model.diffdrive.axle_length, model.diffdrive.wheel_radius).WheelSpeeds(c);
+    drive.Add("Left", w[0]).Add("Right", w[1]);
+  } else if (model.kind == robots::ModelKind::kOmni3) {
+    drive.Add("LinearVelocity", v.vx).Add("LateralVelocity", -v.vy).Add("RotationalVelocity", -v.omega);
+  } else {
+    return false;
+  }
+  Command(drive);
+  return true;
+}
+
+bool RemoteNode::SetWheelSpeeds(const std::vector<double>& w) {
+  if (spec_.nodes[id_].model.kind != robots::ModelKind::kDiffDrive || w.size() != 2) return false;
+  ProtocolMessage drive("DRIVE");
+  drive.Add("Left", w[0]).Add("Right", w[1]);
+  Command(drive);
+  return true;
+}
+
+void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
+  Bytes datagram = Writer().U8(kUdpMagic).U32(id_).U32(kind == kUnicast ? to : kBroadcast).U8(kind).F64(Now()).bytes();
+  datagram.insert(datagram.end(), payload.begin(), payload.end());
+  const sockaddr_in peer = Address(settings_.udp_host, static_cast<std::uint16_t>(settings_.udp_base_port + to));
+  ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
+}
+
+void RemoteNode::Send(NodeId to, const Bytes& payload) {
+  if (to < spec_.nodes.size() && to != id_) SendUdp(to, kUnicast, payload);
+}
+
+void RemoteNode::Broadcast(const Bytes& payload) {
+  for (NodeId to = 0; to < spec_.nodes.size(); ++to)
+    if (to != id_) SendUdp(to, kBroadcast, payload);
+}
+
+void RemoteNode::Log(const std::string& text) {
+  std::string clean = text;  // braces and line ends would end the protocol's field or line
+  for (char& c : clean) c = c == '{' ? '(' : c == '}' ? ')' : (c == '\n' || c == '\r') ? ' ' : c;
+  ProtocolMessage log("LOG");
+  log.Add("Text", clean);
+  Command(log);
+}
+
+}  // namespace sanet::hil

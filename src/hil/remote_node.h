@@ -1,0 +1,84 @@
+// The node a controller sees when it runs as its own process: sensors and actuators over the
+// robot protocol (a TCP client of `sanet serve`), messages over real UDP sockets, one port per
+// node of the scenario. The controller cannot tell it from the simulated node.
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/random_stream.h"
+#include "hil/protocol.h"
+#include "sanet/node.h"
+#include "sim/run_spec.h"
+
+namespace sanet::hil {
+
+struct AgentSettings {
+  std::string server_host = "127.0.0.1";
+  std::uint16_t server_port = 3000;
+  std::string udp_host = "127.0.0.1";  // where every node's UDP socket lives
+  std::uint16_t udp_base_port = 47000;  // node i listens on base + i
+};
+
+class RemoteNode : public Node {
+ public:
+  // Connects to the server (retrying for a few seconds), claims `robot` and opens its UDP socket.
+  RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings);  // throws std::runtime_error
+  ~RemoteNode() override;
+
+  // Reads what arrived on TCP and UDP; messages go to `deliver`. False once the server is gone.
+  bool Poll(const std::function<void(const Message&)>& deliver);
+  bool HasPose() const { return truth_.has_value(); }
+
+  double Now() const override;
+  NodeId Id() const override { return id_; }
+  const std::string& Name() const override { return spec_.nodes[id_].name; }
+  std::optional<NodeId> Lookup(const std::string& name) const override;
+  std::string NameOf(NodeId id) const override { return id < spec_.nodes.size() ? spec_.nodes[id].name : ""; }
+  std::size_t NodeCount() const override { return spec_.nodes.size(); }
+  std::optional<RangeScan> Ir() override { return ir_; }
+  std::optional<RangeScan> Laser() override { return laser_; }
+  std::optional<Pose2D> Odometry() override { return odometry_; }
+  std::optional<Pose2D> GroundTruth() override { return truth_; }
+  std::optional<BearingReading> Bearing(NodeId) override { return std::nullopt; }  // not served
+  bool Drive(const Twist2D& velocity) override;
+  bool SetWheelSpeeds(const std::vector<double>& rad_per_s) override;
+  bool Holonomic() const override { return spec_.nodes[id_].model.kind == robots::ModelKind::kOmni3; }
+  void Send(NodeId to, const Bytes& payload) override;
+  void Broadcast(const Bytes& payload) override;
+  void Flood(const Bytes& payload) override { Broadcast(payload); }
+  NetworkView& Network() override { return view_; }
+  double Random() override { return random_.Uniform(); }
+  void Log(const std::string& text) override;
+
+ private:
+  class UdpView : public NetworkView {
+   public:
+    std::string Protocol() const override { return "udp"; }
+    std::vector<RouteEntry> RoutingTable() const override { return {}; }
+    std::vector<NodeId> Neighbours() const override { return {}; }
+    bool InvalidateRoute(NodeId) override { return false; }
+    void RequestRoute(NodeId) override {}
+  };
+  void Command(const ProtocolMessage& m);
+  void Take(const ProtocolMessage& m);
+  void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
+
+  const sim::RunSpec& spec_;
+  NodeId id_;
+  AgentSettings settings_;
+  int tcp_ = -1, udp_ = -1;
+  LineReader reader_{1 << 20};
+  UdpView view_;
+  RandomStream random_;
+  double server_time_ = 0;
+  std::optional<double> clock_origin_;
+  std::chrono::steady_clock::time_point server_time_at_;
+  std::optional<Pose2D> truth_, odometry_;
+  std::optional<RangeScan> laser_, ir_;
+};
+
+}  // namespace sanet::hil

@@ -110,10 +110,13 @@ void SimServer::Accept() {
     ::fcntl(fd, F_SETFL, O_NONBLOCK);
     const int yes = 1;
     ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+    const int buffer = 64 * 1024;  // a client that stops reading is noticed within seconds
+    ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &buffer, sizeof buffer);
     char host[INET_ADDRSTRLEN];
     ::inet_ntop(AF_INET, &peer.sin_addr, host, sizeof host);
     clients_.push_back(std::make_unique<Client>(
-        Client{fd, std::string(host) + ":" + std::to_string(ntohs(peer.sin_port)), LineReader(settings_.max_line), "", {}}));
+        Client{fd, std::string(host) + ":" + std::to_string(ntohs(peer.sin_port)), LineReader(settings_.max_line), "", {},
+               0, 0, WallNow()}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
@@ -285,14 +288,19 @@ void SimServer::Error(Client& c, const std::string& why) {
 }
 
 void SimServer::Flush(Client& c) {
+  const double now = WallNow();
   while (c.fd >= 0 && !c.out.empty()) {
     const ssize_t n = ::send(c.fd, c.out.data(), c.out.size(), MSG_NOSIGNAL);
     if (n < 0) {
       if (errno != EAGAIN && errno != EWOULDBLOCK) Drop(c, std::strerror(errno));
-      return;
+      break;
     }
     c.out.erase(0, n);
+    c.last_progress = now;
   }
+  if (c.out.empty()) c.last_progress = now;
+  if (c.fd >= 0 && now - c.last_progress > settings_.stall_timeout)
+    Drop(c, "not reading for " + std::to_string(settings_.stall_timeout) + " s");
 }
 
 void SimServer::Drop(Client& c, const std::string& why) {

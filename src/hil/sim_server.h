@@ -26,6 +26,7 @@ struct ServerSettings {
   double poll_period = 0.005;       // s between socket polls
   std::size_t max_line = 4096;      // bytes; a longer line closes the connection
   std::size_t max_backlog = 1 << 20;  // bytes waiting for a client that does not read: then it is dropped
+  double stall_timeout = 2.0;         // s a client may leave its lines unread before it is dropped
 };
 
 // Asks a running server to end its run as if its duration were over (safe in a signal handler).
@@ -48,6 +49,7 @@ class SimServer {
     std::string out;
     std::optional<NodeId> robot;
     double next_sensors = 0, next_status = 0;
+    double last_progress = 0;  // wall clock (s) when it last took bytes, or had none waiting
   };
   void Poll();
   void Accept();

@@ -1,0 +1,99 @@
+#include "hil/protocol.h"
+
+#include <gtest/gtest.h>
+
+namespace sanet::hil {
+namespace {
+
+ProtocolMessage Parse(const std::string& line) {
+  std::string error;
+  auto m = ParseLine(line, &error);
+  EXPECT_TRUE(m) << line << ": " << error;
+  return m.value_or(ProtocolMessage());
+}
+
+TEST(Protocol, ParsesUsarsimLinesWhateverTheirSpacingAndCase) {
+  const ProtocolMessage m = Parse("init {ClassName USARBot.P2DX}{Name R1}  {Location 4.5,1.9,1.8} {Rotation 0 0 1.57}");
+  EXPECT_EQ(m.type, "INIT");
+  EXPECT_EQ(*m.Get("classname"), "USARBot.P2DX");
+  EXPECT_EQ(*m.Get("Name"), "R1");
+  EXPECT_EQ(*m.Numbers("Location"), (std::vector<double>{4.5, 1.9, 1.8}));
+  EXPECT_EQ(*m.Numbers("Rotation"), (std::vector<double>{0, 0, 1.57}));  // space-separated too
+}
+
+TEST(Protocol, KeepsGroupedPairsAsKeyAndRest) {
+  const ProtocolMessage m = Parse("SEN {Time 395.6} {Type Sonar} {Name F1 Range 4.5604} {Name F2 Range 2.4576}");
+  ASSERT_EQ(m.fields.size(), 4u);
+  EXPECT_EQ(m.fields[2].second, "F1 Range 4.5604");
+  EXPECT_EQ(m.fields[3].second, "F2 Range 2.4576");
+  EXPECT_DOUBLE_EQ(*m.Number("Time"), 395.6);
+}
+
+TEST(Protocol, EveryMessageTypeRoundTrips) {
+  std::vector<ProtocolMessage> all;
+  all.emplace_back("NFO");
+  all.back().Add("Gametype", "BotDeathMatch").Add("Level", "formation").Add("TimeLimit", 420.0);
+  all.emplace_back("INIT");
+  all.back().Add("ClassName", "USARBot.P2DX").Add("Name", "f1").Add("Location", std::vector<double>{1, -2, 0});
+  all.emplace_back("DRIVE");
+  all.back().Add("Left", 1.5).Add("Right", -0.25);
+  all.emplace_back("DRIVE");
+  all.back().Add("LinearVelocity", 0.3).Add("LateralVelocity", 0.1).Add("RotationalVelocity", -0.2);
+  all.emplace_back("SEN");
+  all.back().Add("Time", 1.0).Add("Type", "RangeScanner").Add("Name", "Scanner1").Add("Resolution", 0.0175)
+      .Add("FOV", 3.1416).Add("Range", std::vector<double>{1, 2.5, 8});
+  all.emplace_back("SEN");
+  all.back().Add("Time", 1.0).Add("Type", "GroundTruth").Add("Name", "GroundTruth")
+      .Add("Location", std::vector<double>{1, 2, 0.1}).Add("Orientation", std::vector<double>{0, 0, -0.5});
+  all.emplace_back("SEN");
+  all.back().Add("Type", "IR").Add("Name", "IR0 Range 0.8000").Add("Name", "IR1 Range 0.3000");
+  all.emplace_back("STA");
+  all.back().Add("Type", "GroundVehicle").Add("Time", 2.0).Add("Battery", "3600");
+  all.emplace_back("GETCONF");
+  all.back().Add("Type", "Robot");
+  all.emplace_back("CONF");
+  all.back().Add("Type", "GroundVehicle").Add("SteeringType", "SkidSteered");
+  all.emplace_back("GEO");
+  all.back().Add("WheelRadius", 0.0975).Add("WheelSeparation", 0.33);
+  all.emplace_back("LOG");
+  all.back().Add("Text", "transition a -> b: why");
+  all.emplace_back("ERR");
+  all.back().Add("Message", "unknown command FLY");
+  for (const ProtocolMessage& m : all) {
+    const std::string line = FormatLine(m);
+    ASSERT_EQ(line.substr(line.size() - 2), "\r\n");
+    const ProtocolMessage back = Parse(line.substr(0, line.size() - 2));
+    EXPECT_EQ(back.type, m.type);
+    EXPECT_EQ(back.fields, m.fields) << line;
+  }
+}
+
+TEST(Protocol, RejectsMalformedLinesSayingWhy) {
+  for (const char* bad : {"", "   ", "{Name R1}", "DRIVE Left 1", "DRIVE {Left 1", "DRIVE {Left {1}}", "DRIVE {}",
+                          "DR-IVE {Left 1}"}) {
+    std::string error;
+    EXPECT_FALSE(ParseLine(bad, &error)) << bad;
+    EXPECT_FALSE(error.empty()) << bad;
+  }
+  std::string error;
+  const auto m = ParseLine("DRIVE {Left fast} {Right 1}", &error);
+  ASSERT_TRUE(m);  // the grammar is fine; the value is not a number
+  EXPECT_FALSE(m->Number("Left"));
+  EXPECT_FALSE(m->Numbers("Left"));
+}
+
+TEST(Protocol, LineReaderSplitsEveryLineEndAndLimitsLength) {
+  LineReader r(16);
+  r.Append("A {x 1}\r\nB\nC\rD\n\rE");
+  bool too_long = false;
+  std::vector<std::string> lines;
+  while (auto line = r.Next(&too_long)) lines.push_back(*line);
+  EXPECT_EQ(lines, (std::vector<std::string>{"A {x 1}", "B", "C", "D"}));
+  EXPECT_FALSE(too_long);
+  r.Append(std::string(40, 'x'));
+  EXPECT_FALSE(r.Next(&too_long));
+  EXPECT_TRUE(too_long);
+}
+
+}  // namespace
+}  // namespace sanet::hil

@@ -68,9 +68,7 @@ void SimServer::Start() {
 }
 
 void SimServer::MeasureLag(double simulated) {
-  const double now = WallNow();
-  if (wall_start_ < 0) wall_start_ = now - simulated;
-  lags_.push_back(std::max(0.0, (now - wall_start_) - simulated));
+  lags_.push_back(std::max(0.0, (WallNow() - wall_start_) - simulated));
 }
 
 nlohmann::ordered_json SimServer::LagSummary() const {
@@ -89,8 +87,10 @@ void SimServer::Poll() {
     ns3::Simulator::Stop();
     return;
   }
-  Accept();
   const double now = ns3::Simulator::Now().GetSeconds();
+  // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
+  if (wall_start_ < 0) wall_start_ = WallNow() - now;
+  Accept();
   for (std::size_t i = 0; i < clients_.size(); ++i) {
     Client& c = *clients_[i];
     if (c.fd >= 0) Read(c);
@@ -121,7 +121,7 @@ void SimServer::Accept() {
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
     // on this machine share the simulation's time to the microsecond.
-    hello.Add("ClockOrigin", FormatPrecise(WallNow() - ns3::Simulator::Now().GetSeconds()));
+    hello.Add("ClockOrigin", FormatPrecise(wall_start_));
     Send(*clients_.back(), hello);
   }
 }

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "agents/controller_registry.h"
+#include "hil/namespaces.h"
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
 #include "builtin.h"
@@ -141,15 +142,17 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   return 0;
 }
 
-int Agent(const std::string& file, const std::string& robot, const std::string& server, std::uint16_t udp_base,
-          agents::Registry& registry) {
+int Agent(const std::string& file, const std::string& robot, const std::string& server, std::optional<int> udp_base,
+          const std::string& udp_subnet, bool shared_clock, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, registry);
   const auto colon = server.rfind(':');
   if (colon == std::string::npos) throw CLI::ValidationError("--server", "expected HOST:PORT, not '" + server + "'");
   hil::AgentSettings settings;
   settings.server_host = server.substr(0, colon);
   settings.server_port = static_cast<std::uint16_t>(std::stoi(server.substr(colon + 1)));
-  settings.udp_base_port = udp_base;
+  settings.udp_base_port = static_cast<std::uint16_t>(udp_base.value_or(sc.run.loop.udp_port));
+  settings.udp_subnet = udp_subnet;
+  settings.shared_clock = shared_clock;
   std::optional<NodeId> id;
   for (NodeId i = 0; i < sc.run.nodes.size(); ++i)
     if (sc.run.nodes[i].name == robot) id = i;
@@ -176,11 +179,43 @@ int Agent(const std::string& file, const std::string& robot, const std::string& 
 
 volatile std::sig_atomic_t g_interrupted = 0;
 
+[[noreturn]] void Exec(const std::string& program, const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  ::execvp(program.c_str(), argv.data());  // searches PATH for a bare name
+  std::_Exit(127);
+}
+
 // Starts the server and one agent per robot with a controller, as processes of this program;
 // ends them all when the server's run ends or on Ctrl-C.
-int Launch(const std::string& file, const std::string& output, std::uint16_t udp_base, std::optional<double> duration,
-           agents::Registry& registry) {
+int Launch(const std::string& file, const std::string& output, std::optional<int> udp_base_option,
+           std::optional<double> duration, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, registry);
+  const int udp_base = udp_base_option.value_or(sc.run.loop.udp_port);
+  std::vector<std::uint32_t> robots;
+  for (std::uint32_t i = 0; i < sc.run.nodes.size(); ++i)
+    if (sc.run.nodes[i].model.kind != robots::ModelKind::kMote && sc.run.nodes[i].controller) robots.push_back(i);
+  // Real links between namespaces where the machine allows it; loopback otherwise.
+  std::unique_ptr<hil::NetworkNamespaces> namespaces;
+  if (sc.run.loop.namespaces) {
+    std::string why;
+    if (hil::NetworkNamespaces::Permitted(&why)) {
+      const auto& s = sc.run.loop.shaping;
+      const bool wants_shaping = s.delay > 0 || s.jitter > 0 || s.loss > 0 || s.rate > 0;
+      std::string no_shaping;
+      const bool shape = wants_shaping && hil::NetworkNamespaces::ShapingPermitted(&no_shaping);
+      namespaces = std::make_unique<hil::NetworkNamespaces>(robots, s, shape);
+      std::printf("sanet: each agent in its own network namespace, linked by veth pairs and a bridge\n");
+      if (wants_shaping && !shape)
+        std::printf("sanet: netem is not available (%s): the links are not shaped; messages.loss and "
+                    "messages.delay in the scenario impair messages in the agents instead\n", no_shaping.c_str());
+    } else {
+      std::printf("sanet: network namespaces are not available (%s): falling back to loopback, without "
+                  "netem shaping\n", why.c_str());
+    }
+  }
+  const std::string bind = namespaces ? hil::NetworkNamespaces::ServerAddress() : "127.0.0.1";
   const std::string self = std::filesystem::read_symlink("/proc/self/exe");
   const std::string out = output.empty() ? sc.output_folder : output;
   int pipe_fds[2];
@@ -189,12 +224,9 @@ int Launch(const std::string& file, const std::string& output, std::uint16_t udp
   if (server == 0) {
     ::dup2(pipe_fds[1], STDOUT_FILENO);
     ::close(pipe_fds[0]);
-    const std::string seconds = duration ? std::to_string(*duration) : "0";
-    if (duration)
-      ::execl(self.c_str(), "sanet", "serve", file.c_str(), "--port", "0", "-o", out.c_str(), "-q", "--duration",
-              seconds.c_str(), nullptr);
-    else
-      ::execl(self.c_str(), "sanet", "serve", file.c_str(), "--port", "0", "-o", out.c_str(), "-q", nullptr);
+    std::vector<std::string> args = {"sanet", "serve", file, "--port", "0", "--bind", bind, "-o", out, "-q"};
+    if (duration) args.insert(args.end(), {"--duration", std::to_string(*duration)});
+    Exec(self, args);
     std::_Exit(127);
   }
   ::close(pipe_fds[1]);
@@ -212,16 +244,22 @@ int Launch(const std::string& file, const std::string& output, std::uint16_t udp
   const std::string address = first.substr(on + 4, space - on - 4);
   std::printf("%s\n", first.c_str());
   std::vector<pid_t> agents;
-  for (const auto& node : sc.run.nodes) {
-    if (node.model.kind == robots::ModelKind::kMote || !node.controller) continue;
+  for (std::uint32_t id : robots) {
+    const std::string& name = sc.run.nodes[id].name;
     const pid_t agent = ::fork();
     if (agent == 0) {
-      const std::string base = std::to_string(udp_base);
-      ::execl(self.c_str(), "sanet", "agent", "--server", address.c_str(), "--scenario", file.c_str(), "--robot",
-              node.name.c_str(), "--udp-base", base.c_str(), nullptr);
-      std::_Exit(127);
+      std::vector<std::string> args = {"sanet", "agent", "--server", address, "--scenario", file, "--robot", name,
+                                       "--udp-base", std::to_string(udp_base), "--shared-clock"};
+      if (namespaces) {
+        args.insert(args.end(), {"--udp-subnet", hil::NetworkNamespaces::Subnet()});
+        args[0] = self;  // ip runs the program itself: its path, not a name, comes first
+        args.insert(args.begin(), {"ip", "netns", "exec", namespaces->Namespace(id)});
+        Exec("ip", args);
+      }
+      Exec(self, args);
     }
-    std::printf("  agent %s: process %d\n", node.name.c_str(), agent);
+    std::printf("  agent %s: process %d%s\n", name.c_str(), agent,
+                namespaces ? (" in namespace " + namespaces->Namespace(id)).c_str() : "");
     agents.push_back(agent);
   }
   std::fflush(stdout);
@@ -317,15 +355,19 @@ int main(int argc, char** argv) {
   std::optional<double> serve_duration, launch_duration;
   serve_cmd->add_option("--duration", serve_duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
 
-  std::string agent_file, agent_robot, agent_server = "127.0.0.1:3000";
-  int udp_base = 47000;
+  std::string agent_file, agent_robot, agent_server = "127.0.0.1:3000", agent_subnet;
+  std::optional<int> udp_base;
+  bool agent_shared_clock = false;
   CLI::App* agent_cmd = app.add_subcommand("agent", "Run one robot's controller as its own process: sensors and "
                                                     "motors through a `sanet serve` server, messages over real UDP");
   agent_cmd->add_option("--scenario", agent_file, "Scenario file: the robot's controller and parameters, the peers")->required();
   agent_cmd->add_option("--robot", agent_robot, "The robot to drive (its name in the scenario)")->required();
   agent_cmd->add_option("--server", agent_server, "The server, HOST:PORT")->capture_default_str();
-  agent_cmd->add_option("--udp-base", udp_base, "UDP port of node 0; node i uses base + i")
-      ->check(CLI::Range(1024, 60000))->capture_default_str();
+  agent_cmd->add_option("--udp-base", udp_base, "UDP port of node 0; node i uses base + i (default: the "
+                                                "scenario's loop.udp_port, 47000)")->check(CLI::Range(1024, 60000));
+  agent_cmd->add_option("--udp-subnet", agent_subnet, "Instead: node i listens on SUBNET.(i+1) at the base port "
+                                                      "(agents in network namespaces)");
+  agent_cmd->add_flag("--shared-clock", agent_shared_clock, "The server runs on this machine: share its clock exactly");
 
   std::string launch_file, launch_output;
   CLI::App* launch_cmd = app.add_subcommand("launch", "Start a server and one agent process per robot on this "
@@ -333,8 +375,8 @@ int main(int argc, char** argv) {
   launch_cmd->add_option("scenario", launch_file, "Scenario file (YAML)")->required();
   launch_cmd->add_option("-o,--output", launch_output, "Results folder (default: the scenario's)");
   launch_cmd->add_option("--duration", launch_duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
-  launch_cmd->add_option("--udp-base", udp_base, "UDP port of node 0; node i uses base + i")
-      ->check(CLI::Range(1024, 60000))->capture_default_str();
+  launch_cmd->add_option("--udp-base", udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
+      ->check(CLI::Range(1024, 60000));
 
   std::vector<std::string> libraries;
   CLI::App* list_cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
@@ -349,9 +391,9 @@ int main(int argc, char** argv) {
     if (*validate_cmd) return Validate(validate_file, registry);
     if (*sweep_cmd) return Sweep(sweep_file, sweep_seeds, sweep_output, sweep_quiet, registry);
     if (*serve_cmd) return Serve(serve_file, serve_bind, serve_port, serve_output, serve_quiet, serve_duration, registry);
-    if (*agent_cmd) return Agent(agent_file, agent_robot, agent_server, static_cast<std::uint16_t>(udp_base), registry);
+    if (*agent_cmd) return Agent(agent_file, agent_robot, agent_server, udp_base, agent_subnet, agent_shared_clock, registry);
     if (*launch_cmd)
-      return Launch(launch_file, launch_output, static_cast<std::uint16_t>(udp_base), launch_duration, registry);
+      return Launch(launch_file, launch_output, udp_base, launch_duration, registry);
     for (const auto& lib : libraries) registry.LoadLibrary(lib);
     return List(registry);
   } catch (const CLI::ValidationError& e) {

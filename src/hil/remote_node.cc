@@ -39,6 +39,7 @@ Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
 RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings)
     : spec_(spec), id_(robot), settings_(std::move(settings)),
       random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
+      impairments_(spec.seed, "messages/impairments/" + spec.nodes.at(robot).name),
       server_time_at_(std::chrono::steady_clock::now()) {
   const sockaddr_in server = Address(settings_.server_host, settings_.server_port);
   for (int attempt = 0; attempt < 100; ++attempt) {  // the server may still be starting
@@ -55,9 +56,9 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   ::fcntl(tcp_, F_SETFL, O_NONBLOCK);
 
   udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
-  const sockaddr_in mine = Address(settings_.udp_host, static_cast<std::uint16_t>(settings_.udp_base_port + id_));
+  const sockaddr_in mine = Address(HostOf(id_), PortOf(id_));
   if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
-    throw std::runtime_error("cannot bind UDP port " + std::to_string(settings_.udp_base_port + id_) + ": " + std::strerror(errno));
+    throw std::runtime_error("cannot bind UDP " + HostOf(id_) + ":" + std::to_string(PortOf(id_)) + ": " + std::strerror(errno));
   ::fcntl(udp_, F_SETFL, O_NONBLOCK);
 
   ProtocolMessage init("INIT");
@@ -134,6 +135,18 @@ bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
     m.time_received = Now();
     m.hops = 1;
     m.payload.assign(datagram.begin() + 18, datagram.end());
+    // The scenario's message impairments, applied here as the simulated run applies them.
+    if (spec_.message_loss > 0 && impairments_.Uniform() < spec_.message_loss) continue;
+    if (spec_.message_delay > 0) {
+      delayed_.push_back({m.time_received + spec_.message_delay, m});
+      continue;
+    }
+    deliver(m);
+  }
+  while (!delayed_.empty() && delayed_.front().first <= Now()) {
+    Message m = delayed_.front().second;
+    delayed_.pop_front();
+    m.time_received = Now();
     deliver(m);
   }
   return tcp_ >= 0;
@@ -147,7 +160,7 @@ void RemoteNode::Take(const ProtocolMessage& m) {
   }
   // On this machine the server's clock origin gives the simulation time exactly; a server
   // elsewhere has another monotonic clock, and its time is estimated from its messages.
-  if (m.type == "NFO" && settings_.server_host.rfind("127.", 0) == 0)
+  if (m.type == "NFO" && (settings_.shared_clock || settings_.server_host.rfind("127.", 0) == 0))
     if (auto origin = m.Number("ClockOrigin")) clock_origin_ = *origin;
   if (m.type == "ERR") {
     const std::string* text = m.Get("Message");
@@ -219,8 +232,16 @@ bool RemoteNode::SetWheelSpeeds(const std::vector<double>& w) {
 void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
   Bytes datagram = Writer().U8(kUdpMagic).U32(id_).U32(kind == kUnicast ? to : kBroadcast).U8(kind).F64(Now()).bytes();
   datagram.insert(datagram.end(), payload.begin(), payload.end());
-  const sockaddr_in peer = Address(settings_.udp_host, static_cast<std::uint16_t>(settings_.udp_base_port + to));
+  const sockaddr_in peer = Address(HostOf(to), PortOf(to));
   ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
+}
+
+std::string RemoteNode::HostOf(NodeId node) const {
+  return settings_.udp_subnet.empty() ? settings_.udp_host : settings_.udp_subnet + "." + std::to_string(node + 1);
+}
+
+std::uint16_t RemoteNode::PortOf(NodeId node) const {
+  return static_cast<std::uint16_t>(settings_.udp_base_port + (settings_.udp_subnet.empty() ? node : 0));
 }
 
 void RemoteNode::Send(NodeId to, const Bytes& payload) {

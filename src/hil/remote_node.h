@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <deque>
 #include <functional>
 #include <optional>
 #include <string>
@@ -21,6 +22,8 @@ struct AgentSettings {
   std::uint16_t server_port = 3000;
   std::string udp_host = "127.0.0.1";  // where every node's UDP socket lives
   std::uint16_t udp_base_port = 47000;  // node i listens on base + i
+  std::string udp_subnet;  // instead: node i listens on <subnet>.(i+1), port udp_base_port (namespaces)
+  bool shared_clock = false;  // the server runs on this machine: take its clock origin
 };
 
 class RemoteNode : public Node {
@@ -66,6 +69,8 @@ class RemoteNode : public Node {
   void Command(const ProtocolMessage& m);
   void Take(const ProtocolMessage& m);
   void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
+  std::string HostOf(NodeId node) const;
+  std::uint16_t PortOf(NodeId node) const;
 
   const sim::RunSpec& spec_;
   NodeId id_;
@@ -74,6 +79,8 @@ class RemoteNode : public Node {
   LineReader reader_{1 << 20};
   UdpView view_;
   RandomStream random_;
+  RandomStream impairments_;
+  std::deque<std::pair<double, Message>> delayed_;  // (release time, message) under messages.delay
   double server_time_ = 0;
   std::optional<double> clock_origin_;
   std::chrono::steady_clock::time_point server_time_at_;

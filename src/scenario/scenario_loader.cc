@@ -355,7 +355,8 @@ Scenario LoadScenario(const std::string& path) {
   Scenario sc;
   sc.file = path;
   sim::RunSpec& run = sc.run;
-  root.ExpectKeys({"name", "seed", "duration", "world", "network", "nodes", "messages", "events", "end", "outputs"});
+  root.ExpectKeys({"name", "seed", "duration", "world", "network", "nodes", "messages", "events", "end", "loop",
+                   "outputs"});
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   run.name = root.Get("name") ? ReadName(*root.Get("name")) : fs::path(path).stem().string();
   if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
@@ -443,6 +444,19 @@ Scenario LoadScenario(const std::string& path) {
         if (run.nodes[i].name == node.Text()) event.node = static_cast<std::uint32_t>(i);
       event.action = ReadChoice<sim::NodeEvent::Action>(e.Require("action"), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}});
       run.events.push_back(event);
+    }
+  }
+  if (auto loop = root.Get("loop")) {
+    loop->ExpectKeys({"namespaces", "netem", "udp_port"});
+    if (auto ns = loop->Get("namespaces")) run.loop.namespaces = ns->Bool();
+    if (auto port = loop->Get("udp_port")) run.loop.udp_port = static_cast<std::uint16_t>(port->Integer(1024, 60000));
+    if (auto netem = loop->Get("netem")) {
+      netem->ExpectKeys({"delay", "jitter", "loss", "rate"});
+      if (!run.loop.namespaces) netem->Fail("shapes the links between namespaces: set loop.namespaces: true");
+      Optional(*netem, "delay", run.loop.shaping.delay, 0, 60);
+      Optional(*netem, "jitter", run.loop.shaping.jitter, 0, 60);
+      Optional(*netem, "loss", run.loop.shaping.loss, 0, 1);
+      Optional(*netem, "rate", run.loop.shaping.rate, 0, 1e12);
     }
   }
   if (auto end = root.Get("end")) {

@@ -43,6 +43,21 @@ struct NodeEvent {
   Action action = Action::kSwitchOff;
 };
 
+// netem settings for the real links of a communication-in-the-loop launch.
+struct LinkShaping {
+  double delay = 0;   // s
+  double jitter = 0;  // s
+  double loss = 0;    // probability
+  double rate = 0;    // bit/s, 0 for no limit
+};
+
+// How `sanet launch` connects the agents.
+struct LoopSpec {
+  bool namespaces = false;  // each agent in its own network namespace (falls back to loopback)
+  LinkShaping shaping;
+  std::uint16_t udp_port = 47000;  // loopback: node i uses port + i; namespaces: every node this port
+};
+
 struct RunSpec {
   std::string name = "run";
   std::uint64_t seed = 1;
@@ -62,6 +77,7 @@ struct RunSpec {
   // Robots are driven by clients of the simulation server: their scenario controllers do not run
   // here (motes' controllers still do).
   bool robots_remote = false;
+  LoopSpec loop;
   // The run ends early when a controller logs one of these lines.
   std::vector<std::string> end_when_logged;
   double end_grace = 0;  // s the run goes on after the end condition, for messages in flight

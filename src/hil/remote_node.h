@@ -12,6 +12,7 @@
 
 #include "core/random_stream.h"
 #include "hil/protocol.h"
+#include "net/empty_view.h"
 #include "sanet/node.h"
 #include "sim/run_spec.h"
 
@@ -58,14 +59,6 @@ class RemoteNode : public Node {
   void Log(const std::string& text) override;
 
  private:
-  class UdpView : public NetworkView {
-   public:
-    std::string Protocol() const override { return "udp"; }
-    std::vector<RouteEntry> RoutingTable() const override { return {}; }
-    std::vector<NodeId> Neighbours() const override { return {}; }
-    bool InvalidateRoute(NodeId) override { return false; }
-    void RequestRoute(NodeId) override {}
-  };
   void Command(const ProtocolMessage& m);
   void Take(const ProtocolMessage& m);
   void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
@@ -77,7 +70,7 @@ class RemoteNode : public Node {
   AgentSettings settings_;
   int tcp_ = -1, udp_ = -1;
   LineReader reader_{1 << 20};
-  UdpView view_;
+  net::EmptyView view_{"udp"};
   RandomStream random_;
   RandomStream impairments_;
   std::deque<std::pair<double, Message>> delayed_;  // (release time, message) under messages.delay

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "net/empty_view.h"
 #include "net/transport.h"
 
 namespace sanet::net {
@@ -21,20 +22,12 @@ class LocalTransport : public Transport {
   void SwitchOff(NodeId node) override { off_.at(node) = true; }
 
  private:
-  class EmptyView : public NetworkView {
-   public:
-    std::string Protocol() const override { return "none"; }
-    std::vector<RouteEntry> RoutingTable() const override { return {}; }
-    std::vector<NodeId> Neighbours() const override { return {}; }
-    bool InvalidateRoute(NodeId) override { return false; }
-    void RequestRoute(NodeId) override {}
-  };
   void Deliver(NodeId receiver, NodeId from, NodeId to, Delivery delivery, const Bytes& payload);
 
   std::size_t node_count_;
   double latency_;
   Receiver receiver_;
-  EmptyView view_;
+  EmptyView view_{"none"};
   std::vector<bool> off_;
 };
 

@@ -82,7 +82,7 @@ void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {
           ++counts_[node].dropped;
           if (!logs_.empty())
             logs_[node]->Row(std::to_string(ns3::Simulator::Now().GetSeconds()) + ",dropped,mac," +
-                             std::to_string(p->GetSize()) + ",,retries_exhausted");
+                             std::to_string(p->GetSize()) + ",,refused_by_mac");
         }));
   }
 }
@@ -125,7 +125,11 @@ void PacketTrace::Record(NodeId node, Event event, const ns3::Ipv4Header& ip,
 }
 
 void PacketTrace::RouteNeeded(NodeId node, NodeId destination, double now) {
-  if (pending_.count({node, destination})) return;
+  auto it = pending_.find({node, destination});
+  // AODV gives up on a discovery after its retries (about 8 s at ns-3's defaults): one still
+  // open after kGiveUp stays unanswered in routes.csv, and a new one starts.
+  constexpr double kGiveUp = 10;
+  if (it != pending_.end() && now - discoveries_[it->second].started < kGiveUp) return;
   pending_[{node, destination}] = discoveries_.size();
   discoveries_.push_back({node, destination, now, std::nullopt});
 }

@@ -93,8 +93,11 @@ void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
                                                              : ns3::WIFI_STANDARD_80211a);
   const std::string data_mode = ModeName(spec_.standard, spec_.data_rate);
   const std::string control_mode = ModeName(spec_.standard, DataRates(spec_.standard).front());
+  // Broadcasts (hence AODV's requests and floods) go at the standard's lowest rate, named here
+  // because ns-3's own default for them is the first basic rate (1 Mbps DSSS even for 802.11g).
   wifi.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode),
-                               "ControlMode", ns3::StringValue(control_mode));
+                               "ControlMode", ns3::StringValue(control_mode), "NonUnicastMode",
+                               ns3::StringValue(control_mode));
 
   ns3::YansWifiChannelHelper channel;
   channel.SetPropagationDelay(spec_.delay == DelayModel::kConstantSpeed ? "ns3::ConstantSpeedPropagationDelayModel"

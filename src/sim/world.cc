@@ -326,8 +326,16 @@ RunResult World::Run(const RunOptions& options) {
   // Order at equal times follows scheduling order: controllers start, then record, physics.
   ns3::Simulator::ScheduleNow([this] {
     StageTimer timer(profile_.controllers);
-    for (std::size_t i = 0; i < controllers_.size(); ++i)
-      if (controllers_[i]) controllers_[i]->Start(*nodes_[i]);
+    for (std::size_t i = 0; i < controllers_.size(); ++i) {
+      if (!controllers_[i]) continue;
+      try {
+        controllers_[i]->Start(*nodes_[i]);
+      } catch (const std::exception& e) {
+        out_->failure = "controller of " + spec_.nodes[i].name + " failed to start: " + e.what();
+        ns3::Simulator::Stop();
+        return;
+      }
+    }
   });
   for (std::size_t i = 0; i < controllers_.size(); ++i)
     if (controllers_[i]) ns3::Simulator::ScheduleNow(&World::ControlStep, this, i);

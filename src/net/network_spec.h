@@ -32,6 +32,7 @@ struct NetworkSpec {
   double antenna_height = 1.0;      // m above each node, for two-ray ground
   double max_range = 0;             // m; beyond it nothing is received (0: no cut-off)
   DelayModel delay = DelayModel::kConstantSpeed;
+  double random_delay_max = 1e-6;  // s: `random` delays are uniform in [0, this]
 
   Routing routing = Routing::kAodv;
   bool aodv_hello = true;  // AODV hello messages (neighbour sensing)

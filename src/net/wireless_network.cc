@@ -100,8 +100,15 @@ void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
                                ns3::StringValue(control_mode));
 
   ns3::YansWifiChannelHelper channel;
-  channel.SetPropagationDelay(spec_.delay == DelayModel::kConstantSpeed ? "ns3::ConstantSpeedPropagationDelayModel"
-                                                                        : "ns3::RandomPropagationDelayModel");
+  if (spec_.delay == DelayModel::kConstantSpeed) {
+    channel.SetPropagationDelay("ns3::ConstantSpeedPropagationDelayModel");
+  } else {
+    // ns-3's default draws up to a whole second per frame, longer than any acknowledgement
+    // timeout: the scenario bounds it.
+    channel.SetPropagationDelay("ns3::RandomPropagationDelayModel", "Variable",
+                                ns3::StringValue("ns3::UniformRandomVariable[Min=0.0|Max=" +
+                                                 std::to_string(spec_.random_delay_max) + "]"));
+  }
   switch (spec_.loss) {
     case LossModel::kLogDistance:
       channel.AddPropagationLoss("ns3::LogDistancePropagationLossModel", "Exponent", ns3::DoubleValue(spec_.exponent),

@@ -251,7 +251,7 @@ T ReadChoice(const Field& f, std::initializer_list<std::pair<const char*, T>> ch
 
 net::NetworkSpec ReadNetwork(const Field& f) {
   using namespace net;
-  f.ExpectKeys({"radio", "data_rate", "tx_power", "rx_threshold", "propagation", "delay", "routing",
+  f.ExpectKeys({"radio", "data_rate", "tx_power", "rx_threshold", "propagation", "delay", "random_delay_max", "routing",
                 "aodv_hello", "flood_ttl", "port", "pcap", "flow_monitor", "packet_log"});
   NetworkSpec n;
   if (auto radio = f.Get("radio")) {
@@ -293,12 +293,20 @@ net::NetworkSpec ReadNetwork(const Field& f) {
   }
   if (auto delay = f.Get("delay"))
     n.delay = ReadChoice<DelayModel>(*delay, {{"constant_speed", DelayModel::kConstantSpeed}, {"random", DelayModel::kRandom}});
+  if (auto max = f.Get("random_delay_max")) {
+    if (n.delay != DelayModel::kRandom) max->Fail("applies to delay: random only");
+    n.random_delay_max = max->Number(0, 1e-3);  // beyond a millisecond acknowledgements time out
+  }
   if (auto routing = f.Get("routing"))
     n.routing = ReadChoice<Routing>(*routing, {{"aodv", Routing::kAodv}, {"olsr", Routing::kOlsr}, {"dsdv", Routing::kDsdv},
                                                {"dsr", Routing::kDsr}, {"none", Routing::kNone}});
   if (auto hello = f.Get("aodv_hello")) n.aodv_hello = hello->Bool();
   if (auto ttl = f.Get("flood_ttl")) n.flood_ttl = ttl->Integer(1, 255);
-  if (auto port = f.Get("port")) n.port = static_cast<std::uint16_t>(port->Integer(1, 65535));
+  if (auto port = f.Get("port")) {
+    n.port = static_cast<std::uint16_t>(port->Integer(1, 65535));
+    for (auto [taken, by] : {std::pair{654, "AODV"}, {698, "OLSR"}, {269, "DSDV"}})
+      if (n.port == taken) port->Fail(std::string("is the port of ") + by + "'s own messages");
+  }
   if (auto pcap = f.Get("pcap")) n.pcap = pcap->Bool();
   if (auto fm = f.Get("flow_monitor")) n.flow_monitor = fm->Bool();
   if (auto log = f.Get("packet_log")) n.packet_log = log->Bool();
@@ -423,6 +431,8 @@ Scenario LoadScenario(const std::string& path) {
              t.controller_line);
   }
   if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
+  if (run.network && run.nodes.size() > 65534)
+    nodes.Fail("a network has room for 65534 nodes (10.0.0.0/16), not " + std::to_string(run.nodes.size()));
 
   if (auto messages = root.Get("messages")) {
     if (run.network && messages->Get("latency"))

@@ -127,6 +127,18 @@ TEST_P(ProactiveRouting, BuildsTablesAndCarriesMessagesFourHops) {
 INSTANTIATE_TEST_SUITE_P(Network, ProactiveRouting, ::testing::Values(net::Routing::kOlsr, net::Routing::kDsdv),
                          [](const auto& info) { return std::string(net::RoutingName(info.param)); });
 
+TEST(Network, RandomPropagationDelayStillCarriesAcknowledgedUnicast) {
+  Probes probes({{{2, 3}, {3, 3}, {4, 3}}, {}});
+  sim::RunSpec spec = MoteLine(4, 40, net::Routing::kAodv, 8);
+  spec.network->delay = net::DelayModel::kRandom;
+  spec.network->random_delay_max = 20e-6;
+  spec.nodes[0].controller = UseController("p0", {});
+  spec.nodes[3].controller = UseController("p1", {});
+  sim::World world(spec, probes.registry);
+  world.Run({});
+  EXPECT_EQ(probes.inboxes[1].size(), 3u);
+}
+
 TEST(Network, WithoutRoutingAMessageDoesNotGoBeyondOneHop) {
   Probes probes({{{2, 5}, {4, 5}, {6, 1}}, {}, {}});
   sim::RunSpec spec = MoteLine(6, 40, net::Routing::kNone, 10);

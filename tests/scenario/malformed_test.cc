@@ -79,6 +79,9 @@ const Case kCases[] = {
      "nodes[0].radio", "needs a 'network' section"},
     {"latency_with_network", "network: {}\nmessages: {latency: 0.1}\nnodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\n",
      3, "messages.latency", "for runs without a network"},
+    {"port_of_a_routing_protocol", "network:\n  port: 654\nnodes: []\n", 3, "network.port", "port of AODV"},
+    {"random_delay_max_without_random", "network:\n  random_delay_max: 0.0001\nnodes: []\n", 3,
+     "network.random_delay_max", "delay: random only"},
     {"odometry_on_a_mote", "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {odometry: {noise: 0.1}}\n",
      6, "nodes[0].sensors.odometry", "no odometry"},
 };

@@ -85,7 +85,8 @@ double RunNs3Alone(int count, double duration) {
   spec.packet_log = false;
   {
     net::WirelessNetwork network(spec, nodes, names, std::vector<net::NodeRadio>(count));
-    network.Open("");
+    trace::ResultsFolder nowhere("");
+    network.Open(nowhere);
     const Bytes payload(64, 0);
     std::vector<std::function<void()>> senders(layout.flows.size());
     for (std::size_t i = 0; i < layout.flows.size(); ++i) {

@@ -41,8 +41,8 @@ class FormationFollower : public Controller {
   void OnMessage(Node& node, const Message& message) override {
     const auto m = PoseMessage::Decode(message.payload);
     if (!m || (leader_ && m->sequence <= last_sequence_)) return;  // old or duplicate
-    node.Log("metric pose_delay " + std::to_string(node.Now() - m->time));
-    node.Log("metric pose_missed " + std::to_string(leader_ ? m->sequence - last_sequence_ - 1 : 0));
+    node.Metric("pose_delay", node.Now() - m->time);
+    node.Metric("pose_missed", leader_ ? m->sequence - last_sequence_ - 1.0 : 0.0);
     last_sequence_ = m->sequence;
     leader_ = m->pose;
     for (NodeId to : forward_to_) node.Send(to, message.payload);

@@ -43,7 +43,7 @@ class HelpRequestMote : public Controller {
         break;
       case State::kWait:
         if (now >= deadline_) {
-          node.Log("metric robot_timeouts 1");
+          node.Metric("robot_timeouts", 1);
           Request(node, State::kWait, "robot " + Name(node, robot_) + " silent past its hop time");
         }
         break;
@@ -93,7 +93,7 @@ class HelpRequestMote : public Controller {
   static std::string Name(Node& node, NodeId id) { return node.NameOf(id); }
 
   void Go(Node& node, State to, const std::string& why) {
-    node.Log(std::string("transition ") + StateName(state_) + " -> " + StateName(to) + ": " + why);
+    node.Transition(StateName(state_), StateName(to), why);
     state_ = to;
   }
   void Request(Node& node, State from, const std::string& why) {

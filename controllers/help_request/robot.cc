@@ -97,7 +97,7 @@ class HelpRequestRobot : public Controller {
   }
 
   void Go(Node& node, State to, const std::string& why) {
-    node.Log(std::string("transition ") + StateName(state_) + " -> " + StateName(to) + ": " + why);
+    node.Transition(StateName(state_), StateName(to), why);
     state_ = to;
     attempts_ = 0;
     deadline_ = 0;
@@ -179,13 +179,13 @@ class HelpRequestRobot : public Controller {
     }
     if (bearing->distance <= (final_leg ? arrival_ : hop_reached_)) {
       node.Drive({});
-      node.Log("metric hop_time " + std::to_string(now - hop_started_));
+      node.Metric("hop_time", now - hop_started_);
       if (final_leg) {
         HelpMessage m{Kind::kRobot};
         m.a = true;
         node.Send(dest_, m.Encode());
-        node.Log("metric travel_time " + std::to_string(now - started_));
-        node.Log("metric time_avoiding_obstacles " + std::to_string(avoiding_));
+        node.Metric("travel_time", now - started_);
+        node.Metric("time_avoiding_obstacles", avoiding_);
         Go(node, State::kArrived, "reached " + node.NameOf(dest_));
         node.Log("arrived");
       } else {
@@ -216,7 +216,7 @@ class HelpRequestRobot : public Controller {
     node.Drive({});
     HelpMessage m{Kind::kRobot};  // ra = false
     node.Send(dest_, m.Encode());
-    node.Log("metric gave_up 1");
+    node.Metric("gave_up", 1);
     has_dest_ = false;
     has_hop_ = false;
     Go(node, waiting_.empty() ? State::kIdle : State::kSelect, "gave up: " + why);

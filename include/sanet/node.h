@@ -88,10 +88,15 @@ class Node {
   // draws the same numbers.
   virtual double Random() = 0;
 
-  // A line in the run's log (time and node are added). Two forms are also collected:
-  //   "transition FROM -> TO: why"  a state machine's step, into transitions.csv
-  //   "metric NAME VALUE"           a measurement, summarised (quartiles) in summary.json
+  // A line in the run's log, log.csv (time and node are added). Free text for people: nothing
+  // reads it back.
   virtual void Log(const std::string& text) = 0;
+
+  // Typed events, which results and viewers read:
+  // a state machine's step (transitions.csv, and the node's state in the world's snapshots),
+  virtual void Transition(const std::string& from, const std::string& to, const std::string& why) = 0;
+  // a measurement (metrics.csv; quartiles per node and name in summary.json).
+  virtual void Metric(const std::string& name, double value) = 0;
 };
 
 }  // namespace sanet

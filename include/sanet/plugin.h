@@ -13,7 +13,7 @@
 #include "sanet/controller.h"
 
 // Bump whenever a header under include/sanet changes in a way that breaks binary compatibility.
-#define SANET_CONTROLLER_API_VERSION 3
+#define SANET_CONTROLLER_API_VERSION 4  // 4: Node::Transition and Node::Metric
 
 // The entry points stay visible when a library hides its other symbols (-fvisibility=hidden).
 #define SANET_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))

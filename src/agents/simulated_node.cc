@@ -11,4 +11,10 @@ std::optional<BearingReading> SimulatedNode::Bearing(NodeId target) {
   return model_.Bearing(directory_.TruePose(target));
 }
 
+void SimulatedNode::SwitchOff() {
+  model_.Drive({});
+  off_ = true;
+  transport_.SwitchOff(id_);
+}
+
 }  // namespace sanet::agents

@@ -1,5 +1,7 @@
 // The node a controller sees in a simulated run: physics model, simulation clock and the
-// run's transport behind the portable interface.
+// run's transport behind the portable interface. Every driver of a simulated robot goes
+// through it (its controller, or a protocol client of the server), so that the rules of the
+// run, such as switch-off, hold for all of them.
 #pragma once
 
 #include <string>
@@ -20,6 +22,8 @@ class NodeDirectory {
   virtual std::size_t NodeCount() const = 0;
   virtual Pose2D TruePose(NodeId node) const = 0;
   virtual void Log(NodeId node, const std::string& text) = 0;
+  virtual void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) = 0;
+  virtual void Metric(NodeId node, const std::string& name, double value) = 0;
 };
 
 class SimulatedNode : public Node {
@@ -42,8 +46,9 @@ class SimulatedNode : public Node {
   std::optional<Pose2D> GroundTruth() override { return model_.GroundTruth(); }
   std::optional<BearingReading> Bearing(NodeId target) override;
 
-  bool Drive(const Twist2D& velocity) override { return model_.Drive(velocity); }
-  bool SetWheelSpeeds(const std::vector<double>& w) override { return model_.SetWheelSpeeds(w); }
+  // A switched-off node does not move, whoever asks.
+  bool Drive(const Twist2D& velocity) override { return !off_ && model_.Drive(velocity); }
+  bool SetWheelSpeeds(const std::vector<double>& w) override { return !off_ && model_.SetWheelSpeeds(w); }
   bool Holonomic() const override { return model_.holonomic(); }
 
   void Send(NodeId to, const Bytes& payload) override { transport_.Send(id_, to, payload); }
@@ -51,7 +56,17 @@ class SimulatedNode : public Node {
   void Flood(const Bytes& payload) override { transport_.Flood(id_, payload); }
   NetworkView& Network() override { return transport_.View(id_); }
   void Log(const std::string& text) override { directory_.Log(id_, text); }
+  void Transition(const std::string& from, const std::string& to, const std::string& why) override {
+    directory_.Transition(id_, from, to, why);
+  }
+  void Metric(const std::string& name, double value) override { directory_.Metric(id_, name, value); }
   double Random() override { return random_.Uniform(); }
+
+  // The node stops for good: motors, radio (and, through its host, its controller).
+  void SwitchOff();
+  bool switched_off() const { return off_; }
+  robots::NodeModel& model() { return model_; }
+  const robots::NodeModel& model() const { return model_; }
 
  private:
   NodeId id_;
@@ -60,6 +75,7 @@ class SimulatedNode : public Node {
   net::Transport& transport_;
   NodeDirectory& directory_;
   RandomStream random_;
+  bool off_ = false;
 };
 
 }  // namespace sanet::agents

@@ -5,21 +5,21 @@
 #include <iostream>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <sys/wait.h>
 #include <thread>
 #include <sstream>
 #include <unistd.h>
 
-#include <ns3/global-value.h>
-#include <ns3/string.h>
-
 #include <nlohmann/json.hpp>
 
 #include "agents/controller_registry.h"
+#include "hil/agent.h"
 #include "hil/namespaces.h"
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
 #include "builtin.h"
+#include "core/atomic_file.h"
 #include "robots/node_model.h"
 #include "scenario/scenario_loader.h"
 #include "sim/sweep.h"
@@ -109,13 +109,12 @@ int Sweep(const std::string& file, const std::string& seeds_text, const std::str
   return 0;
 }
 
-int Serve(const std::string& file, const std::string& bind, int port, const std::string& output, bool quiet,
-          std::optional<double> duration, agents::Registry& registry) {
+int Serve(const std::string& file, const std::string& bind, int port, const std::string& port_file,
+          const std::string& output, bool quiet, std::optional<double> duration, agents::Registry& registry) {
   scenario::Scenario sc = LoadChecked(file, registry);
   if (duration) sc.run.duration = *duration;
   sc.run.robots_remote = true;
-  // The same schedule, run against the wall clock.
-  ns3::GlobalValue::Bind("SimulatorImplementationType", ns3::StringValue("ns3::RealtimeSimulatorImpl"));
+  sim::UseRealTimeClock();  // the same schedule, run against the wall clock
   sim::World world(sc.run, registry);
   hil::ServerSettings settings;
   settings.bind = bind;
@@ -127,6 +126,7 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), bind.c_str(), server.port(),
               sc.run.duration);
   std::fflush(stdout);
+  if (!port_file.empty()) WriteFileAtomically(port_file, std::to_string(server.port()) + "\n");
   sim::RunOptions options;
   options.output_dir = output.empty() ? sc.output_folder : output;
   options.scenario_file = file;
@@ -158,23 +158,7 @@ int Agent(const std::string& file, const std::string& robot, const std::string& 
     if (sc.run.nodes[i].name == robot) id = i;
   if (!id || !sc.run.nodes[*id].controller)
     throw CLI::ValidationError("--robot", "'" + robot + "' is not a robot with a controller in " + file);
-  std::unique_ptr<Controller> controller = sim::MakeController(*sc.run.nodes[*id].controller, registry);
-  hil::RemoteNode node(sc.run, *id, settings);
-  const auto deliver = [&](const Message& m) { controller->OnMessage(node, m); };
-  while (!node.HasPose())  // the first sensor lines tell where the robot is and what time it is
-    if (!node.Poll(deliver)) return 0;
-    else std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  controller->Start(node);
-  const double period = 1.0 / sc.run.nodes[*id].controller->rate;
-  double next = node.Now();
-  while (node.Poll(deliver)) {
-    if (node.Now() >= next) {
-      controller->ControlStep(node);
-      next = std::max(next + period, node.Now() - period);  // no burst of steps after a stall
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return 0;  // the server ended the run
+  return hil::RunAgent(sc.run, *id, settings, registry);
 }
 
 volatile std::sig_atomic_t g_interrupted = 0;
@@ -185,6 +169,19 @@ volatile std::sig_atomic_t g_interrupted = 0;
   argv.push_back(nullptr);
   ::execvp(program.c_str(), argv.data());  // searches PATH for a bare name
   std::_Exit(127);
+}
+
+// The port a starting server wrote to `path`, or nothing if the server ended (or took more
+// than 30 s) before it did.
+std::optional<int> WaitForPort(const std::string& path, pid_t server) {
+  for (int waited = 0; waited < 30000; waited += 10) {
+    std::ifstream in(path);
+    int port = 0;
+    if (in >> port && port > 0) return port;
+    if (::waitpid(server, nullptr, WNOHANG) != 0) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return std::nullopt;
 }
 
 // Starts the server and one agent per robot with a controller, as processes of this program;
@@ -218,31 +215,26 @@ int Launch(const std::string& file, const std::string& output, std::optional<int
   const std::string bind = namespaces ? hil::NetworkNamespaces::ServerAddress() : "127.0.0.1";
   const std::string self = std::filesystem::read_symlink("/proc/self/exe");
   const std::string out = output.empty() ? sc.output_folder : output;
-  int pipe_fds[2];
-  if (::pipe(pipe_fds) != 0) throw std::runtime_error("cannot create a pipe");
+  // The server tells its port through a file, not through text meant for people.
+  char port_dir[] = "/tmp/sanet-launch-XXXXXX";
+  if (!::mkdtemp(port_dir)) throw std::runtime_error("cannot create a temporary folder for the server's port");
+  const std::string port_file = std::string(port_dir) + "/port";
   const pid_t server = ::fork();
   if (server == 0) {
-    ::dup2(pipe_fds[1], STDOUT_FILENO);
-    ::close(pipe_fds[0]);
-    std::vector<std::string> args = {"sanet", "serve", file, "--port", "0", "--bind", bind, "-o", out, "-q"};
+    std::vector<std::string> args = {"sanet", "serve", file, "--port", "0", "--bind", bind, "-o", out, "-q",
+                                     "--port-file", port_file};
     if (duration) args.insert(args.end(), {"--duration", std::to_string(*duration)});
     Exec(self, args);
-    std::_Exit(127);
   }
-  ::close(pipe_fds[1]);
   std::signal(SIGINT, [](int) { g_interrupted = 1; });
   std::signal(SIGTERM, [](int) { g_interrupted = 1; });
-  // "sanet: serving NAME on HOST:PORT for T s"
-  std::string first;
-  char c;
-  while (::read(pipe_fds[0], &c, 1) == 1 && c != '\n') first += c;
-  const auto on = first.rfind(" on "), colon = first.rfind(':'), space = first.find(' ', colon);
-  if (on == std::string::npos || colon == std::string::npos) {
+  const std::optional<int> port = WaitForPort(port_file, server);
+  std::filesystem::remove_all(port_dir);
+  if (!port) {
     ::waitpid(server, nullptr, 0);
     throw std::runtime_error("the server did not start");
   }
-  const std::string address = first.substr(on + 4, space - on - 4);
-  std::printf("%s\n", first.c_str());
+  const std::string address = bind + ":" + std::to_string(*port);
   std::vector<pid_t> agents;
   for (std::uint32_t id : robots) {
     const std::string& name = sc.run.nodes[id].name;
@@ -274,11 +266,6 @@ int Launch(const std::string& file, const std::string& output, std::optional<int
   }
   for (pid_t a : agents) ::kill(a, SIGTERM);
   for (pid_t a : agents) ::waitpid(a, nullptr, 0);
-  // Pass on what the server said after its first line.
-  std::string rest;
-  while (::read(pipe_fds[0], &c, 1) == 1) rest += c;
-  ::close(pipe_fds[0]);
-  std::fputs(rest.c_str(), stdout);
   std::printf("  results in %s/\n", out.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : kExitRunFailed;
 }
@@ -342,7 +329,7 @@ int main(int argc, char** argv) {
                                                      "(default: results/<name>-sweep)");
   sweep_cmd->add_flag("-q,--quiet", sweep_quiet, "Print nothing but errors");
 
-  std::string serve_file, serve_bind = "127.0.0.1", serve_output;
+  std::string serve_file, serve_bind = "127.0.0.1", serve_output, serve_port_file;
   int serve_port = 3000;
   bool serve_quiet = false;
   CLI::App* serve_cmd = app.add_subcommand("serve", "Serve a scenario's world in real time over the robot protocol "
@@ -350,6 +337,8 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("scenario", serve_file, "Scenario file (YAML)")->required();
   serve_cmd->add_option("--bind", serve_bind, "Address to listen on (loopback by default)")->capture_default_str();
   serve_cmd->add_option("--port", serve_port, "TCP port (0: any free port)")->check(CLI::Range(0, 65535))->capture_default_str();
+  serve_cmd->add_option("--port-file", serve_port_file, "Once listening, write the port number to this file "
+                                                        "(for programs that start the server with --port 0)");
   serve_cmd->add_option("-o,--output", serve_output, "Results folder (default: the scenario's)");
   serve_cmd->add_flag("-q,--quiet", serve_quiet, "Print only the listening line and errors");
   std::optional<double> serve_duration, launch_duration;
@@ -390,7 +379,8 @@ int main(int argc, char** argv) {
     if (*run_cmd) return Run(run, registry);
     if (*validate_cmd) return Validate(validate_file, registry);
     if (*sweep_cmd) return Sweep(sweep_file, sweep_seeds, sweep_output, sweep_quiet, registry);
-    if (*serve_cmd) return Serve(serve_file, serve_bind, serve_port, serve_output, serve_quiet, serve_duration, registry);
+    if (*serve_cmd)
+      return Serve(serve_file, serve_bind, serve_port, serve_port_file, serve_output, serve_quiet, serve_duration, registry);
     if (*agent_cmd) return Agent(agent_file, agent_robot, agent_server, udp_base, agent_subnet, agent_shared_clock, registry);
     if (*launch_cmd)
       return Launch(launch_file, launch_output, udp_base, launch_duration, registry);

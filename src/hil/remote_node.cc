@@ -9,11 +9,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <stdexcept>
 #include <thread>
 
+#include "hil/message_lines.h"
 #include "robots/kinematics.h"
 #include "sanet/codec.h"
 
@@ -39,7 +41,6 @@ Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
 RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings)
     : spec_(spec), id_(robot), settings_(std::move(settings)),
       random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
-      impairments_(spec.seed, "messages/impairments/" + spec.nodes.at(robot).name),
       server_time_at_(std::chrono::steady_clock::now()) {
   const sockaddr_in server = Address(settings_.server_host, settings_.server_port);
   for (int attempt = 0; attempt < 100; ++attempt) {  // the server may still be starting
@@ -117,8 +118,14 @@ bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
   bool too_long = false;
   while (auto line = reader_.Next(&too_long)) {
     std::string error;
-    if (auto m = ParseLine(*line, &error)) Take(*m);
+    if (auto m = ParseLine(*line, &error)) Take(*m, deliver);
   }
+  ReadUdp(deliver);
+  return tcp_ >= 0;
+}
+
+void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
+  char buffer[65536];
   while (true) {
     const ssize_t n = ::recv(udp_, buffer, sizeof buffer, 0);
     if (n <= 0) break;
@@ -135,25 +142,12 @@ bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
     m.time_received = Now();
     m.hops = 1;
     m.payload.assign(datagram.begin() + 18, datagram.end());
-    // The scenario's message impairments, applied here as the simulated run applies them.
-    if (spec_.message_loss > 0 && impairments_.Uniform() < spec_.message_loss) continue;
-    if (spec_.message_delay > 0) {
-      delayed_.push_back({m.time_received + spec_.message_delay, m});
-      continue;
-    }
     deliver(m);
   }
-  while (!delayed_.empty() && delayed_.front().first <= Now()) {
-    Message m = delayed_.front().second;
-    delayed_.pop_front();
-    m.time_received = Now();
-    deliver(m);
-  }
-  return tcp_ >= 0;
 }
 
-// Sensor and status lines from the server.
-void RemoteNode::Take(const ProtocolMessage& m) {
+// Lines from the server: sensors, status, messages from its nodes, errors.
+void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver) {
   if (auto t = m.Number("Time")) {
     server_time_ = *t;
     server_time_at_ = std::chrono::steady_clock::now();
@@ -162,11 +156,22 @@ void RemoteNode::Take(const ProtocolMessage& m) {
   // elsewhere has another monotonic clock, and its time is estimated from its messages.
   if (m.type == "NFO" && (settings_.shared_clock || settings_.server_host.rfind("127.", 0) == 0))
     if (auto origin = m.Number("ClockOrigin")) clock_origin_ = *origin;
-  if (m.type == "ERR") {
+  if (m.type == "ERR") {  // fatal while claiming the robot; afterwards the run goes on
     const std::string* text = m.Get("Message");
-    throw std::runtime_error("server: " + (text ? *text : std::string("error")));
+    const std::string why = "server: " + (text ? *text : std::string("error"));
+    if (!HasPose()) throw std::runtime_error(why);
+    std::fprintf(stderr, "sanet agent %s: %s\n", Name().c_str(), why.c_str());
   }
-  if (m.type != "SEN") return;
+  if (m.type == "MSG") {
+    const std::string* from = m.Get("From");
+    std::string error;
+    if (auto message = ParseMsgLine(m, from ? Lookup(*from) : std::nullopt, id_, &error)) deliver(*message);
+    else throw std::runtime_error("server sent a bad MSG line: " + error);
+  }
+  if (m.type == "SEN") TakeSensor(m);
+}
+
+void RemoteNode::TakeSensor(const ProtocolMessage& m) {
   const std::string* type = m.Get("Type");
   if (!type) return;
   if (*type == "GroundTruth") {
@@ -244,21 +249,66 @@ std::uint16_t RemoteNode::PortOf(NodeId node) const {
   return static_cast<std::uint16_t>(settings_.udp_base_port + (settings_.udp_subnet.empty() ? node : 0));
 }
 
+bool RemoteNode::IsAgent(NodeId node) const {
+  const sim::NodeSpec& n = spec_.nodes.at(node);
+  return n.model.kind != robots::ModelKind::kMote && n.controller.has_value();
+}
+
+void RemoteNode::SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload) {
+  ProtocolMessage send("SEND");
+  send.Add("Delivery", DeliveryName(delivery));
+  if (to) send.Add("To", NameOf(*to));
+  send.Add("Data", ToHex(payload));
+  Command(send);
+}
+
+// Agents over UDP; nodes that live in the server through the robot's node there.
 void RemoteNode::Send(NodeId to, const Bytes& payload) {
-  if (to < spec_.nodes.size() && to != id_) SendUdp(to, kUnicast, payload);
+  if (to >= spec_.nodes.size() || to == id_) return;
+  if (IsAgent(to)) SendUdp(to, kUnicast, payload);
+  else SendThroughServer(Delivery::kUnicast, to, payload);
 }
 
 void RemoteNode::Broadcast(const Bytes& payload) {
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
-    if (to != id_) SendUdp(to, kBroadcast, payload);
+    if (to != id_ && IsAgent(to)) SendUdp(to, kBroadcast, payload);
+  SendThroughServer(Delivery::kBroadcast, std::nullopt, payload);
 }
 
-void RemoteNode::Log(const std::string& text) {
-  std::string clean = text;  // braces and line ends would end the protocol's field or line
+void RemoteNode::Flood(const Bytes& payload) {
+  for (NodeId to = 0; to < spec_.nodes.size(); ++to)
+    if (to != id_ && IsAgent(to)) SendUdp(to, kBroadcast, payload);
+  SendThroughServer(Delivery::kFlood, std::nullopt, payload);
+}
+
+namespace {
+
+// Braces and line ends would end the protocol's field or line.
+std::string FieldText(const std::string& text) {
+  std::string clean = text;
   for (char& c : clean) c = c == '{' ? '(' : c == '}' ? ')' : (c == '\n' || c == '\r') ? ' ' : c;
+  return clean;
+}
+
+}  // namespace
+
+void RemoteNode::Log(const std::string& text) {
   ProtocolMessage log("LOG");
-  log.Add("Text", clean);
+  log.Add("Text", FieldText(text));
   Command(log);
+}
+
+void RemoteNode::Transition(const std::string& from, const std::string& to, const std::string& why) {
+  ProtocolMessage t("TRANSITION");
+  t.Add("From", FieldText(from)).Add("To", FieldText(to));
+  if (!why.empty()) t.Add("Why", FieldText(why));
+  Command(t);
+}
+
+void RemoteNode::Metric(const std::string& name, double value) {
+  ProtocolMessage m("METRIC");
+  m.Add("Name", FieldText(name)).Add("Value", FormatPrecise(value));
+  Command(m);
 }
 
 }  // namespace sanet::hil

@@ -1,10 +1,11 @@
 // The node a controller sees when it runs as its own process: sensors and actuators over the
-// robot protocol (a TCP client of `sanet serve`), messages over real UDP sockets, one port per
-// node of the scenario. The controller cannot tell it from the simulated node.
+// robot protocol (a TCP client of `sanet serve`), messages to other agents over real UDP
+// sockets (one port per node of the scenario), messages to and from the nodes that live in the
+// server (motes) over the protocol connection, through the robot's own node in the server's
+// ns-3 network. The controller cannot tell it from the simulated node.
 #pragma once
 
 #include <chrono>
-#include <deque>
 #include <functional>
 #include <optional>
 #include <string>
@@ -33,7 +34,8 @@ class RemoteNode : public Node {
   RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings);  // throws std::runtime_error
   ~RemoteNode() override;
 
-  // Reads what arrived on TCP and UDP; messages go to `deliver`. False once the server is gone.
+  // Reads what arrived on TCP and UDP; messages go to `deliver` as they arrived (the controller's
+  // host applies the scenario's impairments). False once the server is gone.
   bool Poll(const std::function<void(const Message&)>& deliver);
   bool HasPose() const { return truth_.has_value(); }
 
@@ -53,14 +55,20 @@ class RemoteNode : public Node {
   bool Holonomic() const override { return spec_.nodes[id_].model.kind == robots::ModelKind::kOmni3; }
   void Send(NodeId to, const Bytes& payload) override;
   void Broadcast(const Bytes& payload) override;
-  void Flood(const Bytes& payload) override { Broadcast(payload); }
+  void Flood(const Bytes& payload) override;
   NetworkView& Network() override { return view_; }
   double Random() override { return random_.Uniform(); }
   void Log(const std::string& text) override;
+  void Transition(const std::string& from, const std::string& to, const std::string& why) override;
+  void Metric(const std::string& name, double value) override;
 
  private:
   void Command(const ProtocolMessage& m);
-  void Take(const ProtocolMessage& m);
+  void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
+  void TakeSensor(const ProtocolMessage& m);
+  void ReadUdp(const std::function<void(const Message&)>& deliver);
+  bool IsAgent(NodeId node) const;  // a robot whose controller runs as an agent: reached over UDP
+  void SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload);
   void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
   std::string HostOf(NodeId node) const;
   std::uint16_t PortOf(NodeId node) const;
@@ -72,8 +80,6 @@ class RemoteNode : public Node {
   LineReader reader_{1 << 20};
   net::EmptyView view_{"udp"};
   RandomStream random_;
-  RandomStream impairments_;
-  std::deque<std::pair<double, Message>> delayed_;  // (release time, message) under messages.delay
   double server_time_ = 0;
   std::optional<double> clock_origin_;
   std::chrono::steady_clock::time_point server_time_at_;

@@ -4,7 +4,6 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
-#include <ns3/simulator.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -17,6 +16,7 @@
 #include <stdexcept>
 
 #include "core/statistics.h"
+#include "hil/message_lines.h"
 
 namespace sanet::hil {
 namespace {
@@ -37,6 +37,7 @@ void RequestStop() { g_stop = 1; }
 
 SimServer::SimServer(sim::World& world, ServerSettings settings)
     : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
+  world_.parts().SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
   listener_ = ::socket(AF_INET, SOCK_STREAM, 0);
   if (listener_ < 0) throw std::runtime_error(std::string("cannot open a socket: ") + std::strerror(errno));
   const int yes = 1;
@@ -58,17 +59,19 @@ SimServer::SimServer(sim::World& world, ServerSettings settings)
 }
 
 SimServer::~SimServer() {
+  world_.parts().SetRemoteInbox(nullptr);
   for (auto& c : clients_) ::close(c->fd);
   if (listener_ >= 0) ::close(listener_);
 }
 
 void SimServer::Start() {
-  ns3::Simulator::ScheduleNow(&SimServer::Poll, this);
-  world_.SetStepObserver([this](double t) { MeasureLag(t); });
+  world_.Every(settings_.poll_period, [this] { Poll(); });
+  world_.AddObserver(*this);
 }
 
-void SimServer::MeasureLag(double simulated) {
-  lags_.push_back(std::max(0.0, (WallNow() - wall_start_) - simulated));
+// The lag of every physics step behind the wall clock.
+void SimServer::AfterStep(const sim::WorldSnapshot& snapshot) {
+  lags_.push_back(std::max(0.0, (WallNow() - wall_start_) - snapshot.time()));
 }
 
 nlohmann::ordered_json SimServer::LagSummary() const {
@@ -83,11 +86,11 @@ nlohmann::ordered_json SimServer::LagSummary() const {
 
 void SimServer::Poll() {
   if (g_stop) {
-    world_.Log(0, "stopped by a signal");
-    ns3::Simulator::Stop();
+    world_.parts().Log(0, "stopped by a signal");
+    world_.Stop();
     return;
   }
-  const double now = ns3::Simulator::Now().GetSeconds();
+  const double now = world_.Now();
   // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
   if (wall_start_ < 0) wall_start_ = WallNow() - now;
   Accept();
@@ -98,7 +101,6 @@ void SimServer::Poll() {
     if (c.fd >= 0) Flush(c);
   }
   clients_.erase(std::remove_if(clients_.begin(), clients_.end(), [](const auto& c) { return c->fd < 0; }), clients_.end());
-  ns3::Simulator::Schedule(ns3::Seconds(settings_.poll_period), &SimServer::Poll, this);
 }
 
 void SimServer::Accept() {
@@ -171,10 +173,8 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   const NodeId id = *c.robot;
   const auto& spec = world_.spec().nodes[id].model;
   if (m.type == "DRIVE") return Drive(c, m);
-  if (m.type == "LOG") {  // sanet extension: a line in the run's log, from this robot
-    if (const std::string* text = m.Get("Text")) world_.Log(id, *text);
-    return;
-  }
+  if (m.type == "SEND") return SendMessage(c, m);
+  if (m.type == "LOG" || m.type == "TRANSITION" || m.type == "METRIC") return Report(c, m);
   if (m.type == "GETCONF") {
     ProtocolMessage reply{"CONF"};
     reply.Add("Type", "GroundVehicle").Add("Name", world_.NameOf(id))
@@ -203,12 +203,19 @@ void SimServer::Init(Client& c, const ProtocolMessage& m) {
   if (claimed_[*id]) return Error(c, "robot '" + *name + "' is already driven by another client");
   claimed_[*id] = true;
   c.robot = *id;
-  c.next_sensors = c.next_status = ns3::Simulator::Now().GetSeconds();
-  world_.Log(*id, "client " + c.peer + " drives this robot");
+  c.next_sensors = c.next_status = world_.Now();
+  world_.parts().Log(*id, "client " + c.peer + " drives this robot");
 }
 
+// Through the robot's simulated node, as its controller would drive it: a switched-off robot
+// does not move, whoever asks.
 void SimServer::Drive(Client& c, const ProtocolMessage& m) {
-  robots::NodeModel& model = world_.model(*c.robot);
+  agents::SimulatedNode& node = NodeOf(c);
+  if (node.switched_off()) {
+    if (!c.told_off) Error(c, "robot " + node.Name() + " is switched off: DRIVE ignored");
+    c.told_off = true;
+    return;
+  }
   const auto& spec = world_.spec().nodes[*c.robot].model;
   if (m.Get("Left") || m.Get("Right")) {
     const auto left = m.Number("Left"), right = m.Number("Right");
@@ -220,21 +227,21 @@ void SimServer::Drive(Client& c, const ProtocolMessage& m) {
       l = std::clamp(l, -100.0, 100.0) / 100 * top, r = std::clamp(r, -100.0, 100.0) / 100 * top;
     }
     if (spec.kind != robots::ModelKind::kDiffDrive) return Error(c, "{Left} {Right} drive a diffdrive; use {LinearVelocity} ... for omni3");
-    model.SetWheelSpeeds({l, r});
+    node.SetWheelSpeeds({l, r});
     return;
   }
   if (m.Get("LinearVelocity") || m.Get("RotationalVelocity") || m.Get("LateralVelocity")) {
     const auto v = m.Number("LinearVelocity"), lateral = m.Number("LateralVelocity"), w = m.Number("RotationalVelocity");
     if ((m.Get("LinearVelocity") && !v) || (m.Get("LateralVelocity") && !lateral) || (m.Get("RotationalVelocity") && !w))
       return Error(c, "DRIVE velocities must be numbers");
-    model.Drive({v.value_or(0), -lateral.value_or(0), -w.value_or(0)});  // USARSim: y right, yaw clockwise
+    node.Drive({v.value_or(0), -lateral.value_or(0), -w.value_or(0)});  // USARSim: y right, yaw clockwise
     return;
   }
   Error(c, "DRIVE needs {Left l} {Right r}, or {LinearVelocity} {LateralVelocity} {RotationalVelocity}");
 }
 
 void SimServer::SendSensors(Client& c, double now) {
-  robots::NodeModel& model = world_.model(*c.robot);
+  robots::NodeModel& model = NodeOf(c).model();
   if (now + 1e-9 >= c.next_sensors) {
     c.next_sensors = now + settings_.sensor_period;
     const std::string time = FormatNumber(now);
@@ -308,10 +315,58 @@ void SimServer::Drop(Client& c, const std::string& why) {
   ::close(c.fd);
   c.fd = -1;
   if (c.robot) {
-    world_.model(*c.robot).Drive({});  // a robot without its client stops
+    NodeOf(c).Drive({});  // a robot without its client stops
     claimed_[*c.robot] = false;
-    world_.Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
+    world_.parts().Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
   }
+}
+
+// SEND: the robot's message leaves from its own ns-3 node, like any node's.
+void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
+  const std::string* delivery = m.Get("Delivery");
+  const std::string* data = m.Get("Data");
+  const auto kind = ParseDelivery(delivery ? *delivery : "unicast");
+  const auto payload = data ? FromHex(*data) : std::nullopt;
+  if (!kind || !payload) return Error(c, "SEND needs {Delivery unicast|broadcast|flood} and {Data hex bytes}");
+  agents::SimulatedNode& node = NodeOf(c);
+  if (*kind == Delivery::kBroadcast) return node.Broadcast(*payload);
+  if (*kind == Delivery::kFlood) return node.Flood(*payload);
+  const std::string* to = m.Get("To");
+  const auto target = to ? world_.Lookup(*to) : std::nullopt;
+  if (!target) return Error(c, "SEND {Delivery unicast} needs {To node}: one of the scenario's nodes");
+  node.Send(*target, *payload);
+}
+
+// LOG, TRANSITION and METRIC: the controller's reports, as its node would make them in process.
+void SimServer::Report(Client& c, const ProtocolMessage& m) {
+  agents::SimulatedNode& node = NodeOf(c);
+  const std::string* text = m.Get("Text");
+  if (m.type == "LOG") return text ? node.Log(*text) : Error(c, "LOG needs {Text ...}");
+  if (m.type == "METRIC") {
+    const std::string* name = m.Get("Name");
+    const auto value = m.Number("Value");
+    return name && value ? node.Metric(*name, *value) : Error(c, "METRIC needs {Name n} and a number {Value v}");
+  }
+  const std::string *from = m.Get("From"), *to = m.Get("To"), *why = m.Get("Why");
+  if (!from || !to) return Error(c, "TRANSITION needs {From state} {To state} and may give {Why ...}");
+  node.Transition(*from, *to, why ? *why : "");
+}
+
+SimServer::Client* SimServer::ClientOf(NodeId robot) {
+  for (auto& c : clients_)
+    if (c->fd >= 0 && c->robot == robot) return c.get();
+  return nullptr;
+}
+
+// A message reached a client's robot in the simulated network: it goes on to the client. Agents
+// hear each other over their own UDP sockets, so the server passes on only what comes from
+// nodes that live here.
+sim::InboxResult SimServer::Forward(NodeId to, const Message& m) {
+  const sim::RunSpec& spec = world_.spec();
+  if (world_.parts().remote(m.from) && spec.nodes[m.from].controller) return sim::InboxResult::kIgnored;
+  Client* c = ClientOf(to);
+  if (c) Send(*c, MsgLine(m, world_.NameOf(m.from)));
+  return c && c->fd >= 0 ? sim::InboxResult::kDelivered : sim::InboxResult::kLost;
 }
 
 }  // namespace sanet::hil

@@ -1,9 +1,12 @@
 // The simulation server of communication-in-the-loop runs: a TCP server speaking the
 // USARSim-compatible protocol (protocol.h) on top of a World that runs against the wall clock.
 // A client claims one of the scenario's robots with INIT, drives it with DRIVE and receives its
-// sensors as SEN lines and its status as STA lines. It is polled from an ns-3 event, so it lives
-// on the one clock like everything else; no client can block it (non-blocking sockets, bounded
-// buffers, line length limit).
+// sensors as SEN lines and its status as STA lines; with the sanet extensions it sends messages
+// from its robot's ns-3 node (SEND) and receives those that reach it (MSG), and reports its
+// controller's transitions and metrics. Everything a client does goes through its robot's
+// simulated node, as an in-process controller's calls do, so the run's rules (switch-off) hold.
+// It is polled on the simulation clock and watches the world as an observer; no client can
+// block it (non-blocking sockets, bounded buffers, line length limit).
 #pragma once
 
 #include <cstdint>
@@ -32,12 +35,13 @@ struct ServerSettings {
 // Asks a running server to end its run as if its duration were over (safe in a signal handler).
 void RequestStop();
 
-class SimServer {
+class SimServer : public sim::StepObserver {
  public:
   SimServer(sim::World& world, ServerSettings settings);  // listens; throws std::runtime_error
-  ~SimServer();
+  ~SimServer() override;
   std::uint16_t port() const { return port_; }
   void Start();  // schedules polling and lag measurement on the simulation clock
+  void AfterStep(const sim::WorldSnapshot& snapshot) override;
   // Lag of every physics step behind the wall clock: p50, p99, max, missed deadlines.
   nlohmann::ordered_json LagSummary() const;
 
@@ -50,6 +54,7 @@ class SimServer {
     std::optional<NodeId> robot;
     double next_sensors = 0, next_status = 0;
     double last_progress = 0;  // wall clock (s) when it last took bytes, or had none waiting
+    bool told_off = false;     // told once that its robot is switched off
   };
   void Poll();
   void Accept();
@@ -57,12 +62,16 @@ class SimServer {
   void Handle(Client& c, const ProtocolMessage& m);
   void Init(Client& c, const ProtocolMessage& m);
   void Drive(Client& c, const ProtocolMessage& m);
+  void SendMessage(Client& c, const ProtocolMessage& m);
+  void Report(Client& c, const ProtocolMessage& m);
+  sim::InboxResult Forward(NodeId to, const Message& message);
+  Client* ClientOf(NodeId robot);
+  agents::SimulatedNode& NodeOf(const Client& c) { return world_.parts().node(*c.robot); }
   void SendSensors(Client& c, double now);
   void Send(Client& c, const ProtocolMessage& m);
   void Error(Client& c, const std::string& why);
   void Drop(Client& c, const std::string& why);
   void Flush(Client& c);
-  void MeasureLag(double simulated);
 
   sim::World& world_;
   ServerSettings settings_;

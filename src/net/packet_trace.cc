@@ -38,13 +38,11 @@ const char* DropName(ns3::Ipv4L3Protocol::DropReason reason) {
 PacketTrace::PacketTrace(const NetworkSpec& spec, const AddressBook& book, std::vector<std::string> names)
     : spec_(spec), book_(book), names_(std::move(names)), counts_(names_.size()) {}
 
-void PacketTrace::Open(const std::string& dir) {
+void PacketTrace::Open(trace::ResultsFolder& folder) {
   logs_.clear();
   if (!spec_.packet_log) return;
   for (const std::string& name : names_)
-    logs_.push_back(std::make_unique<trace::CsvSink>(
-        dir.empty() ? std::nullopt : std::optional(dir + "/packets/" + name + ".csv"),
-        "time,event,protocol,bytes,peer,reason", 64 * 1024));
+    logs_.push_back(&folder.Csv("packets/" + name + ".csv", "time,event,protocol,bytes,peer,reason", 64 * 1024));
 }
 
 void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {
@@ -153,42 +151,6 @@ void PacketTrace::CheckRouteReply(NodeId node, const ns3::Ipv4Header& ip, ns3::P
   if (it == pending_.end()) return;
   discoveries_[it->second].established = ns3::Simulator::Now().GetSeconds();
   pending_.erase(it);
-}
-
-std::vector<std::string> PacketTrace::Write(const std::string& dir, Fingerprint& fingerprint) {
-  const auto path = [&](const char* name) { return dir.empty() ? std::nullopt : std::optional(dir + "/" + name); };
-  trace::CsvSink packets(path("packets.csv"),
-                         "node,sent,received,forwarded,dropped,messages_sent,messages_received");
-  for (NodeId id = 0; id < counts_.size(); ++id) {
-    const PacketCounts& c = counts_[id];
-    char row[256];
-    std::snprintf(row, sizeof row, "%s,%llu,%llu,%llu,%llu,%llu,%llu", names_[id].c_str(),
-                  (unsigned long long)c.sent, (unsigned long long)c.received, (unsigned long long)c.forwarded,
-                  (unsigned long long)c.dropped, (unsigned long long)c.messages_sent,
-                  (unsigned long long)c.messages_received);
-    packets.Row(row);
-  }
-  packets.Commit();
-  trace::CsvSink routes(path("routes.csv"), "node,destination,started,established,duration");
-  for (const Discovery& d : discoveries_) {
-    char row[256];
-    if (d.established)
-      std::snprintf(row, sizeof row, "%s,%s,%.6f,%.6f,%.6f", names_[d.node].c_str(), names_[d.destination].c_str(),
-                    d.started, *d.established, *d.established - d.started);
-    else
-      std::snprintf(row, sizeof row, "%s,%s,%.6f,,", names_[d.node].c_str(), names_[d.destination].c_str(), d.started);
-    routes.Row(row);
-  }
-  routes.Commit();
-  fingerprint.Add(packets.hash());
-  fingerprint.Add(routes.hash());
-  std::vector<std::string> files = {"packets.csv", "routes.csv"};
-  for (auto& log : logs_) {
-    log->Commit();
-    fingerprint.Add(log->hash());
-  }
-  if (!logs_.empty()) files.push_back("packets/");
-  return files;
 }
 
 }  // namespace sanet::net

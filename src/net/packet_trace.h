@@ -16,20 +16,10 @@
 
 #include "net/address_book.h"
 #include "net/network_spec.h"
-#include "trace/csv_sink.h"
+#include "net/network_traces.h"
+#include "trace/results_folder.h"
 
 namespace sanet::net {
-
-struct PacketCounts {
-  std::uint64_t sent = 0, received = 0, forwarded = 0, dropped = 0;
-  std::uint64_t messages_sent = 0, messages_received = 0;
-};
-
-struct Discovery {
-  NodeId node, destination;
-  double started;
-  std::optional<double> established;
-};
 
 class PacketTrace {
  public:
@@ -37,8 +27,8 @@ class PacketTrace {
 
   // Connects to the node's IP layer and MAC (before the run).
   void Attach(NodeId node, ns3::Ptr<ns3::Node> ns3_node);
-  // Opens the per-node packet logs under `dir` ("" for none).
-  void Open(const std::string& dir);
+  // Opens the per-node packet logs (packets/<node>.csv) in the results folder.
+  void Open(trace::ResultsFolder& folder);
 
   void MessageSent(NodeId node) { ++counts_[node].messages_sent; }
   void MessageReceived(NodeId node) { ++counts_[node].messages_received; }
@@ -47,8 +37,6 @@ class PacketTrace {
 
   const std::vector<PacketCounts>& counts() const { return counts_; }
   const std::vector<Discovery>& discoveries() const { return discoveries_; }
-  // Writes packets.csv, routes.csv and the packet logs; returns the names written.
-  std::vector<std::string> Write(const std::string& dir, Fingerprint& fingerprint);
 
  private:
   enum class Event { kSent, kReceived, kForwarded, kDropped };
@@ -62,7 +50,7 @@ class PacketTrace {
   const AddressBook& book_;
   std::vector<std::string> names_;
   std::vector<PacketCounts> counts_;
-  std::vector<std::unique_ptr<trace::CsvSink>> logs_;
+  std::vector<trace::CsvSink*> logs_;  // owned by the results folder
   std::vector<Discovery> discoveries_;
   std::map<std::pair<NodeId, NodeId>, std::size_t> pending_;  // (node, destination) -> discovery
 };

@@ -3,13 +3,14 @@
 #pragma once
 
 #include <functional>
-#include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "core/fingerprint.h"
+#include "net/network_traces.h"
 #include "sanet/message.h"
 #include "sanet/node.h"
+#include "trace/results_folder.h"
 
 namespace sanet::net {
 
@@ -26,19 +27,12 @@ class Transport {
   // The node's radio goes silent: it neither sends nor receives from now on.
   virtual void SwitchOff(NodeId node) = 0;
 
-  // IP packets each node received (empty where the transport does not count them).
-  virtual std::vector<std::uint64_t> PacketsReceived() const { return {}; }
-
-  // Before the run: where to write traces ("" for nowhere).
-  virtual void Open(const std::string& output_dir) { (void)output_dir; }
-  // After the run: write the traces whole, add them to the fingerprint, the summary and the list
-  // of files written.
-  virtual void Finish(Fingerprint& fingerprint, nlohmann::ordered_json& summary,
-                      std::vector<std::string>& files) {
-    (void)fingerprint;
-    (void)summary;
-    (void)files;
-  }
+  // Before the run: open the traces written as the run goes (packet logs, pcap) in `folder`.
+  virtual void Open(trace::ResultsFolder& folder) { (void)folder; }
+  // After the run: close them (they are committed with the folder).
+  virtual void Close() {}
+  // What the network did, for the results; empty for a transport without radios.
+  virtual std::optional<NetworkTraces> Traces() const { return std::nullopt; }
 };
 
 }  // namespace sanet::net

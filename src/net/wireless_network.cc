@@ -291,29 +291,20 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
   }
 }
 
-std::vector<std::uint64_t> WirelessNetwork::PacketsReceived() const {
-  std::vector<std::uint64_t> out;
-  for (const PacketCounts& c : trace_.counts()) out.push_back(c.received);
-  return out;
-}
-
 void WirelessNetwork::SwitchOff(NodeId node) {
   ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy()->SetOffMode();
 }
 
-void WirelessNetwork::Open(const std::string& output_dir) {
-  dir_ = output_dir;
-  if (!dir_.empty() && spec_.packet_log) std::filesystem::create_directories(dir_ + "/packets");
-  trace_.Open(dir_);
-  if (spec_.pcap && !dir_.empty()) OpenPcap(dir_);
+void WirelessNetwork::Open(trace::ResultsFolder& folder) {
+  trace_.Open(folder);
+  if (!folder.writes()) return;
+  if (spec_.pcap) OpenPcap(folder.TempFolder("pcap"));
+  if (flow_monitor_) flowmon_path_ = folder.TempFile("flowmon.xml");
 }
 
-// One file per node with every 802.11 frame its radio sent or received, written to pcap.tmp/
-// and moved to pcap/ when the run ends.
-void WirelessNetwork::OpenPcap(const std::string& dir) {
-  const std::string tmp = dir + "/pcap.tmp";
-  std::filesystem::remove_all(tmp);
-  std::filesystem::create_directories(tmp);
+// One file per node with every 802.11 frame its radio sent or received, in a temporary folder
+// that the results folder moves into place when the run ends.
+void WirelessNetwork::OpenPcap(const std::string& tmp) {
   for (NodeId id = 0; id < nodes_.GetN(); ++id) {
     auto file = ns3::CreateObject<ns3::PcapFileWrapper>();
     file->Open(tmp + "/" + names_[id] + ".pcap", std::ios::out | std::ios::binary);
@@ -337,46 +328,25 @@ void WirelessNetwork::OpenPcap(const std::string& dir) {
   }
 }
 
-void WirelessNetwork::Finish(Fingerprint& fingerprint, nlohmann::ordered_json& summary,
-                             std::vector<std::string>& files) {
-  for (const std::string& f : trace_.Write(dir_, fingerprint)) files.push_back(f);
-  if (!pcap_.empty()) {
-    for (auto& file : pcap_) file->Close();
-    pcap_.clear();
-    std::filesystem::remove_all(dir_ + "/pcap");
-    std::filesystem::rename(dir_ + "/pcap.tmp", dir_ + "/pcap");
-    files.push_back("pcap/");
-  }
-  if (flow_monitor_ && !dir_.empty()) {
+void WirelessNetwork::Close() {
+  for (auto& file : pcap_) file->Close();
+  pcap_.clear();
+  if (flow_monitor_ && !flowmon_path_.empty()) {
     flow_monitor_->CheckForLostPackets();
-    flow_monitor_->SerializeToXmlFile(dir_ + "/flowmon.xml.tmp", true, true);
-    std::filesystem::rename(dir_ + "/flowmon.xml.tmp", dir_ + "/flowmon.xml");
-    files.push_back("flowmon.xml");
+    flow_monitor_->SerializeToXmlFile(flowmon_path_, true, true);
   }
+}
 
-  PacketCounts total;
-  for (const PacketCounts& c : trace_.counts()) {
-    total.sent += c.sent;
-    total.received += c.received;
-    total.forwarded += c.forwarded;
-    total.dropped += c.dropped;
-    total.messages_sent += c.messages_sent;
-    total.messages_received += c.messages_received;
-  }
-  std::vector<double> discovery_times;
-  for (const Discovery& d : trace_.discoveries())
-    if (d.established) discovery_times.push_back(*d.established - d.started);
-  nlohmann::ordered_json& n = summary["network"];
-  n["radio"] = StandardName(spec_.standard);
-  n["data_rate_mbps"] = spec_.data_rate;
-  n["tx_power_dbm"] = spec_.tx_power;
-  n["routing"] = RoutingName(spec_.routing);
-  n["packets"] = {{"sent", total.sent},           {"received", total.received},
-                  {"forwarded", total.forwarded}, {"dropped", total.dropped},
-                  {"messages_sent", total.messages_sent}, {"messages_received", total.messages_received}};
-  n["route_discoveries"] = {{"started", trace_.discoveries().size()},
-                            {"established", discovery_times.size()},
-                            {"time_s", Quartiles(discovery_times)}};
+std::optional<NetworkTraces> WirelessNetwork::Traces() const {
+  NetworkTraces t;
+  t.radio = StandardName(spec_.standard);
+  t.routing = RoutingName(spec_.routing);
+  t.data_rate_mbps = spec_.data_rate;
+  t.tx_power_dbm = spec_.tx_power;
+  t.counts = trace_.counts();
+  t.discoveries = trace_.discoveries();
+  t.packet_logs = spec_.packet_log;
+  return t;
 }
 
 }  // namespace sanet::net

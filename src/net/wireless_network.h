@@ -37,10 +37,9 @@ class WirelessNetwork : public Transport {
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId node) override { return *views_.at(node); }
   void SwitchOff(NodeId node) override;
-  void Open(const std::string& output_dir) override;
-  void Finish(Fingerprint& fingerprint, nlohmann::ordered_json& summary, std::vector<std::string>& files) override;
-
-  std::vector<std::uint64_t> PacketsReceived() const override;
+  void Open(trace::ResultsFolder& folder) override;
+  void Close() override;
+  std::optional<NetworkTraces> Traces() const override;
   const AddressBook& addresses() const { return book_; }
   const PacketTrace& packet_trace() const { return trace_; }
 
@@ -52,7 +51,7 @@ class WirelessNetwork : public Transport {
   void Receive(NodeId node, ns3::Ptr<ns3::Socket> socket);
   void Transmit(NodeId from, ns3::Ipv4Address to, const MessageHeader& header, const Bytes& payload);
   MessageHeader NewHeader(NodeId from, MessageHeader::Kind kind, NodeId destination);
-  void OpenPcap(const std::string& dir);
+  void OpenPcap(const std::string& tmp_dir);
 
   NetworkSpec spec_;
   ns3::NodeContainer nodes_;
@@ -66,7 +65,7 @@ class WirelessNetwork : public Transport {
   std::vector<std::set<std::pair<std::uint32_t, std::uint32_t>>> floods_seen_;  // (origin, sequence)
   ns3::Ptr<ns3::UniformRandomVariable> jitter_;
   Receiver receiver_;
-  std::string dir_;
+  std::string flowmon_path_;  // temporary, in the results folder
   std::vector<ns3::Ptr<ns3::PcapFileWrapper>> pcap_;
   std::unique_ptr<ns3::FlowMonitorHelper> flow_helper_;
   ns3::Ptr<ns3::FlowMonitor> flow_monitor_;

@@ -11,16 +11,11 @@
 #include "net/network_spec.h"
 #include "physics/physics_world.h"
 #include "robots/node_model.h"
-#include "sanet/params.h"
+#include "agents/controller_spec.h"
 
 namespace sanet::sim {
 
-struct ControllerSpec {
-  std::string name;     // registered name
-  std::string library;  // shared library to load first ("" for built-in controllers)
-  double rate = 10;     // Hz, control steps per second
-  Params params;
-};
+using ControllerSpec = agents::ControllerSpec;
 
 struct NodeSpec {
   std::string name;

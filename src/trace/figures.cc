@@ -35,14 +35,13 @@ class Frame {
     auto grow = [&](double x, double y) {
       x0_ = std::min(x0_, x), x1_ = std::max(x1_, x), y0_ = std::min(y0_, y), y1_ = std::max(y1_, y);
     };
-    for (const Pose2D& p : in.final_poses) grow(p.x, p.y);
-    for (const auto& n : in.spec.nodes) grow(n.pose.x, n.pose.y);
+    for (const FigureNode& n : in.nodes) grow(n.final_pose.x, n.final_pose.y), grow(n.start.x, n.start.y);
     for (const Track& t : in.tracks)
       for (std::size_t i = 0; i < t.x.size(); ++i) grow(t.x[i], t.y[i]);
-    for (const auto& o : in.spec.obstacles) {
-      const double r = std::hypot(o.box.size.x, o.box.size.y) / 2;
-      grow(o.box.center.x - r, o.box.center.y - r);
-      grow(o.box.center.x + r, o.box.center.y + r);
+    for (const FigureObstacle& o : in.obstacles) {
+      const double r = std::hypot(o.size.x, o.size.y) / 2;
+      grow(o.center.x - r, o.center.y - r);
+      grow(o.center.x + r, o.center.y + r);
     }
     const double pad = 0.06 * std::max({x1_ - x0_, y1_ - y0_, 1.0});
     x0_ -= pad, x1_ += pad, y0_ -= pad, y1_ += pad;
@@ -71,12 +70,12 @@ std::string Header(const Frame& f, const std::string& title) {
 }
 
 void Obstacles(std::ostringstream& s, const Frame& f, const FigureInput& in) {
-  for (const auto& o : in.spec.obstacles) {
+  for (const FigureObstacle& o : in.obstacles) {
     // Outlined as well, so that a thin wall stays visible on a large field.
     s << "<polygon fill=\"#555\" stroke=\"#555\" stroke-width=\"3\" stroke-linejoin=\"round\" points=\"";
     for (auto [u, v] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
-      const Vec2 corner = Rotate({u * o.box.size.x / 2, v * o.box.size.y / 2}, o.box.yaw);
-      s << f.Point(o.box.center.x + corner.x, o.box.center.y + corner.y) << " ";
+      const Vec2 corner = Rotate({u * o.size.x / 2, v * o.size.y / 2}, o.yaw);
+      s << f.Point(o.center.x + corner.x, o.center.y + corner.y) << " ";
     }
     s << "\"><title>" << o.kind << "</title></polygon>\n";
   }
@@ -97,14 +96,14 @@ void ScaleBar(std::ostringstream& s, const Frame& f) {
 std::string MapSvg(const FigureInput& in, double tick) {
   const Frame f(in);
   std::ostringstream s;
-  s << Header(f, in.spec.name + ": trajectories (a mark every " + Num(tick) + " s)");
+  s << Header(f, in.title + ": trajectories (a mark every " + Num(tick) + " s)");
   Obstacles(s, f, in);
-  for (std::size_t i = 0; i < in.spec.nodes.size(); ++i) {
-    if (in.spec.nodes[i].model.kind != robots::ModelKind::kMote) continue;
-    const Pose2D& p = in.final_poses[i];
+  for (std::size_t i = 0; i < in.nodes.size(); ++i) {
+    if (!in.nodes[i].mote) continue;
+    const Pose2D& p = in.nodes[i].final_pose;
     s << "<rect x=\"" << Num(f.X(p.x) - 3) << "\" y=\"" << Num(f.Y(p.y) - 3)
       << "\" width=\"6\" height=\"6\" fill=\"#1a7f37\"/><text x=\"" << Num(f.X(p.x) + 5) << "\" y=\""
-      << Num(f.Y(p.y) - 5) << "\" font-size=\"10\" fill=\"#1a7f37\">" << Escape(in.spec.nodes[i].name) << "</text>\n";
+      << Num(f.Y(p.y) - 5) << "\" font-size=\"10\" fill=\"#1a7f37\">" << Escape(in.nodes[i].name) << "</text>\n";
   }
   for (std::size_t k = 0; k < in.tracks.size(); ++k) {
     const Track& t = in.tracks[k];
@@ -132,23 +131,23 @@ std::string MapSvg(const FigureInput& in, double tick) {
 std::string PacketsSvg(const FigureInput& in) {
   const Frame f(in);
   std::ostringstream s;
-  s << Header(f, in.spec.name + ": packets received per node (darker = more)");
+  s << Header(f, in.title + ": packets received per node (darker = more)");
   Obstacles(s, f, in);
   // Shades span the range received, from the fewest (light) to the most (dark).
   const auto [few_it, most_it] = std::minmax_element(in.received.begin(), in.received.end());
   const double few = in.received.empty() ? 0 : *few_it, most = in.received.empty() ? 0 : *most_it;
-  for (std::size_t i = 0; i < in.spec.nodes.size() && i < in.received.size(); ++i) {
-    const Pose2D& p = in.final_poses[i];
+  for (std::size_t i = 0; i < in.nodes.size() && i < in.received.size(); ++i) {
+    const Pose2D& p = in.nodes[i].final_pose;
     const double share = most > few ? (in.received[i] - few) / (most - few) : 1;
     const int level = static_cast<int>(std::lround(235 - 200 * share));
     char fill[16];
     std::snprintf(fill, sizeof fill, "#%02x%02x%02x", level, level, level);
-    const bool mote = in.spec.nodes[i].model.kind == robots::ModelKind::kMote;
+    const bool mote = in.nodes[i].mote;
     s << "<circle cx=\"" << Num(f.X(p.x)) << "\" cy=\"" << Num(f.Y(p.y)) << "\" r=\"" << (mote ? 14 : 9) << "\" fill=\""
-      << fill << "\" stroke=\"" << (mote ? "#333" : "#d62728") << "\"><title>" << Escape(in.spec.nodes[i].name) << ": "
+      << fill << "\" stroke=\"" << (mote ? "#333" : "#d62728") << "\"><title>" << Escape(in.nodes[i].name) << ": "
       << in.received[i] << " packets</title></circle>\n"
       << "<text x=\"" << Num(f.X(p.x)) << "\" y=\"" << Num(f.Y(p.y) + 26) << "\" font-size=\"10\" text-anchor=\"middle\">"
-      << Escape(in.spec.nodes[i].name) << " " << in.received[i] << "</text>\n";
+      << Escape(in.nodes[i].name) << " " << in.received[i] << "</text>\n";
     if (!mote) s << "<!-- robots are drawn where they ended -->\n";
   }
   ScaleBar(s, f);

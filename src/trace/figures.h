@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/run_spec.h"
+#include "sanet/geometry.h"
 
 namespace sanet::trace {
 
@@ -15,11 +15,25 @@ struct Track {
   std::vector<double> t, x, y;
 };
 
+// What the figures draw, in world metres; the writers know nothing of how a run is described.
+struct FigureObstacle {
+  std::string kind;  // "box" or "wall", the tooltip
+  Vec2 center, size;
+  double yaw = 0;
+};
+
+struct FigureNode {
+  std::string name;
+  bool mote = false;
+  Pose2D start, final_pose;
+};
+
 struct FigureInput {
-  const sim::RunSpec& spec;
-  std::vector<Pose2D> final_poses;        // per node
-  std::vector<Track> tracks;              // of the nodes that moved
-  std::vector<std::uint64_t> received;    // per node, empty without a network
+  std::string title;  // the run's name
+  std::vector<FigureObstacle> obstacles;
+  std::vector<FigureNode> nodes;
+  std::vector<Track> tracks;            // of the nodes that moved
+  std::vector<std::uint64_t> received;  // per node, empty without a network
 };
 
 std::string MapSvg(const FigureInput& in, double tick);

@@ -24,14 +24,15 @@ Watch RunWatched(const sim::RunSpec& spec, std::function<void(sim::World&, doubl
   sim::World world(spec, BuiltinRegistry());
   Watch w;
   w.poses.resize(spec.nodes.size());
-  world.SetStepObserver([&](double t) {
+  world.Observe([&](const sim::WorldSnapshot& snapshot) {
+    const double t = snapshot.time();
     double best = HUGE_VAL;
     for (NodeId i = 0; i < spec.nodes.size(); ++i)
       for (NodeId j = i + 1; j < spec.nodes.size(); ++j)
-        best = std::min(best, Norm(world.TruePose(i).position() - world.TruePose(j).position()));
+        best = std::min(best, Norm(world.parts().TruePose(i).position() - world.parts().TruePose(j).position()));
     w.min_distance.push_back({t, best});
     if (std::fmod(t + 1e-9, 0.1) < 0.005)
-      for (NodeId i = 0; i < spec.nodes.size(); ++i) w.poses[i].push_back(world.TruePose(i));
+      for (NodeId i = 0; i < spec.nodes.size(); ++i) w.poses[i].push_back(world.parts().TruePose(i));
     if (also) also(world, t);
   });
   world.Run({});
@@ -100,7 +101,7 @@ TEST(Formation, AnObstacleInAFollowersWayIsAvoided) {
   spec.obstacles.push_back(Box(on_track, 0.4, 0.4, 0.5, th));
   double closest = HUGE_VAL;
   const Watch w = RunWatched(spec, [&](sim::World& world, double) {
-    closest = std::min(closest, DistanceToBox(world.TruePose(2).position(), spec.obstacles[0].box));
+    closest = std::min(closest, DistanceToBox(world.parts().TruePose(2).position(), spec.obstacles[0].box));
   });
   EXPECT_GT(closest, 0.25) << "f2 (half-width 0.19 m, half-length 0.22 m) never touched the crate";
   EXPECT_LT(closest, 1.0) << "the crate was in its way, not beside it";

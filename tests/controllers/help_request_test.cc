@@ -73,7 +73,7 @@ TEST(HelpRequest, TheRobotArrivesAroundTheWall) {
   {
     sim::World world(spec, registry);
     const NodeId robot = *world.Lookup("robot");
-    world.SetStepObserver([&](double) {
+    world.Observe([&](const sim::WorldSnapshot&) {
       closest = std::min(closest, DistanceToBox(world.model(robot).body().pose().position(), spec.obstacles[0].box));
     });
     world.Run({dir, "", false});
@@ -119,20 +119,21 @@ class TableWitness : public Node {
   void Flood(const Bytes& p) override { inner_.Flood(p); }
   double Random() override { return inner_.Random(); }
   NetworkView& Network() override { return view_; }
-  void Log(const std::string& text) override {
-    // "transition find_next_hop -> go_to_next_hop: next hop m5 of 1 towards target"
-    const auto at = text.find(": next hop ");
-    if (text.rfind("transition find_next_hop", 0) == 0 && at != std::string::npos) {
-      std::istringstream words(text.substr(at + 11));
+  void Log(const std::string& text) override { inner_.Log(text); }
+  void Metric(const std::string& name, double value) override { inner_.Metric(name, value); }
+  // find_next_hop -> go_to_next_hop, why "next hop m5 of 1 towards target"
+  void Transition(const std::string& from, const std::string& to, const std::string& why) override {
+    if (from == "find_next_hop" && why.rfind("next hop ", 0) == 0) {
+      std::istringstream words(why.substr(9));
       std::string hop, of, count, towards, dest;
       words >> hop >> of >> count >> towards >> dest;
       const NodeId h = *Lookup(hop), d = *Lookup(dest);
       bool listed = false;
       for (const RouteEntry& e : view_.last) listed = listed || (e.valid && e.destination == d && e.next_hop == h);
-      if (!listed) violations_->push_back(text);
+      if (!listed) violations_->push_back(why);
       ++*checked_;
     }
-    inner_.Log(text);
+    inner_.Transition(from, to, why);
   }
 
  private:

@@ -26,7 +26,7 @@ Track DriveFor(ModelKind kind, Twist2D v, double seconds) {
   Track t;
   t.start = world.model(0).body().pose();
   double last_theta = t.start.theta;
-  world.SetStepObserver([&](double) {
+  world.Observe([&](const sim::WorldSnapshot&) {
     const Pose2D p = world.model(0).body().pose();
     t.turned += WrapAngle(p.theta - last_theta);
     last_theta = p.theta;

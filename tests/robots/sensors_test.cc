@@ -72,11 +72,11 @@ TEST(Bearing, AnswersOnlyWithinRange) {
   spec.nodes[0].model.sensors.bearing = robots::BearingSpec{10, 0, 0};
   sim::World world(spec, BuiltinRegistry());
   Settle(world);
-  auto near = world.model(0).Bearing(world.TruePose(1));
+  auto near = world.model(0).Bearing(world.parts().TruePose(1));
   ASSERT_TRUE(near);
   EXPECT_NEAR(near->distance, std::sqrt(18.0), 0.02);
   EXPECT_NEAR(near->bearing, -kPi / 4, 0.01) << "north-east seen from a robot facing north is to its right";
-  EXPECT_FALSE(world.model(0).Bearing(world.TruePose(2)));
+  EXPECT_FALSE(world.model(0).Bearing(world.parts().TruePose(2)));
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ Outcome DriveAroundWall(ModelKind kind) {
   spec.obstacles = {Wall({10, -4}, {10, 4})};
   sim::World world(spec, BuiltinRegistry());
   Outcome o;
-  world.SetStepObserver([&](double) {
+  world.Observe([&](const sim::WorldSnapshot&) {
     const Pose2D p = world.model(0).body().pose();
     o.closest_to_wall = std::min(o.closest_to_wall, DistanceToBox(p.position(), spec.obstacles[0].box));
     o.farthest_from_line = std::max(o.farthest_from_line, std::fabs(p.y));

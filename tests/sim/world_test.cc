@@ -24,7 +24,8 @@ TEST(World, Ns3MobilityAnswersWithThePhysicsPoseAtTheTimeItAsks) {
                                   UseController("constant_velocity", {{"vx", Scalar(0.5)}}))}),
                    BuiltinRegistry());
   std::vector<std::pair<ns3::Vector, Pose2D>> samples;
-  world.SetStepObserver([&](double t) {
+  world.Observe([&](const sim::WorldSnapshot& snapshot) {
+    const double t = snapshot.time();
     if (std::fmod(t, 1.0) < 1e-9) {
       auto mobility = ns3::NodeList::GetNode(0)->GetObject<ns3::MobilityModel>();
       samples.emplace_back(mobility->GetPosition(), world.model(0).body().pose());

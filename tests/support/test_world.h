@@ -41,7 +41,7 @@ inline sim::ControllerSpec UseController(std::string name, std::vector<std::pair
 
 inline sim::NodeSpec Robot(std::string name, robots::ModelKind kind, Pose2D pose,
                            std::optional<sim::ControllerSpec> controller = std::nullopt) {
-  return {std::move(name), robots::ModelSpec::Defaults(kind), pose, std::move(controller)};
+  return {std::move(name), robots::ModelSpec::Defaults(kind), pose, std::move(controller), {}};
 }
 
 inline sim::RunSpec Spec(double duration, std::vector<sim::NodeSpec> nodes) {

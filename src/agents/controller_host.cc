@@ -1,0 +1,56 @@
+#include "agents/controller_host.h"
+
+namespace sanet::agents {
+
+std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, Registry& registry) {
+  if (!spec.library.empty()) registry.LoadLibrary(spec.library);
+  const ControllerInfo* info = registry.Find(spec.name);
+  if (!info) throw RegistryError("unknown controller '" + spec.name + "'");
+  std::unique_ptr<Controller> controller = info->create(spec.params);
+  spec.params.CheckAllUsed();
+  return controller;
+}
+
+ControllerHost::ControllerHost(Node& node, std::unique_ptr<Controller> controller, double rate,
+                               MessageImpairments impairments, std::uint64_t seed, HostClock& clock, Hooks hooks)
+    : node_(node), controller_(std::move(controller)), rate_(rate), impairments_(impairments),
+      impairment_stream_(seed, "messages/impairments/" + node.Name()), clock_(clock), hooks_(std::move(hooks)) {}
+
+// Runs one call into the controller; what it throws ends its run, reported once.
+template <typename Call>
+void ControllerHost::Guard(const char* where, Call call) {
+  if (!running()) return;
+  try {
+    call();
+  } catch (const std::exception& e) {
+    failed_ = true;
+    if (hooks_.failed) hooks_.failed("controller of " + node_.Name() + " failed" + where + ": " + e.what());
+  }
+}
+
+void ControllerHost::Start() {
+  Guard(" to start", [&] { controller_->Start(node_); });
+}
+
+void ControllerHost::Step() {
+  Guard("", [&] { controller_->ControlStep(node_); });
+}
+
+void ControllerHost::Receive(const Message& m) {
+  if (impairments_.loss > 0 && impairment_stream_.Uniform() < impairments_.loss) {
+    if (hooks_.dropped) hooks_.dropped(m);
+    return;
+  }
+  if (impairments_.delay <= 0) return Deliver(m);
+  clock_.After(impairments_.delay, [this, later = m]() mutable {
+    later.time_received = clock_.Now();
+    Deliver(later);
+  });
+}
+
+void ControllerHost::Deliver(const Message& m) {
+  if (hooks_.delivered) hooks_.delivered(m);
+  Guard(" on a message", [&] { controller_->OnMessage(node_, m); });
+}
+
+}  // namespace sanet::agents

@@ -1,0 +1,79 @@
+#include "hil/message_lines.h"
+
+#include <cstdio>
+
+namespace sanet::hil {
+namespace {
+
+int HexDigit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+}  // namespace
+
+std::string ToHex(const Bytes& bytes) {
+  static const char* kDigits = "0123456789abcdef";
+  std::string out;
+  out.reserve(bytes.size() * 2);
+  for (std::uint8_t b : bytes) out += kDigits[b >> 4], out += kDigits[b & 15];
+  return out;
+}
+
+std::optional<Bytes> FromHex(const std::string& text) {
+  if (text.size() % 2) return std::nullopt;
+  Bytes out;
+  out.reserve(text.size() / 2);
+  for (std::size_t i = 0; i < text.size(); i += 2) {
+    const int hi = HexDigit(text[i]), lo = HexDigit(text[i + 1]);
+    if (hi < 0 || lo < 0) return std::nullopt;
+    out.push_back(static_cast<std::uint8_t>(hi * 16 + lo));
+  }
+  return out;
+}
+
+const char* DeliveryName(Delivery delivery) {
+  switch (delivery) {
+    case Delivery::kUnicast: return "unicast";
+    case Delivery::kBroadcast: return "broadcast";
+    case Delivery::kFlood: return "flood";
+  }
+  return "unicast";
+}
+
+std::optional<Delivery> ParseDelivery(const std::string& name) {
+  for (Delivery d : {Delivery::kUnicast, Delivery::kBroadcast, Delivery::kFlood})
+    if (name == DeliveryName(d)) return d;
+  return std::nullopt;
+}
+
+ProtocolMessage MsgLine(const Message& m, const std::string& from_name) {
+  ProtocolMessage line("MSG");
+  line.Add("From", from_name).Add("Delivery", DeliveryName(m.delivery));
+  line.Add("TimeSent", FormatPrecise(m.time_sent)).Add("TimeReceived", FormatPrecise(m.time_received));
+  if (m.hops) line.Add("Hops", std::to_string(*m.hops));
+  line.Add("Data", ToHex(m.payload));
+  return line;
+}
+
+std::optional<Message> ParseMsgLine(const ProtocolMessage& line, const std::optional<NodeId>& from, NodeId to,
+                                    std::string* error) {
+  const std::string* delivery = line.Get("Delivery");
+  const std::string* data = line.Get("Data");
+  const auto sent = line.Number("TimeSent"), received = line.Number("TimeReceived");
+  Message m;
+  std::optional<Bytes> payload = data ? FromHex(*data) : std::nullopt;
+  std::optional<Delivery> kind = delivery ? ParseDelivery(*delivery) : std::nullopt;
+  if (!from || !kind || !payload || !sent || !received) {
+    *error = "MSG needs {From node} {Delivery unicast|broadcast|flood} {TimeSent} {TimeReceived} {Data hex}";
+    return std::nullopt;
+  }
+  m.from = *from, m.to = *kind == Delivery::kUnicast ? to : kBroadcast, m.delivery = *kind, m.payload = std::move(*payload);
+  m.time_sent = *sent, m.time_received = *received;
+  if (auto hops = line.Number("Hops")) m.hops = static_cast<int>(*hops);
+  return m;
+}
+
+}  // namespace sanet::hil

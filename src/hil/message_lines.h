@@ -1,0 +1,35 @@
+// sanet's extension of the robot protocol for messages between a client's robot and the nodes
+// that live in the server (motes, robots without an agent): the client sends with SEND and the
+// server hands over what reached the robot's ns-3 node with MSG. Payloads travel as hex.
+//
+//   SEND {Delivery unicast} {To m3} {Data 0a1b...}       (or {Delivery broadcast|flood}, no To)
+//   MSG {From m3} {Delivery unicast} {TimeSent 12.000100} {TimeReceived 12.004300} {Hops 2} {Data ...}
+//
+// Controllers' typed events travel the same way:
+//   TRANSITION {From searching} {To travelling} {Why route found}
+//   METRIC {Name hop_time} {Value 3.25}
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "hil/protocol.h"
+#include "sanet/message.h"
+
+namespace sanet::hil {
+
+std::string ToHex(const Bytes& bytes);
+std::optional<Bytes> FromHex(const std::string& text);  // nullopt unless pairs of hex digits
+
+const char* DeliveryName(Delivery delivery);
+std::optional<Delivery> ParseDelivery(const std::string& name);
+
+// MSG line for a message that reached `message.to`'s node, with names for node ids.
+ProtocolMessage MsgLine(const Message& message, const std::string& from_name);
+
+// Reads a MSG line back into a message (the agent side); `from` resolved by name. Says what is
+// wrong in `error` otherwise.
+std::optional<Message> ParseMsgLine(const ProtocolMessage& line, const std::optional<NodeId>& from, NodeId to,
+                                    std::string* error);
+
+}  // namespace sanet::hil

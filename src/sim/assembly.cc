@@ -1,0 +1,173 @@
+#include "sim/assembly.h"
+
+#include <ns3/core-module.h>
+#include <ns3/node-container.h>
+
+#include <cmath>
+
+#include "net/body_mobility_model.h"
+#include "net/local_transport.h"
+#include "net/wireless_network.h"
+
+namespace sanet::sim {
+namespace {
+
+bool g_assembly_exists = false;
+
+// The controllers' clock in a simulated run: ns-3's.
+class SimulationClock : public agents::HostClock {
+ public:
+  double Now() const override { return ns3::Simulator::Now().GetSeconds(); }
+  void After(double delay, std::function<void()> action) override {
+    ns3::Simulator::Schedule(ns3::NanoSeconds(std::llround(delay * 1e9)), std::move(action));
+  }
+};
+
+// One ns-3 node per body; its mobility model reads the body whenever ns-3 asks.
+ns3::NodeContainer Ns3NodesOn(const std::vector<std::unique_ptr<robots::NodeModel>>& models) {
+  ns3::NodeContainer nodes;
+  nodes.Create(models.size());
+  for (NodeId id = 0; id < models.size(); ++id) {
+    const physics::Body& body = models[id]->body();
+    auto mobility = ns3::CreateObject<net::BodyMobilityModel>();
+    mobility->Bind(
+        [&body] {
+          const physics::Vec3 p = body.position3();
+          return ns3::Vector(p.x, p.y, p.z);
+        },
+        [&body] {
+          const Twist2D v = body.velocity();
+          return ns3::Vector(v.vx, v.vy, 0);
+        });
+    nodes.Get(id)->AggregateObject(mobility);
+  }
+  return nodes;
+}
+
+std::unique_ptr<net::Transport> MakeTransport(const RunSpec& spec, const ns3::NodeContainer& nodes) {
+  if (!spec.network) return std::make_unique<net::LocalTransport>(spec.nodes.size(), spec.message_latency);
+  std::vector<std::string> names;
+  std::vector<net::NodeRadio> radios;
+  for (const NodeSpec& n : spec.nodes) {
+    names.push_back(n.name);
+    radios.push_back(n.radio);
+  }
+  return std::make_unique<net::WirelessNetwork>(*spec.network, nodes, names, radios);
+}
+
+}  // namespace
+
+Assembly::Assembly(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
+  if (g_assembly_exists) throw WorldError("only one World may exist at a time (ns-3 is process-wide)");
+  if (spec.physics_step <= 0) throw WorldError("physics step must be positive");
+  g_assembly_exists = true;
+  try {
+    ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(spec.seed % 4294967295u) + 1);
+    BuildBodies();
+    BuildTransport();
+    BuildNodes(registry);
+  } catch (...) {
+    hosts_.clear();
+    ns3::Simulator::Destroy();
+    g_assembly_exists = false;
+    throw;
+  }
+}
+
+Assembly::~Assembly() {
+  // Controllers may hold code from libraries and state tied to nodes: drop them first.
+  hosts_.clear();
+  ns3::Simulator::Destroy();
+  g_assembly_exists = false;
+}
+
+void Assembly::BuildBodies() {
+  physics_ = physics::CreateOdeWorld(spec_.physics);
+  for (const Obstacle& o : spec_.obstacles) physics_->add_static_box(o.box);
+  for (const NodeSpec& n : spec_.nodes)
+    models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose, spec_.seed, "node/" + n.name));
+}
+
+void Assembly::BuildTransport() {
+  const ns3::NodeContainer nodes = Ns3NodesOn(models_);
+  transport_ = std::make_unique<MessageLedger>(MakeTransport(spec_, nodes),
+                                               [] { return ns3::Simulator::Now().GetSeconds(); });
+  transport_->SetReceiver([this](NodeId to, const Message& m) { Receive(to, m); });
+}
+
+bool Assembly::remote(NodeId id) const {
+  return spec_.robots_remote && spec_.nodes.at(id).model.kind != robots::ModelKind::kMote;
+}
+
+void Assembly::BuildNodes(agents::Registry& registry) {
+  clock_ = std::make_unique<SimulationClock>();
+  const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
+    const NodeSpec& n = spec_.nodes[id];
+    nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this,
+                                                             RandomStream(spec_.seed, "node/" + n.name + "/controller")));
+    std::unique_ptr<Controller> controller =
+        n.controller && !remote(id) ? agents::MakeController(*n.controller, registry) : nullptr;
+    hosts_.push_back(std::make_unique<agents::ControllerHost>(*nodes_.back(), std::move(controller),
+                                                              n.controller ? n.controller->rate : 1, impairments,
+                                                              spec_.seed, *clock_, HostHooks(id)));
+  }
+}
+
+agents::ControllerHost::Hooks Assembly::HostHooks(NodeId id) {
+  agents::ControllerHost::Hooks hooks;
+  hooks.delivered = [this, id](const Message& m) {
+    if (events_) events_->Delivered(id, m);
+  };
+  hooks.dropped = [this, id](const Message& m) {
+    if (events_) events_->DroppedByImpairment(id, m);
+  };
+  hooks.failed = [this](const std::string& why) {
+    if (events_) events_->Failed(why);
+  };
+  return hooks;
+}
+
+// A remote robot's messages go to its client, impaired there as its controller's own host does.
+void Assembly::Receive(NodeId to, const Message& m) {
+  if (!remote(to)) return hosts_.at(to)->Receive(m);
+  const InboxResult result = remote_inbox_ ? remote_inbox_(to, m) : InboxResult::kLost;
+  if (!events_ || result == InboxResult::kIgnored) return;
+  if (result == InboxResult::kDelivered) events_->Delivered(to, m);
+  else events_->Lost(to, m, "no client drives " + NameOf(to));
+}
+
+void Assembly::SwitchOff(NodeId id) {
+  nodes_.at(id)->SwitchOff();
+  hosts_.at(id)->SwitchOff();
+  Log(id, "switched off");
+}
+
+std::optional<NodeId> Assembly::Lookup(const std::string& name) const {
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id)
+    if (spec_.nodes[id].name == name) return id;
+  return std::nullopt;
+}
+
+void Assembly::Log(NodeId node, const std::string& text) {
+  if (events_) events_->Log(node, text);
+}
+
+void Assembly::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
+  if (events_) events_->Transition(node, from, to, why);
+}
+
+void Assembly::Metric(NodeId node, const std::string& name, double value) {
+  if (events_) events_->Metric(node, name, value);
+}
+
+BodyState Assembly::Body(NodeId node) const {
+  const physics::Body& body = models_.at(node)->body();
+  return {body.pose(), body.velocity()};
+}
+
+std::vector<NodeId> Assembly::RadioNeighbours(NodeId node) const { return transport_->View(node).Neighbours(); }
+
+std::string Assembly::ControllerState(NodeId node) const { return state_reader_ ? state_reader_(node) : ""; }
+
+}  // namespace sanet::sim

@@ -1,0 +1,90 @@
+// A run's parts, built from its spec: the physics world and its bodies, one ns-3 node per
+// scenario node whose mobility reads its body, the transport (ns-3's network or the local
+// stand-in), and for every node the simulated node its drivers see and the host of its
+// controller. Nothing here advances time: that is the stepper's job.
+//
+// ns-3's simulator is process-wide, so only one Assembly may exist at a time (checked).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "agents/controller_host.h"
+#include "agents/simulated_node.h"
+#include "sim/message_ledger.h"
+#include "sim/run_events.h"
+#include "sim/run_spec.h"
+#include "sim/snapshot.h"
+
+namespace sanet::sim {
+
+class WorldError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Someone outside the run who drives a node (the server's protocol client): messages that reach
+// the node are handed to it. It says whether the message was delivered, lost (nobody drives the
+// node now) or is none of its business (it reaches the driver another way), and is not recorded.
+enum class InboxResult { kDelivered, kLost, kIgnored };
+using RemoteInbox = std::function<InboxResult(NodeId to, const Message& message)>;
+
+class Assembly : public agents::NodeDirectory, public SnapshotSource {
+ public:
+  Assembly(const RunSpec& spec, agents::Registry& registry);
+  ~Assembly() override;
+  Assembly(const Assembly&) = delete;
+  Assembly& operator=(const Assembly&) = delete;
+
+  const RunSpec& spec() const { return spec_; }
+  std::size_t size() const { return nodes_.size(); }
+  agents::SimulatedNode& node(NodeId id) { return *nodes_.at(id); }
+  agents::ControllerHost& host(NodeId id) { return *hosts_.at(id); }
+  robots::NodeModel& model(NodeId id) { return *models_.at(id); }
+  physics::PhysicsWorld& physics() { return *physics_; }
+  MessageLedger& transport() { return *transport_; }
+  // True for a robot that a client of the server drives instead of its scenario controller.
+  bool remote(NodeId id) const;
+
+  void SetEvents(RunEvents* events) { events_ = events; }
+  void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
+  void SwitchOff(NodeId id);
+
+  // NodeDirectory
+  std::optional<NodeId> Lookup(const std::string& name) const override;
+  std::string NameOf(NodeId id) const override { return id < spec_.nodes.size() ? spec_.nodes[id].name : ""; }
+  std::size_t NodeCount() const override { return spec_.nodes.size(); }
+  Pose2D TruePose(NodeId node) const override { return models_.at(node)->body().pose(); }
+  void Log(NodeId node, const std::string& text) override;
+  void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) override;
+  void Metric(NodeId node, const std::string& name, double value) override;
+
+  // SnapshotSource
+  BodyState Body(NodeId node) const override;
+  std::vector<NodeId> RadioNeighbours(NodeId node) const override;
+  std::vector<MessageInFlight> MessagesInFlight() const override { return transport_->InFlight(); }
+  std::string ControllerState(NodeId node) const override;
+  void SetStateReader(std::function<std::string(NodeId)> reader) { state_reader_ = std::move(reader); }
+
+ private:
+  void BuildBodies();
+  void BuildTransport();
+  void BuildNodes(agents::Registry& registry);
+  void Receive(NodeId to, const Message& message);
+  agents::ControllerHost::Hooks HostHooks(NodeId id);
+
+  RunSpec spec_;
+  std::unique_ptr<physics::PhysicsWorld> physics_;
+  std::vector<std::unique_ptr<robots::NodeModel>> models_;
+  std::unique_ptr<MessageLedger> transport_;
+  std::unique_ptr<agents::HostClock> clock_;
+  std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
+  std::vector<std::unique_ptr<agents::ControllerHost>> hosts_;
+  RunEvents* events_ = nullptr;
+  RemoteInbox remote_inbox_;
+  std::function<std::string(NodeId)> state_reader_;
+};
+
+}  // namespace sanet::sim

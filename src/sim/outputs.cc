@@ -1,0 +1,126 @@
+#include "sim/outputs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+#include "core/statistics.h"
+
+namespace sanet::sim {
+namespace {
+
+std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string Format(const char* format, ...) {
+  char line[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(line, sizeof line, format, args);
+  va_end(args);
+  return line;
+}
+
+const char* DeliveryName(Delivery d) {
+  static const char* kNames[] = {"unicast", "broadcast", "flood"};
+  return kNames[static_cast<int>(d)];
+}
+
+bool Unmoved(const Pose2D& p, const Pose2D& last) {
+  return std::fabs(p.x - last.x) < 5e-5 && std::fabs(p.y - last.y) < 5e-5 &&
+         std::fabs(WrapAngle(p.theta - last.theta)) < 5e-5;
+}
+
+}  // namespace
+
+Outputs::Outputs(const RunSpec& spec, const std::string& dir)
+    : spec_(spec), folder_(dir),
+      trajectories_(folder_.Csv("trajectories.csv", "time,node,x,y,theta")),
+      log_(folder_.Csv("log.csv", "time,node,text")),
+      messages_(folder_.Csv("messages.csv", "time_sent,from,to,delivery,bytes,time_received,delay,hops")),
+      transitions_(folder_.Csv("transitions.csv", "time,node,from,to,why")),
+      metric_rows_(folder_.Csv("metrics.csv", "time,node,name,value")),
+      states_(spec.nodes.size()), last_recorded_(spec.nodes.size()) {
+  if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
+}
+
+void Outputs::Log(double t, NodeId node, const std::string& text) {
+  log_.Row(Format("%.6f,", t) + trace::CsvField(Name(node)) + "," + trace::CsvField(text));
+}
+
+void Outputs::Transition(double t, NodeId node, const std::string& from, const std::string& to,
+                         const std::string& why) {
+  ++transitions_to_[to];
+  states_.at(node) = to;
+  transitions_.Row(Format("%.6f,", t) + trace::CsvField(Name(node)) + "," + trace::CsvField(from) + "," +
+                   trace::CsvField(to) + "," + trace::CsvField(why));
+}
+
+void Outputs::Metric(double t, NodeId node, const std::string& name, double value) {
+  metrics_[Name(node)][name].push_back(value);
+  metric_rows_.Row(Format("%.6f,", t) + trace::CsvField(Name(node)) + "," + trace::CsvField(name) +
+                   Format(",%.9g", value));
+}
+
+std::string Outputs::State(NodeId node) const { return states_.at(node); }
+
+void Outputs::Delivered(NodeId to, const Message& m) {
+  const double delay = m.time_received - m.time_sent;
+  delays_.push_back(delay);
+  messages_.Row(Format("%.6f,%s,%s,%s,%zu,%.6f,%.6f,%s", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
+                       DeliveryName(m.delivery), m.payload.size(), m.time_received, delay,
+                       m.hops ? std::to_string(*m.hops).c_str() : ""));
+}
+
+// A row without time_received, delay and hops: the message reached the node but not whoever
+// drives it.
+void Outputs::Lost(NodeId to, const Message& m, const std::string& why) {
+  ++messages_undelivered_;
+  messages_.Row(Format("%.6f,%s,%s,%s,%zu,,,", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
+                       DeliveryName(m.delivery), m.payload.size()));
+  Log(m.time_received, to, "message from " + Name(m.from) + " lost: " + why);
+}
+
+void Outputs::Ended(const std::string& by, double at) {
+  if (!ended_by_.empty()) return;
+  ended_by_ = by;
+  ended_at_ = at;
+}
+
+void Outputs::Failed(const std::string& why) {
+  if (failure_.empty()) failure_ = why;
+}
+
+// The smallest distance between any two robots (centre to centre), with the pair.
+void Outputs::SampleMinDistance(double now, const PoseReader& world) {
+  double best = HUGE_VAL;
+  NodeId a = 0, b = 0;
+  const auto& v = world.vehicles;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (std::size_t j = i + 1; j < v.size(); ++j) {
+      const double d = Norm(world.pose(v[i]).position() - world.pose(v[j]).position());
+      if (d < best) best = d, a = v[i], b = v[j];
+    }
+  if (best == HUGE_VAL) return;
+  min_distances_.push_back({now, best});
+  min_distance_->Row(Format("%.3f,%.4f,%s,%s", now, best, Name(a).c_str(), Name(b).c_str()));
+}
+
+void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
+  now = std::min(now, spec_.duration);
+  if (min_distance_ && !final_row) SampleMinDistance(now, world);
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
+    const Pose2D p = world.pose(id);
+    auto& last = last_recorded_[id];
+    // Nodes at rest add no rows (a mote appears at the start and the end unless something moves
+    // it); the last row of every node is its final pose.
+    if (last && (final_row ? last->time >= spec_.duration : Unmoved(p, last->pose))) continue;
+    last = Recorded{p, now};
+    if (spec_.figures && spec_.nodes[id].model.kind != robots::ModelKind::kMote) {
+      trace::Track& track = tracks_[id];
+      track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
+    }
+    trajectories_.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, Name(id).c_str(), p.x, p.y, p.theta));
+  }
+}
+
+}  // namespace sanet::sim

@@ -1,0 +1,106 @@
+// The outputs of one run: every results file (trajectories, log, messages, transitions, metrics,
+// smallest distance, the network's packets and routes), the figures, summary.json and the fingerprint.
+// The run and the network hand it what happened; it alone decides what is written, in which
+// form and in which order the fingerprint takes it. Files are written whole (trace::ResultsFolder).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/fingerprint.h"
+#include "net/network_traces.h"
+#include "sim/run_spec.h"
+#include "trace/figures.h"
+#include "trace/results_folder.h"
+
+namespace sanet::sim {
+
+// Wall-clock seconds spent in each stage of the run.
+struct Profile {
+  double physics = 0;
+  double sensing = 0;  // odometry integration after each step
+  double controllers = 0;
+  double recording = 0;
+};
+
+struct RunResult {
+  double simulated = 0;  // s
+  double wall = 0;       // s
+  double real_time_factor = 0;
+  std::uint64_t events = 0;
+  std::uint64_t physics_steps = 0;
+  std::string fingerprint;
+  Profile profile;
+  std::vector<std::string> files;  // written into the output folder
+};
+
+// What the outputs read of the world when they sample it.
+struct PoseReader {
+  std::function<Pose2D(NodeId)> pose;
+  std::vector<NodeId> vehicles;  // the nodes that move by themselves
+};
+
+class Outputs {
+ public:
+  Outputs(const RunSpec& spec, const std::string& dir);
+  trace::ResultsFolder& folder() { return folder_; }
+
+  // Events of the run, at simulated time `t`.
+  void Log(double t, NodeId node, const std::string& text);
+  void Transition(double t, NodeId node, const std::string& from, const std::string& to, const std::string& why);
+  void Metric(double t, NodeId node, const std::string& name, double value);
+  void Delivered(NodeId to, const Message& message);
+  void DroppedByImpairment() { ++messages_lost_; }
+  // A message that reached a node's radio but not its controller (`why`, e.g. no client).
+  void Lost(NodeId to, const Message& message, const std::string& why);
+  void Ended(const std::string& by, double at);
+  void Failed(const std::string& why);  // the first failure is kept
+  const std::string& failure() const { return failure_; }
+  const std::string& ended_by() const { return ended_by_; }
+  double ended_at() const { return ended_at_; }
+  // The last state each node's controller entered ("" before any transition).
+  std::string State(NodeId node) const;
+
+  // Trajectory rows (and the smallest distance) at time `now`; `final_row` for the end of the run.
+  void Sample(double now, bool final_row, const PoseReader& world);
+
+  // Writes everything whole; fills the result's fingerprint and file list. `extra` adds fields
+  // to summary.json (the network's, the server's lag).
+  void Finish(RunResult& result, const std::optional<net::NetworkTraces>& network, const std::string& scenario_file,
+              const std::vector<Pose2D>& final_poses, nlohmann::ordered_json extra);
+
+ private:
+  void SampleMinDistance(double now, const PoseReader& world);
+  void AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp);
+  void WriteFigures(const std::vector<Pose2D>& final_poses, const std::optional<net::NetworkTraces>& network);
+  nlohmann::ordered_json Summary(const RunResult& result, const std::string& scenario_file,
+                                 const std::vector<Pose2D>& final_poses) const;
+  nlohmann::ordered_json MinDistanceSummary() const;
+  const std::string& Name(NodeId id) const { return spec_.nodes.at(id).name; }
+
+  const RunSpec& spec_;
+  trace::ResultsFolder folder_;
+  trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;
+  trace::CsvSink* min_distance_ = nullptr;
+  std::vector<std::pair<double, double>> min_distances_;  // (time, smallest distance between robots)
+  std::vector<double> delays_;                             // of every message delivered, s
+  std::uint64_t messages_lost_ = 0;                        // dropped by the added message_loss
+  std::uint64_t messages_undelivered_ = 0;                 // reached a radio, not a controller
+  std::map<std::string, std::map<std::string, std::vector<double>>> metrics_;  // node -> name -> values
+  std::map<std::string, int> transitions_to_;  // state -> transitions into it
+  std::vector<std::string> states_;            // per node
+  struct Recorded {
+    Pose2D pose;
+    double time;
+  };
+  std::vector<std::optional<Recorded>> last_recorded_;
+  std::map<NodeId, trace::Track> tracks_;  // of robots, for the figures
+  std::string ended_by_, failure_;
+  double ended_at_ = 0;
+};
+
+}  // namespace sanet::sim

@@ -1,0 +1,180 @@
+// The end of a run's outputs: network files, figures, summary.json and the fingerprint.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/statistics.h"
+#include "sim/outputs.h"
+
+namespace sanet::sim {
+namespace {
+
+std::string PacketRow(const std::string& node, const net::PacketCounts& c) {
+  char row[256];
+  std::snprintf(row, sizeof row, "%s,%llu,%llu,%llu,%llu,%llu,%llu", node.c_str(), (unsigned long long)c.sent,
+                (unsigned long long)c.received, (unsigned long long)c.forwarded, (unsigned long long)c.dropped,
+                (unsigned long long)c.messages_sent, (unsigned long long)c.messages_received);
+  return row;
+}
+
+std::string RouteRow(const std::string& node, const std::string& destination, const net::Discovery& d) {
+  char row[256];
+  if (d.established)
+    std::snprintf(row, sizeof row, "%s,%s,%.6f,%.6f,%.6f", node.c_str(), destination.c_str(), d.started,
+                  *d.established, *d.established - d.started);
+  else
+    std::snprintf(row, sizeof row, "%s,%s,%.6f,,", node.c_str(), destination.c_str(), d.started);
+  return row;
+}
+
+nlohmann::ordered_json NetworkSummary(const net::NetworkTraces& n) {
+  net::PacketCounts total;
+  for (const net::PacketCounts& c : n.counts) {
+    total.sent += c.sent, total.received += c.received, total.forwarded += c.forwarded;
+    total.dropped += c.dropped, total.messages_sent += c.messages_sent;
+    total.messages_received += c.messages_received;
+  }
+  std::vector<double> discovery_times;
+  for (const net::Discovery& d : n.discoveries)
+    if (d.established) discovery_times.push_back(*d.established - d.started);
+  return {{"radio", n.radio},
+          {"data_rate_mbps", n.data_rate_mbps},
+          {"tx_power_dbm", n.tx_power_dbm},
+          {"routing", n.routing},
+          {"packets",
+           {{"sent", total.sent},
+            {"received", total.received},
+            {"forwarded", total.forwarded},
+            {"dropped", total.dropped},
+            {"messages_sent", total.messages_sent},
+            {"messages_received", total.messages_received}}},
+          {"route_discoveries",
+           {{"started", n.discoveries.size()},
+            {"established", discovery_times.size()},
+            {"time_s", Quartiles(discovery_times)}}}};
+}
+
+}  // namespace
+
+// packets.csv and routes.csv, then the packet logs the network wrote through the folder.
+void Outputs::AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp) {
+  trace::CsvSink& packets =
+      folder_.Csv("packets.csv", "node,sent,received,forwarded,dropped,messages_sent,messages_received");
+  for (NodeId id = 0; id < network.counts.size(); ++id) packets.Row(PacketRow(Name(id), network.counts[id]));
+  trace::CsvSink& routes = folder_.Csv("routes.csv", "node,destination,started,established,duration");
+  for (const net::Discovery& d : network.discoveries) routes.Row(RouteRow(Name(d.node), Name(d.destination), d));
+  folder_.Commit();
+  fp.Add(packets.hash());
+  fp.Add(routes.hash());
+  if (network.packet_logs)
+    for (const NodeSpec& n : spec_.nodes) fp.Add(folder_.CsvHash("packets/" + n.name + ".csv"));
+}
+
+void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>& network,
+                     const std::string& scenario_file, const std::vector<Pose2D>& final_poses,
+                     nlohmann::ordered_json extra) {
+  folder_.Commit();
+  Fingerprint fp;
+  fp.Add(spec_.seed);
+  fp.Add(trajectories_.hash());
+  fp.Add(log_.hash());
+  fp.Add(messages_.hash());
+  fp.Add(transitions_.hash());
+  fp.Add(metric_rows_.hash());
+  if (min_distance_) fp.Add(min_distance_->hash());
+  if (network) {
+    AddNetworkFiles(*network, fp);
+    extra["network"] = NetworkSummary(*network);
+  }
+  result.fingerprint = fp.Hex();
+  if (!folder_.writes()) return;
+  if (spec_.figures) WriteFigures(final_poses, network);
+  nlohmann::ordered_json summary = Summary(result, scenario_file, final_poses);
+  for (const auto& [key, value] : extra.items()) summary[key] = value;
+  folder_.Listed("summary.json");
+  summary["files"] = folder_.files();
+  folder_.WriteWhole("summary.json", summary.dump(2) + "\n");
+  result.files = folder_.files();
+}
+
+void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::optional<net::NetworkTraces>& network) {
+  trace::FigureInput in;
+  in.title = spec_.name;
+  for (const Obstacle& o : spec_.obstacles)
+    in.obstacles.push_back({o.kind, {o.box.center.x, o.box.center.y}, {o.box.size.x, o.box.size.y}, o.box.yaw});
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
+    const NodeSpec& n = spec_.nodes[id];
+    in.nodes.push_back({n.name, n.model.kind == robots::ModelKind::kMote, n.pose, final_poses.at(id)});
+  }
+  for (auto& [id, track] : tracks_) {
+    track.node = Name(id);
+    in.tracks.push_back(track);
+  }
+  if (network)
+    for (const net::PacketCounts& c : network->counts) in.received.push_back(c.received);
+  folder_.WriteWhole("map.svg", trace::MapSvg(in, spec_.figure_tick));
+  if (!min_distances_.empty())
+    folder_.WriteWhole("min_distance.svg",
+                       trace::LineSvg(spec_.name + ": smallest distance between robots", "time (s)", "distance (m)",
+                                      min_distances_, spec_.distance_reference));
+  if (!in.received.empty()) folder_.WriteWhole("packets.svg", trace::PacketsSvg(in));
+}
+
+nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::string& scenario_file,
+                                        const std::vector<Pose2D>& final_poses) const {
+  nlohmann::ordered_json j;
+  j["scenario"] = scenario_file;
+  j["name"] = spec_.name;
+  j["status"] = failure_.empty() ? "completed" : "failed: " + failure_;
+  j["seed"] = spec_.seed;
+  j["duration_s"] = spec_.duration;
+  j["simulated_s"] = result.simulated;
+  j["wall_time_s"] = result.wall;
+  j["real_time_factor"] = result.real_time_factor;
+  j["events"] = result.events;
+  j["physics_steps"] = result.physics_steps;
+  j["physics_step_s"] = spec_.physics_step;
+  j["world_size_m"] = {spec_.world_size.x, spec_.world_size.y};
+  j["fingerprint"] = result.fingerprint;
+  j["profile_s"] = {{"physics", result.profile.physics},
+                    {"sensing", result.profile.sensing},
+                    {"controllers", result.profile.controllers},
+                    {"recording", result.profile.recording}};
+  nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
+    const Pose2D p = final_poses.at(id);
+    nodes.push_back({{"name", Name(id)},
+                     {"model", robots::ModelName(spec_.nodes[id].model.kind)},
+                     {"controller", spec_.nodes[id].controller ? spec_.nodes[id].controller->name : ""},
+                     {"final_pose", {p.x, p.y, p.theta}}});
+  }
+  j["nodes"] = nodes;
+  j["rows"] = {{"trajectories", trajectories_.rows()}, {"log", log_.rows()}, {"messages", messages_.rows()}};
+  j["ended_by"] = ended_by_.empty() ? "duration" : ended_by_;
+  j["ended_at_s"] = ended_by_.empty() ? result.simulated : ended_at_;
+  j["message_delay_s"] = Quartiles(delays_);
+  j["messages_dropped_by_impairment"] = messages_lost_;
+  if (messages_undelivered_) j["messages_lost_before_their_controller"] = messages_undelivered_;
+  nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
+  for (const auto& [node, named] : metrics_)
+    for (const auto& [metric, values] : named) metrics[node][metric] = Quartiles(values);
+  j["metrics"] = metrics;
+  j["transitions_to"] = transitions_to_;
+  if (!min_distances_.empty()) j["min_distance"] = MinDistanceSummary();
+  return j;
+}
+
+nlohmann::ordered_json Outputs::MinDistanceSummary() const {
+  auto lowest = std::min_element(min_distances_.begin(), min_distances_.end(),
+                                 [](const auto& a, const auto& b) { return a.second < b.second; });
+  nlohmann::ordered_json md = {{"min_m", lowest->second}, {"at_s", lowest->first}};
+  if (spec_.distance_reference > 0) {
+    std::size_t near = 0;
+    for (const auto& [t, d] : min_distances_) near += std::fabs(d - spec_.distance_reference) <= 0.1 * spec_.distance_reference;
+    md["reference_m"] = spec_.distance_reference;
+    md["fraction_within_10_percent"] = double(near) / min_distances_.size();
+  }
+  return md;
+}
+
+}  // namespace sanet::sim

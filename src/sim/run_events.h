@@ -1,0 +1,23 @@
+// What the nodes of a run report while it goes, to whoever runs it (the stepper records them
+// through the outputs and applies the end conditions).
+#pragma once
+
+#include <string>
+
+#include "sanet/message.h"
+
+namespace sanet::sim {
+
+class RunEvents {
+ public:
+  virtual ~RunEvents() = default;
+  virtual void Log(NodeId node, const std::string& text) = 0;
+  virtual void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) = 0;
+  virtual void Metric(NodeId node, const std::string& name, double value) = 0;
+  virtual void Delivered(NodeId to, const Message& message) = 0;
+  virtual void DroppedByImpairment(NodeId to, const Message& message) = 0;
+  virtual void Lost(NodeId to, const Message& message, const std::string& why) = 0;
+  virtual void Failed(const std::string& why) = 0;
+};
+
+}  // namespace sanet::sim

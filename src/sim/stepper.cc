@@ -1,0 +1,158 @@
+#include "sim/stepper.h"
+
+#include <ns3/core-module.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace sanet::sim {
+namespace {
+
+ns3::Time Period(double seconds) { return ns3::NanoSeconds(std::llround(seconds * 1e9)); }
+
+double Since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Adds the wall time of a scope to one stage of the profile.
+class StageTimer {
+ public:
+  explicit StageTimer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~StageTimer() { total_ += Since(start_); }
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers)
+    : world_(world), outputs_(outputs), observers_(observers) {
+  world_.SetEvents(this);
+  world_.SetStateReader([this](NodeId id) { return outputs_.State(id); });
+  for (NodeId id = 0; id < world_.size(); ++id)
+    if (world_.model(id).mobile()) vehicles_.push_back(id);
+  if (!observers_.empty()) world_.transport().Watch();
+}
+
+Stepper::~Stepper() {
+  world_.SetEvents(nullptr);
+  world_.SetStateReader(nullptr);
+}
+
+double Stepper::Now() const { return ns3::Simulator::Now().GetSeconds(); }
+double Stepper::wall() const { return Since(wall_start_); }
+
+void Stepper::Run(bool progress) {
+  ScheduleAll();
+  world_.transport().Open(outputs_.folder());
+  wall_start_ = last_progress_ = std::chrono::steady_clock::now();
+  if (progress) ns3::Simulator::ScheduleNow(&Stepper::ShowProgress, this);
+  // Events at exactly `duration` still run: the run covers [0, duration].
+  ns3::Simulator::Stop(Period(world_.spec().duration) + ns3::NanoSeconds(1));
+  ns3::Simulator::Run();
+  if (progress) std::fprintf(stderr, "\r%78s\r", "");
+  world_.transport().Close();
+  outputs_.Sample(Now(), /*final_row=*/true, Poses());
+}
+
+// Order at equal times follows scheduling order: controllers start, then step, then scenario
+// events, recording and physics.
+void Stepper::ScheduleAll() {
+  const RunSpec& spec = world_.spec();
+  ns3::Simulator::ScheduleNow(&Stepper::StartControllers, this);
+  for (NodeId id = 0; id < world_.size(); ++id)
+    if (world_.host(id).has_controller()) ns3::Simulator::ScheduleNow(&Stepper::ControlStep, this, id);
+  for (const NodeEvent& e : spec.events)
+    ns3::Simulator::Schedule(Period(e.time), &Assembly::SwitchOff, &world_, static_cast<NodeId>(e.node));
+  ns3::Simulator::ScheduleNow(&Stepper::Record, this);
+  // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
+  if (!vehicles_.empty()) ns3::Simulator::Schedule(Period(spec.physics_step), &Stepper::PhysicsStep, this);
+}
+
+void Stepper::StartControllers() {
+  StageTimer timer(profile_.controllers);
+  for (NodeId id = 0; id < world_.size() && outputs_.failure().empty(); ++id)
+    if (world_.host(id).has_controller()) world_.host(id).Start();
+}
+
+void Stepper::ControlStep(NodeId id) {
+  agents::ControllerHost& host = world_.host(id);
+  if (!host.running()) return;
+  {
+    StageTimer timer(profile_.controllers);
+    host.Step();
+  }
+  if (host.running()) ns3::Simulator::Schedule(Period(host.period()), &Stepper::ControlStep, this, id);
+}
+
+void Stepper::PhysicsStep() {
+  {
+    StageTimer timer(profile_.physics);
+    world_.physics().step(world_.spec().physics_step);
+  }
+  {
+    StageTimer timer(profile_.sensing);
+    for (NodeId id : vehicles_) world_.model(id).AfterPhysicsStep();
+  }
+  ++physics_steps_;
+  Notify();
+  ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
+}
+
+void Stepper::Notify() {
+  if (observers_.empty()) return;
+  const WorldSnapshot snapshot(world_, Now(), physics_steps_);
+  for (StepObserver* o : observers_) o->AfterStep(snapshot);
+}
+
+void Stepper::Record() {
+  {
+    StageTimer timer(profile_.recording);
+    outputs_.Sample(Now(), false, Poses());
+  }
+  if (vehicles_.empty()) Notify();  // no physics steps: observers see the world at each sample
+  ns3::Simulator::Schedule(Period(world_.spec().trajectory_interval), &Stepper::Record, this);
+}
+
+PoseReader Stepper::Poses() const {
+  return {[this](NodeId id) { return world_.model(id).body().pose(); }, vehicles_};
+}
+
+void Stepper::Log(NodeId node, const std::string& text) {
+  outputs_.Log(Now(), node, text);
+  for (const std::string& end : world_.spec().end_when_logged)
+    if (text == end && outputs_.ended_by().empty()) {
+      outputs_.Ended("'" + end + "' logged by " + world_.NameOf(node), Now());
+      ns3::Simulator::Stop(Period(world_.spec().end_grace));  // let the last messages arrive
+    }
+}
+
+void Stepper::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
+  outputs_.Transition(Now(), node, from, to, why);
+}
+
+void Stepper::Metric(NodeId node, const std::string& name, double value) { outputs_.Metric(Now(), node, name, value); }
+
+void Stepper::Delivered(NodeId to, const Message& message) { outputs_.Delivered(to, message); }
+
+void Stepper::Failed(const std::string& why) {
+  outputs_.Failed(why);
+  ns3::Simulator::Stop();
+}
+
+void Stepper::ShowProgress() {
+  const auto now = std::chrono::steady_clock::now();
+  if (std::chrono::duration<double>(now - last_progress_).count() >= 0.5) {
+    last_progress_ = now;
+    const double t = Now(), wall = Since(wall_start_), duration = world_.spec().duration;
+    const double rtf = wall > 0 ? t / wall : 0;
+    const double eta = rtf > 0 ? (duration - t) / rtf : 0;
+    std::fprintf(stderr, "\r  t = %.1f / %.1f s   %.1fx real time   ETA %.0f s   ", t, duration, rtf, eta);
+    std::fflush(stderr);
+  }
+  ns3::Simulator::Schedule(ns3::Seconds(1), &Stepper::ShowProgress, this);
+}
+
+}  // namespace sanet::sim

@@ -1,0 +1,60 @@
+// The one clock of a run: every stage is an event on ns-3's scheduler. At t = 0 the
+// controllers start, then (at their own rates) control steps; every physics step integrates the
+// bodies (stage "physics") and the odometry (stage "sensing"), then the observers see the world;
+// every trajectory interval the outputs sample it (stage "recording"); scenario events switch
+// nodes off. The stepper also applies the end conditions and ends the run on a controller's
+// failure, keeping what was recorded.
+#pragma once
+
+#include <chrono>
+#include <vector>
+
+#include "sim/assembly.h"
+#include "sim/outputs.h"
+#include "sim/run_events.h"
+#include "sim/snapshot.h"
+
+namespace sanet::sim {
+
+class Stepper : public RunEvents {
+ public:
+  Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers);
+  ~Stepper() override;
+
+  // Runs to the spec's duration (or an end condition, or a failure). `progress` prints simulated
+  // time, real-time factor and ETA to stderr.
+  void Run(bool progress);
+  const Profile& profile() const { return profile_; }
+  std::uint64_t physics_steps() const { return physics_steps_; }
+  double wall() const;  // s since Run began
+  double Now() const;   // s, simulated
+
+  // RunEvents
+  void Log(NodeId node, const std::string& text) override;
+  void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) override;
+  void Metric(NodeId node, const std::string& name, double value) override;
+  void Delivered(NodeId to, const Message& message) override;
+  void DroppedByImpairment(NodeId, const Message&) override { outputs_.DroppedByImpairment(); }
+  void Lost(NodeId to, const Message& message, const std::string& why) override { outputs_.Lost(to, message, why); }
+  void Failed(const std::string& why) override;
+
+ private:
+  void ScheduleAll();
+  void StartControllers();
+  void ControlStep(NodeId node);
+  void PhysicsStep();
+  void Record();
+  void Notify();
+  void ShowProgress();
+  PoseReader Poses() const;
+
+  Assembly& world_;
+  Outputs& outputs_;
+  std::vector<StepObserver*> observers_;
+  std::vector<NodeId> vehicles_;
+  Profile profile_;
+  std::uint64_t physics_steps_ = 0;
+  std::chrono::steady_clock::time_point wall_start_, last_progress_;
+};
+
+}  // namespace sanet::sim

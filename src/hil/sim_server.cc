@@ -130,13 +130,12 @@ void SimServer::Accept() {
 
 void SimServer::Read(Client& c) {
   char buffer[8192];
+  std::string gone;  // why the connection ended, once the lines it brought are handled
   while (true) {
     const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
-    if (n == 0) return Drop(c, "disconnected");
-    if (n < 0) {
-      if (errno == EAGAIN || errno == EWOULDBLOCK) break;
-      return Drop(c, std::strerror(errno));
-    }
+    if (n == 0) gone = "disconnected";
+    if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) gone = std::strerror(errno);
+    if (n <= 0) break;
     c.reader.Append(std::string_view(buffer, n));
   }
   bool too_long = false;
@@ -152,6 +151,7 @@ void SimServer::Read(Client& c) {
     Flush(c);
     Drop(c, "line too long");
   }
+  if (!gone.empty()) Drop(c, gone);
 }
 
 void SimServer::Handle(Client& c, const ProtocolMessage& m) {

@@ -1,0 +1,167 @@
+#!/usr/bin/env python3
+"""Every driver goes through the node: a client of `sanet serve` is held to the run's rules as an
+in-process controller is. A client written from docs/protocol.md:
+- drives a robot that a scenario event switches off: it moves before, not after (and is told);
+- receives a mote's messages to its robot (MSG, over the simulated network) and replies (SEND);
+  both directions appear in messages.csv; once it has gone, the mote's messages are recorded as
+  lost."""
+import csv
+import json
+import os
+import re
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+SANET = sys.argv.pop(1)
+SOURCE = sys.argv.pop(1)
+SCENARIO = """duration: 12
+network: {routing: aodv}
+events:
+  - {time: 3, node: off, action: switch_off}
+nodes:
+  - name: m1
+    model: mote
+    pose: [0, 0, 0]
+    controller: {name: pinger, params: {to: r1, interval: 0.5, start: 1, size: 8}}
+  - {name: r1, model: diffdrive, pose: [5, 0, 0]}
+  - {name: off, model: diffdrive, pose: [0, 5, 0]}
+"""
+
+
+class Client:
+    """A robot-protocol client: one line per message, `TYPE {Key Value} ...`."""
+
+    def __init__(self, port):
+        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
+        self.file = self.sock.makefile("rwb")
+        assert self.file.readline().startswith(b"NFO")
+
+    def send(self, line):
+        self.file.write(line.encode() + b"\r\n")
+        self.file.flush()
+
+    def lines(self):
+        while True:
+            line = self.file.readline().decode().strip()
+            if not line:
+                return
+            yield line
+
+    def close(self):
+        self.sock.close()
+
+
+def field(line, key):
+    m = re.search(r"\{" + key + r" ([^}]*)\}", line)
+    return m.group(1) if m else None
+
+
+def ground_truth_x(line):
+    return float(field(line, "Location").split(",")[0])
+
+
+class NodeRules(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        path = os.path.join(cls.tmp.name, "s.yaml")
+        open(path, "w").write(SCENARIO)
+        port_file = os.path.join(cls.tmp.name, "port")
+        cls.out = os.path.join(cls.tmp.name, "out")
+        cls.server = subprocess.Popen([SANET, "serve", path, "--port", "0", "--port-file", port_file, "-o", cls.out, "-q"],
+                                      stdout=subprocess.DEVNULL)
+        for _ in range(500):
+            if os.path.exists(port_file):
+                break
+            time.sleep(0.01)
+        cls.port = int(open(port_file).read())
+        cls.switched, cls.messages = {}, {}
+        # Both clients at once, each on its own thread of the test, as two robots' programs would.
+        import threading
+        threads = [threading.Thread(target=cls.drive_switched_off_robot), threading.Thread(target=cls.talk_to_mote)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        cls.server.wait(timeout=60)
+        cls.summary = json.load(open(os.path.join(cls.out, "summary.json")))
+        with open(os.path.join(cls.out, "messages.csv")) as f:
+            cls.rows = list(csv.DictReader(f))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    @classmethod
+    def drive_switched_off_robot(cls):
+        c = Client(cls.port)
+        c.send("INIT {ClassName USARBot.P2DX} {Name off}")
+        xs_before, xs_after, errors = [], [], []
+        for line in c.lines():
+            if line.startswith("ERR"):
+                errors.append(line)
+            if not line.startswith("SEN") or "GroundTruth" not in line:
+                continue
+            t = float(field(line, "Time"))
+            c.send("DRIVE {Left 5} {Right 5}")  # as fast forward as it goes
+            if t < 3:
+                xs_before.append(ground_truth_x(line))
+            elif t > 3.5:  # after it has coasted to a stop
+                xs_after.append(ground_truth_x(line))
+            if t > 6:
+                break
+        c.close()
+        cls.switched = {"before": xs_before, "after": xs_after, "errors": errors}
+
+    @classmethod
+    def talk_to_mote(cls):
+        c = Client(cls.port)
+        c.send("INIT {ClassName USARBot.P2DX} {Name r1}")
+        received = []
+        for line in c.lines():
+            if line.startswith("MSG"):
+                received.append(line)
+                c.send("SEND {Delivery unicast} {To m1} {Data cafe%04x}" % len(received))
+            if len(received) == 4:
+                break
+        c.close()  # the mote goes on sending: to a robot nobody drives now
+        cls.messages = {"received": received}
+
+    def test_a_switched_off_robot_ignores_drive_from_its_client(self):
+        before, after = self.switched["before"], self.switched["after"]
+        self.assertGreater(before[-1] - before[0], 0.1, "the robot should move before it is switched off")
+        self.assertLess(max(after) - min(after), 0.01, "a switched-off robot must not move")
+        self.assertTrue(any("switched off" in e for e in self.switched["errors"]))
+
+    def test_the_mote_message_reaches_the_client_over_the_simulated_network(self):
+        received = self.messages["received"]
+        self.assertEqual(len(received), 4)
+        for line in received:
+            self.assertEqual(field(line, "From"), "m1")
+            self.assertEqual(field(line, "Delivery"), "unicast")
+            self.assertEqual(len(field(line, "Data")), 16)  # 8 bytes
+            self.assertGreater(float(field(line, "TimeReceived")), float(field(line, "TimeSent")))
+
+    def test_both_directions_are_in_messages_csv(self):
+        to_robot = [r for r in self.rows if r["from"] == "m1" and r["to"] == "r1" and r["time_received"]]
+        replies = [r for r in self.rows if r["from"] == "r1" and r["to"] == "m1"]
+        self.assertGreaterEqual(len(to_robot), 4)
+        self.assertEqual(len(replies), 4)
+        for r in replies:
+            self.assertEqual(r["bytes"], "4")
+            self.assertGreater(float(r["delay"]), 0)
+
+    def test_messages_to_a_robot_whose_client_is_gone_are_lost(self):
+        lost = [r for r in self.rows if r["from"] == "m1" and r["to"] == "r1" and not r["time_received"]]
+        self.assertGreater(len(lost), 5)
+        self.assertEqual(self.summary["messages_lost_before_their_controller"], len(lost))
+        last_delivered = max(float(r["time_sent"]) for r in self.rows if r["to"] == "r1" and r["time_received"])
+        self.assertTrue(all(float(r["time_sent"]) > last_delivered for r in lost))
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

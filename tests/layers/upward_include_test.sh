@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# A layer cannot include a header of a layer above it: compiling a net file that includes a sim
+# header must fail because sim's headers are not on net's include root (and for no other reason).
+set -u
+build="$1"
+out=$(cmake --build "$build" --target sanet_upward_include_probe 2>&1)
+if [ $? -eq 0 ]; then
+  echo "FAIL: a net file that includes sim/world.h compiled"
+  exit 1
+fi
+if ! grep -q "sim/world.h: No such file or directory" <<<"$out"; then
+  echo "FAIL: the probe failed for another reason:"
+  echo "$out" | tail -20
+  exit 1
+fi
+if grep -q "net/transport.h: No such file" <<<"$out"; then
+  echo "FAIL: net's own headers were not found"
+  exit 1
+fi
+echo "ok: net cannot include sim/world.h"

@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
   std::printf("%-20s %12.1f %10.2f %10.1f %12llu %22.2f\n", "help-request", base.simulated, base.wall, base.rtf,
               base.events, 1.0);
   const Measure team = Run(dir + "/help-request-team.yaml", registry);
-  std::printf("%-20s %12.1f %10.2f %10.1f %12llu %22.2f\n", "help-request-team", team.simulated, team.wall,
-              team.rtf, team.events, (team.wall / team.simulated) / (base.wall / base.simulated));
+  std::printf("%-20s %12.1f %10.2f %10.1f %12llu %22.2f\n", "help-request-team", team.simulated, team.wall, team.rtf,
+              team.events, (team.wall / team.simulated) / (base.wall / base.simulated));
   return 0;
 }

@@ -52,8 +52,10 @@ double RunSanet(int count, double duration, agents::Registry& registry) {
   spec.network = net::NetworkSpec{};
   spec.network->packet_log = false;
   for (int i = 0; i < count; ++i)
-    spec.nodes.push_back({"m" + std::to_string(i), robots::ModelSpec::Defaults(robots::ModelKind::kMote),
-                          {kSpacing * (i % layout.side), kSpacing * (i / layout.side), 0}, std::nullopt});
+    spec.nodes.push_back({"m" + std::to_string(i),
+                          robots::ModelSpec::Defaults(robots::ModelKind::kMote),
+                          {kSpacing * (i % layout.side), kSpacing * (i / layout.side), 0},
+                          std::nullopt});
   for (const auto& [source, destination] : layout.flows) {
     sim::ControllerSpec c;
     c.name = "pinger";
@@ -111,8 +113,10 @@ int main(int argc, char** argv) {
   const double duration = argc > 1 ? std::atof(argv[1]) : 30;
   agents::Registry registry;
   controllers::RegisterBuiltinControllers(registry);
-  std::printf("sanet network benchmark: static motes 40 m apart, AODV, 802.11b 1 Mbps, a tenth of the\n"
-              "motes send 64 B to a far mote every 2 s; %.0f s simulated per case\n", duration);
+  std::printf(
+      "sanet network benchmark: static motes 40 m apart, AODV, 802.11b 1 Mbps, a tenth of the\n"
+      "motes send 64 B to a far mote every 2 s; %.0f s simulated per case\n",
+      duration);
   std::printf("%-8s %12s %12s %12s %12s %10s\n", "motes", "sanet wall", "sanet RTF", "ns-3 wall", "ns-3 RTF",
               "overhead");
   for (int count : {25, 100, 400}) {

@@ -29,8 +29,10 @@ sim::RunSpec Robots(int count, double duration, physics::Solver solver) {
   spec.physics.solver = solver;
   const int side = static_cast<int>(std::ceil(std::sqrt(count)));
   for (int i = 0; i < count; ++i) {
-    sim::NodeSpec n{"r" + std::to_string(i), robots::ModelSpec::Defaults(robots::ModelKind::kOmni3),
-                    {3.0 * (i % side), 3.0 * (i / side), 0}, sim::ControllerSpec{}};
+    sim::NodeSpec n{"r" + std::to_string(i),
+                    robots::ModelSpec::Defaults(robots::ModelKind::kOmni3),
+                    {3.0 * (i % side), 3.0 * (i / side), 0},
+                    sim::ControllerSpec{}};
     n.controller->name = "constant_velocity";  // a 1 m circle: the robots keep driving, apart
     ParamValue vx, omega;
     vx.rows = {{"0.3"}};
@@ -46,8 +48,10 @@ sim::RunSpec Motes(int count, double duration) {
   sim::RunSpec spec;
   spec.duration = duration;
   for (int i = 0; i < count; ++i)
-    spec.nodes.push_back({"m" + std::to_string(i), robots::ModelSpec::Defaults(robots::ModelKind::kMote),
-                          {10.0 * (i % 20), 10.0 * (i / 20), 0}, std::nullopt});
+    spec.nodes.push_back({"m" + std::to_string(i),
+                          robots::ModelSpec::Defaults(robots::ModelKind::kMote),
+                          {10.0 * (i % 20), 10.0 * (i / 20), 0},
+                          std::nullopt});
   return spec;
 }
 

@@ -37,9 +37,9 @@ class Pilot {
 
   PilotSettings s_;
   Mode mode_ = Mode::kGoal;
-  double side_ = 1;          // +1: obstacle kept on the right (we go round it anticlockwise)
-  double hit_distance_ = 0;  // distance to the goal where the obstacle was met
-  double last_heading_ = 0;  // world heading while following
+  double side_ = 1;                     // +1: obstacle kept on the right (we go round it anticlockwise)
+  double hit_distance_ = 0;             // distance to the goal where the obstacle was met
+  double last_heading_ = 0;             // world heading while following
   std::optional<double> hold_heading_;  // holonomic robots keep their initial heading
   std::optional<double> last_time_;
 };

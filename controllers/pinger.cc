@@ -33,9 +33,12 @@ class Pinger : public Controller {
     next_ = std::max(next_, start_) + interval_;
     Bytes payload = Writer().U32(count_++).bytes();
     payload.resize(size_, 0);
-    if (target_) node.Send(*target_, payload);
-    else if (to_ == "flood") node.Flood(payload);
-    else node.Broadcast(payload);
+    if (target_)
+      node.Send(*target_, payload);
+    else if (to_ == "flood")
+      node.Flood(payload);
+    else
+      node.Broadcast(payload);
   }
 
  private:

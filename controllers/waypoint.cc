@@ -45,7 +45,6 @@ class Waypoint : public Controller {
       node.Log(pilot_.following() ? "obstacle: following its boundary" : "way clear: heading for the goal");
   }
 
-
  private:
   Pilot pilot_;
   double tolerance_;

@@ -32,7 +32,8 @@ class FormationFollower : public Controller {
         goal_tolerance_(p.Number("goal_tolerance", 0.1, 0.01, 10)),
         forward_names_(p.Words("forward_to", {})) {
     const auto offset = p.Numbers("offset", {});
-    if (offset.size() != 2) throw ParamError("offset", p.Line("offset"), "parameter 'offset' must be [dx, dy] (m, leader frame)");
+    if (offset.size() != 2)
+      throw ParamError("offset", p.Line("offset"), "parameter 'offset' must be [dx, dy] (m, leader frame)");
     offset_ = {offset[0], offset[1]};
   }
 

@@ -21,7 +21,8 @@ class FormationLeader : public Controller {
         silent_after_(p.Number("silent_after", HUGE_VAL, 0)),
         send_to_names_(p.Words("send_to", {})) {
     for (const auto& c : p.Table("corners", 2, {})) corners_.push_back({c[0], c[1]});
-    if (corners_.size() < 2) throw ParamError("corners", p.Line("corners"), "parameter 'corners' needs at least 2 points");
+    if (corners_.size() < 2)
+      throw ParamError("corners", p.Line("corners"), "parameter 'corners' needs at least 2 points");
   }
 
   void Start(Node& node) override { send_to_ = formation::Resolve(node, send_to_names_, "formation_leader"); }
@@ -51,8 +52,10 @@ class FormationLeader : public Controller {
     }
     const double error = WrapAngle(std::atan2(to_goal.y, to_goal.x) - pose->theta);
     // Turn in place until facing the corner, then drive straight with small corrections.
-    if (std::fabs(error) > heading_tolerance_ && std::fabs(error) > 0.3) node.Drive({0, 0, turn_gain_ * error});
-    else node.Drive({std::min(speed_, Norm(to_goal)), 0, turn_gain_ * error});
+    if (std::fabs(error) > heading_tolerance_ && std::fabs(error) > 0.3)
+      node.Drive({0, 0, turn_gain_ * error});
+    else
+      node.Drive({std::min(speed_, Norm(to_goal)), 0, turn_gain_ * error});
   }
 
  private:

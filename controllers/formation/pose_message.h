@@ -17,7 +17,9 @@ struct PoseMessage {
   double time = 0;  // s, when the leader measured it
   Pose2D pose;
 
-  Bytes Encode() const { return Writer().U8(kMagic).U32(sequence).F64(time).F64(pose.x).F64(pose.y).F64(pose.theta).bytes(); }
+  Bytes Encode() const {
+    return Writer().U8(kMagic).U32(sequence).F64(time).F64(pose.x).F64(pose.y).F64(pose.theta).bytes();
+  }
   static std::optional<PoseMessage> Decode(const Bytes& bytes) {
     Reader r(bytes);
     if (r.U8() != kMagic) return std::nullopt;

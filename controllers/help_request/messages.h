@@ -12,10 +12,10 @@ enum class Kind : std::uint8_t { kRequest = 1, kRobot = 2, kMote = 3 };
 
 struct HelpMessage {
   Kind kind = Kind::kRequest;
-  bool ra = false;        // robot: takes the request / is looking for next hops (false: gives up)
-  bool ma = false;        // mote: puts the robot in charge (false: refuses or gives up)
-  bool a = false;         // robot: has arrived
-  double hop_time = 0;    // robot: the longest it expects to need for one hop (s)
+  bool ra = false;      // robot: takes the request / is looking for next hops (false: gives up)
+  bool ma = false;      // mote: puts the robot in charge (false: refuses or gives up)
+  bool a = false;       // robot: has arrived
+  double hop_time = 0;  // robot: the longest it expects to need for one hop (s)
 
   Bytes Encode() const {
     return Writer().U8(kMagic).U8(static_cast<std::uint8_t>(kind)).Bool(ra).Bool(ma).Bool(a).F64(hop_time).bytes();

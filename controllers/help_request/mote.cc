@@ -104,8 +104,10 @@ class HelpRequestMote : public Controller {
   }
   void SendRequest(Node& node) {
     const Bytes request = HelpMessage{Kind::kRequest}.Encode();
-    if (flood_) node.Flood(request);
-    else node.Broadcast(request);
+    if (flood_)
+      node.Flood(request);
+    else
+      node.Broadcast(request);
     ++attempts_;
     deadline_ = node.Now() + reply_timeout_;
   }

@@ -56,8 +56,10 @@ class HelpRequestRobot : public Controller {
       if (state_ != State::kArrived) GiveUp(node, node.NameOf(from) + " refused");
       return;
     }
-    if (state_ == State::kRequestAssignment) Go(node, State::kFindNextHop, node.NameOf(from) + " put the robot in charge");
-    else if (state_ == State::kRequestNextHop) Go(node, State::kFindNextHop, node.NameOf(from) + " answered");
+    if (state_ == State::kRequestAssignment)
+      Go(node, State::kFindNextHop, node.NameOf(from) + " put the robot in charge");
+    else if (state_ == State::kRequestNextHop)
+      Go(node, State::kFindNextHop, node.NameOf(from) + " answered");
   }
 
   void ControlStep(Node& node) override {
@@ -69,30 +71,51 @@ class HelpRequestRobot : public Controller {
       case State::kArrived:
         node.Drive({});
         break;
-      case State::kSelect: SelectDestination(node); break;
+      case State::kSelect:
+        SelectDestination(node);
+        break;
       case State::kRequestAssignment:
       case State::kRequestNextHop:
         node.Drive({});
         if (state_ == State::kRequestNextHop && HasRoute(node)) {
           Go(node, State::kFindNextHop, "a route to " + node.NameOf(dest_) + " appeared");
         } else if (now >= deadline_) {
-          if (attempts_ < attempts_allowed_) SendToDestination(node, true);
-          else GiveUp(node, "no answer from " + node.NameOf(dest_) + " after " + std::to_string(attempts_) + " messages");
+          if (attempts_ < attempts_allowed_)
+            SendToDestination(node, true);
+          else
+            GiveUp(node, "no answer from " + node.NameOf(dest_) + " after " + std::to_string(attempts_) + " messages");
         }
         break;
-      case State::kFindNextHop: FindNextHop(node); break;
+      case State::kFindNextHop:
+        FindNextHop(node);
+        break;
       case State::kGoToNextHop:
-      case State::kGoToDestination: Travel(node, dt); break;
+      case State::kGoToDestination:
+        Travel(node, dt);
+        break;
     }
   }
 
  private:
   enum class State {
-    kIdle, kSelect, kRequestAssignment, kFindNextHop, kRequestNextHop, kGoToNextHop, kGoToDestination, kArrived
+    kIdle,
+    kSelect,
+    kRequestAssignment,
+    kFindNextHop,
+    kRequestNextHop,
+    kGoToNextHop,
+    kGoToDestination,
+    kArrived
   };
   static const char* StateName(State s) {
-    static const char* names[] = {"idle",          "select_destination", "request_assignment", "find_next_hop",
-                                  "request_next_hop", "go_to_next_hop",  "go_to_destination",  "arrived"};
+    static const char* names[] = {"idle",
+                                  "select_destination",
+                                  "request_assignment",
+                                  "find_next_hop",
+                                  "request_next_hop",
+                                  "go_to_next_hop",
+                                  "go_to_destination",
+                                  "arrived"};
     return names[static_cast<int>(s)];
   }
 
@@ -114,7 +137,8 @@ class HelpRequestRobot : public Controller {
     waiting_.erase(waiting_.begin() + pick);
     started_ = node.Now();
     avoiding_ = 0;
-    Go(node, State::kRequestAssignment, "chose " + node.NameOf(dest_) + " among " + std::to_string(waiting_.size() + 1));
+    Go(node, State::kRequestAssignment,
+       "chose " + node.NameOf(dest_) + " among " + std::to_string(waiting_.size() + 1));
     SendToDestination(node, true);
   }
 
@@ -141,8 +165,10 @@ class HelpRequestRobot : public Controller {
     std::vector<std::pair<NodeId, double>> candidates;
     for (const RouteEntry& e : node.Network().RoutingTable()) {
       if (!e.valid || e.destination != dest_) continue;
-      if (e.next_hop == dest_) candidates.push_back({dest_, h_});
-      else if (!(has_hop_ && e.next_hop == hop_)) candidates.push_back({e.next_hop, 1.0 / e.hops});
+      if (e.next_hop == dest_)
+        candidates.push_back({dest_, h_});
+      else if (!(has_hop_ && e.next_hop == hop_))
+        candidates.push_back({e.next_hop, 1.0 / e.hops});
     }
     if (candidates.empty()) {
       Go(node, State::kRequestNextHop, "no route to " + node.NameOf(dest_));
@@ -164,7 +190,8 @@ class HelpRequestRobot : public Controller {
     hop_started_ = node.Now();
     refreshed_ = false;
     Go(node, chosen == dest_ ? State::kGoToDestination : State::kGoToNextHop,
-       "next hop " + node.NameOf(chosen) + " of " + std::to_string(candidates.size()) + " towards " + node.NameOf(dest_));
+       "next hop " + node.NameOf(chosen) + " of " + std::to_string(candidates.size()) + " towards " +
+           node.NameOf(dest_));
   }
 
   void Travel(Node& node, double dt) {

@@ -12,8 +12,7 @@ class DriveTo : public sanet::Controller {
   // Parameters come from the scenario's `params:`; every getter checks its value, and a key that
   // no getter reads is reported to the user as unknown.
   explicit DriveTo(const sanet::Params& p)
-      : speed_(p.Number("speed", 0.4, 0.01, 5)),
-        tolerance_(p.Number("tolerance", 0.2, 0.01, 10)) {
+      : speed_(p.Number("speed", 0.4, 0.01, 5)), tolerance_(p.Number("tolerance", 0.2, 0.01, 10)) {
     const std::vector<double> goal = p.Numbers("goal", {});
     if (goal.size() != 2) throw sanet::ParamError("goal", p.Line("goal"), "parameter 'goal' must be [x, y]");
     goal_ = {goal[0], goal[1]};

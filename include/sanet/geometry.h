@@ -41,9 +41,7 @@ struct Pose2D {
 // A point expressed in the frame of `pose`, seen in the world frame.
 inline Vec2 ToWorld(const Pose2D& pose, Vec2 local) { return pose.position() + Rotate(local, pose.theta); }
 // A world point seen in the frame of `pose`.
-inline Vec2 ToLocal(const Pose2D& pose, Vec2 world) {
-  return Rotate(world - pose.position(), -pose.theta);
-}
+inline Vec2 ToLocal(const Pose2D& pose, Vec2 world) { return Rotate(world - pose.position(), -pose.theta); }
 
 // A planar velocity: linear part (m/s) and yaw rate (rad/s). Its frame is said where used.
 struct Twist2D {

@@ -21,10 +21,10 @@ enum class Delivery { kUnicast, kBroadcast, kFlood };
 struct Message {
   Delivery delivery = Delivery::kUnicast;
   NodeId from = 0;
-  NodeId to = kBroadcast;        // kBroadcast for a broadcast or a flood
-  double time_sent = 0;          // s, simulated (or wall) clock of the sender
-  double time_received = 0;      // s
-  std::optional<int> hops;       // hops travelled, where the transport knows it
+  NodeId to = kBroadcast;    // kBroadcast for a broadcast or a flood
+  double time_sent = 0;      // s, simulated (or wall) clock of the sender
+  double time_received = 0;  // s
+  std::optional<int> hops;   // hops travelled, where the transport knows it
   Bytes payload;
 };
 

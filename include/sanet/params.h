@@ -46,8 +46,7 @@ class Params {
     return it == values_.end() ? 0 : it->second.line;
   }
 
-  double Number(const std::string& key, double fallback, double min = -HUGE_VAL,
-                double max = HUGE_VAL) const {
+  double Number(const std::string& key, double fallback, double min = -HUGE_VAL, double max = HUGE_VAL) const {
     const ParamValue* v = Find(key);
     if (!v) return fallback;
     return CheckRange(key, *v, ToNumber(key, *v, Scalar(key, *v)), min, max);
@@ -101,8 +100,7 @@ class Params {
       Fail(key, *v, "must be a list of [" + std::to_string(width) + " numbers] lists");
     std::vector<std::vector<double>> out;
     for (const auto& row : v->rows) {
-      if (row.size() != width)
-        Fail(key, *v, "each entry must hold " + std::to_string(width) + " numbers");
+      if (row.size() != width) Fail(key, *v, "each entry must hold " + std::to_string(width) + " numbers");
       std::vector<double> numbers;
       for (const auto& s : row) numbers.push_back(ToNumber(key, *v, s));
       out.push_back(numbers);
@@ -138,8 +136,7 @@ class Params {
       Fail(key, v, "must be a number, not '" + s + "'");
     return d;
   }
-  static double CheckRange(const std::string& key, const ParamValue& v, double d, double min,
-                           double max) {
+  static double CheckRange(const std::string& key, const ParamValue& v, double d, double min, double max) {
     if (d < min || d > max) {
       auto fmt = [](double x) {
         std::string s = std::to_string(x);

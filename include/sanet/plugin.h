@@ -18,6 +18,6 @@
 // The entry points stay visible when a library hides its other symbols (-fvisibility=hidden).
 #define SANET_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
-#define SANET_CONTROLLER_PLUGIN(registry)                                                      \
+#define SANET_CONTROLLER_PLUGIN(registry)                                                         \
   SANET_PLUGIN_EXPORT int sanet_controller_api_version() { return SANET_CONTROLLER_API_VERSION; } \
   SANET_PLUGIN_EXPORT void sanet_register_controllers(::sanet::ControllerRegistry& registry)

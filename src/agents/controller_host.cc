@@ -13,8 +13,13 @@ std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, Registry&
 
 ControllerHost::ControllerHost(Node& node, std::unique_ptr<Controller> controller, double rate,
                                MessageImpairments impairments, std::uint64_t seed, HostClock& clock, Hooks hooks)
-    : node_(node), controller_(std::move(controller)), rate_(rate), impairments_(impairments),
-      impairment_stream_(seed, "messages/impairments/" + node.Name()), clock_(clock), hooks_(std::move(hooks)) {}
+    : node_(node),
+      controller_(std::move(controller)),
+      rate_(rate),
+      impairments_(impairments),
+      impairment_stream_(seed, "messages/impairments/" + node.Name()),
+      clock_(clock),
+      hooks_(std::move(hooks)) {}
 
 // Runs one call into the controller; what it throws ends its run, reported once.
 template <typename Call>

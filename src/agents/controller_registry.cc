@@ -8,8 +8,7 @@ namespace sanet::agents {
 
 void Registry::Add(ControllerInfo info) {
   if (info.name.empty() || !info.create) throw RegistryError("a controller needs a name and a factory");
-  if (controllers_.count(info.name))
-    throw RegistryError("controller '" + info.name + "' is registered twice");
+  if (controllers_.count(info.name)) throw RegistryError("controller '" + info.name + "' is registered twice");
   controllers_.emplace(info.name, std::move(info));
 }
 
@@ -40,8 +39,7 @@ std::vector<std::string> Registry::LoadLibrary(const std::string& path) {
     const int v = version();
     dlclose(handle);
     throw RegistryError(path + " was built against controller API version " + std::to_string(v) +
-                        ", this sanet has version " + std::to_string(SANET_CONTROLLER_API_VERSION) +
-                        ": rebuild it");
+                        ", this sanet has version " + std::to_string(SANET_CONTROLLER_API_VERSION) + ": rebuild it");
   }
   const auto before = controllers_;
   try {

@@ -30,8 +30,7 @@ class SimulatedNode : public Node {
  public:
   SimulatedNode(NodeId id, std::string name, robots::NodeModel& model, net::Transport& transport,
                 NodeDirectory& directory, RandomStream random)
-      : id_(id), name_(std::move(name)), model_(model), transport_(transport), directory_(directory),
-        random_(random) {}
+      : id_(id), name_(std::move(name)), model_(model), transport_(transport), directory_(directory), random_(random) {}
 
   double Now() const override;
   NodeId Id() const override { return id_; }

@@ -1,25 +1,24 @@
 // The `sanet` command: parses the command line and calls the kernel; nothing else.
-#include <CLI/CLI.hpp>
-
-#include <cstdio>
-#include <iostream>
-#include <csignal>
-#include <filesystem>
-#include <fstream>
 #include <sys/wait.h>
-#include <thread>
-#include <sstream>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
 
 #include "agents/controller_registry.h"
+#include "builtin.h"
+#include "core/atomic_file.h"
 #include "hil/agent.h"
 #include "hil/namespaces.h"
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
-#include "builtin.h"
-#include "core/atomic_file.h"
 #include "robots/node_model.h"
 #include "scenario/scenario_loader.h"
 #include "sim/sweep.h"
@@ -101,9 +100,10 @@ int Sweep(const std::string& file, const std::string& seeds_text, const std::str
     std::fflush(stdout);
   });
   if (!quiet)
-    std::printf("%d of %zu runs met the end condition; end time %.1f s +/- %.1f s (95 %% confidence)\n"
-                "results in %s/ (sweep.csv, sweep.json, seed-*/)\n",
-                r.ended_by_condition, r.runs.size(), r.mean, r.ci95, dir.c_str());
+    std::printf(
+        "%d of %zu runs met the end condition; end time %.1f s +/- %.1f s (95 %% confidence)\n"
+        "results in %s/ (sweep.csv, sweep.json, seed-*/)\n",
+        r.ended_by_condition, r.runs.size(), r.mean, r.ci95, dir.c_str());
   for (const auto& run : r.runs)
     if (run.status != "completed") return kExitRunFailed;
   return 0;
@@ -134,10 +134,11 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   const sim::RunResult r = world.Run(options);
   if (!quiet) {
     const auto lag = server.LagSummary();
-    std::printf("  served %.1f s; lag behind the wall clock p50 %.4f s, p99 %.4f s, max %.4f s, %lld missed deadlines\n"
-                "  results in %s/\n",
-                r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
-                static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), options.output_dir.c_str());
+    std::printf(
+        "  served %.1f s; lag behind the wall clock p50 %.4f s, p99 %.4f s, max %.4f s, %lld missed deadlines\n"
+        "  results in %s/\n",
+        r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
+        static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), options.output_dir.c_str());
   }
   return 0;
 }
@@ -205,11 +206,15 @@ int Launch(const std::string& file, const std::string& output, std::optional<int
       namespaces = std::make_unique<hil::NetworkNamespaces>(robots, s, shape);
       std::printf("sanet: each agent in its own network namespace, linked by veth pairs and a bridge\n");
       if (wants_shaping && !shape)
-        std::printf("sanet: netem is not available (%s): the links are not shaped; messages.loss and "
-                    "messages.delay in the scenario impair messages in the agents instead\n", no_shaping.c_str());
+        std::printf(
+            "sanet: netem is not available (%s): the links are not shaped; messages.loss and "
+            "messages.delay in the scenario impair messages in the agents instead\n",
+            no_shaping.c_str());
     } else {
-      std::printf("sanet: network namespaces are not available (%s): falling back to loopback, without "
-                  "netem shaping\n", why.c_str());
+      std::printf(
+          "sanet: network namespaces are not available (%s): falling back to loopback, without "
+          "netem shaping\n",
+          why.c_str());
     }
   }
   const std::string bind = namespaces ? hil::NetworkNamespaces::ServerAddress() : "127.0.0.1";
@@ -221,8 +226,8 @@ int Launch(const std::string& file, const std::string& output, std::optional<int
   const std::string port_file = std::string(port_dir) + "/port";
   const pid_t server = ::fork();
   if (server == 0) {
-    std::vector<std::string> args = {"sanet", "serve", file, "--port", "0", "--bind", bind, "-o", out, "-q",
-                                     "--port-file", port_file};
+    std::vector<std::string> args = {"sanet", "serve", file, "--port", "0",           "--bind",
+                                     bind,    "-o",    out,  "-q",     "--port-file", port_file};
     if (duration) args.insert(args.end(), {"--duration", std::to_string(*duration)});
     Exec(self, args);
   }
@@ -240,8 +245,12 @@ int Launch(const std::string& file, const std::string& output, std::optional<int
     const std::string& name = sc.run.nodes[id].name;
     const pid_t agent = ::fork();
     if (agent == 0) {
-      std::vector<std::string> args = {"sanet", "agent", "--server", address, "--scenario", file, "--robot", name,
-                                       "--udp-base", std::to_string(udp_base), "--shared-clock"};
+      std::vector<std::string> args = {"sanet",         "agent",
+                                       "--server",      address,
+                                       "--scenario",    file,
+                                       "--robot",       name,
+                                       "--udp-base",    std::to_string(udp_base),
+                                       "--shared-clock"};
       if (namespaces) {
         args.insert(args.end(), {"--udp-subnet", hil::NetworkNamespaces::Subnet()});
         args[0] = self;  // ip runs the program itself: its path, not a name, comes first
@@ -278,8 +287,8 @@ int Validate(const std::string& file, agents::Registry& registry) {
     controlled += n.controller.has_value();
   }
   std::printf("%s: valid: %zu nodes (%zu robots, %zu with controllers), %zu obstacles, %.1f s, seed %llu\n",
-              file.c_str(), sc.run.nodes.size(), robots, controlled, sc.run.obstacles.size(),
-              sc.run.duration, static_cast<unsigned long long>(sc.run.seed));
+              file.c_str(), sc.run.nodes.size(), robots, controlled, sc.run.obstacles.size(), sc.run.duration,
+              static_cast<unsigned long long>(sc.run.seed));
   return 0;
 }
 
@@ -298,72 +307,92 @@ int List(agents::Registry& registry) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"sanet: integrated simulator for sensor/actuator networks and networked robots.\n"
-               "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};
+  CLI::App app{
+      "sanet: integrated simulator for sensor/actuator networks and networked robots.\n"
+      "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "sanet 0.1.0");
 
   RunArgs run;
-  CLI::App* run_cmd = app.add_subcommand("run", "Run a scenario and write its results folder "
-                                                "(trajectories.csv, log.csv, messages.csv, summary.json)");
+  CLI::App* run_cmd = app.add_subcommand("run",
+                                         "Run a scenario and write its results folder "
+                                         "(trajectories.csv, log.csv, messages.csv, summary.json)");
   run_cmd->add_option("scenario", run.file, "Scenario file (YAML)")->required();
   run_cmd->add_option("--seed", run.seed, "Override the scenario's seed");
   run_cmd->add_option("--duration", run.duration, "Override the simulated duration (s)")->check(CLI::PositiveNumber);
-  run_cmd->add_option("-o,--output", run.output, "Results folder (default: the scenario's outputs.folder, "
-                                                 "or results/<name>)");
+  run_cmd->add_option("-o,--output", run.output,
+                      "Results folder (default: the scenario's outputs.folder, "
+                      "or results/<name>)");
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print nothing but errors");
   run_cmd->add_flag("--no-progress", run.no_progress, "Do not show progress (shown only on a terminal)");
 
   std::string validate_file;
-  CLI::App* validate_cmd = app.add_subcommand("validate", "Check a scenario without running it: structure, "
-                                                          "types, ranges, models, controllers and their parameters");
+  CLI::App* validate_cmd = app.add_subcommand("validate",
+                                              "Check a scenario without running it: structure, "
+                                              "types, ranges, models, controllers and their parameters");
   validate_cmd->add_option("scenario", validate_file, "Scenario file (YAML)")->required();
 
   std::string sweep_file, sweep_seeds = "1-10", sweep_output;
   bool sweep_quiet = false;
-  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a scenario once per seed (replications) and summarise "
-                                                    "when the runs met their end condition (mean, 95% confidence)");
+  CLI::App* sweep_cmd = app.add_subcommand("sweep",
+                                           "Run a scenario once per seed (replications) and summarise "
+                                           "when the runs met their end condition (mean, 95% confidence)");
   sweep_cmd->add_option("scenario", sweep_file, "Scenario file (YAML)")->required();
-  sweep_cmd->add_option("--seeds", sweep_seeds, "Seeds: a list and/or ranges, e.g. 1-10 or 1,5,9")->capture_default_str();
-  sweep_cmd->add_option("-o,--output", sweep_output, "Folder for the runs and sweep.csv/sweep.json "
-                                                     "(default: results/<name>-sweep)");
+  sweep_cmd->add_option("--seeds", sweep_seeds, "Seeds: a list and/or ranges, e.g. 1-10 or 1,5,9")
+      ->capture_default_str();
+  sweep_cmd->add_option("-o,--output", sweep_output,
+                        "Folder for the runs and sweep.csv/sweep.json "
+                        "(default: results/<name>-sweep)");
   sweep_cmd->add_flag("-q,--quiet", sweep_quiet, "Print nothing but errors");
 
   std::string serve_file, serve_bind = "127.0.0.1", serve_output, serve_port_file;
   int serve_port = 3000;
   bool serve_quiet = false;
-  CLI::App* serve_cmd = app.add_subcommand("serve", "Serve a scenario's world in real time over the robot protocol "
-                                                    "(USARSim-compatible; docs/protocol.md): clients drive its robots");
+  CLI::App* serve_cmd = app.add_subcommand("serve",
+                                           "Serve a scenario's world in real time over the robot protocol "
+                                           "(USARSim-compatible; docs/protocol.md): clients drive its robots");
   serve_cmd->add_option("scenario", serve_file, "Scenario file (YAML)")->required();
   serve_cmd->add_option("--bind", serve_bind, "Address to listen on (loopback by default)")->capture_default_str();
-  serve_cmd->add_option("--port", serve_port, "TCP port (0: any free port)")->check(CLI::Range(0, 65535))->capture_default_str();
-  serve_cmd->add_option("--port-file", serve_port_file, "Once listening, write the port number to this file "
-                                                        "(for programs that start the server with --port 0)");
+  serve_cmd->add_option("--port", serve_port, "TCP port (0: any free port)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  serve_cmd->add_option("--port-file", serve_port_file,
+                        "Once listening, write the port number to this file "
+                        "(for programs that start the server with --port 0)");
   serve_cmd->add_option("-o,--output", serve_output, "Results folder (default: the scenario's)");
   serve_cmd->add_flag("-q,--quiet", serve_quiet, "Print only the listening line and errors");
   std::optional<double> serve_duration, launch_duration;
-  serve_cmd->add_option("--duration", serve_duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  serve_cmd->add_option("--duration", serve_duration, "Override the scenario's duration (s)")
+      ->check(CLI::PositiveNumber);
 
   std::string agent_file, agent_robot, agent_server = "127.0.0.1:3000", agent_subnet;
   std::optional<int> udp_base;
   bool agent_shared_clock = false;
-  CLI::App* agent_cmd = app.add_subcommand("agent", "Run one robot's controller as its own process: sensors and "
-                                                    "motors through a `sanet serve` server, messages over real UDP");
-  agent_cmd->add_option("--scenario", agent_file, "Scenario file: the robot's controller and parameters, the peers")->required();
+  CLI::App* agent_cmd = app.add_subcommand("agent",
+                                           "Run one robot's controller as its own process: sensors and "
+                                           "motors through a `sanet serve` server, messages over real UDP");
+  agent_cmd->add_option("--scenario", agent_file, "Scenario file: the robot's controller and parameters, the peers")
+      ->required();
   agent_cmd->add_option("--robot", agent_robot, "The robot to drive (its name in the scenario)")->required();
   agent_cmd->add_option("--server", agent_server, "The server, HOST:PORT")->capture_default_str();
-  agent_cmd->add_option("--udp-base", udp_base, "UDP port of node 0; node i uses base + i (default: the "
-                                                "scenario's loop.udp_port, 47000)")->check(CLI::Range(1024, 60000));
-  agent_cmd->add_option("--udp-subnet", agent_subnet, "Instead: node i listens on SUBNET.(i+1) at the base port "
-                                                      "(agents in network namespaces)");
+  agent_cmd
+      ->add_option("--udp-base", udp_base,
+                   "UDP port of node 0; node i uses base + i (default: the "
+                   "scenario's loop.udp_port, 47000)")
+      ->check(CLI::Range(1024, 60000));
+  agent_cmd->add_option("--udp-subnet", agent_subnet,
+                        "Instead: node i listens on SUBNET.(i+1) at the base port "
+                        "(agents in network namespaces)");
   agent_cmd->add_flag("--shared-clock", agent_shared_clock, "The server runs on this machine: share its clock exactly");
 
   std::string launch_file, launch_output;
-  CLI::App* launch_cmd = app.add_subcommand("launch", "Start a server and one agent process per robot on this "
-                                                      "machine, run the scenario in real time, stop them all (also on Ctrl-C)");
+  CLI::App* launch_cmd = app.add_subcommand("launch",
+                                            "Start a server and one agent process per robot on this "
+                                            "machine, run the scenario in real time, stop them all (also on Ctrl-C)");
   launch_cmd->add_option("scenario", launch_file, "Scenario file (YAML)")->required();
   launch_cmd->add_option("-o,--output", launch_output, "Results folder (default: the scenario's)");
-  launch_cmd->add_option("--duration", launch_duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  launch_cmd->add_option("--duration", launch_duration, "Override the scenario's duration (s)")
+      ->check(CLI::PositiveNumber);
   launch_cmd->add_option("--udp-base", udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
 
@@ -380,10 +409,11 @@ int main(int argc, char** argv) {
     if (*validate_cmd) return Validate(validate_file, registry);
     if (*sweep_cmd) return Sweep(sweep_file, sweep_seeds, sweep_output, sweep_quiet, registry);
     if (*serve_cmd)
-      return Serve(serve_file, serve_bind, serve_port, serve_port_file, serve_output, serve_quiet, serve_duration, registry);
-    if (*agent_cmd) return Agent(agent_file, agent_robot, agent_server, udp_base, agent_subnet, agent_shared_clock, registry);
-    if (*launch_cmd)
-      return Launch(launch_file, launch_output, udp_base, launch_duration, registry);
+      return Serve(serve_file, serve_bind, serve_port, serve_port_file, serve_output, serve_quiet, serve_duration,
+                   registry);
+    if (*agent_cmd)
+      return Agent(agent_file, agent_robot, agent_server, udp_base, agent_subnet, agent_shared_clock, registry);
+    if (*launch_cmd) return Launch(launch_file, launch_output, udp_base, launch_duration, registry);
     for (const auto& lib : libraries) registry.LoadLibrary(lib);
     return List(registry);
   } catch (const CLI::ValidationError& e) {

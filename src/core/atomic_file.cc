@@ -8,8 +8,7 @@ namespace sanet {
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), temp_path_(path_ + ".tmp") {
   file_ = std::fopen(temp_path_.c_str(), "wb");
-  if (!file_)
-    throw std::runtime_error("cannot write " + temp_path_ + ": " + std::strerror(errno));
+  if (!file_) throw std::runtime_error("cannot write " + temp_path_ + ": " + std::strerror(errno));
 }
 
 AtomicFile::~AtomicFile() {

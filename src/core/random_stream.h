@@ -15,7 +15,7 @@ class RandomStream {
   RandomStream(std::uint64_t seed, const std::string& stream);
 
   std::uint64_t NextU64();
-  double Uniform();                       // [0, 1)
+  double Uniform();  // [0, 1)
   double Gaussian(double mean, double stddev);
 
  private:

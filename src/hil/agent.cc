@@ -16,9 +16,7 @@ class AgentClock : public agents::HostClock {
  public:
   explicit AgentClock(const RemoteNode& node) : node_(node) {}
   double Now() const override { return node_.Now(); }
-  void After(double delay, std::function<void()> action) override {
-    due_.emplace(Now() + delay, std::move(action));
-  }
+  void After(double delay, std::function<void()> action) override { due_.emplace(Now() + delay, std::move(action)); }
   void RunDue() {
     while (!due_.empty() && due_.begin()->first <= Now()) {
       auto action = std::move(due_.begin()->second);

@@ -36,9 +36,12 @@ std::optional<Bytes> FromHex(const std::string& text) {
 
 const char* DeliveryName(Delivery delivery) {
   switch (delivery) {
-    case Delivery::kUnicast: return "unicast";
-    case Delivery::kBroadcast: return "broadcast";
-    case Delivery::kFlood: return "flood";
+    case Delivery::kUnicast:
+      return "unicast";
+    case Delivery::kBroadcast:
+      return "broadcast";
+    case Delivery::kFlood:
+      return "flood";
   }
   return "unicast";
 }
@@ -70,7 +73,8 @@ std::optional<Message> ParseMsgLine(const ProtocolMessage& line, const std::opti
     *error = "MSG needs {From node} {Delivery unicast|broadcast|flood} {TimeSent} {TimeReceived} {Data hex}";
     return std::nullopt;
   }
-  m.from = *from, m.to = *kind == Delivery::kUnicast ? to : kBroadcast, m.delivery = *kind, m.payload = std::move(*payload);
+  m.from = *from, m.to = *kind == Delivery::kUnicast ? to : kBroadcast, m.delivery = *kind,
+  m.payload = std::move(*payload);
   m.time_sent = *sent, m.time_received = *received;
   if (auto hops = line.Number("Hops")) m.hops = static_cast<int>(*hops);
   return m;

@@ -18,7 +18,8 @@ std::string Millis(double seconds) { return std::to_string(seconds * 1000) + "ms
 bool NetworkNamespaces::Permitted(std::string* why) {
   const std::string probe = "sanetprobe" + std::to_string(::getpid());
   if (Quiet("ip netns add " + probe) != 0) {
-    *why = Quiet("command -v ip") != 0 ? "the ip command (iproute2) is missing" : "'ip netns add' is not permitted here";
+    *why =
+        Quiet("command -v ip") != 0 ? "the ip command (iproute2) is missing" : "'ip netns add' is not permitted here";
     return false;
   }
   Quiet("ip netns del " + probe);
@@ -34,12 +35,14 @@ bool NetworkNamespaces::ShapingPermitted(std::string* why) {
   const bool ok = Quiet("ip netns exec " + probe + " ip link add sanetdummy type dummy") == 0 &&
                   Quiet("ip netns exec " + probe + " tc qdisc add dev sanetdummy root netem delay 1ms") == 0;
   Quiet("ip netns del " + probe);
-  if (!ok) *why = Quiet("command -v tc") != 0 ? "the tc command (iproute2) is missing"
-                                              : "this kernel has no netem queueing discipline (sch_netem)";
+  if (!ok)
+    *why = Quiet("command -v tc") != 0 ? "the tc command (iproute2) is missing"
+                                       : "this kernel has no netem queueing discipline (sch_netem)";
   return ok;
 }
 
-NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sim::LinkShaping& shaping, bool shape)
+NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sim::LinkShaping& shaping,
+                                     bool shape)
     : tag_("sa" + std::to_string(::getpid() % 100000)), nodes_(nodes), shape_(shape) {
   try {
     Run("ip link add " + tag_ + "br type bridge");
@@ -48,7 +51,8 @@ NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, co
     Run("ip link set " + tag_ + "br up");
     for (std::uint32_t node : nodes) {
       if (node >= 253) throw std::runtime_error("network namespaces support node ids below 253");
-      const std::string ns = Namespace(node), host = tag_ + "h" + std::to_string(node), inside = tag_ + "n" + std::to_string(node);
+      const std::string ns = Namespace(node), host = tag_ + "h" + std::to_string(node),
+                        inside = tag_ + "n" + std::to_string(node);
       Run("ip netns add " + ns);
       made_.push_back(ns);
       Run("ip link add " + host + " type veth peer name " + inside);
@@ -59,7 +63,8 @@ NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, co
       Run("ip netns exec " + ns + " ip link set lo up");
       if (shape_ && (shaping.delay > 0 || shaping.jitter > 0 || shaping.loss > 0 || shaping.rate > 0)) {
         std::string netem = "ip netns exec " + ns + " tc qdisc add dev " + inside + " root netem";
-        if (shaping.delay > 0 || shaping.jitter > 0) netem += " delay " + Millis(shaping.delay) + " " + Millis(shaping.jitter);
+        if (shaping.delay > 0 || shaping.jitter > 0)
+          netem += " delay " + Millis(shaping.delay) + " " + Millis(shaping.jitter);
         if (shaping.loss > 0) netem += " loss " + std::to_string(shaping.loss * 100) + "%";
         if (shaping.rate > 0) netem += " rate " + std::to_string(static_cast<long long>(shaping.rate)) + "bit";
         Run(netem);

@@ -23,7 +23,7 @@ class NetworkNamespaces {
   ~NetworkNamespaces();
 
   std::string Namespace(std::uint32_t node) const;
-  static std::string Subnet() { return "10.77.0"; }      // node i is Subnet().(i+1)
+  static std::string Subnet() { return "10.77.0"; }  // node i is Subnet().(i+1)
   static std::string ServerAddress() { return "10.77.0.254"; }
 
  private:

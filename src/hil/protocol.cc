@@ -45,7 +45,9 @@ std::string FormatPrecise(double value) {
   return s;
 }
 
-ProtocolMessage& ProtocolMessage::Add(std::string key, double value) { return Add(std::move(key), FormatNumber(value)); }
+ProtocolMessage& ProtocolMessage::Add(std::string key, double value) {
+  return Add(std::move(key), FormatNumber(value));
+}
 
 ProtocolMessage& ProtocolMessage::Add(std::string key, const std::vector<double>& values) {
   std::string text;
@@ -148,7 +150,8 @@ std::optional<std::string> LineReader::Next(bool* too_long) {
   std::string line = buffer_.substr(0, end);
   std::size_t skip = end + 1;
   // CR LF and LF CR count as one line end.
-  if (skip < buffer_.size() && (buffer_[skip] == '\r' || buffer_[skip] == '\n') && buffer_[skip] != buffer_[end]) ++skip;
+  if (skip < buffer_.size() && (buffer_[skip] == '\r' || buffer_[skip] == '\n') && buffer_[skip] != buffer_[end])
+    ++skip;
   buffer_.erase(0, skip);
   return line;
 }

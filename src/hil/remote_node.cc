@@ -39,7 +39,9 @@ Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
 }  // namespace
 
 RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings)
-    : spec_(spec), id_(robot), settings_(std::move(settings)),
+    : spec_(spec),
+      id_(robot),
+      settings_(std::move(settings)),
       random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
       server_time_at_(std::chrono::steady_clock::now()) {
   const sockaddr_in server = Address(settings_.server_host, settings_.server_port);
@@ -51,7 +53,8 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   if (tcp_ < 0)
-    throw std::runtime_error("cannot reach the server at " + settings_.server_host + ":" + std::to_string(settings_.server_port));
+    throw std::runtime_error("cannot reach the server at " + settings_.server_host + ":" +
+                             std::to_string(settings_.server_port));
   const int yes = 1;
   ::setsockopt(tcp_, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
   ::fcntl(tcp_, F_SETFL, O_NONBLOCK);
@@ -59,7 +62,8 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
   const sockaddr_in mine = Address(HostOf(id_), PortOf(id_));
   if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
-    throw std::runtime_error("cannot bind UDP " + HostOf(id_) + ":" + std::to_string(PortOf(id_)) + ": " + std::strerror(errno));
+    throw std::runtime_error("cannot bind UDP " + HostOf(id_) + ":" + std::to_string(PortOf(id_)) + ": " +
+                             std::strerror(errno));
   ::fcntl(udp_, F_SETFL, O_NONBLOCK);
 
   ProtocolMessage init("INIT");
@@ -165,8 +169,10 @@ void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const M
   if (m.type == "MSG") {
     const std::string* from = m.Get("From");
     std::string error;
-    if (auto message = ParseMsgLine(m, from ? Lookup(*from) : std::nullopt, id_, &error)) deliver(*message);
-    else throw std::runtime_error("server sent a bad MSG line: " + error);
+    if (auto message = ParseMsgLine(m, from ? Lookup(*from) : std::nullopt, id_, &error))
+      deliver(*message);
+    else
+      throw std::runtime_error("server sent a bad MSG line: " + error);
   }
   if (m.type == "SEN") TakeSensor(m);
 }
@@ -215,7 +221,8 @@ bool RemoteNode::Drive(const Twist2D& v) {
     Twist2D c = v;
     c.vx = std::clamp(c.vx, -model.max_speed, model.max_speed);
     c.omega = std::clamp(c.omega, -model.max_turn_rate, model.max_turn_rate);
-    const auto w = robots::DiffDriveKinematics(model.diffdrive.axle_length, model.diffdrive.wheel_radius).WheelSpeeds(c);
+    const auto w =
+        robots::DiffDriveKinematics(model.diffdrive.axle_length, model.diffdrive.wheel_radius).WheelSpeeds(c);
     drive.Add("Left", w[0]).Add("Right", w[1]);
   } else if (model.kind == robots::ModelKind::kOmni3) {
     drive.Add("LinearVelocity", v.vx).Add("LateralVelocity", -v.vy).Add("RotationalVelocity", -v.omega);
@@ -265,8 +272,10 @@ void RemoteNode::SendThroughServer(Delivery delivery, std::optional<NodeId> to, 
 // Agents over UDP; nodes that live in the server through the robot's node there.
 void RemoteNode::Send(NodeId to, const Bytes& payload) {
   if (to >= spec_.nodes.size() || to == id_) return;
-  if (IsAgent(to)) SendUdp(to, kUnicast, payload);
-  else SendThroughServer(Delivery::kUnicast, to, payload);
+  if (IsAgent(to))
+    SendUdp(to, kUnicast, payload);
+  else
+    SendThroughServer(Delivery::kUnicast, to, payload);
 }
 
 void RemoteNode::Broadcast(const Bytes& payload) {

@@ -22,10 +22,10 @@ namespace sanet::hil {
 struct AgentSettings {
   std::string server_host = "127.0.0.1";
   std::uint16_t server_port = 3000;
-  std::string udp_host = "127.0.0.1";  // where every node's UDP socket lives
+  std::string udp_host = "127.0.0.1";   // where every node's UDP socket lives
   std::uint16_t udp_base_port = 47000;  // node i listens on base + i
-  std::string udp_subnet;  // instead: node i listens on <subnet>.(i+1), port udp_base_port (namespaces)
-  bool shared_clock = false;  // the server runs on this machine: take its clock origin
+  std::string udp_subnet;               // instead: node i listens on <subnet>.(i+1), port udp_base_port (namespaces)
+  bool shared_clock = false;            // the server runs on this machine: take its clock origin
 };
 
 class RemoteNode : public Node {

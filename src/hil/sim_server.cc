@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <stdexcept>
 
@@ -21,9 +21,7 @@
 namespace sanet::hil {
 namespace {
 
-double WallNow() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double WallNow() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // sanet's frame is z up (x forward, y left, angles counter-clockwise); USARSim's is z down
 // (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
@@ -77,10 +75,13 @@ void SimServer::AfterStep(const sim::WorldSnapshot& snapshot) {
 nlohmann::ordered_json SimServer::LagSummary() const {
   std::vector<double> sorted = lags_;
   std::sort(sorted.begin(), sorted.end());
-  const auto at = [&](double q) { return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))]; };
+  const auto at = [&](double q) {
+    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))];
+  };
   const double step = world_.spec().physics_step;
   const auto missed = std::count_if(lags_.begin(), lags_.end(), [&](double l) { return l > step; });
-  return {{"steps", lags_.size()}, {"p50_s", at(0.5)}, {"p99_s", at(0.99)}, {"max_s", sorted.empty() ? 0 : sorted.back()},
+  return {{"steps", lags_.size()},      {"p50_s", at(0.5)},
+          {"p99_s", at(0.99)},          {"max_s", sorted.empty() ? 0 : sorted.back()},
           {"missed_deadlines", missed}, {"deadline_s", step}};
 }
 
@@ -100,7 +101,8 @@ void SimServer::Poll() {
     if (c.fd >= 0 && c.robot) SendSensors(c, now);
     if (c.fd >= 0) Flush(c);
   }
-  clients_.erase(std::remove_if(clients_.begin(), clients_.end(), [](const auto& c) { return c->fd < 0; }), clients_.end());
+  clients_.erase(std::remove_if(clients_.begin(), clients_.end(), [](const auto& c) { return c->fd < 0; }),
+                 clients_.end());
 }
 
 void SimServer::Accept() {
@@ -116,9 +118,14 @@ void SimServer::Accept() {
     ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &buffer, sizeof buffer);
     char host[INET_ADDRSTRLEN];
     ::inet_ntop(AF_INET, &peer.sin_addr, host, sizeof host);
-    clients_.push_back(std::make_unique<Client>(
-        Client{fd, std::string(host) + ":" + std::to_string(ntohs(peer.sin_port)), LineReader(settings_.max_line), "", {},
-               0, 0, WallNow()}));
+    clients_.push_back(std::make_unique<Client>(Client{fd,
+                                                       std::string(host) + ":" + std::to_string(ntohs(peer.sin_port)),
+                                                       LineReader(settings_.max_line),
+                                                       "",
+                                                       {},
+                                                       0,
+                                                       0,
+                                                       WallNow()}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
@@ -142,8 +149,10 @@ void SimServer::Read(Client& c) {
   while (auto line = c.reader.Next(&too_long)) {
     if (line->find_first_not_of(" \t") == std::string::npos) continue;
     std::string error;
-    if (auto m = ParseLine(*line, &error)) Handle(c, *m);
-    else Error(c, "malformed line: " + error);
+    if (auto m = ParseLine(*line, &error))
+      Handle(c, *m);
+    else
+      Error(c, "malformed line: " + error);
     if (c.fd < 0) return;
   }
   if (too_long) {
@@ -177,15 +186,18 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "LOG" || m.type == "TRANSITION" || m.type == "METRIC") return Report(c, m);
   if (m.type == "GETCONF") {
     ProtocolMessage reply{"CONF"};
-    reply.Add("Type", "GroundVehicle").Add("Name", world_.NameOf(id))
+    reply.Add("Type", "GroundVehicle")
+        .Add("Name", world_.NameOf(id))
         .Add("SteeringType", spec.kind == robots::ModelKind::kOmni3 ? "OmniDrive" : "SkidSteered")
-        .Add("MaxSpeed", spec.max_speed).Add("MaxTurnRate", spec.max_turn_rate);
+        .Add("MaxSpeed", spec.max_speed)
+        .Add("MaxTurnRate", spec.max_turn_rate);
     return Send(c, reply);
   }
   if (m.type == "GETGEO") {
     ProtocolMessage reply{"GEO"};
     const bool omni = spec.kind == robots::ModelKind::kOmni3;
-    reply.Add("Type", "GroundVehicle").Add("Name", world_.NameOf(id))
+    reply.Add("Type", "GroundVehicle")
+        .Add("Name", world_.NameOf(id))
         .Add("WheelRadius", omni ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius)
         .Add("WheelSeparation", omni ? 2 * spec.omni3.wheel_distance : spec.diffdrive.axle_length);
     return Send(c, reply);
@@ -221,18 +233,23 @@ void SimServer::Drive(Client& c, const ProtocolMessage& m) {
     const auto left = m.Number("Left"), right = m.Number("Right");
     if (!left || !right) return Error(c, "DRIVE needs numbers for both {Left} and {Right}");
     double l = *left, r = *right;
-    if (const std::string* normalized = m.Get("Normalized"); normalized && (*normalized == "True" || *normalized == "true")) {
-      const double radius = spec.kind == robots::ModelKind::kOmni3 ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius;
+    if (const std::string* normalized = m.Get("Normalized");
+        normalized && (*normalized == "True" || *normalized == "true")) {
+      const double radius =
+          spec.kind == robots::ModelKind::kOmni3 ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius;
       const double top = spec.max_speed / radius;  // rad/s at 100 %
       l = std::clamp(l, -100.0, 100.0) / 100 * top, r = std::clamp(r, -100.0, 100.0) / 100 * top;
     }
-    if (spec.kind != robots::ModelKind::kDiffDrive) return Error(c, "{Left} {Right} drive a diffdrive; use {LinearVelocity} ... for omni3");
+    if (spec.kind != robots::ModelKind::kDiffDrive)
+      return Error(c, "{Left} {Right} drive a diffdrive; use {LinearVelocity} ... for omni3");
     node.SetWheelSpeeds({l, r});
     return;
   }
   if (m.Get("LinearVelocity") || m.Get("RotationalVelocity") || m.Get("LateralVelocity")) {
-    const auto v = m.Number("LinearVelocity"), lateral = m.Number("LateralVelocity"), w = m.Number("RotationalVelocity");
-    if ((m.Get("LinearVelocity") && !v) || (m.Get("LateralVelocity") && !lateral) || (m.Get("RotationalVelocity") && !w))
+    const auto v = m.Number("LinearVelocity"), lateral = m.Number("LateralVelocity"),
+               w = m.Number("RotationalVelocity");
+    if ((m.Get("LinearVelocity") && !v) || (m.Get("LateralVelocity") && !lateral) ||
+        (m.Get("RotationalVelocity") && !w))
       return Error(c, "DRIVE velocities must be numbers");
     node.Drive({v.value_or(0), -lateral.value_or(0), -w.value_or(0)});  // USARSim: y right, yaw clockwise
     return;
@@ -248,7 +265,9 @@ void SimServer::SendSensors(Client& c, double now) {
     const Pose2D truth = model.GroundTruth();
     ProtocolMessage gt{"SEN"};
     const auto p = ToUsarsim(truth);
-    gt.Add("Time", time).Add("Type", "GroundTruth").Add("Name", "GroundTruth")
+    gt.Add("Time", time)
+        .Add("Type", "GroundTruth")
+        .Add("Name", "GroundTruth")
         .Add("Location", std::vector<double>{p[0], p[1], model.body().position3().z})
         .Add("Orientation", std::vector<double>{0, 0, p[2]});
     Send(c, gt);
@@ -261,8 +280,12 @@ void SimServer::SendSensors(Client& c, double now) {
       ProtocolMessage laser{"SEN"};
       const double resolution = scan->angles.size() > 1 ? scan->angles[1] - scan->angles[0] : 0;
       const double fov = scan->angles.empty() ? 0 : scan->angles.back() - scan->angles.front();
-      laser.Add("Time", time).Add("Type", "RangeScanner").Add("Name", "Scanner1").Add("Resolution", resolution)
-          .Add("FOV", fov).Add("Range", scan->ranges);
+      laser.Add("Time", time)
+          .Add("Type", "RangeScanner")
+          .Add("Name", "Scanner1")
+          .Add("Resolution", resolution)
+          .Add("FOV", fov)
+          .Add("Range", scan->ranges);
       Send(c, laser);
     }
     if (auto ir = model.Ir()) {
@@ -276,8 +299,14 @@ void SimServer::SendSensors(Client& c, double now) {
   if (now + 1e-9 >= c.next_status) {
     c.next_status = now + settings_.status_period;
     ProtocolMessage status{"STA"};
-    status.Add("Type", "GroundVehicle").Add("Time", now).Add("FrontSteer", 0.0).Add("RearSteer", 0.0)
-        .Add("LightToggle", "False").Add("LightIntensity", "0").Add("Battery", "3600").Add("View", "-1");
+    status.Add("Type", "GroundVehicle")
+        .Add("Time", now)
+        .Add("FrontSteer", 0.0)
+        .Add("RearSteer", 0.0)
+        .Add("LightToggle", "False")
+        .Add("LightIntensity", "0")
+        .Add("Battery", "3600")
+        .Add("View", "-1");
     Send(c, status);
   }
 }
@@ -285,7 +314,8 @@ void SimServer::SendSensors(Client& c, double now) {
 void SimServer::Send(Client& c, const ProtocolMessage& m) {
   if (c.fd < 0) return;
   c.out += FormatLine(m);
-  if (c.out.size() > settings_.max_backlog) Drop(c, "not reading (more than " + std::to_string(settings_.max_backlog) + " bytes waiting)");
+  if (c.out.size() > settings_.max_backlog)
+    Drop(c, "not reading (more than " + std::to_string(settings_.max_backlog) + " bytes waiting)");
 }
 
 void SimServer::Error(Client& c, const std::string& why) {

@@ -22,12 +22,12 @@
 namespace sanet::hil {
 
 struct ServerSettings {
-  std::string bind = "127.0.0.1";   // loopback unless told otherwise
-  std::uint16_t port = 3000;        // 0: any free port
-  double sensor_period = 0.1;       // s between SEN lines per sensor
-  double status_period = 0.2;       // s between STA lines
-  double poll_period = 0.005;       // s between socket polls
-  std::size_t max_line = 4096;      // bytes; a longer line closes the connection
+  std::string bind = "127.0.0.1";     // loopback unless told otherwise
+  std::uint16_t port = 3000;          // 0: any free port
+  double sensor_period = 0.1;         // s between SEN lines per sensor
+  double status_period = 0.2;         // s between STA lines
+  double poll_period = 0.005;         // s between socket polls
+  std::size_t max_line = 4096;        // bytes; a longer line closes the connection
   std::size_t max_backlog = 1 << 20;  // bytes waiting for a client that does not read: then it is dropped
   double stall_timeout = 2.0;         // s a client may leave its lines unread before it is dropped
 };

@@ -12,8 +12,7 @@ ns3::TypeId BodyMobilityModel::GetTypeId() {
   return tid;
 }
 
-void BodyMobilityModel::Bind(std::function<ns3::Vector()> position,
-                             std::function<ns3::Vector()> velocity) {
+void BodyMobilityModel::Bind(std::function<ns3::Vector()> position, std::function<ns3::Vector()> velocity) {
   position_ = std::move(position);
   velocity_ = std::move(velocity);
 }

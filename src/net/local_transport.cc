@@ -7,8 +7,7 @@ namespace sanet::net {
 LocalTransport::LocalTransport(std::size_t node_count, double latency_s)
     : node_count_(node_count), latency_(latency_s), off_(node_count, false) {}
 
-void LocalTransport::Deliver(NodeId receiver, NodeId from, NodeId to, Delivery delivery,
-                             const Bytes& payload) {
+void LocalTransport::Deliver(NodeId receiver, NodeId from, NodeId to, Delivery delivery, const Bytes& payload) {
   if (off_[from] || off_[receiver]) return;
   Message m;
   m.delivery = delivery;

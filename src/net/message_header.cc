@@ -38,8 +38,8 @@ std::uint32_t MessageHeader::Deserialize(ns3::Buffer::Iterator i) {
 }
 
 void MessageHeader::Print(std::ostream& os) const {
-  os << "sanet kind=" << int(kind) << " origin=" << origin << " destination=" << destination
-     << " seq=" << sequence << " hops=" << int(hops) << " ttl=" << int(ttl);
+  os << "sanet kind=" << int(kind) << " origin=" << origin << " destination=" << destination << " seq=" << sequence
+     << " hops=" << int(hops) << " ttl=" << int(ttl);
 }
 
 }  // namespace sanet::net

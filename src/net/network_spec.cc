@@ -4,29 +4,39 @@ namespace sanet::net {
 
 std::vector<double> DataRates(WifiStandard standard) {
   switch (standard) {
-    case WifiStandard::k80211b: return {1, 2, 5.5, 11};
+    case WifiStandard::k80211b:
+      return {1, 2, 5.5, 11};
     case WifiStandard::k80211g:
-    case WifiStandard::k80211a: return {6, 9, 12, 18, 24, 36, 48, 54};
+    case WifiStandard::k80211a:
+      return {6, 9, 12, 18, 24, 36, 48, 54};
   }
   return {};
 }
 
 const char* StandardName(WifiStandard standard) {
   switch (standard) {
-    case WifiStandard::k80211b: return "802.11b";
-    case WifiStandard::k80211g: return "802.11g";
-    case WifiStandard::k80211a: return "802.11a";
+    case WifiStandard::k80211b:
+      return "802.11b";
+    case WifiStandard::k80211g:
+      return "802.11g";
+    case WifiStandard::k80211a:
+      return "802.11a";
   }
   return "?";
 }
 
 const char* RoutingName(Routing routing) {
   switch (routing) {
-    case Routing::kNone: return "none";
-    case Routing::kAodv: return "aodv";
-    case Routing::kOlsr: return "olsr";
-    case Routing::kDsdv: return "dsdv";
-    case Routing::kDsr: return "dsr";
+    case Routing::kNone:
+      return "none";
+    case Routing::kAodv:
+      return "aodv";
+    case Routing::kOlsr:
+      return "olsr";
+    case Routing::kDsdv:
+      return "dsdv";
+    case Routing::kDsr:
+      return "dsr";
   }
   return "?";
 }

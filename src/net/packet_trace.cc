@@ -22,13 +22,20 @@ const char* EventName(int e) {
 
 const char* DropName(ns3::Ipv4L3Protocol::DropReason reason) {
   switch (reason) {
-    case ns3::Ipv4L3Protocol::DROP_TTL_EXPIRED: return "ttl_expired";
-    case ns3::Ipv4L3Protocol::DROP_NO_ROUTE: return "no_route";
-    case ns3::Ipv4L3Protocol::DROP_BAD_CHECKSUM: return "bad_checksum";
-    case ns3::Ipv4L3Protocol::DROP_INTERFACE_DOWN: return "interface_down";
-    case ns3::Ipv4L3Protocol::DROP_ROUTE_ERROR: return "route_error";
-    case ns3::Ipv4L3Protocol::DROP_FRAGMENT_TIMEOUT: return "fragment_timeout";
-    case ns3::Ipv4L3Protocol::DROP_DUPLICATE: return "duplicate";
+    case ns3::Ipv4L3Protocol::DROP_TTL_EXPIRED:
+      return "ttl_expired";
+    case ns3::Ipv4L3Protocol::DROP_NO_ROUTE:
+      return "no_route";
+    case ns3::Ipv4L3Protocol::DROP_BAD_CHECKSUM:
+      return "bad_checksum";
+    case ns3::Ipv4L3Protocol::DROP_INTERFACE_DOWN:
+      return "interface_down";
+    case ns3::Ipv4L3Protocol::DROP_ROUTE_ERROR:
+      return "route_error";
+    case ns3::Ipv4L3Protocol::DROP_FRAGMENT_TIMEOUT:
+      return "fragment_timeout";
+    case ns3::Ipv4L3Protocol::DROP_DUPLICATE:
+      return "duplicate";
   }
   return "other";
 }
@@ -47,31 +54,30 @@ void PacketTrace::Open(trace::ResultsFolder& folder) {
 
 void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {
   auto ip = n->GetObject<ns3::Ipv4L3Protocol>();
+  ip->TraceConnectWithoutContext("SendOutgoing",
+                                 ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
+                                     [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                                       Record(node, Event::kSent, h, p);
+                                     }));
+  ip->TraceConnectWithoutContext("UnicastForward",
+                                 ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
+                                     [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                                       // AODV sends a packet that waited for a route back through the
+                                       // forwarding path of its own node: that is not relaying.
+                                       if (book_.Find(h.GetSource()) != node) Record(node, Event::kForwarded, h, p);
+                                     }));
+  ip->TraceConnectWithoutContext("LocalDeliver",
+                                 ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
+                                     [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                                       Record(node, Event::kReceived, h, p);
+                                       if (spec_.routing == Routing::kAodv) CheckRouteReply(node, h, p);
+                                     }));
   ip->TraceConnectWithoutContext(
-      "SendOutgoing", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
-                          [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
-                            Record(node, Event::kSent, h, p);
-                          }));
-  ip->TraceConnectWithoutContext(
-      "UnicastForward", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
-                            [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
-                              // AODV sends a packet that waited for a route back through the
-                              // forwarding path of its own node: that is not relaying.
-                              if (book_.Find(h.GetSource()) != node) Record(node, Event::kForwarded, h, p);
-                            }));
-  ip->TraceConnectWithoutContext(
-      "LocalDeliver", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, uint32_t>(
-                          [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
-                            Record(node, Event::kReceived, h, p);
-                            if (spec_.routing == Routing::kAodv) CheckRouteReply(node, h, p);
-                          }));
-  ip->TraceConnectWithoutContext(
-      "Drop", ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>,
-                            ns3::Ipv4L3Protocol::DropReason, ns3::Ptr<ns3::Ipv4>, uint32_t>(
-                  [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p,
-                               ns3::Ipv4L3Protocol::DropReason reason, ns3::Ptr<ns3::Ipv4>, uint32_t) {
-                    Record(node, Event::kDropped, h, p, DropName(reason));
-                  }));
+      "Drop",
+      ns3::Callback<void, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>, ns3::Ipv4L3Protocol::DropReason,
+                    ns3::Ptr<ns3::Ipv4>, uint32_t>(
+          [this, node](const ns3::Ipv4Header& h, ns3::Ptr<const ns3::Packet> p, ns3::Ipv4L3Protocol::DropReason reason,
+                       ns3::Ptr<ns3::Ipv4>, uint32_t) { Record(node, Event::kDropped, h, p, DropName(reason)); }));
   for (std::uint32_t i = 0; i < n->GetNDevices(); ++i) {
     auto wifi = ns3::DynamicCast<ns3::WifiNetDevice>(n->GetDevice(i));
     if (!wifi) continue;
@@ -105,21 +111,29 @@ std::string PacketTrace::Peer(ns3::Ipv4Address address) const {
   return s.str();
 }
 
-void PacketTrace::Record(NodeId node, Event event, const ns3::Ipv4Header& ip,
-                         ns3::Ptr<const ns3::Packet> packet, const char* why) {
+void PacketTrace::Record(NodeId node, Event event, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet,
+                         const char* why) {
   PacketCounts& c = counts_[node];
   switch (event) {
-    case Event::kSent: ++c.sent; break;
-    case Event::kReceived: ++c.received; break;
-    case Event::kForwarded: ++c.forwarded; break;
-    case Event::kDropped: ++c.dropped; break;
+    case Event::kSent:
+      ++c.sent;
+      break;
+    case Event::kReceived:
+      ++c.received;
+      break;
+    case Event::kForwarded:
+      ++c.forwarded;
+      break;
+    case Event::kDropped:
+      ++c.dropped;
+      break;
   }
   if (logs_.empty()) return;
   char time[32];
   std::snprintf(time, sizeof time, "%.6f", ns3::Simulator::Now().GetSeconds());
   const ns3::Ipv4Address peer = event == Event::kReceived ? ip.GetSource() : ip.GetDestination();
-  logs_[node]->Row(std::string(time) + "," + EventName(static_cast<int>(event)) + "," + Protocol(ip, packet) +
-                   "," + std::to_string(packet->GetSize()) + "," + Peer(peer) + "," + why);
+  logs_[node]->Row(std::string(time) + "," + EventName(static_cast<int>(event)) + "," + Protocol(ip, packet) + "," +
+                   std::to_string(packet->GetSize()) + "," + Peer(peer) + "," + why);
 }
 
 void PacketTrace::RouteNeeded(NodeId node, NodeId destination, double now) {

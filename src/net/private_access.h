@@ -15,9 +15,9 @@ struct PrivateMember {
 
 // Declares tag `Name` for member `Member` of type `Type` in class `Class`; use it inside
 // namespace sanet::net, then read the member with `object.*Get(Name())`.
-#define SANET_PRIVATE_MEMBER(Name, Class, Type, Member)                   \
-  struct Name {                                                          \
-    using type = Type Class::*;                                          \
-    friend type Get(Name);                                               \
-  };                                                                     \
+#define SANET_PRIVATE_MEMBER(Name, Class, Type, Member) \
+  struct Name {                                         \
+    using type = Type Class::*;                         \
+    friend type Get(Name);                              \
+  };                                                    \
   template struct PrivateMember<Name, &Class::Member>

@@ -36,8 +36,7 @@ ns3::aodv::RoutingTable& AodvTableOf(const ns3::Ptr<ns3::Node>& node) {
 
 std::vector<RouteEntry> RoutingView::RoutingTable() const {
   std::vector<RouteEntry> out;
-  auto add = [&](ns3::Ipv4Address destination, ns3::Ipv4Address next_hop, int hops, bool valid,
-                 double expires_in) {
+  auto add = [&](ns3::Ipv4Address destination, ns3::Ipv4Address next_hop, int hops, bool valid, double expires_in) {
     const auto d = book_.Find(destination), n = book_.Find(next_hop);
     if (d && n) out.push_back({*d, *n, hops, valid, expires_in});  // skips broadcast and loopback
   };
@@ -65,7 +64,8 @@ std::vector<RouteEntry> RoutingView::RoutingTable() const {
     case Routing::kNone:
       break;
   }
-  std::sort(out.begin(), out.end(), [](const RouteEntry& a, const RouteEntry& b) { return a.destination < b.destination; });
+  std::sort(out.begin(), out.end(),
+            [](const RouteEntry& a, const RouteEntry& b) { return a.destination < b.destination; });
   return out;
 }
 

@@ -23,8 +23,7 @@ namespace sanet::net {
 class RoutingView : public NetworkView {
  public:
   // `probe` sends a route probe from this node towards a destination.
-  RoutingView(Routing routing, ns3::Ptr<ns3::Node> node, const AddressBook& book,
-              std::function<void(NodeId)> probe)
+  RoutingView(Routing routing, ns3::Ptr<ns3::Node> node, const AddressBook& book, std::function<void(NodeId)> probe)
       : routing_(routing), node_(node), book_(book), probe_(std::move(probe)) {}
 
   std::string Protocol() const override { return RoutingName(routing_); }

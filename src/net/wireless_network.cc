@@ -2,25 +2,25 @@
 
 #include <ns3/aodv-helper.h>
 #include <ns3/aodv-routing-protocol.h>
-#include <ns3/dsdv-routing-protocol.h>
-#include <ns3/dsr-routing.h>
-#include <ns3/olsr-routing-protocol.h>
-#include <ns3/yans-wifi-channel.h>
-#include <ns3/double.h>
 #include <ns3/boolean.h>
+#include <ns3/double.h>
 #include <ns3/dsdv-helper.h>
+#include <ns3/dsdv-routing-protocol.h>
 #include <ns3/dsr-helper.h>
 #include <ns3/dsr-main-helper.h>
+#include <ns3/dsr-routing.h>
 #include <ns3/inet-socket-address.h>
 #include <ns3/internet-stack-helper.h>
 #include <ns3/ipv4-address-helper.h>
 #include <ns3/ipv4-static-routing-helper.h>
 #include <ns3/olsr-helper.h>
+#include <ns3/olsr-routing-protocol.h>
 #include <ns3/simulator.h>
 #include <ns3/string.h>
 #include <ns3/udp-socket-factory.h>
 #include <ns3/wifi-helper.h>
 #include <ns3/wifi-net-device.h>
+#include <ns3/yans-wifi-channel.h>
 #include <ns3/yans-wifi-helper.h>
 
 #include <cmath>
@@ -46,9 +46,12 @@ std::string RateName(double mbps) {
 // ns-3's names of the modes (data rates) of each standard.
 std::string ModeName(WifiStandard standard, double mbps) {
   switch (standard) {
-    case WifiStandard::k80211b: return "DsssRate" + RateName(mbps) + "Mbps";
-    case WifiStandard::k80211g: return "ErpOfdmRate" + RateName(mbps) + "Mbps";
-    case WifiStandard::k80211a: return "OfdmRate" + RateName(mbps) + "Mbps";
+    case WifiStandard::k80211b:
+      return "DsssRate" + RateName(mbps) + "Mbps";
+    case WifiStandard::k80211g:
+      return "ErpOfdmRate" + RateName(mbps) + "Mbps";
+    case WifiStandard::k80211a:
+      return "OfdmRate" + RateName(mbps) + "Mbps";
   }
   return "";
 }
@@ -95,9 +98,8 @@ void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
   const std::string control_mode = ModeName(spec_.standard, DataRates(spec_.standard).front());
   // Broadcasts (hence AODV's requests and floods) go at the standard's lowest rate, named here
   // because ns-3's own default for them is the first basic rate (1 Mbps DSSS even for 802.11g).
-  wifi.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode),
-                               "ControlMode", ns3::StringValue(control_mode), "NonUnicastMode",
-                               ns3::StringValue(control_mode));
+  wifi.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode), "ControlMode",
+                               ns3::StringValue(control_mode), "NonUnicastMode", ns3::StringValue(control_mode));
 
   ns3::YansWifiChannelHelper channel;
   if (spec_.delay == DelayModel::kConstantSpeed) {
@@ -105,15 +107,15 @@ void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
   } else {
     // ns-3's default draws up to a whole second per frame, longer than any acknowledgement
     // timeout: the scenario bounds it.
-    channel.SetPropagationDelay("ns3::RandomPropagationDelayModel", "Variable",
-                                ns3::StringValue("ns3::UniformRandomVariable[Min=0.0|Max=" +
-                                                 std::to_string(spec_.random_delay_max) + "]"));
+    channel.SetPropagationDelay(
+        "ns3::RandomPropagationDelayModel", "Variable",
+        ns3::StringValue("ns3::UniformRandomVariable[Min=0.0|Max=" + std::to_string(spec_.random_delay_max) + "]"));
   }
   switch (spec_.loss) {
     case LossModel::kLogDistance:
       channel.AddPropagationLoss("ns3::LogDistancePropagationLossModel", "Exponent", ns3::DoubleValue(spec_.exponent),
-                                 "ReferenceDistance", ns3::DoubleValue(spec_.reference_distance),
-                                 "ReferenceLoss", ns3::DoubleValue(spec_.reference_loss));
+                                 "ReferenceDistance", ns3::DoubleValue(spec_.reference_distance), "ReferenceLoss",
+                                 ns3::DoubleValue(spec_.reference_loss));
       break;
     case LossModel::kFriis:
       channel.AddPropagationLoss("ns3::FriisPropagationLossModel", "Frequency",
@@ -172,10 +174,16 @@ void WirelessNetwork::InstallInternet() {
       aodv.Set("EnableHello", ns3::BooleanValue(spec_.aodv_hello));
       internet.SetRoutingHelper(aodv);
       break;
-    case Routing::kOlsr: internet.SetRoutingHelper(olsr); break;
-    case Routing::kDsdv: internet.SetRoutingHelper(dsdv); break;
+    case Routing::kOlsr:
+      internet.SetRoutingHelper(olsr);
+      break;
+    case Routing::kDsdv:
+      internet.SetRoutingHelper(dsdv);
+      break;
     case Routing::kNone:
-    case Routing::kDsr: internet.SetRoutingHelper(one_hop); break;
+    case Routing::kDsr:
+      internet.SetRoutingHelper(one_hop);
+      break;
   }
   internet.Install(nodes_);
   if (spec_.routing == Routing::kDsr) {
@@ -194,8 +202,8 @@ void WirelessNetwork::OpenSockets() {
     socket->Bind(ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), spec_.port));
     socket->SetAllowBroadcast(true);
     socket->SetIpRecvTtl(true);
-    socket->SetRecvCallback(ns3::Callback<void, ns3::Ptr<ns3::Socket>>(
-        [this, id](ns3::Ptr<ns3::Socket> s) { Receive(id, s); }));
+    socket->SetRecvCallback(
+        ns3::Callback<void, ns3::Ptr<ns3::Socket>>([this, id](ns3::Ptr<ns3::Socket> s) { Receive(id, s); }));
     sockets_.push_back(socket);
     views_.push_back(std::make_unique<RoutingView>(spec_.routing, nodes_.Get(id), book_, [this, id](NodeId to) {
       if (to >= nodes_.GetN() || to == id) return;
@@ -318,13 +326,12 @@ void WirelessNetwork::OpenPcap(const std::string& tmp) {
               if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
             }));
     phy->TraceConnectWithoutContext(
-        "MonitorSnifferRx",
-        ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
-                      ns3::SignalNoiseDbm, uint16_t>(
-            [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
-                       ns3::SignalNoiseDbm, uint16_t) {
-              if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
-            }));
+        "MonitorSnifferRx", ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
+                                          ns3::SignalNoiseDbm, uint16_t>(
+                                [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
+                                           ns3::SignalNoiseDbm, uint16_t) {
+                                  if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
+                                }));
   }
 }
 

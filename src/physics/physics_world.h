@@ -23,10 +23,10 @@ struct Vec3 {
 enum class Solver { kExact, kQuick };
 
 struct WorldSettings {
-  double gravity = 9.81;          // m/s^2, pointing down (-z)
-  double ground_friction = 1.0;   // Coulomb coefficient for bodies on the ground
+  double gravity = 9.81;         // m/s^2, pointing down (-z)
+  double ground_friction = 1.0;  // Coulomb coefficient for bodies on the ground
   Solver solver = Solver::kExact;
-  int solver_iterations = 20;     // iterations of the quick solver per step
+  int solver_iterations = 20;  // iterations of the quick solver per step
 };
 
 // An axis-aligned box on the ground, turned by `yaw` about its vertical axis.
@@ -40,33 +40,33 @@ struct StaticBox {
 // hinges; anisotropic friction (grip along the rolling direction, slip along the wheel axis)
 // stands in for the rollers of a Swedish wheel.
 struct Omni3Spec {
-  double body_radius = 0.19;     // m, lower cylinder; the upper one is 80 % of it
-  double body_height = 0.2;      // m, both cylinders together
-  double body_mass = 3.2;        // kg
-  double ground_clearance = 0.02;  // m, under the lower cylinder
-  double wheel_radius = 0.04;    // m
-  double wheel_mass = 0.1;       // kg each
-  double wheel_distance = 0.13;  // m, from the centre to each wheel's contact point
+  double body_radius = 0.19;                                      // m, lower cylinder; the upper one is 80 % of it
+  double body_height = 0.2;                                       // m, both cylinders together
+  double body_mass = 3.2;                                         // kg
+  double ground_clearance = 0.02;                                 // m, under the lower cylinder
+  double wheel_radius = 0.04;                                     // m
+  double wheel_mass = 0.1;                                        // kg each
+  double wheel_distance = 0.13;                                   // m, from the centre to each wheel's contact point
   std::array<double, 3> wheel_angles{kPi / 3, kPi, 5 * kPi / 3};  // rad, from forward
-  double max_wheel_torque = 0.5;  // N m, the motors' limit
-  double grip_friction = 1.0;     // along the rolling direction
-  double slip_friction = 0.01;    // along the wheel axis
+  double max_wheel_torque = 0.5;                                  // N m, the motors' limit
+  double grip_friction = 1.0;                                     // along the rolling direction
+  double slip_friction = 0.01;                                    // along the wheel axis
 };
 
 // Pioneer-P2DX-like differential drive: a box chassis, two driven wheels on one axle and a
 // passive (frictionless) caster behind.
 struct DiffDriveSpec {
-  double body_length = 0.44;    // m
-  double body_width = 0.38;     // m
-  double body_height = 0.22;    // m
-  double body_mass = 9.0;       // kg
+  double body_length = 0.44;       // m
+  double body_width = 0.38;        // m
+  double body_height = 0.22;       // m
+  double body_mass = 9.0;          // kg
   double ground_clearance = 0.05;  // m
-  double wheel_radius = 0.0975;  // m
-  double wheel_mass = 0.5;       // kg each
-  double axle_length = 0.33;     // m, between the wheels' contact points
-  double caster_offset = 0.2;    // m, behind the axle
-  double caster_radius = 0.03;   // m
-  double max_wheel_torque = 3.0;  // N m
+  double wheel_radius = 0.0975;    // m
+  double wheel_mass = 0.5;         // kg each
+  double axle_length = 0.33;       // m, between the wheels' contact points
+  double caster_offset = 0.2;      // m, behind the axle
+  double caster_radius = 0.03;     // m
+  double max_wheel_torque = 3.0;   // N m
   double wheel_friction = 1.0;
 };
 
@@ -111,8 +111,7 @@ class PhysicsWorld {
 
   // Distance along the ray from `origin` in direction `direction` (unit) to the first surface,
   // ignoring the ground and the parts of `ignore`; `max_range` if nothing is nearer.
-  virtual double cast_ray(const Vec3& origin, const Vec3& direction, double max_range,
-                          const Body* ignore) const = 0;
+  virtual double cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const = 0;
 
   virtual void step(double dt) = 0;
   virtual std::size_t awake_body_count() const = 0;

@@ -28,7 +28,7 @@ class Omni3Kinematics : public Kinematics {
   Twist2D BodyTwist(const std::vector<double>& wheel_rates) const override;
 
  private:
-  double m_[3][3];      // rim speeds = m * (vx, vy, omega)
+  double m_[3][3];  // rim speeds = m * (vx, vy, omega)
   double m_inv_[3][3];
   double wheel_radius_;
 };
@@ -36,8 +36,7 @@ class Omni3Kinematics : public Kinematics {
 // Two wheels on one axle; wheel 0 left, wheel 1 right.
 class DiffDriveKinematics : public Kinematics {
  public:
-  DiffDriveKinematics(double axle_length, double wheel_radius)
-      : axle_(axle_length), radius_(wheel_radius) {}
+  DiffDriveKinematics(double axle_length, double wheel_radius) : axle_(axle_length), radius_(wheel_radius) {}
   bool holonomic() const override { return false; }
   std::vector<double> WheelSpeeds(const Twist2D& body) const override;
   Twist2D BodyTwist(const std::vector<double>& wheel_rates) const override;

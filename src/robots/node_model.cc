@@ -7,15 +7,18 @@ namespace sanet::robots {
 
 const char* ModelName(ModelKind kind) {
   switch (kind) {
-    case ModelKind::kMote: return "mote";
-    case ModelKind::kOmni3: return "omni3";
-    case ModelKind::kDiffDrive: return "diffdrive";
+    case ModelKind::kMote:
+      return "mote";
+    case ModelKind::kOmni3:
+      return "omni3";
+    case ModelKind::kDiffDrive:
+      return "diffdrive";
   }
   return "?";
 }
 
 RangeSensorSpec DefaultIr(const ModelSpec& m) {
-  const double radius = m.kind == ModelKind::kOmni3 ? m.omni3.body_radius
+  const double radius = m.kind == ModelKind::kOmni3       ? m.omni3.body_radius
                         : m.kind == ModelKind::kDiffDrive ? m.diffdrive.body_width / 2
                                                           : m.mote.size / 2;
   return RangeSensorSpec::Ring(6, radius, 0.06, 0.8);
@@ -50,8 +53,8 @@ ModelSpec ModelSpec::Defaults(ModelKind kind) {
   return s;
 }
 
-NodeModel::NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const Pose2D& pose,
-                     std::uint64_t seed, const std::string& stream_prefix)
+NodeModel::NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const Pose2D& pose, std::uint64_t seed,
+                     const std::string& stream_prefix)
     : world_(world),
       spec_(spec),
       ground_truth_(spec.sensors.ground_truth_noise_position, spec.sensors.ground_truth_noise_angle,
@@ -62,24 +65,21 @@ NodeModel::NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const 
       break;
     case ModelKind::kOmni3:
       vehicle_ = world.add_omni3(spec.omni3, pose);
-      kinematics_ = std::make_unique<Omni3Kinematics>(spec.omni3.wheel_angles,
-                                                      spec.omni3.wheel_distance, spec.omni3.wheel_radius);
+      kinematics_ = std::make_unique<Omni3Kinematics>(spec.omni3.wheel_angles, spec.omni3.wheel_distance,
+                                                      spec.omni3.wheel_radius);
       break;
     case ModelKind::kDiffDrive:
       vehicle_ = world.add_diffdrive(spec.diffdrive, pose);
-      kinematics_ = std::make_unique<DiffDriveKinematics>(spec.diffdrive.axle_length,
-                                                          spec.diffdrive.wheel_radius);
+      kinematics_ = std::make_unique<DiffDriveKinematics>(spec.diffdrive.axle_length, spec.diffdrive.wheel_radius);
       break;
   }
   if (vehicle_) {
     body_ = vehicle_;
-    odometry_.emplace(*kinematics_, pose, spec.sensors.odometry_noise,
-                      RandomStream(seed, stream_prefix + "/odometry"));
+    odometry_.emplace(*kinematics_, pose, spec.sensors.odometry_noise, RandomStream(seed, stream_prefix + "/odometry"));
   }
   if (spec.sensors.ir) ir_.emplace(*spec.sensors.ir, RandomStream(seed, stream_prefix + "/ir"));
   if (spec.sensors.laser) laser_.emplace(*spec.sensors.laser, RandomStream(seed, stream_prefix + "/laser"));
-  if (spec.sensors.bearing)
-    bearing_.emplace(*spec.sensors.bearing, RandomStream(seed, stream_prefix + "/bearing"));
+  if (spec.sensors.bearing) bearing_.emplace(*spec.sensors.bearing, RandomStream(seed, stream_prefix + "/bearing"));
 }
 
 bool NodeModel::Drive(const Twist2D& velocity) {

@@ -46,8 +46,8 @@ RangeSensorSpec DefaultLaser(const ModelSpec& model);
 class NodeModel {
  public:
   // `seed` and `stream_prefix` give each sensor its own random stream.
-  NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const Pose2D& pose,
-            std::uint64_t seed, const std::string& stream_prefix);
+  NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const Pose2D& pose, std::uint64_t seed,
+            const std::string& stream_prefix);
 
   const ModelSpec& spec() const { return spec_; }
   const physics::Body& body() const { return *body_; }

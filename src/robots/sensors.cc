@@ -14,12 +14,10 @@ RangeSensorSpec RangeSensorSpec::Ring(int count, double radius, double height, d
   return s;
 }
 
-RangeSensorSpec RangeSensorSpec::Fan(double fov, int beams, double mount_x, double height,
-                                     double max_range) {
+RangeSensorSpec RangeSensorSpec::Fan(double fov, int beams, double mount_x, double height, double max_range) {
   RangeSensorSpec s;
   // Ordered right to left, as laser scanners report.
-  for (int i = 0; i < beams; ++i)
-    s.angles.push_back(beams == 1 ? 0 : -fov / 2 + fov * i / (beams - 1));
+  for (int i = 0; i < beams; ++i) s.angles.push_back(beams == 1 ? 0 : -fov / 2 + fov * i / (beams - 1));
   s.mount_x = mount_x;
   s.mount_height = height;
   s.max_range = max_range;
@@ -37,8 +35,7 @@ RangeScan RangeSensor::Read(const physics::PhysicsWorld& world, const physics::B
     const double heading = pose.theta + angle;
     const Vec2 dir{std::cos(heading), std::sin(heading)};
     const Vec2 origin = mount + dir * spec_.mount_radius;
-    double range = world.cast_ray({origin.x, origin.y, spec_.mount_height}, {dir.x, dir.y, 0},
-                                  spec_.max_range, &self);
+    double range = world.cast_ray({origin.x, origin.y, spec_.mount_height}, {dir.x, dir.y, 0}, spec_.max_range, &self);
     if (spec_.noise > 0) range = std::clamp(rng_.Gaussian(range, spec_.noise), 0.0, spec_.max_range);
     scan.ranges.push_back(range);
   }

@@ -1,9 +1,9 @@
 #include "scenario/scenario_loader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -62,8 +62,7 @@ sim::Obstacle ReadObstacle(const Field& f) {
   const double height = wall->Get("height") ? wall->Get("height")->NumberAbove(0, 1000) : 1.0;
   const double thickness = wall->Get("thickness") ? wall->Get("thickness")->NumberAbove(0, 1000) : 0.2;
   const Vec2 mid = (a + b) * 0.5;
-  return {"wall",
-          {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
+  return {"wall", {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
 }
 
 ModelKind ReadModel(const Field& f) {
@@ -86,9 +85,9 @@ void ReadBody(const Field& f, ModelSpec& m) {
       Optional(f, "mass", m.mote.mass, 0.001, 1000);
       break;
     case ModelKind::kOmni3:
-      f.ExpectKeys({"body_radius", "body_height", "body_mass", "ground_clearance", "wheel_radius",
-                    "wheel_mass", "wheel_distance", "max_wheel_torque", "grip_friction",
-                    "slip_friction", "max_speed", "max_turn_rate"});
+      f.ExpectKeys({"body_radius", "body_height", "body_mass", "ground_clearance", "wheel_radius", "wheel_mass",
+                    "wheel_distance", "max_wheel_torque", "grip_friction", "slip_friction", "max_speed",
+                    "max_turn_rate"});
       Optional(f, "body_radius", m.omni3.body_radius, 0.02, 5);
       Optional(f, "body_height", m.omni3.body_height, 0.02, 5);
       Optional(f, "body_mass", m.omni3.body_mass, 0.01, 1000);
@@ -101,9 +100,9 @@ void ReadBody(const Field& f, ModelSpec& m) {
       Optional(f, "slip_friction", m.omni3.slip_friction, 0, 10);
       break;
     case ModelKind::kDiffDrive:
-      f.ExpectKeys({"body_length", "body_width", "body_height", "body_mass", "ground_clearance",
-                    "wheel_radius", "wheel_mass", "axle_length", "caster_offset", "caster_radius",
-                    "max_wheel_torque", "wheel_friction", "max_speed", "max_turn_rate"});
+      f.ExpectKeys({"body_length", "body_width", "body_height", "body_mass", "ground_clearance", "wheel_radius",
+                    "wheel_mass", "axle_length", "caster_offset", "caster_radius", "max_wheel_torque", "wheel_friction",
+                    "max_speed", "max_turn_rate"});
       Optional(f, "body_length", m.diffdrive.body_length, 0.02, 10);
       Optional(f, "body_width", m.diffdrive.body_width, 0.02, 10);
       Optional(f, "body_height", m.diffdrive.body_height, 0.02, 10);
@@ -139,8 +138,7 @@ void ReadSensors(const Field& f, ModelSpec& m) {
     } else {
       ir->ExpectKeys({"count", "angles", "max_range", "height", "noise"});
       if (!s.ir) s.ir = robots::DefaultIr(m);
-      if (auto count = ir->Get("count"))
-        s.ir->angles = RangeSensorSpec::Ring(count->Integer(1, 360), 0, 0, 1).angles;
+      if (auto count = ir->Get("count")) s.ir->angles = RangeSensorSpec::Ring(count->Integer(1, 360), 0, 0, 1).angles;
       if (auto angles = ir->Get("angles")) {
         if (ir->Get("count")) angles->Fail("give either count (evenly spaced) or angles, not both");
         s.ir->angles.clear();
@@ -160,10 +158,10 @@ void ReadSensors(const Field& f, ModelSpec& m) {
       laser->ExpectKeys({"fov", "beams", "max_range", "height", "mount_x", "noise"});
       if (!s.laser) s.laser = robots::DefaultLaser(m);
       const RangeSensorSpec& d = *s.laser;
-      const double fov = laser->Get("fov") ? laser->Get("fov")->NumberAbove(0, 2 * kPi)
-                                           : d.angles.back() - d.angles.front();
-      const int beams = laser->Get("beams") ? laser->Get("beams")->Integer(1, 10000)
-                                            : static_cast<int>(d.angles.size());
+      const double fov =
+          laser->Get("fov") ? laser->Get("fov")->NumberAbove(0, 2 * kPi) : d.angles.back() - d.angles.front();
+      const int beams =
+          laser->Get("beams") ? laser->Get("beams")->Integer(1, 10000) : static_cast<int>(d.angles.size());
       const double max_range = laser->Get("max_range") ? laser->Get("max_range")->NumberAbove(0, 1000) : d.max_range;
       const double height = laser->Get("height") ? laser->Get("height")->Number(0, 10) : d.mount_height;
       const double mount_x = laser->Get("mount_x") ? laser->Get("mount_x")->Number(-10, 10) : d.mount_x;
@@ -257,10 +255,12 @@ net::NetworkSpec ReadNetwork(const Field& f) {
   if (auto radio = f.Get("radio")) {
     const std::string text = radio->Text();
     if (text == "802.15.4" || text == "lr-wpan" || text == "lrwpan")
-      radio->Fail("802.15.4 is not available: ns-3 carries only IPv6 (6LoWPAN) over it, and its AODV, "
-                  "OLSR, DSDV and DSR route IPv4 only");
+      radio->Fail(
+          "802.15.4 is not available: ns-3 carries only IPv6 (6LoWPAN) over it, and its AODV, "
+          "OLSR, DSDV and DSR route IPv4 only");
     n.standard = ReadChoice<WifiStandard>(
-        *radio, {{"802.11b", WifiStandard::k80211b}, {"802.11g", WifiStandard::k80211g}, {"802.11a", WifiStandard::k80211a}});
+        *radio,
+        {{"802.11b", WifiStandard::k80211b}, {"802.11g", WifiStandard::k80211g}, {"802.11a", WifiStandard::k80211a}});
   }
   const std::vector<double> rates = DataRates(n.standard);
   n.data_rate = rates.front();
@@ -278,8 +278,8 @@ net::NetworkSpec ReadNetwork(const Field& f) {
     p->ExpectKeys({"model", "exponent", "reference_loss", "reference_distance", "antenna_height", "max_range"});
     if (auto model = p->Get("model"))
       n.loss = ReadChoice<LossModel>(*model, {{"log_distance", LossModel::kLogDistance},
-                                             {"friis", LossModel::kFriis},
-                                             {"two_ray_ground", LossModel::kTwoRayGround}});
+                                              {"friis", LossModel::kFriis},
+                                              {"two_ray_ground", LossModel::kTwoRayGround}});
     if (n.loss != LossModel::kLogDistance)
       for (const char* key : {"exponent", "reference_loss", "reference_distance"})
         if (auto k = p->Get(key)) k->Fail("applies to the log_distance model only");
@@ -292,14 +292,18 @@ net::NetworkSpec ReadNetwork(const Field& f) {
     Optional(*p, "max_range", n.max_range, 0, 1e7);
   }
   if (auto delay = f.Get("delay"))
-    n.delay = ReadChoice<DelayModel>(*delay, {{"constant_speed", DelayModel::kConstantSpeed}, {"random", DelayModel::kRandom}});
+    n.delay = ReadChoice<DelayModel>(*delay,
+                                     {{"constant_speed", DelayModel::kConstantSpeed}, {"random", DelayModel::kRandom}});
   if (auto max = f.Get("random_delay_max")) {
     if (n.delay != DelayModel::kRandom) max->Fail("applies to delay: random only");
     n.random_delay_max = max->Number(0, 1e-3);  // beyond a millisecond acknowledgements time out
   }
   if (auto routing = f.Get("routing"))
-    n.routing = ReadChoice<Routing>(*routing, {{"aodv", Routing::kAodv}, {"olsr", Routing::kOlsr}, {"dsdv", Routing::kDsdv},
-                                               {"dsr", Routing::kDsr}, {"none", Routing::kNone}});
+    n.routing = ReadChoice<Routing>(*routing, {{"aodv", Routing::kAodv},
+                                               {"olsr", Routing::kOlsr},
+                                               {"dsdv", Routing::kDsdv},
+                                               {"dsr", Routing::kDsr},
+                                               {"none", Routing::kNone}});
   if (auto hello = f.Get("aodv_hello")) n.aodv_hello = hello->Bool();
   if (auto ttl = f.Get("flood_ttl")) n.flood_ttl = ttl->Integer(1, 255);
   if (auto port = f.Get("port")) {
@@ -363,16 +367,16 @@ Scenario LoadScenario(const std::string& path) {
   Scenario sc;
   sc.file = path;
   sim::RunSpec& run = sc.run;
-  root.ExpectKeys({"name", "seed", "duration", "world", "network", "nodes", "messages", "events", "end", "loop",
-                   "outputs"});
+  root.ExpectKeys(
+      {"name", "seed", "duration", "world", "network", "nodes", "messages", "events", "end", "loop", "outputs"});
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   run.name = root.Get("name") ? ReadName(*root.Get("name")) : fs::path(path).stem().string();
   if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
   run.duration = root.Require("duration").NumberAbove(0, 1e9);
 
   if (auto world = root.Get("world")) {
-    world->ExpectKeys({"size", "physics_step", "gravity", "ground_friction", "solver", "solver_iterations",
-                       "obstacles"});
+    world->ExpectKeys(
+        {"size", "physics_step", "gravity", "ground_friction", "solver", "solver_iterations", "obstacles"});
     if (auto solver = world->Get("solver")) {
       const std::string name = solver->Text();
       if (name != "exact" && name != "quick") solver->Fail("must be exact or quick, not '" + name + "'");
@@ -397,7 +401,8 @@ Scenario LoadScenario(const std::string& path) {
     if (!fresh) where.Fail("node name '" + node.name + "' is already used on line " + std::to_string(it->second));
     run.nodes.push_back(std::move(node));
     sc.controller_lines.push_back(controller_line);
-    sc.controller_fields.push_back(controller_line ? where.path().substr(0, where.path().find(']') + 1) + ".controller" : "");
+    sc.controller_fields.push_back(controller_line ? where.path().substr(0, where.path().find(']') + 1) + ".controller"
+                                                   : "");
   };
   const Field nodes = root.Require("nodes");
   for (const Field& n : nodes.Items()) {
@@ -419,15 +424,19 @@ Scenario LoadScenario(const std::string& path) {
       for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c)
           add_node(g.Require("name"),
-                   {prefix + std::to_string(r * cols + c), t.model,
-                    {origin.x + c * spacing.x, origin.y + r * spacing.y, heading}, t.controller, t.radio},
+                   {prefix + std::to_string(r * cols + c),
+                    t.model,
+                    {origin.x + c * spacing.x, origin.y + r * spacing.y, heading},
+                    t.controller,
+                    t.radio},
                    t.controller_line);
       continue;
     }
     n.ExpectKeys({"name", "model", "pose", "body", "sensors", "radio", "controller"});
     const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
     const auto pose = n.Require("pose").Numbers(3);
-    add_node(n.Require("name"), {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
+    add_node(n.Require("name"),
+             {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
              t.controller_line);
   }
   if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
@@ -452,7 +461,8 @@ Scenario LoadScenario(const std::string& path) {
       if (it == names.end()) node.Fail("no node named '" + node.Text() + "'");
       for (std::size_t i = 0; i < run.nodes.size(); ++i)
         if (run.nodes[i].name == node.Text()) event.node = static_cast<std::uint32_t>(i);
-      event.action = ReadChoice<sim::NodeEvent::Action>(e.Require("action"), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}});
+      event.action =
+          ReadChoice<sim::NodeEvent::Action>(e.Require("action"), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}});
       run.events.push_back(event);
     }
   }
@@ -473,13 +483,15 @@ Scenario LoadScenario(const std::string& path) {
     end->ExpectKeys({"when_logged", "grace"});
     if (auto grace = end->Get("grace")) run.end_grace = grace->Number(0, 1e6);
     const Field logged = end->Require("when_logged");
-    if (logged.IsScalar()) run.end_when_logged.push_back(logged.Text());
-    else for (const Field& line : logged.Items()) run.end_when_logged.push_back(line.Text());
+    if (logged.IsScalar())
+      run.end_when_logged.push_back(logged.Text());
+    else
+      for (const Field& line : logged.Items()) run.end_when_logged.push_back(line.Text());
   }
   sc.output_folder = "results/" + run.name;
   if (auto outputs = root.Get("outputs")) {
-    outputs->ExpectKeys({"folder", "trajectory_interval", "figures", "figure_tick", "min_distance",
-                         "distance_reference"});
+    outputs->ExpectKeys(
+        {"folder", "trajectory_interval", "figures", "figure_tick", "min_distance", "distance_reference"});
     if (auto md = outputs->Get("min_distance")) run.min_distance = md->Bool();
     if (auto ref = outputs->Get("distance_reference")) {
       run.distance_reference = ref->NumberAbove(0, 1e6);
@@ -488,14 +500,13 @@ Scenario LoadScenario(const std::string& path) {
     if (auto figures = outputs->Get("figures")) run.figures = figures->Bool();
     if (auto tick = outputs->Get("figure_tick")) run.figure_tick = tick->NumberAbove(0, 1e9);
     if (auto folder = outputs->Get("folder")) sc.output_folder = folder->Text();
-    if (auto interval = outputs->Get("trajectory_interval"))
-      run.trajectory_interval = interval->NumberAbove(0, 1e6);
+    if (auto interval = outputs->Get("trajectory_interval")) run.trajectory_interval = interval->NumberAbove(0, 1e6);
   }
   if (run.trajectory_interval < run.physics_step) {
     const auto outputs = root.Get("outputs");
     const auto interval = outputs ? outputs->Get("trajectory_interval") : std::nullopt;
-    (interval ? *interval : root).Fail("must be at least world.physics_step (" +
-                                        std::to_string(run.physics_step) + " s)");
+    (interval ? *interval : root)
+        .Fail("must be at least world.physics_step (" + std::to_string(run.physics_step) + " s)");
   }
   return sc;
 }

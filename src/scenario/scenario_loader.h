@@ -13,8 +13,8 @@ namespace sanet::scenario {
 struct Scenario {
   std::string file;
   sim::RunSpec run;
-  std::string output_folder;  // as given, or results/<name>
-  std::vector<int> controller_lines;  // per node: line of its controller (0 if none)
+  std::string output_folder;                   // as given, or results/<name>
+  std::vector<int> controller_lines;           // per node: line of its controller (0 if none)
   std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"
 };
 

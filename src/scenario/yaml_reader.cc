@@ -25,11 +25,13 @@ std::string FormatLimit(double x) {
 
 }  // namespace
 
-ScenarioError::ScenarioError(const std::string& file, int line, const std::string& field,
-                             const std::string& message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " +
-                         (field.empty() ? "" : "'" + field + "': ") + message),
-      file_(file), line_(line), field_(field), message_(message) {}
+ScenarioError::ScenarioError(const std::string& file, int line, const std::string& field, const std::string& message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " + (field.empty() ? "" : "'" + field + "': ") +
+                         message),
+      file_(file),
+      line_(line),
+      field_(field),
+      message_(message) {}
 
 void Field::Fail(const std::string& message) const { throw ScenarioError(*file_, line(), path_, message); }
 
@@ -48,19 +50,16 @@ void Field::ExpectKeys(std::initializer_list<const char*> allowed) const {
     if (!known) {
       std::string list;
       for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-      throw ScenarioError(*file_, entry.first.Mark().line + 1, path,
-                          "unknown key (expected one of: " + list + ")");
+      throw ScenarioError(*file_, entry.first.Mark().line + 1, path, "unknown key (expected one of: " + list + ")");
     }
-    if (!seen.insert(key).second)
-      throw ScenarioError(*file_, entry.first.Mark().line + 1, path, "key given twice");
+    if (!seen.insert(key).second) throw ScenarioError(*file_, entry.first.Mark().line + 1, path, "key given twice");
   }
 }
 
 std::optional<Field> Field::Get(const std::string& key) const {
   ExpectMap();
   for (const auto& entry : node_)
-    if (entry.first.Scalar() == key)
-      return Field(entry.second, path_.empty() ? key : path_ + "." + key, file_);
+    if (entry.first.Scalar() == key) return Field(entry.second, path_.empty() ? key : path_ + "." + key, file_);
   return std::nullopt;
 }
 
@@ -84,8 +83,7 @@ double Field::Number(double min, double max) const {
   char* end = nullptr;
   errno = 0;
   const double d = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(d))
-    Fail("must be a number, not '" + s + "'");
+  if (s.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(d)) Fail("must be a number, not '" + s + "'");
   if (d < min || d > max) {
     if (max == HUGE_VAL) Fail("is " + s + ", must be at least " + FormatLimit(min));
     if (min == -HUGE_VAL) Fail("is " + s + ", must be at most " + FormatLimit(max));
@@ -112,8 +110,7 @@ std::uint64_t Field::Unsigned() const {
   char* end = nullptr;
   errno = 0;
   const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
-  if (s.empty() || s[0] == '-' || *end != '\0' || errno == ERANGE)
-    Fail("must be a whole number >= 0, not '" + s + "'");
+  if (s.empty() || s[0] == '-' || *end != '\0' || errno == ERANGE) Fail("must be a whole number >= 0, not '" + s + "'");
   return v;
 }
 

@@ -90,8 +90,8 @@ void Assembly::BuildBodies() {
 
 void Assembly::BuildTransport() {
   const ns3::NodeContainer nodes = Ns3NodesOn(models_);
-  transport_ = std::make_unique<MessageLedger>(MakeTransport(spec_, nodes),
-                                               [] { return ns3::Simulator::Now().GetSeconds(); });
+  transport_ =
+      std::make_unique<MessageLedger>(MakeTransport(spec_, nodes), [] { return ns3::Simulator::Now().GetSeconds(); });
   transport_->SetReceiver([this](NodeId to, const Message& m) { Receive(to, m); });
 }
 
@@ -104,8 +104,8 @@ void Assembly::BuildNodes(agents::Registry& registry) {
   const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
   for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
     const NodeSpec& n = spec_.nodes[id];
-    nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this,
-                                                             RandomStream(spec_.seed, "node/" + n.name + "/controller")));
+    nodes_.push_back(std::make_unique<agents::SimulatedNode>(
+        id, n.name, *models_[id], *transport_, *this, RandomStream(spec_.seed, "node/" + n.name + "/controller")));
     std::unique_ptr<Controller> controller =
         n.controller && !remote(id) ? agents::MakeController(*n.controller, registry) : nullptr;
     hosts_.push_back(std::make_unique<agents::ControllerHost>(*nodes_.back(), std::move(controller),
@@ -133,8 +133,10 @@ void Assembly::Receive(NodeId to, const Message& m) {
   if (!remote(to)) return hosts_.at(to)->Receive(m);
   const InboxResult result = remote_inbox_ ? remote_inbox_(to, m) : InboxResult::kLost;
   if (!events_ || result == InboxResult::kIgnored) return;
-  if (result == InboxResult::kDelivered) events_->Delivered(to, m);
-  else events_->Lost(to, m, "no client drives " + NameOf(to));
+  if (result == InboxResult::kDelivered)
+    events_->Delivered(to, m);
+  else
+    events_->Lost(to, m, "no client drives " + NameOf(to));
 }
 
 void Assembly::SwitchOff(NodeId id) {

@@ -33,13 +33,15 @@ bool Unmoved(const Pose2D& p, const Pose2D& last) {
 }  // namespace
 
 Outputs::Outputs(const RunSpec& spec, const std::string& dir)
-    : spec_(spec), folder_(dir),
+    : spec_(spec),
+      folder_(dir),
       trajectories_(folder_.Csv("trajectories.csv", "time,node,x,y,theta")),
       log_(folder_.Csv("log.csv", "time,node,text")),
       messages_(folder_.Csv("messages.csv", "time_sent,from,to,delivery,bytes,time_received,delay,hops")),
       transitions_(folder_.Csv("transitions.csv", "time,node,from,to,why")),
       metric_rows_(folder_.Csv("metrics.csv", "time,node,name,value")),
-      states_(spec.nodes.size()), last_recorded_(spec.nodes.size()) {
+      states_(spec.nodes.size()),
+      last_recorded_(spec.nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
 }
 

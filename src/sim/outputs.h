@@ -87,12 +87,12 @@ class Outputs {
   trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;
   trace::CsvSink* min_distance_ = nullptr;
   std::vector<std::pair<double, double>> min_distances_;  // (time, smallest distance between robots)
-  std::vector<double> delays_;                             // of every message delivered, s
-  std::uint64_t messages_lost_ = 0;                        // dropped by the added message_loss
-  std::uint64_t messages_undelivered_ = 0;                 // reached a radio, not a controller
+  std::vector<double> delays_;                            // of every message delivered, s
+  std::uint64_t messages_lost_ = 0;                       // dropped by the added message_loss
+  std::uint64_t messages_undelivered_ = 0;                // reached a radio, not a controller
   std::map<std::string, std::map<std::string, std::vector<double>>> metrics_;  // node -> name -> values
-  std::map<std::string, int> transitions_to_;  // state -> transitions into it
-  std::vector<std::string> states_;            // per node
+  std::map<std::string, int> transitions_to_;                                  // state -> transitions into it
+  std::vector<std::string> states_;                                            // per node
   struct Recorded {
     Pose2D pose;
     double time;

@@ -20,8 +20,8 @@ std::string PacketRow(const std::string& node, const net::PacketCounts& c) {
 std::string RouteRow(const std::string& node, const std::string& destination, const net::Discovery& d) {
   char row[256];
   if (d.established)
-    std::snprintf(row, sizeof row, "%s,%s,%.6f,%.6f,%.6f", node.c_str(), destination.c_str(), d.started,
-                  *d.established, *d.established - d.started);
+    std::snprintf(row, sizeof row, "%s,%s,%.6f,%.6f,%.6f", node.c_str(), destination.c_str(), d.started, *d.established,
+                  *d.established - d.started);
   else
     std::snprintf(row, sizeof row, "%s,%s,%.6f,,", node.c_str(), destination.c_str(), d.started);
   return row;
@@ -114,9 +114,8 @@ void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::op
     for (const net::PacketCounts& c : network->counts) in.received.push_back(c.received);
   folder_.WriteWhole("map.svg", trace::MapSvg(in, spec_.figure_tick));
   if (!min_distances_.empty())
-    folder_.WriteWhole("min_distance.svg",
-                       trace::LineSvg(spec_.name + ": smallest distance between robots", "time (s)", "distance (m)",
-                                      min_distances_, spec_.distance_reference));
+    folder_.WriteWhole("min_distance.svg", trace::LineSvg(spec_.name + ": smallest distance between robots", "time (s)",
+                                                          "distance (m)", min_distances_, spec_.distance_reference));
   if (!in.received.empty()) folder_.WriteWhole("packets.svg", trace::PacketsSvg(in));
 }
 
@@ -170,7 +169,8 @@ nlohmann::ordered_json Outputs::MinDistanceSummary() const {
   nlohmann::ordered_json md = {{"min_m", lowest->second}, {"at_s", lowest->first}};
   if (spec_.distance_reference > 0) {
     std::size_t near = 0;
-    for (const auto& [t, d] : min_distances_) near += std::fabs(d - spec_.distance_reference) <= 0.1 * spec_.distance_reference;
+    for (const auto& [t, d] : min_distances_)
+      near += std::fabs(d - spec_.distance_reference) <= 0.1 * spec_.distance_reference;
     md["reference_m"] = spec_.distance_reference;
     md["fraction_within_10_percent"] = double(near) / min_distances_.size();
   }

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "agents/controller_spec.h"
 #include "net/network_spec.h"
 #include "physics/physics_world.h"
 #include "robots/node_model.h"
-#include "agents/controller_spec.h"
 
 namespace sanet::sim {
 
@@ -56,17 +56,17 @@ struct LoopSpec {
 struct RunSpec {
   std::string name = "run";
   std::uint64_t seed = 1;
-  double duration = 60;        // s of simulated time
+  double duration = 60;         // s of simulated time
   double physics_step = 0.005;  // s
-  Vec2 world_size{100, 100};   // m, extent of the field around the origin-based area (for plots)
+  Vec2 world_size{100, 100};    // m, extent of the field around the origin-based area (for plots)
   physics::WorldSettings physics;
   std::vector<Obstacle> obstacles;
   std::vector<NodeSpec> nodes;
   // The wireless network; without one, messages are delivered locally after message_latency.
   std::optional<net::NetworkSpec> network;
-  double message_latency = 0.001;  // s, of the local transport
-  double message_loss = 0;         // probability that a controller never gets a message
-  double message_delay = 0;        // s added before a controller gets a message
+  double message_latency = 0.001;    // s, of the local transport
+  double message_loss = 0;           // probability that a controller never gets a message
+  double message_delay = 0;          // s added before a controller gets a message
   double trajectory_interval = 0.1;  // s between trajectory samples
   std::vector<NodeEvent> events;
   // Robots are driven by clients of the simulation server: their scenario controllers do not run
@@ -75,11 +75,11 @@ struct RunSpec {
   LoopSpec loop;
   // The run ends early when a controller logs one of these lines.
   std::vector<std::string> end_when_logged;
-  double end_grace = 0;  // s the run goes on after the end condition, for messages in flight
-  bool figures = false;       // draw map.svg and packets.svg (and min_distance.svg)
-  bool min_distance = false;  // record the smallest distance between robots over time
+  double end_grace = 0;           // s the run goes on after the end condition, for messages in flight
+  bool figures = false;           // draw map.svg and packets.svg (and min_distance.svg)
+  bool min_distance = false;      // record the smallest distance between robots over time
   double distance_reference = 0;  // m; the summary says how long the smallest distance stayed within 10 % of it
-  double figure_tick = 50;    // s between time marks on trajectories
+  double figure_tick = 50;        // s between time marks on trajectories
 };
 
 }  // namespace sanet::sim

@@ -49,7 +49,7 @@ class WorldSnapshot {
   double time() const { return time_; }         // s, simulated
   std::uint64_t step() const { return step_; }  // physics steps so far
   std::size_t node_count() const { return source_.NodeCount(); }
-  const std::vector<BodyState>& bodies() const;                    // per node
+  const std::vector<BodyState>& bodies() const;                      // per node
   const std::vector<std::vector<NodeId>>& radio_neighbours() const;  // per node, as its routing layer knows them
   const std::vector<MessageInFlight>& messages_in_flight() const;
   const std::vector<std::string>& controller_states() const;  // per node: the state of its last transition

@@ -65,15 +65,20 @@ SweepResult RunSweep(const RunSpec& spec, const std::vector<std::uint64_t>& seed
                   trace::CsvField(r.status).c_str(), trace::CsvField(r.ended_by).c_str(), r.ended_at, r.simulated,
                   r.wall, r.fingerprint.c_str());
     csv += row;
-    runs.push_back({{"seed", r.seed}, {"status", r.status}, {"ended_by", r.ended_by},
-                    {"ended_at_s", r.ended_at}, {"simulated_s", r.simulated}, {"fingerprint", r.fingerprint}});
+    runs.push_back({{"seed", r.seed},
+                    {"status", r.status},
+                    {"ended_by", r.ended_by},
+                    {"ended_at_s", r.ended_at},
+                    {"simulated_s", r.simulated},
+                    {"fingerprint", r.fingerprint}});
   }
   WriteFileAtomically(dir + "/sweep.csv", csv);
   nlohmann::ordered_json j;
   j["scenario"] = scenario_file;
   j["runs"] = result.runs.size();
   j["ended_by_condition"] = result.ended_by_condition;
-  j["end_time_s"] = {{"mean", result.mean}, {"ci95_half_width", result.ci95},
+  j["end_time_s"] = {{"mean", result.mean},
+                     {"ci95_half_width", result.ci95},
                      {"ci95", {result.mean - result.ci95, result.mean + result.ci95}}};
   j["per_seed"] = runs;
   WriteFileAtomically(dir + "/sweep.json", j.dump(2) + "\n");

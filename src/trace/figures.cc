@@ -20,10 +20,14 @@ std::string Num(double v) {
 std::string Escape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
   }
   return out;
 }
@@ -115,13 +119,14 @@ std::string MapSvg(const FigureInput& in, double tick) {
     for (std::size_t i = 0; i < t.x.size(); ++i) {
       if (t.t[i] + 1e-9 < next_tick) continue;
       s << "<circle cx=\"" << Num(f.X(t.x[i])) << "\" cy=\"" << Num(f.Y(t.y[i])) << "\" r=\"3\" fill=\"" << color
-        << "\"/><text x=\"" << Num(f.X(t.x[i]) + 4) << "\" y=\"" << Num(f.Y(t.y[i]) + 12) << "\" font-size=\"9\" fill=\""
-        << color << "\">" << Num(next_tick).substr(0, Num(next_tick).size() - 2) << " s</text>\n";
+        << "\"/><text x=\"" << Num(f.X(t.x[i]) + 4) << "\" y=\"" << Num(f.Y(t.y[i]) + 12)
+        << "\" font-size=\"9\" fill=\"" << color << "\">" << Num(next_tick).substr(0, Num(next_tick).size() - 2)
+        << " s</text>\n";
       while (next_tick <= t.t[i] + 1e-9) next_tick += tick;
     }
     if (!t.x.empty())
-      s << "<text x=\"" << Num(f.X(t.x.front()) + 6) << "\" y=\"" << Num(f.Y(t.y.front()) + 4) << "\" font-size=\"12\" fill=\""
-        << color << "\">" << Escape(t.node) << " (start)</text>\n";
+      s << "<text x=\"" << Num(f.X(t.x.front()) + 6) << "\" y=\"" << Num(f.Y(t.y.front()) + 4)
+        << "\" font-size=\"12\" fill=\"" << color << "\">" << Escape(t.node) << " (start)</text>\n";
   }
   ScaleBar(s, f);
   s << "</svg>\n";
@@ -146,8 +151,9 @@ std::string PacketsSvg(const FigureInput& in) {
     s << "<circle cx=\"" << Num(f.X(p.x)) << "\" cy=\"" << Num(f.Y(p.y)) << "\" r=\"" << (mote ? 14 : 9) << "\" fill=\""
       << fill << "\" stroke=\"" << (mote ? "#333" : "#d62728") << "\"><title>" << Escape(in.nodes[i].name) << ": "
       << in.received[i] << " packets</title></circle>\n"
-      << "<text x=\"" << Num(f.X(p.x)) << "\" y=\"" << Num(f.Y(p.y) + 26) << "\" font-size=\"10\" text-anchor=\"middle\">"
-      << Escape(in.nodes[i].name) << " " << in.received[i] << "</text>\n";
+      << "<text x=\"" << Num(f.X(p.x)) << "\" y=\"" << Num(f.Y(p.y) + 26)
+      << "\" font-size=\"10\" text-anchor=\"middle\">" << Escape(in.nodes[i].name) << " " << in.received[i]
+      << "</text>\n";
     if (!mote) s << "<!-- robots are drawn where they ended -->\n";
   }
   ScaleBar(s, f);
@@ -181,9 +187,9 @@ std::string LineSvg(const std::string& title, const std::string& x_label, const 
       << Num(xv) << "</text><text x=\"" << left - 6 << "\" y=\"" << Num(py(yv) + 4)
       << "\" font-size=\"11\" text-anchor=\"end\">" << Num(yv) << "</text>\n";
   }
-  s << "<text x=\"" << Num((left + w - right) / 2) << "\" y=\"" << h - 6 << "\" font-size=\"12\" text-anchor=\"middle\">"
-    << Escape(x_label) << "</text><text x=\"14\" y=\"" << Num(top + 10) << "\" font-size=\"12\">" << Escape(y_label)
-    << "</text>\n";
+  s << "<text x=\"" << Num((left + w - right) / 2) << "\" y=\"" << h - 6
+    << "\" font-size=\"12\" text-anchor=\"middle\">" << Escape(x_label) << "</text><text x=\"14\" y=\"" << Num(top + 10)
+    << "\" font-size=\"12\">" << Escape(y_label) << "</text>\n";
   if (reference > 0)
     s << "<line x1=\"" << left << "\" x2=\"" << w - right << "\" y1=\"" << Num(py(reference)) << "\" y2=\""
       << Num(py(reference)) << "\" stroke=\"#888\" stroke-dasharray=\"6,4\"/><text x=\"" << w - right - 4 << "\" y=\""

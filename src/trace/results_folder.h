@@ -43,7 +43,7 @@ class ResultsFolder {
   std::string dir_;
   std::map<std::string, std::unique_ptr<CsvSink>> csv_;
   std::vector<std::string> csv_order_;  // not yet committed, in opening order
-  std::vector<std::string> pending_;  // TempFile and TempFolder names, moved at Commit
+  std::vector<std::string> pending_;    // TempFile and TempFolder names, moved at Commit
   std::vector<std::string> files_;
 };
 

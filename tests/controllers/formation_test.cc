@@ -17,7 +17,7 @@ sim::RunSpec Formation() { return scenario::LoadScenario(SANET_SOURCE_DIR "/scen
 // Smallest distance between any two robots at every physics step, and each robot's track.
 struct Watch {
   std::vector<std::pair<double, double>> min_distance;  // (time, metres)
-  std::vector<std::vector<Pose2D>> poses;                // per robot, every 0.1 s
+  std::vector<std::vector<Pose2D>> poses;               // per robot, every 0.1 s
 };
 
 Watch RunWatched(const sim::RunSpec& spec, std::function<void(sim::World&, double)> also = nullptr) {

@@ -15,7 +15,6 @@ namespace {
 using namespace sanet::testing;
 using robots::ModelKind;
 
-
 struct Transition {
   double time;
   std::string node, from, to, why;

@@ -40,11 +40,20 @@ TEST(Protocol, EveryMessageTypeRoundTrips) {
   all.emplace_back("DRIVE");
   all.back().Add("LinearVelocity", 0.3).Add("LateralVelocity", 0.1).Add("RotationalVelocity", -0.2);
   all.emplace_back("SEN");
-  all.back().Add("Time", 1.0).Add("Type", "RangeScanner").Add("Name", "Scanner1").Add("Resolution", 0.0175)
-      .Add("FOV", 3.1416).Add("Range", std::vector<double>{1, 2.5, 8});
+  all.back()
+      .Add("Time", 1.0)
+      .Add("Type", "RangeScanner")
+      .Add("Name", "Scanner1")
+      .Add("Resolution", 0.0175)
+      .Add("FOV", 3.1416)
+      .Add("Range", std::vector<double>{1, 2.5, 8});
   all.emplace_back("SEN");
-  all.back().Add("Time", 1.0).Add("Type", "GroundTruth").Add("Name", "GroundTruth")
-      .Add("Location", std::vector<double>{1, 2, 0.1}).Add("Orientation", std::vector<double>{0, 0, -0.5});
+  all.back()
+      .Add("Time", 1.0)
+      .Add("Type", "GroundTruth")
+      .Add("Name", "GroundTruth")
+      .Add("Location", std::vector<double>{1, 2, 0.1})
+      .Add("Orientation", std::vector<double>{0, 0, -0.5});
   all.emplace_back("SEN");
   all.back().Add("Type", "IR").Add("Name", "IR0 Range 0.8000").Add("Name", "IR1 Range 0.3000");
   all.emplace_back("STA");
@@ -69,8 +78,8 @@ TEST(Protocol, EveryMessageTypeRoundTrips) {
 }
 
 TEST(Protocol, RejectsMalformedLinesSayingWhy) {
-  for (const char* bad : {"", "   ", "{Name R1}", "DRIVE Left 1", "DRIVE {Left 1", "DRIVE {Left {1}}", "DRIVE {}",
-                          "DR-IVE {Left 1}"}) {
+  for (const char* bad :
+       {"", "   ", "{Name R1}", "DRIVE Left 1", "DRIVE {Left 1", "DRIVE {Left {1}}", "DRIVE {}", "DR-IVE {Left 1}"}) {
     std::string error;
     EXPECT_FALSE(ParseLine(bad, &error)) << bad;
     EXPECT_FALSE(error.empty()) << bad;

@@ -1,7 +1,6 @@
 // The wireless network: multi-hop delivery, links that follow physical distance, routing views
 // that agree with ns-3, broadcasts, pcap files, reproducibility.
 #include <gtest/gtest.h>
-
 #include <ns3/aodv-routing-protocol.h>
 #include <ns3/ipv4.h>
 #include <ns3/node-list.h>
@@ -10,9 +9,9 @@
 
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <map>
-#include <fstream>
 #include <sstream>
 
 #include "support/test_world.h"
@@ -22,7 +21,6 @@ namespace {
 
 using namespace sanet::testing;
 using robots::ModelKind;
-
 
 // Range of the default radio (16 dBm, log-distance exponent 3, 46.6777 dB at 1 m, frames
 // detected above -82 dBm): 16 - 46.6777 - 30 log10(d) = -82.
@@ -42,9 +40,12 @@ class Probe : public Controller {
     while (next_ < script_.size() && script_[next_].time <= node.Now() + 1e-9) {
       const Send& s = script_[next_++];
       const Bytes payload{1, 2, 3, 4};
-      if (s.flood) node.Flood(payload);
-      else if (s.to == kBroadcast) node.Broadcast(payload);
-      else node.Send(s.to, payload);
+      if (s.flood)
+        node.Flood(payload);
+      else if (s.to == kBroadcast)
+        node.Broadcast(payload);
+      else
+        node.Send(s.to, payload);
     }
     if (step_) step_(node);
   }
@@ -65,8 +66,8 @@ class Probe : public Controller {
 struct Probes {
   agents::Registry registry;
   std::vector<std::vector<Message>> inboxes;
-  explicit Probes(std::vector<std::vector<Probe::Send>> scripts,
-                  std::vector<std::function<void(Node&)>> steps = {}) : inboxes(scripts.size()) {
+  explicit Probes(std::vector<std::vector<Probe::Send>> scripts, std::vector<std::function<void(Node&)>> steps = {})
+      : inboxes(scripts.size()) {
     steps.resize(scripts.size());
     for (std::size_t i = 0; i < scripts.size(); ++i)
       registry.Add({"p" + std::to_string(i), "", [this, i, s = scripts[i], f = steps[i]](const Params&) {

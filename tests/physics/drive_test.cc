@@ -18,11 +18,11 @@ struct Track {
 };
 
 Track DriveFor(ModelKind kind, Twist2D v, double seconds) {
-  sim::World world(Spec(seconds, {Robot("r", kind, {0, 0, 0},
-                                        UseController("constant_velocity", {{"vx", Scalar(v.vx)},
-                                                                         {"vy", Scalar(v.vy)},
-                                                                         {"omega", Scalar(v.omega)}}))}),
-                   BuiltinRegistry());
+  sim::World world(
+      Spec(seconds, {Robot("r", kind, {0, 0, 0},
+                           UseController("constant_velocity",
+                                         {{"vx", Scalar(v.vx)}, {"vy", Scalar(v.vy)}, {"omega", Scalar(v.omega)}}))}),
+      BuiltinRegistry());
   Track t;
   t.start = world.model(0).body().pose();
   double last_theta = t.start.theta;
@@ -59,9 +59,8 @@ TEST(Omni3, TurnsInPlace) {
 
 TEST(Omni3, OdometryFollowsTheTruePose) {
   sim::World world(Spec(8, {Robot("r", ModelKind::kOmni3, {1, 2, 0.5},
-                                  UseController("constant_velocity", {{"vx", Scalar(0.3)},
-                                                                   {"vy", Scalar(0.1)},
-                                                                   {"omega", Scalar(0.2)}}))}),
+                                  UseController("constant_velocity",
+                                                {{"vx", Scalar(0.3)}, {"vy", Scalar(0.1)}, {"omega", Scalar(0.2)}}))}),
                    BuiltinRegistry());
   world.Run({});
   const Pose2D truth = world.model(0).body().pose();

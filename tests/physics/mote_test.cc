@@ -25,8 +25,7 @@ TEST(Mote, AWorldOfMotesNeedsNoPhysicsSteps) {
 
 TEST(Mote, ARobotPushesAMoteAndTheMoteComesToRestAgain) {
   sim::RunSpec spec = Spec(12, {Robot("r", ModelKind::kOmni3, {0, 0, 0},
-                                      UseController("constant_velocity", {{"vx", Scalar(0.4)},
-                                                                       {"stop", Scalar(5)}})),
+                                      UseController("constant_velocity", {{"vx", Scalar(0.4)}, {"stop", Scalar(5)}})),
                                 Robot("m", ModelKind::kMote, {1.0, 0, 0})});
   sim::World world(spec, BuiltinRegistry());
   world.Run({});

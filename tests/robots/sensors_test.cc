@@ -35,7 +35,7 @@ TEST(Ir, ReadsTheDistanceToAWallAndABox) {
 
 TEST(Laser, ReadsTheDistanceToAWallAheadAndABoxToTheSide) {
   sim::RunSpec spec = Spec(0.2, {Robot("r", ModelKind::kDiffDrive, {0, 0, 0})});
-  spec.obstacles = {Wall({3.0, -1}, {3.0, 1}),  // face at x = 2.9
+  spec.obstacles = {Wall({3.0, -1}, {3.0, 1}),   // face at x = 2.9
                     Box({0.2, -2.0}, 1, 1, 1)};  // face at y = -1.5, right
   sim::World world(spec, BuiltinRegistry());
   Settle(world);
@@ -67,8 +67,9 @@ TEST(Laser, NoiseChangesReadingsAroundTheTruth) {
 }
 
 TEST(Bearing, AnswersOnlyWithinRange) {
-  sim::RunSpec spec = Spec(0.1, {Robot("r", ModelKind::kOmni3, {0, 0, kPi / 2}), Robot("near", ModelKind::kMote, {3, 3, 0}),
-                                 Robot("far", ModelKind::kMote, {30, 0, 0})});
+  sim::RunSpec spec =
+      Spec(0.1, {Robot("r", ModelKind::kOmni3, {0, 0, kPi / 2}), Robot("near", ModelKind::kMote, {3, 3, 0}),
+                 Robot("far", ModelKind::kMote, {30, 0, 0})});
   spec.nodes[0].model.sensors.bearing = robots::BearingSpec{10, 0, 0};
   sim::World world(spec, BuiltinRegistry());
   Settle(world);

@@ -25,8 +25,8 @@ const Case kCases[] = {
     {"unknown_key", "duraton: 10\nnodes: []\n", 2, "duraton", "unknown key"},
     {"wrong_type", "world:\n  physics_step: fast\nnodes: []\n", 3, "world.physics_step", "must be a number"},
     {"out_of_range", "world:\n  physics_step: 0.5\nnodes: []\n", 3, "world.physics_step", "must be at most 0.1"},
-    {"unknown_model",
-     "nodes:\n  - name: r\n    model: omni4\n    pose: [0, 0, 0]\n", 4, "nodes[0].model", "unknown model 'omni4'"},
+    {"unknown_model", "nodes:\n  - name: r\n    model: omni4\n    pose: [0, 0, 0]\n", 4, "nodes[0].model",
+     "unknown model 'omni4'"},
     {"missing_pose", "nodes:\n  - name: r\n    model: omni3\n", 3, "nodes[0]", "missing required key 'pose'"},
     {"pose_too_short", "nodes:\n  - name: r\n    model: omni3\n    pose: [1, 2]\n", 5, "nodes[0].pose",
      "list of 3 numbers"},
@@ -52,8 +52,8 @@ const Case kCases[] = {
      "world.obstacles[0].wall.to", "must differ"},
     {"duplicate_key", "seed: 1\nseed: 2\nnodes: []\n", 3, "seed", "key given twice"},
     {"negative_seed", "seed: -4\nnodes: []\n", 2, "seed", "whole number >= 0"},
-    {"unknown_sensor", "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    sensors: {sonar: {}}\n",
-     6, "nodes[0].sensors.sonar", "unknown key"},
+    {"unknown_sensor", "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    sensors: {sonar: {}}\n", 6,
+     "nodes[0].sensors.sonar", "unknown key"},
     {"body_param_of_other_model",
      "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    body: {axle_length: 0.3}\n", 6,
      "nodes[0].body.axle_length", "unknown key"},
@@ -66,8 +66,9 @@ const Case kCases[] = {
      "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    controller:\n      name: mine\n"
      "      library: /lib/x86_64-linux-gnu/libm.so.6\n",
      7, "nodes[0].controller.library", "not a sanet controller library"},
-    {"interval_below_physics_step", "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\noutputs:\n  trajectory_interval: 0.001\n",
-     5, "outputs.trajectory_interval", "at least world.physics_step"},
+    {"interval_below_physics_step",
+     "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\noutputs:\n  trajectory_interval: 0.001\n", 5,
+     "outputs.trajectory_interval", "at least world.physics_step"},
     {"unknown_routing", "network:\n  routing: babel\nnodes: []\n", 3, "network.routing",
      "unknown value 'babel' (expected one of: aodv, olsr, dsdv, dsr, none)"},
     {"data_rate_not_offered", "network:\n  radio: 802.11b\n  data_rate: 54\nnodes: []\n", 4, "network.data_rate",
@@ -77,13 +78,15 @@ const Case kCases[] = {
      "network.propagation.exponent", "log_distance model only"},
     {"radio_without_network", "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0], radio: {tx_power: 5}}\n", 3,
      "nodes[0].radio", "needs a 'network' section"},
-    {"latency_with_network", "network: {}\nmessages: {latency: 0.1}\nnodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\n",
-     3, "messages.latency", "for runs without a network"},
+    {"latency_with_network",
+     "network: {}\nmessages: {latency: 0.1}\nnodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\n", 3,
+     "messages.latency", "for runs without a network"},
     {"port_of_a_routing_protocol", "network:\n  port: 654\nnodes: []\n", 3, "network.port", "port of AODV"},
     {"random_delay_max_without_random", "network:\n  random_delay_max: 0.0001\nnodes: []\n", 3,
      "network.random_delay_max", "delay: random only"},
-    {"odometry_on_a_mote", "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {odometry: {noise: 0.1}}\n",
-     6, "nodes[0].sensors.odometry", "no odometry"},
+    {"odometry_on_a_mote",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {odometry: {noise: 0.1}}\n", 6,
+     "nodes[0].sensors.odometry", "no odometry"},
 };
 
 class Malformed : public ::testing::TestWithParam<Case> {};
@@ -114,8 +117,9 @@ TEST(Scenario, MissingFileIsReported) {
 
 TEST(Scenario, GridPlacesNodesRowByRow) {
   const std::string path = ::testing::TempDir() + "/grid.yaml";
-  std::ofstream(path) << "duration: 1\nnodes:\n  - grid: {name: m, rows: 2, cols: 3, origin: [10, 20], spacing: [5, 7]}\n"
-                         "    model: mote\n";
+  std::ofstream(path)
+      << "duration: 1\nnodes:\n  - grid: {name: m, rows: 2, cols: 3, origin: [10, 20], spacing: [5, 7]}\n"
+         "    model: mote\n";
   const scenario::Scenario sc = scenario::LoadScenario(path);
   ASSERT_EQ(sc.run.nodes.size(), 6u);
   EXPECT_EQ(sc.run.nodes[4].name, "m4");

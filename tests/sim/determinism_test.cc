@@ -13,7 +13,6 @@ namespace {
 
 using namespace sanet::testing;
 
-
 struct Outputs {
   std::string fingerprint, trajectories, log;
 };

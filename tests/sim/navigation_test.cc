@@ -12,7 +12,7 @@ using robots::ModelKind;
 
 struct Outcome {
   Pose2D end;
-  double closest_to_wall = 1e9;  // m, from the robot's centre to the wall's surface
+  double closest_to_wall = 1e9;   // m, from the robot's centre to the wall's surface
   double farthest_from_line = 0;  // m, the detour
   bool arrived = false;
 };

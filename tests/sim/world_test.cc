@@ -1,6 +1,5 @@
 // The run as a whole: one clock, ns-3 mobility reading physics, messages, failures, outputs.
 #include <gtest/gtest.h>
-
 #include <ns3/mobility-model.h>
 #include <ns3/node-list.h>
 #include <ns3/node.h>
@@ -18,11 +17,10 @@ namespace {
 using namespace sanet::testing;
 using robots::ModelKind;
 
-
 TEST(World, Ns3MobilityAnswersWithThePhysicsPoseAtTheTimeItAsks) {
-  sim::World world(Spec(4, {Robot("r", ModelKind::kOmni3, {0, 0, 0},
-                                  UseController("constant_velocity", {{"vx", Scalar(0.5)}}))}),
-                   BuiltinRegistry());
+  sim::World world(
+      Spec(4, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("constant_velocity", {{"vx", Scalar(0.5)}}))}),
+      BuiltinRegistry());
   std::vector<std::pair<ns3::Vector, Pose2D>> samples;
   world.Observe([&](const sim::WorldSnapshot& snapshot) {
     const double t = snapshot.time();
@@ -108,17 +106,16 @@ TEST(World, AFailingControllerEndsTheRunButKeepsItsResults) {
 
 TEST(World, OnlyOneWorldAtATime) {
   sim::World world(Spec(1, {Robot("m", ModelKind::kMote, {0, 0, 0})}), BuiltinRegistry());
-  EXPECT_THROW(sim::World(Spec(1, {Robot("m", ModelKind::kMote, {0, 0, 0})}), BuiltinRegistry()),
-               sim::WorldError);
+  EXPECT_THROW(sim::World(Spec(1, {Robot("m", ModelKind::kMote, {0, 0, 0})}), BuiltinRegistry()), sim::WorldError);
 }
 
 TEST(World, WritesTrajectoriesForMovingNodesAndOnceForRestingOnes) {
   const std::string dir = ::testing::TempDir() + "/sanet-outputs";
   std::filesystem::remove_all(dir);
-  sim::World world(Spec(2, {Robot("r", ModelKind::kOmni3, {0, 0, 0},
-                                  UseController("constant_velocity", {{"vx", Scalar(0.3)}})),
-                            Robot("m", ModelKind::kMote, {5, 5, 0})}),
-                   BuiltinRegistry());
+  sim::World world(
+      Spec(2, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("constant_velocity", {{"vx", Scalar(0.3)}})),
+               Robot("m", ModelKind::kMote, {5, 5, 0})}),
+      BuiltinRegistry());
   const sim::RunResult r = world.Run({dir, "test", false});
   const std::string csv = ReadFile(dir + "/trajectories.csv");
   std::size_t robot_rows = 0, mote_rows = 0;

@@ -31,7 +31,7 @@ inline ParamValue Table(const std::vector<std::vector<double>>& rows) {
 }
 
 inline sim::ControllerSpec UseController(std::string name, std::vector<std::pair<std::string, ParamValue>> params,
-                                      double rate = 10) {
+                                         double rate = 10) {
   sim::ControllerSpec c;
   c.name = std::move(name);
   c.rate = rate;
@@ -53,8 +53,7 @@ inline sim::RunSpec Spec(double duration, std::vector<sim::NodeSpec> nodes) {
 
 inline sim::Obstacle Wall(Vec2 a, Vec2 b, double height = 1.0, double thickness = 0.2) {
   const Vec2 mid = (a + b) * 0.5;
-  return {"wall",
-          {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
+  return {"wall", {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
 }
 
 inline sim::Obstacle Box(Vec2 center, double lx, double ly, double h, double yaw = 0) {

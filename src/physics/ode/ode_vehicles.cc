@@ -38,14 +38,11 @@ Vehicle* OdeWorld::add_omni3(const Omni3Spec& spec, const Pose2D& pose) {
 
   const double half = spec.body_height / 2;
   GeomInfo* chassis_info = make_info({Part::kChassis, robot, nullptr, kChassisFriction, 0});
-  dGeomSetData(Attach(dCreateCylinder(moving_, spec.body_radius, half), chassis, {0, 0, -half / 2}),
-               chassis_info);
-  dGeomSetData(Attach(dCreateCylinder(moving_, 0.8 * spec.body_radius, half), chassis, {0, 0, half / 2}),
-               chassis_info);
+  dGeomSetData(Attach(dCreateCylinder(moving_, spec.body_radius, half), chassis, {0, 0, -half / 2}), chassis_info);
+  dGeomSetData(Attach(dCreateCylinder(moving_, 0.8 * spec.body_radius, half), chassis, {0, 0, half / 2}), chassis_info);
 
   for (double angle : spec.wheel_angles) {
-    const Vec3 local{spec.wheel_distance * std::cos(angle), spec.wheel_distance * std::sin(angle),
-                     spec.wheel_radius};
+    const Vec3 local{spec.wheel_distance * std::cos(angle), spec.wheel_distance * std::sin(angle), spec.wheel_radius};
     dBodyID wheel = dBodyCreate(world_);
     Place(wheel, pose, local);
     dMassSetSphereTotal(&mass, spec.wheel_mass, spec.wheel_radius);
@@ -76,8 +73,7 @@ Vehicle* OdeWorld::add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose) 
   vehicles_.push_back(std::make_unique<OdeVehicle>(chassis, Vec3{com_behind_axle, 0, 0}));
   OdeVehicle* robot = vehicles_.back().get();
 
-  dGeomSetData(Attach(dCreateBox(moving_, spec.body_length, spec.body_width, spec.body_height),
-                      chassis, {0, 0, 0}),
+  dGeomSetData(Attach(dCreateBox(moving_, spec.body_length, spec.body_width, spec.body_height), chassis, {0, 0, 0}),
                make_info({Part::kChassis, robot, nullptr, kChassisFriction, 0}));
   dGeomSetData(Attach(dCreateSphere(moving_, spec.caster_radius), chassis,
                       {com_behind_axle - spec.caster_offset, 0, spec.caster_radius - z_body}),

@@ -155,8 +155,8 @@ Body* OdeWorld::add_mote(const MoteSpec& spec, const Pose2D& pose) {
   dRFromAxisAndAngle(r, 0, 0, 1, pose.theta);
   dGeomSetRotation(g, r);
   motes_.push_back(std::make_unique<OdeMote>(g, spec));
-  GeomInfo* info = make_info({Part::kMote, motes_.back().get(), nullptr, kMoteFriction, 0,
-                              static_cast<int>(motes_.size() - 1)});
+  GeomInfo* info =
+      make_info({Part::kMote, motes_.back().get(), nullptr, kMoteFriction, 0, static_cast<int>(motes_.size() - 1)});
   dGeomSetData(g, info);
   mote_geoms_.push_back(g);
   mote_awake_.push_back(false);
@@ -167,9 +167,7 @@ Body* OdeWorld::add_mote(const MoteSpec& spec, const Pose2D& pose) {
   return motes_.back().get();
 }
 
-void OdeWorld::NearCallback(void* data, dGeomID a, dGeomID b) {
-  static_cast<OdeWorld*>(data)->Collide(a, b);
-}
+void OdeWorld::NearCallback(void* data, dGeomID a, dGeomID b) { static_cast<OdeWorld*>(data)->Collide(a, b); }
 
 void OdeWorld::Collide(dGeomID a, dGeomID b) {
   if (a == b) return;
@@ -264,8 +262,7 @@ void OdeWorld::CollideWithMotes(dGeomID geom, int self) {
 
 void OdeWorld::step(double dt) {
   dSpaceCollide(moving_, this, &NearCallback);
-  dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(still_), this,
-                 &NearCallback);
+  dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(still_), this, &NearCallback);
   if (!motes_.empty())
     for (int i = 0, n = dSpaceGetNumGeoms(moving_); i < n; ++i) CollideWithMotes(dSpaceGetGeom(moving_, i), -1);
   // Motes that are awake (or were touched just now) meet the ground, obstacles and other motes;
@@ -318,8 +315,7 @@ void RayCallback(void* data, dGeomID ray, dGeomID other) {
 
 }  // namespace
 
-double OdeWorld::cast_ray(const Vec3& origin, const Vec3& direction, double max_range,
-                          const Body* ignore) const {
+double OdeWorld::cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const {
   if (!ray_) {
     ray_ = dCreateRay(nullptr, max_range);
     dGeomSetData(ray_, const_cast<OdeWorld*>(this)->make_info({Part::kStatic, nullptr, nullptr, 0, 0}));

@@ -27,11 +27,11 @@ class OdeBody;
 // What a geom is, read in the collision callback (stored as the geom's user data).
 struct GeomInfo {
   Part part = Part::kStatic;
-  const Body* owner = nullptr;      // null for ground and static obstacles
-  dJointID hinge = nullptr;         // omni wheels: the hinge whose axis slips
-  double friction = 1.0;            // mu (grip direction for omni wheels)
-  double slip_friction = 0.0;       // omni wheels: mu2 along the axis
-  int index = -1;                   // motes: index into the world's mote lists
+  const Body* owner = nullptr;  // null for ground and static obstacles
+  dJointID hinge = nullptr;     // omni wheels: the hinge whose axis slips
+  double friction = 1.0;        // mu (grip direction for omni wheels)
+  double slip_friction = 0.0;   // omni wheels: mu2 along the axis
+  int index = -1;               // motes: index into the world's mote lists
 };
 
 class OdeWorld;
@@ -74,8 +74,8 @@ class OdeVehicle : public OdeBody, public Vehicle {
   struct Wheel {
     dBodyID body;
     dJointID hinge;
-    double angle = 0;       // unwrapped
-    double last_raw = 0;    // hinge angle at the previous step, in (-pi, pi]
+    double angle = 0;     // unwrapped
+    double last_raw = 0;  // hinge angle at the previous step, in (-pi, pi]
   };
   OdeVehicle(dBodyID chassis, Vec3 reference_offset) : OdeBody(chassis, reference_offset) {}
   std::size_t wheel_count() const override { return wheels_.size(); }
@@ -97,8 +97,7 @@ class OdeWorld : public PhysicsWorld {
   Vehicle* add_omni3(const Omni3Spec& spec, const Pose2D& pose) override;
   Vehicle* add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose) override;
   Body* add_mote(const MoteSpec& spec, const Pose2D& pose) override;
-  double cast_ray(const Vec3& origin, const Vec3& direction, double max_range,
-                  const Body* ignore) const override;
+  double cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const override;
   void step(double dt) override;
   std::size_t awake_body_count() const override;
 
@@ -125,10 +124,10 @@ class OdeWorld : public PhysicsWorld {
   std::vector<dGeomID> mote_geoms_;
   // Motes are found through a grid of square cells (by their centre) rather than a space, whose
   // queries cost as much as it holds: a robot then costs the same among 4 motes or 4000.
-  static constexpr double kMoteCell = 1.0;  // m
+  static constexpr double kMoteCell = 1.0;                        // m
   std::unordered_map<std::int64_t, std::vector<int>> mote_grid_;  // cell -> motes, sorted
   std::vector<std::optional<std::int64_t>> mote_cell_;
-  double max_mote_reach_ = 0;     // m, from a mote's centre to its farthest corner
+  double max_mote_reach_ = 0;      // m, from a mote's centre to its farthest corner
   std::vector<char> mote_done_;    // per mote: its pass ran in this step
   std::vector<char> mote_awake_;   // per mote: listed in awake_motes_
   std::vector<int> awake_motes_;   // motes awake or touched this step, in the order they woke

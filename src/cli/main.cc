@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
@@ -16,6 +17,7 @@
 #include "builtin.h"
 #include "core/atomic_file.h"
 #include "hil/agent.h"
+#include "hil/launch.h"
 #include "hil/namespaces.h"
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
@@ -162,121 +164,15 @@ int Agent(const std::string& file, const std::string& robot, const std::string& 
   return hil::RunAgent(sc.run, *id, settings, registry);
 }
 
-volatile std::sig_atomic_t g_interrupted = 0;
-
-[[noreturn]] void Exec(const std::string& program, const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  ::execvp(program.c_str(), argv.data());  // searches PATH for a bare name
-  std::_Exit(127);
-}
-
-// The port a starting server wrote to `path`, or nothing if the server ended (or took more
-// than 30 s) before it did.
-std::optional<int> WaitForPort(const std::string& path, pid_t server) {
-  for (int waited = 0; waited < 30000; waited += 10) {
-    std::ifstream in(path);
-    int port = 0;
-    if (in >> port && port > 0) return port;
-    if (::waitpid(server, nullptr, WNOHANG) != 0) return std::nullopt;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return std::nullopt;
-}
-
-// Starts the server and one agent per robot with a controller, as processes of this program;
-// ends them all when the server's run ends or on Ctrl-C.
-int Launch(const std::string& file, const std::string& output, std::optional<int> udp_base_option,
+int Launch(const std::string& file, const std::string& output, std::optional<int> udp_base,
            std::optional<double> duration, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, registry);
-  const int udp_base = udp_base_option.value_or(sc.run.loop.udp_port);
-  std::vector<std::uint32_t> robots;
-  for (std::uint32_t i = 0; i < sc.run.nodes.size(); ++i)
-    if (sc.run.nodes[i].model.kind != robots::ModelKind::kMote && sc.run.nodes[i].controller) robots.push_back(i);
-  // Real links between namespaces where the machine allows it; loopback otherwise.
-  std::unique_ptr<hil::NetworkNamespaces> namespaces;
-  if (sc.run.loop.namespaces) {
-    std::string why;
-    if (hil::NetworkNamespaces::Permitted(&why)) {
-      const auto& s = sc.run.loop.shaping;
-      const bool wants_shaping = s.delay > 0 || s.jitter > 0 || s.loss > 0 || s.rate > 0;
-      std::string no_shaping;
-      const bool shape = wants_shaping && hil::NetworkNamespaces::ShapingPermitted(&no_shaping);
-      namespaces = std::make_unique<hil::NetworkNamespaces>(robots, s, shape);
-      std::printf("sanet: each agent in its own network namespace, linked by veth pairs and a bridge\n");
-      if (wants_shaping && !shape)
-        std::printf(
-            "sanet: netem is not available (%s): the links are not shaped; messages.loss and "
-            "messages.delay in the scenario impair messages in the agents instead\n",
-            no_shaping.c_str());
-    } else {
-      std::printf(
-          "sanet: network namespaces are not available (%s): falling back to loopback, without "
-          "netem shaping\n",
-          why.c_str());
-    }
-  }
-  const std::string bind = namespaces ? hil::NetworkNamespaces::ServerAddress() : "127.0.0.1";
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe");
-  const std::string out = output.empty() ? sc.output_folder : output;
-  // The server tells its port through a file, not through text meant for people.
-  char port_dir[] = "/tmp/sanet-launch-XXXXXX";
-  if (!::mkdtemp(port_dir)) throw std::runtime_error("cannot create a temporary folder for the server's port");
-  const std::string port_file = std::string(port_dir) + "/port";
-  const pid_t server = ::fork();
-  if (server == 0) {
-    std::vector<std::string> args = {"sanet", "serve", file, "--port", "0",           "--bind",
-                                     bind,    "-o",    out,  "-q",     "--port-file", port_file};
-    if (duration) args.insert(args.end(), {"--duration", std::to_string(*duration)});
-    Exec(self, args);
-  }
-  std::signal(SIGINT, [](int) { g_interrupted = 1; });
-  std::signal(SIGTERM, [](int) { g_interrupted = 1; });
-  const std::optional<int> port = WaitForPort(port_file, server);
-  std::filesystem::remove_all(port_dir);
-  if (!port) {
-    ::waitpid(server, nullptr, 0);
-    throw std::runtime_error("the server did not start");
-  }
-  const std::string address = bind + ":" + std::to_string(*port);
-  std::vector<pid_t> agents;
-  for (std::uint32_t id : robots) {
-    const std::string& name = sc.run.nodes[id].name;
-    const pid_t agent = ::fork();
-    if (agent == 0) {
-      std::vector<std::string> args = {"sanet",         "agent",
-                                       "--server",      address,
-                                       "--scenario",    file,
-                                       "--robot",       name,
-                                       "--udp-base",    std::to_string(udp_base),
-                                       "--shared-clock"};
-      if (namespaces) {
-        args.insert(args.end(), {"--udp-subnet", hil::NetworkNamespaces::Subnet()});
-        args[0] = self;  // ip runs the program itself: its path, not a name, comes first
-        args.insert(args.begin(), {"ip", "netns", "exec", namespaces->Namespace(id)});
-        Exec("ip", args);
-      }
-      Exec(self, args);
-    }
-    std::printf("  agent %s: process %d%s\n", name.c_str(), agent,
-                namespaces ? (" in namespace " + namespaces->Namespace(id)).c_str() : "");
-    agents.push_back(agent);
-  }
-  std::fflush(stdout);
-  int status = 0;
-  bool forwarded = false;
-  while (::waitpid(server, &status, WNOHANG) == 0) {
-    if (g_interrupted && !forwarded) {
-      ::kill(server, SIGINT);  // the server ends its run and writes its results
-      forwarded = true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  for (pid_t a : agents) ::kill(a, SIGTERM);
-  for (pid_t a : agents) ::waitpid(a, nullptr, 0);
-  std::printf("  results in %s/\n", out.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : kExitRunFailed;
+  hil::LaunchSettings settings;
+  settings.scenario_file = file;
+  settings.output = output.empty() ? sc.output_folder : output;
+  settings.udp_base = udp_base.value_or(sc.run.loop.udp_port);
+  settings.duration = duration;
+  return hil::Launch(sc.run, settings);
 }
 
 int Validate(const std::string& file, agents::Registry& registry) {
@@ -304,118 +200,140 @@ int List(agents::Registry& registry) {
   return 0;
 }
 
-}  // namespace
+// One subcommand: its options live as long as the program, its action runs when it was chosen.
+struct Command {
+  CLI::App* app;
+  std::function<int(agents::Registry&)> action;
+};
 
-int main(int argc, char** argv) {
-  CLI::App app{
-      "sanet: integrated simulator for sensor/actuator networks and networked robots.\n"
-      "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", "sanet 0.1.0");
+CLI::Option* AddScenario(CLI::App* cmd, std::string& file) {
+  return cmd->add_option("scenario", file, "Scenario file (YAML)")->required();
+}
 
-  RunArgs run;
-  CLI::App* run_cmd = app.add_subcommand("run",
-                                         "Run a scenario and write its results folder "
-                                         "(trajectories.csv, log.csv, messages.csv, summary.json)");
-  run_cmd->add_option("scenario", run.file, "Scenario file (YAML)")->required();
-  run_cmd->add_option("--seed", run.seed, "Override the scenario's seed");
-  run_cmd->add_option("--duration", run.duration, "Override the simulated duration (s)")->check(CLI::PositiveNumber);
-  run_cmd->add_option("-o,--output", run.output,
-                      "Results folder (default: the scenario's outputs.folder, "
-                      "or results/<name>)");
-  run_cmd->add_flag("-q,--quiet", run.quiet, "Print nothing but errors");
-  run_cmd->add_flag("--no-progress", run.no_progress, "Do not show progress (shown only on a terminal)");
+Command AddRun(CLI::App& app) {
+  auto a = std::make_shared<RunArgs>();
+  CLI::App* cmd = app.add_subcommand("run",
+                                     "Run a scenario and write its results folder (trajectories.csv, "
+                                     "log.csv, messages.csv, transitions.csv, metrics.csv, summary.json)");
+  AddScenario(cmd, a->file);
+  cmd->add_option("--seed", a->seed, "Override the scenario's seed");
+  cmd->add_option("--duration", a->duration, "Override the simulated duration (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("-o,--output", a->output,
+                  "Results folder (default: the scenario's outputs.folder, or results/<name>)");
+  cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
+  cmd->add_flag("--no-progress", a->no_progress, "Do not show progress (shown only on a terminal)");
+  return {cmd, [a](agents::Registry& r) { return Run(*a, r); }};
+}
 
-  std::string validate_file;
-  CLI::App* validate_cmd = app.add_subcommand("validate",
-                                              "Check a scenario without running it: structure, "
-                                              "types, ranges, models, controllers and their parameters");
-  validate_cmd->add_option("scenario", validate_file, "Scenario file (YAML)")->required();
+Command AddValidate(CLI::App& app) {
+  auto file = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("validate",
+                                     "Check a scenario without running it: structure, types, ranges, "
+                                     "models, controllers and their parameters");
+  AddScenario(cmd, *file);
+  return {cmd, [file](agents::Registry& r) { return Validate(*file, r); }};
+}
 
-  std::string sweep_file, sweep_seeds = "1-10", sweep_output;
-  bool sweep_quiet = false;
-  CLI::App* sweep_cmd = app.add_subcommand("sweep",
-                                           "Run a scenario once per seed (replications) and summarise "
-                                           "when the runs met their end condition (mean, 95% confidence)");
-  sweep_cmd->add_option("scenario", sweep_file, "Scenario file (YAML)")->required();
-  sweep_cmd->add_option("--seeds", sweep_seeds, "Seeds: a list and/or ranges, e.g. 1-10 or 1,5,9")
-      ->capture_default_str();
-  sweep_cmd->add_option("-o,--output", sweep_output,
-                        "Folder for the runs and sweep.csv/sweep.json "
-                        "(default: results/<name>-sweep)");
-  sweep_cmd->add_flag("-q,--quiet", sweep_quiet, "Print nothing but errors");
+Command AddSweep(CLI::App& app) {
+  struct Args {
+    std::string file, seeds = "1-10", output;
+    bool quiet = false;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("sweep",
+                                     "Run a scenario once per seed (replications) and summarise when the "
+                                     "runs met their end condition (mean, 95% confidence)");
+  AddScenario(cmd, a->file);
+  cmd->add_option("--seeds", a->seeds, "Seeds: a list and/or ranges, e.g. 1-10 or 1,5,9")->capture_default_str();
+  cmd->add_option("-o,--output", a->output,
+                  "Folder for the runs and sweep.csv/sweep.json (default: results/<name>-sweep)");
+  cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
+  return {cmd, [a](agents::Registry& r) { return Sweep(a->file, a->seeds, a->output, a->quiet, r); }};
+}
 
-  std::string serve_file, serve_bind = "127.0.0.1", serve_output, serve_port_file;
-  int serve_port = 3000;
-  bool serve_quiet = false;
-  CLI::App* serve_cmd = app.add_subcommand("serve",
-                                           "Serve a scenario's world in real time over the robot protocol "
-                                           "(USARSim-compatible; docs/protocol.md): clients drive its robots");
-  serve_cmd->add_option("scenario", serve_file, "Scenario file (YAML)")->required();
-  serve_cmd->add_option("--bind", serve_bind, "Address to listen on (loopback by default)")->capture_default_str();
-  serve_cmd->add_option("--port", serve_port, "TCP port (0: any free port)")
-      ->check(CLI::Range(0, 65535))
-      ->capture_default_str();
-  serve_cmd->add_option("--port-file", serve_port_file,
-                        "Once listening, write the port number to this file "
-                        "(for programs that start the server with --port 0)");
-  serve_cmd->add_option("-o,--output", serve_output, "Results folder (default: the scenario's)");
-  serve_cmd->add_flag("-q,--quiet", serve_quiet, "Print only the listening line and errors");
-  std::optional<double> serve_duration, launch_duration;
-  serve_cmd->add_option("--duration", serve_duration, "Override the scenario's duration (s)")
-      ->check(CLI::PositiveNumber);
+Command AddServe(CLI::App& app) {
+  struct Args {
+    std::string file, bind = "127.0.0.1", output, port_file;
+    int port = 3000;
+    bool quiet = false;
+    std::optional<double> duration;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("serve",
+                                     "Serve a scenario's world in real time over the robot protocol "
+                                     "(USARSim-compatible; docs/protocol.md): clients drive its robots");
+  AddScenario(cmd, a->file);
+  cmd->add_option("--bind", a->bind, "Address to listen on (loopback by default)")->capture_default_str();
+  cmd->add_option("--port", a->port, "TCP port (0: any free port)")->check(CLI::Range(0, 65535))->capture_default_str();
+  cmd->add_option(
+      "--port-file", a->port_file,
+      "Once listening, write the port number to this file (for programs that start the server with --port 0)");
+  cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
+  cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
+  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  return {cmd, [a](agents::Registry& r) {
+            return Serve(a->file, a->bind, a->port, a->port_file, a->output, a->quiet, a->duration, r);
+          }};
+}
 
-  std::string agent_file, agent_robot, agent_server = "127.0.0.1:3000", agent_subnet;
-  std::optional<int> udp_base;
-  bool agent_shared_clock = false;
-  CLI::App* agent_cmd = app.add_subcommand("agent",
-                                           "Run one robot's controller as its own process: sensors and "
-                                           "motors through a `sanet serve` server, messages over real UDP");
-  agent_cmd->add_option("--scenario", agent_file, "Scenario file: the robot's controller and parameters, the peers")
-      ->required();
-  agent_cmd->add_option("--robot", agent_robot, "The robot to drive (its name in the scenario)")->required();
-  agent_cmd->add_option("--server", agent_server, "The server, HOST:PORT")->capture_default_str();
-  agent_cmd
-      ->add_option("--udp-base", udp_base,
-                   "UDP port of node 0; node i uses base + i (default: the "
-                   "scenario's loop.udp_port, 47000)")
+Command AddAgent(CLI::App& app) {
+  struct Args {
+    std::string file, robot, server = "127.0.0.1:3000", subnet;
+    std::optional<int> udp_base;
+    bool shared_clock = false;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("agent",
+                                     "Run one robot's controller as its own process: sensors and motors "
+                                     "through a `sanet serve` server, messages over real UDP");
+  cmd->add_option("--scenario", a->file, "Scenario file: the robot's controller and parameters, the peers")->required();
+  cmd->add_option("--robot", a->robot, "The robot to drive (its name in the scenario)")->required();
+  cmd->add_option("--server", a->server, "The server, HOST:PORT")->capture_default_str();
+  cmd->add_option("--udp-base", a->udp_base,
+                  "UDP port of node 0; node i uses base + i (default: the scenario's "
+                  "loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
-  agent_cmd->add_option("--udp-subnet", agent_subnet,
-                        "Instead: node i listens on SUBNET.(i+1) at the base port "
-                        "(agents in network namespaces)");
-  agent_cmd->add_flag("--shared-clock", agent_shared_clock, "The server runs on this machine: share its clock exactly");
+  cmd->add_option("--udp-subnet", a->subnet,
+                  "Instead: node i listens on SUBNET.(i+1) at the base port (agents in "
+                  "network namespaces)");
+  cmd->add_flag("--shared-clock", a->shared_clock, "The server runs on this machine: share its clock exactly");
+  return {cmd, [a](agents::Registry& r) {
+            return Agent(a->file, a->robot, a->server, a->udp_base, a->subnet, a->shared_clock, r);
+          }};
+}
 
-  std::string launch_file, launch_output;
-  CLI::App* launch_cmd = app.add_subcommand("launch",
-                                            "Start a server and one agent process per robot on this "
-                                            "machine, run the scenario in real time, stop them all (also on Ctrl-C)");
-  launch_cmd->add_option("scenario", launch_file, "Scenario file (YAML)")->required();
-  launch_cmd->add_option("-o,--output", launch_output, "Results folder (default: the scenario's)");
-  launch_cmd->add_option("--duration", launch_duration, "Override the scenario's duration (s)")
-      ->check(CLI::PositiveNumber);
-  launch_cmd->add_option("--udp-base", udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
+Command AddLaunch(CLI::App& app) {
+  struct Args {
+    std::string file, output;
+    std::optional<int> udp_base;
+    std::optional<double> duration;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("launch",
+                                     "Start a server and one agent process per robot on this machine, run "
+                                     "the scenario in real time, stop them all (also on Ctrl-C)");
+  AddScenario(cmd, a->file);
+  cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
+  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
+  return {cmd, [a](agents::Registry& r) { return Launch(a->file, a->output, a->udp_base, a->duration, r); }};
+}
 
-  std::vector<std::string> libraries;
-  CLI::App* list_cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
-  list_cmd->add_option("--library", libraries, "Also load this controller library (repeatable)");
+Command AddList(CLI::App& app) {
+  auto libraries = std::make_shared<std::vector<std::string>>();
+  CLI::App* cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
+  cmd->add_option("--library", *libraries, "Also load this controller library (repeatable)");
+  return {cmd, [libraries](agents::Registry& r) {
+            for (const auto& lib : *libraries) r.LoadLibrary(lib);
+            return List(r);
+          }};
+}
 
-  CLI11_PARSE(app, argc, argv);
-
-  agents::Registry registry;
-  controllers::RegisterBuiltinControllers(registry);
+// Runs the chosen command; errors a user can cause are one line on stderr and an exit code.
+int Perform(const Command& command, agents::Registry& registry) {
   try {
-    if (*run_cmd) return Run(run, registry);
-    if (*validate_cmd) return Validate(validate_file, registry);
-    if (*sweep_cmd) return Sweep(sweep_file, sweep_seeds, sweep_output, sweep_quiet, registry);
-    if (*serve_cmd)
-      return Serve(serve_file, serve_bind, serve_port, serve_port_file, serve_output, serve_quiet, serve_duration,
-                   registry);
-    if (*agent_cmd)
-      return Agent(agent_file, agent_robot, agent_server, udp_base, agent_subnet, agent_shared_clock, registry);
-    if (*launch_cmd) return Launch(launch_file, launch_output, udp_base, launch_duration, registry);
-    for (const auto& lib : libraries) registry.LoadLibrary(lib);
-    return List(registry);
+    return command.action(registry);
   } catch (const CLI::ValidationError& e) {
     std::fprintf(stderr, "sanet: error: %s\n", e.what());
     return kExitScenarioError;
@@ -429,4 +347,22 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sanet: run failed: %s\n", e.what());
     return kExitRunFailed;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "sanet: integrated simulator for sensor/actuator networks and networked robots.\n"
+      "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "sanet 0.1.0");
+  const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddServe(app),
+                                         AddAgent(app), AddLaunch(app),   AddList(app)};
+  CLI11_PARSE(app, argc, argv);
+  agents::Registry registry;
+  controllers::RegisterBuiltinControllers(registry);
+  for (const Command& c : commands)
+    if (*c.app) return Perform(c, registry);
+  return kExitRunFailed;
 }

@@ -1,0 +1,23 @@
+// `sanet launch`: the server and one agent process per robot with a controller, on this machine,
+// each agent in its own network namespace where the scenario asks and the machine permits; all
+// stopped when the server's run ends or on Ctrl-C (which ends the run with its results).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "sim/run_spec.h"
+
+namespace sanet::hil {
+
+struct LaunchSettings {
+  std::string scenario_file;
+  std::string output;  // the results folder
+  int udp_base = 47000;
+  std::optional<double> duration;  // overrides the scenario's
+};
+
+// Returns the server's exit code.
+int Launch(const sim::RunSpec& spec, const LaunchSettings& settings);
+
+}  // namespace sanet::hil

@@ -125,52 +125,57 @@ void ReadBody(const Field& f, ModelSpec& m) {
     f.Fail("wheel_distance must keep the wheels under the body (less than body_radius + wheel_radius)");
 }
 
+void ReadIr(const Field& ir, ModelSpec& m) {
+  robots::SensorSuite& s = m.sensors;
+  if (ir.IsScalar()) {
+    s.ir.reset();
+    if (ir.Bool()) s.ir = robots::DefaultIr(m);
+  } else {
+    ir.ExpectKeys({"count", "angles", "max_range", "height", "noise"});
+    if (!s.ir) s.ir = robots::DefaultIr(m);
+    if (auto count = ir.Get("count")) s.ir->angles = RangeSensorSpec::Ring(count->Integer(1, 360), 0, 0, 1).angles;
+    if (auto angles = ir.Get("angles")) {
+      if (ir.Get("count")) angles->Fail("give either count (evenly spaced) or angles, not both");
+      s.ir->angles.clear();
+      for (const Field& a : angles->Items()) s.ir->angles.push_back(a.Number(-2 * kPi, 2 * kPi));
+      if (s.ir->angles.empty()) angles->Fail("needs at least one angle");
+    }
+    if (auto range = ir.Get("max_range")) s.ir->max_range = range->NumberAbove(0, 100);
+    Optional(ir, "height", s.ir->mount_height, 0, 10);
+    Optional(ir, "noise", s.ir->noise, 0, 100);
+  }
+}
+
+void ReadLaser(const Field& laser, ModelSpec& m) {
+  robots::SensorSuite& s = m.sensors;
+  if (laser.IsScalar()) {
+    s.laser.reset();
+    if (laser.Bool()) s.laser = robots::DefaultLaser(m);
+  } else {
+    laser.ExpectKeys({"fov", "beams", "max_range", "height", "mount_x", "noise"});
+    if (!s.laser) s.laser = robots::DefaultLaser(m);
+    const RangeSensorSpec& d = *s.laser;
+    const double fov =
+        laser.Get("fov") ? laser.Get("fov")->NumberAbove(0, 2 * kPi) : d.angles.back() - d.angles.front();
+    const int beams = laser.Get("beams") ? laser.Get("beams")->Integer(1, 10000) : static_cast<int>(d.angles.size());
+    const double max_range = laser.Get("max_range") ? laser.Get("max_range")->NumberAbove(0, 1000) : d.max_range;
+    const double height = laser.Get("height") ? laser.Get("height")->Number(0, 10) : d.mount_height;
+    const double mount_x = laser.Get("mount_x") ? laser.Get("mount_x")->Number(-10, 10) : d.mount_x;
+    const double noise = d.noise;
+    s.laser = RangeSensorSpec::Fan(fov, beams, mount_x, height, max_range);
+    s.laser->noise = noise;
+    Optional(laser, "noise", s.laser->noise, 0, 100);
+  }
+}
+
 void ReadSensors(const Field& f, ModelSpec& m) {
   f.ExpectKeys({"ir", "laser", "odometry", "ground_truth", "bearing"});
   robots::SensorSuite& s = m.sensors;
   const bool mote = m.kind == ModelKind::kMote;
   // `ir: false` removes a sensor, `ir: true` adds the default one, a mapping changes the keys it
   // names on the default (or already present) sensor.
-  if (auto ir = f.Get("ir")) {
-    if (ir->IsScalar()) {
-      s.ir.reset();
-      if (ir->Bool()) s.ir = robots::DefaultIr(m);
-    } else {
-      ir->ExpectKeys({"count", "angles", "max_range", "height", "noise"});
-      if (!s.ir) s.ir = robots::DefaultIr(m);
-      if (auto count = ir->Get("count")) s.ir->angles = RangeSensorSpec::Ring(count->Integer(1, 360), 0, 0, 1).angles;
-      if (auto angles = ir->Get("angles")) {
-        if (ir->Get("count")) angles->Fail("give either count (evenly spaced) or angles, not both");
-        s.ir->angles.clear();
-        for (const Field& a : angles->Items()) s.ir->angles.push_back(a.Number(-2 * kPi, 2 * kPi));
-        if (s.ir->angles.empty()) angles->Fail("needs at least one angle");
-      }
-      if (auto range = ir->Get("max_range")) s.ir->max_range = range->NumberAbove(0, 100);
-      Optional(*ir, "height", s.ir->mount_height, 0, 10);
-      Optional(*ir, "noise", s.ir->noise, 0, 100);
-    }
-  }
-  if (auto laser = f.Get("laser")) {
-    if (laser->IsScalar()) {
-      s.laser.reset();
-      if (laser->Bool()) s.laser = robots::DefaultLaser(m);
-    } else {
-      laser->ExpectKeys({"fov", "beams", "max_range", "height", "mount_x", "noise"});
-      if (!s.laser) s.laser = robots::DefaultLaser(m);
-      const RangeSensorSpec& d = *s.laser;
-      const double fov =
-          laser->Get("fov") ? laser->Get("fov")->NumberAbove(0, 2 * kPi) : d.angles.back() - d.angles.front();
-      const int beams =
-          laser->Get("beams") ? laser->Get("beams")->Integer(1, 10000) : static_cast<int>(d.angles.size());
-      const double max_range = laser->Get("max_range") ? laser->Get("max_range")->NumberAbove(0, 1000) : d.max_range;
-      const double height = laser->Get("height") ? laser->Get("height")->Number(0, 10) : d.mount_height;
-      const double mount_x = laser->Get("mount_x") ? laser->Get("mount_x")->Number(-10, 10) : d.mount_x;
-      const double noise = d.noise;
-      s.laser = RangeSensorSpec::Fan(fov, beams, mount_x, height, max_range);
-      s.laser->noise = noise;
-      Optional(*laser, "noise", s.laser->noise, 0, 100);
-    }
-  }
+  if (auto ir = f.Get("ir")) ReadIr(*ir, m);
+  if (auto laser = f.Get("laser")) ReadLaser(*laser, m);
   if (auto odo = f.Get("odometry")) {
     if (mote) odo->Fail("a mote has no wheels, so no odometry");
     odo->ExpectKeys({"noise"});
@@ -247,6 +252,25 @@ T ReadChoice(const Field& f, std::initializer_list<std::pair<const char*, T>> ch
   f.Fail("unknown value '" + text + "' (expected one of: " + list + ")");
 }
 
+void ReadPropagation(const Field& p, net::NetworkSpec& n) {
+  using namespace net;
+  p.ExpectKeys({"model", "exponent", "reference_loss", "reference_distance", "antenna_height", "max_range"});
+  if (auto model = p.Get("model"))
+    n.loss = ReadChoice<LossModel>(*model, {{"log_distance", LossModel::kLogDistance},
+                                            {"friis", LossModel::kFriis},
+                                            {"two_ray_ground", LossModel::kTwoRayGround}});
+  if (n.loss != LossModel::kLogDistance)
+    for (const char* key : {"exponent", "reference_loss", "reference_distance"})
+      if (auto k = p.Get(key)) k->Fail("applies to the log_distance model only");
+  if (n.loss != LossModel::kTwoRayGround)
+    if (auto k = p.Get("antenna_height")) k->Fail("applies to the two_ray_ground model only");
+  Optional(p, "exponent", n.exponent, 1, 10);
+  Optional(p, "reference_loss", n.reference_loss, 0, 200);
+  if (auto d = p.Get("reference_distance")) n.reference_distance = d->NumberAbove(0, 1e6);
+  Optional(p, "antenna_height", n.antenna_height, 0, 1000);
+  Optional(p, "max_range", n.max_range, 0, 1e7);
+}
+
 net::NetworkSpec ReadNetwork(const Field& f) {
   using namespace net;
   f.ExpectKeys({"radio", "data_rate", "tx_power", "rx_threshold", "propagation", "delay", "random_delay_max", "routing",
@@ -274,23 +298,7 @@ net::NetworkSpec ReadNetwork(const Field& f) {
   }
   Optional(f, "tx_power", n.tx_power, -50, 60);
   Optional(f, "rx_threshold", n.rx_threshold, -150, 0);
-  if (auto p = f.Get("propagation")) {
-    p->ExpectKeys({"model", "exponent", "reference_loss", "reference_distance", "antenna_height", "max_range"});
-    if (auto model = p->Get("model"))
-      n.loss = ReadChoice<LossModel>(*model, {{"log_distance", LossModel::kLogDistance},
-                                              {"friis", LossModel::kFriis},
-                                              {"two_ray_ground", LossModel::kTwoRayGround}});
-    if (n.loss != LossModel::kLogDistance)
-      for (const char* key : {"exponent", "reference_loss", "reference_distance"})
-        if (auto k = p->Get(key)) k->Fail("applies to the log_distance model only");
-    if (n.loss != LossModel::kTwoRayGround)
-      if (auto k = p->Get("antenna_height")) k->Fail("applies to the two_ray_ground model only");
-    Optional(*p, "exponent", n.exponent, 1, 10);
-    Optional(*p, "reference_loss", n.reference_loss, 0, 200);
-    if (auto d = p->Get("reference_distance")) n.reference_distance = d->NumberAbove(0, 1e6);
-    Optional(*p, "antenna_height", n.antenna_height, 0, 1000);
-    Optional(*p, "max_range", n.max_range, 0, 1e7);
-  }
+  if (auto p = f.Get("propagation")) ReadPropagation(*p, n);
   if (auto delay = f.Get("delay"))
     n.delay = ReadChoice<DelayModel>(*delay,
                                      {{"constant_speed", DelayModel::kConstantSpeed}, {"random", DelayModel::kRandom}});
@@ -359,11 +367,158 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_netw
   return t;
 }
 
+void ReadWorld(const Field& world, sim::RunSpec& run) {
+  world.ExpectKeys({"size", "physics_step", "gravity", "ground_friction", "solver", "solver_iterations", "obstacles"});
+  if (auto solver = world.Get("solver")) {
+    const std::string name = solver->Text();
+    if (name != "exact" && name != "quick") solver->Fail("must be exact or quick, not '" + name + "'");
+    run.physics.solver = name == "exact" ? physics::Solver::kExact : physics::Solver::kQuick;
+  }
+  if (auto size = world.Get("size")) {
+    run.world_size = ReadPoint(*size);
+    if (run.world_size.x <= 0 || run.world_size.y <= 0) size->Fail("both sides must be greater than 0");
+  }
+  if (auto step = world.Get("physics_step")) run.physics_step = step->NumberAbove(0, 0.1);
+  Optional(world, "gravity", run.physics.gravity, 0, 100);
+  Optional(world, "ground_friction", run.physics.ground_friction, 0, 10);
+  if (auto it = world.Get("solver_iterations")) run.physics.solver_iterations = it->Integer(1, 1000);
+  if (auto obstacles = world.Get("obstacles"))
+    if (!obstacles->node().IsNull())
+      for (const Field& o : obstacles->Items()) run.obstacles.push_back(ReadObstacle(o));
+}
+
+// Adds nodes to a scenario, refusing a name used twice.
+class NodeList {
+ public:
+  explicit NodeList(Scenario& sc) : sc_(sc) {}
+  void Add(const Field& where, sim::NodeSpec node, int controller_line) {
+    auto [it, fresh] = names_.emplace(node.name, where.line());
+    if (!fresh) where.Fail("node name '" + node.name + "' is already used on line " + std::to_string(it->second));
+    sc_.run.nodes.push_back(std::move(node));
+    sc_.controller_lines.push_back(controller_line);
+    sc_.controller_fields.push_back(controller_line ? where.path().substr(0, where.path().find(']') + 1) + ".controller"
+                                                    : "");
+  }
+
+ private:
+  Scenario& sc_;
+  std::map<std::string, int> names_;  // name -> line where it was defined
+};
+
+// `grid: {name, rows, cols, origin, spacing, heading}`: nodes NAME0, NAME1, ... row by row.
+void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& list) {
+  n.ExpectKeys({"grid", "model", "body", "sensors", "radio", "controller"});
+  const Field g = n.Require("grid");
+  g.ExpectKeys({"name", "rows", "cols", "origin", "spacing", "heading"});
+  const std::string prefix = ReadName(g.Require("name"));
+  const int rows = g.Require("rows").Integer(1, 10000);
+  const int cols = g.Require("cols").Integer(1, 10000);
+  const Vec2 origin = g.Get("origin") ? ReadPoint(*g.Get("origin")) : Vec2{0, 0};
+  Vec2 spacing{1, 1};
+  if (auto s = g.Get("spacing")) {
+    spacing = s->IsSequence() ? ReadPoint(*s) : Vec2{s->Number(0, 1e6), s->Number(0, 1e6)};
+    if (spacing.x <= 0 || spacing.y <= 0) s->Fail("spacing must be greater than 0");
+  }
+  const double heading = g.Get("heading") ? g.Get("heading")->Number(-kInf, kInf) : 0;
+  const NodeTemplate t = ReadNodeTemplate(n, dir, has_network);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      list.Add(g.Require("name"),
+               {prefix + std::to_string(r * cols + c),
+                t.model,
+                {origin.x + c * spacing.x, origin.y + r * spacing.y, heading},
+                t.controller,
+                t.radio},
+               t.controller_line);
+}
+
+void ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
+  sim::RunSpec& run = sc.run;
+  NodeList list(sc);
+  for (const Field& n : nodes.Items()) {
+    if (n.IsMap() && n.Get("grid")) {
+      ReadGrid(n, dir, run.network.has_value(), list);
+      continue;
+    }
+    n.ExpectKeys({"name", "model", "pose", "body", "sensors", "radio", "controller"});
+    const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
+    const auto pose = n.Require("pose").Numbers(3);
+    list.Add(n.Require("name"),
+             {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
+             t.controller_line);
+  }
+  if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
+  if (run.network && run.nodes.size() > 65534)
+    nodes.Fail("a network has room for 65534 nodes (10.0.0.0/16), not " + std::to_string(run.nodes.size()));
+}
+
+void ReadMessages(const Field& messages, sim::RunSpec& run) {
+  if (run.network && messages.Get("latency"))
+    messages.Get("latency")->Fail("is for runs without a network; with one, the network delivers");
+  messages.ExpectKeys({"latency", "loss", "delay"});
+  Optional(messages, "latency", run.message_latency, 0, 1000);
+  Optional(messages, "loss", run.message_loss, 0, 1);
+  Optional(messages, "delay", run.message_delay, 0, 1000);
+}
+
+void ReadEvents(const Field& events, sim::RunSpec& run) {
+  for (const Field& e : events.Items()) {
+    e.ExpectKeys({"time", "node", "action"});
+    sim::NodeEvent event;
+    event.time = e.Require("time").Number(0, 1e9);
+    const Field node = e.Require("node");
+    bool found = false;
+    for (std::size_t i = 0; i < run.nodes.size(); ++i)
+      if (run.nodes[i].name == node.Text()) event.node = static_cast<std::uint32_t>(i), found = true;
+    if (!found) node.Fail("no node named '" + node.Text() + "'");
+    event.action =
+        ReadChoice<sim::NodeEvent::Action>(e.Require("action"), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}});
+    run.events.push_back(event);
+  }
+}
+
+void ReadLoop(const Field& loop, sim::RunSpec& run) {
+  loop.ExpectKeys({"namespaces", "netem", "udp_port"});
+  if (auto ns = loop.Get("namespaces")) run.loop.namespaces = ns->Bool();
+  if (auto port = loop.Get("udp_port")) run.loop.udp_port = static_cast<std::uint16_t>(port->Integer(1024, 60000));
+  if (auto netem = loop.Get("netem")) {
+    netem->ExpectKeys({"delay", "jitter", "loss", "rate"});
+    if (!run.loop.namespaces) netem->Fail("shapes the links between namespaces: set loop.namespaces: true");
+    Optional(*netem, "delay", run.loop.shaping.delay, 0, 60);
+    Optional(*netem, "jitter", run.loop.shaping.jitter, 0, 60);
+    Optional(*netem, "loss", run.loop.shaping.loss, 0, 1);
+    Optional(*netem, "rate", run.loop.shaping.rate, 0, 1e12);
+  }
+}
+
+void ReadEnd(const Field& end, sim::RunSpec& run) {
+  end.ExpectKeys({"when_logged", "grace"});
+  if (auto grace = end.Get("grace")) run.end_grace = grace->Number(0, 1e6);
+  const Field logged = end.Require("when_logged");
+  if (logged.IsScalar())
+    run.end_when_logged.push_back(logged.Text());
+  else
+    for (const Field& line : logged.Items()) run.end_when_logged.push_back(line.Text());
+}
+
+void ReadOutputs(const Field& outputs, Scenario& sc) {
+  sim::RunSpec& run = sc.run;
+  outputs.ExpectKeys({"folder", "trajectory_interval", "figures", "figure_tick", "min_distance", "distance_reference"});
+  if (auto md = outputs.Get("min_distance")) run.min_distance = md->Bool();
+  if (auto ref = outputs.Get("distance_reference")) {
+    run.distance_reference = ref->NumberAbove(0, 1e6);
+    run.min_distance = true;
+  }
+  if (auto figures = outputs.Get("figures")) run.figures = figures->Bool();
+  if (auto tick = outputs.Get("figure_tick")) run.figure_tick = tick->NumberAbove(0, 1e9);
+  if (auto folder = outputs.Get("folder")) sc.output_folder = folder->Text();
+  if (auto interval = outputs.Get("trajectory_interval")) run.trajectory_interval = interval->NumberAbove(0, 1e6);
+}
+
 }  // namespace
 
 Scenario LoadScenario(const std::string& path) {
   const Field root = ParseYamlFile(path);
-  const fs::path dir = fs::path(path).parent_path();
   Scenario sc;
   sc.file = path;
   sim::RunSpec& run = sc.run;
@@ -373,135 +528,14 @@ Scenario LoadScenario(const std::string& path) {
   run.name = root.Get("name") ? ReadName(*root.Get("name")) : fs::path(path).stem().string();
   if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
   run.duration = root.Require("duration").NumberAbove(0, 1e9);
-
-  if (auto world = root.Get("world")) {
-    world->ExpectKeys(
-        {"size", "physics_step", "gravity", "ground_friction", "solver", "solver_iterations", "obstacles"});
-    if (auto solver = world->Get("solver")) {
-      const std::string name = solver->Text();
-      if (name != "exact" && name != "quick") solver->Fail("must be exact or quick, not '" + name + "'");
-      run.physics.solver = name == "exact" ? physics::Solver::kExact : physics::Solver::kQuick;
-    }
-    if (auto size = world->Get("size")) {
-      run.world_size = ReadPoint(*size);
-      if (run.world_size.x <= 0 || run.world_size.y <= 0) size->Fail("both sides must be greater than 0");
-    }
-    if (auto step = world->Get("physics_step")) run.physics_step = step->NumberAbove(0, 0.1);
-    Optional(*world, "gravity", run.physics.gravity, 0, 100);
-    Optional(*world, "ground_friction", run.physics.ground_friction, 0, 10);
-    if (auto it = world->Get("solver_iterations")) run.physics.solver_iterations = it->Integer(1, 1000);
-    if (auto obstacles = world->Get("obstacles"))
-      if (!obstacles->node().IsNull())
-        for (const Field& o : obstacles->Items()) run.obstacles.push_back(ReadObstacle(o));
-  }
-
-  std::map<std::string, int> names;  // name -> line where it was defined
-  auto add_node = [&](const Field& where, sim::NodeSpec node, int controller_line) {
-    auto [it, fresh] = names.emplace(node.name, where.line());
-    if (!fresh) where.Fail("node name '" + node.name + "' is already used on line " + std::to_string(it->second));
-    run.nodes.push_back(std::move(node));
-    sc.controller_lines.push_back(controller_line);
-    sc.controller_fields.push_back(controller_line ? where.path().substr(0, where.path().find(']') + 1) + ".controller"
-                                                   : "");
-  };
-  const Field nodes = root.Require("nodes");
-  for (const Field& n : nodes.Items()) {
-    if (n.IsMap() && n.Get("grid")) {
-      n.ExpectKeys({"grid", "model", "body", "sensors", "radio", "controller"});
-      const Field g = n.Require("grid");
-      g.ExpectKeys({"name", "rows", "cols", "origin", "spacing", "heading"});
-      const std::string prefix = ReadName(g.Require("name"));
-      const int rows = g.Require("rows").Integer(1, 10000);
-      const int cols = g.Require("cols").Integer(1, 10000);
-      const Vec2 origin = g.Get("origin") ? ReadPoint(*g.Get("origin")) : Vec2{0, 0};
-      Vec2 spacing{1, 1};
-      if (auto s = g.Get("spacing")) {
-        spacing = s->IsSequence() ? ReadPoint(*s) : Vec2{s->Number(0, 1e6), s->Number(0, 1e6)};
-        if (spacing.x <= 0 || spacing.y <= 0) s->Fail("spacing must be greater than 0");
-      }
-      const double heading = g.Get("heading") ? g.Get("heading")->Number(-kInf, kInf) : 0;
-      const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
-      for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < cols; ++c)
-          add_node(g.Require("name"),
-                   {prefix + std::to_string(r * cols + c),
-                    t.model,
-                    {origin.x + c * spacing.x, origin.y + r * spacing.y, heading},
-                    t.controller,
-                    t.radio},
-                   t.controller_line);
-      continue;
-    }
-    n.ExpectKeys({"name", "model", "pose", "body", "sensors", "radio", "controller"});
-    const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
-    const auto pose = n.Require("pose").Numbers(3);
-    add_node(n.Require("name"),
-             {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
-             t.controller_line);
-  }
-  if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
-  if (run.network && run.nodes.size() > 65534)
-    nodes.Fail("a network has room for 65534 nodes (10.0.0.0/16), not " + std::to_string(run.nodes.size()));
-
-  if (auto messages = root.Get("messages")) {
-    if (run.network && messages->Get("latency"))
-      messages->Get("latency")->Fail("is for runs without a network; with one, the network delivers");
-    messages->ExpectKeys({"latency", "loss", "delay"});
-    Optional(*messages, "latency", run.message_latency, 0, 1000);
-    Optional(*messages, "loss", run.message_loss, 0, 1);
-    Optional(*messages, "delay", run.message_delay, 0, 1000);
-  }
-  if (auto events = root.Get("events")) {
-    for (const Field& e : events->Items()) {
-      e.ExpectKeys({"time", "node", "action"});
-      sim::NodeEvent event;
-      event.time = e.Require("time").Number(0, 1e9);
-      const Field node = e.Require("node");
-      const auto it = names.find(node.Text());
-      if (it == names.end()) node.Fail("no node named '" + node.Text() + "'");
-      for (std::size_t i = 0; i < run.nodes.size(); ++i)
-        if (run.nodes[i].name == node.Text()) event.node = static_cast<std::uint32_t>(i);
-      event.action =
-          ReadChoice<sim::NodeEvent::Action>(e.Require("action"), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}});
-      run.events.push_back(event);
-    }
-  }
-  if (auto loop = root.Get("loop")) {
-    loop->ExpectKeys({"namespaces", "netem", "udp_port"});
-    if (auto ns = loop->Get("namespaces")) run.loop.namespaces = ns->Bool();
-    if (auto port = loop->Get("udp_port")) run.loop.udp_port = static_cast<std::uint16_t>(port->Integer(1024, 60000));
-    if (auto netem = loop->Get("netem")) {
-      netem->ExpectKeys({"delay", "jitter", "loss", "rate"});
-      if (!run.loop.namespaces) netem->Fail("shapes the links between namespaces: set loop.namespaces: true");
-      Optional(*netem, "delay", run.loop.shaping.delay, 0, 60);
-      Optional(*netem, "jitter", run.loop.shaping.jitter, 0, 60);
-      Optional(*netem, "loss", run.loop.shaping.loss, 0, 1);
-      Optional(*netem, "rate", run.loop.shaping.rate, 0, 1e12);
-    }
-  }
-  if (auto end = root.Get("end")) {
-    end->ExpectKeys({"when_logged", "grace"});
-    if (auto grace = end->Get("grace")) run.end_grace = grace->Number(0, 1e6);
-    const Field logged = end->Require("when_logged");
-    if (logged.IsScalar())
-      run.end_when_logged.push_back(logged.Text());
-    else
-      for (const Field& line : logged.Items()) run.end_when_logged.push_back(line.Text());
-  }
+  if (auto world = root.Get("world")) ReadWorld(*world, run);
+  ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc);
+  if (auto messages = root.Get("messages")) ReadMessages(*messages, run);
+  if (auto events = root.Get("events")) ReadEvents(*events, run);
+  if (auto loop = root.Get("loop")) ReadLoop(*loop, run);
+  if (auto end = root.Get("end")) ReadEnd(*end, run);
   sc.output_folder = "results/" + run.name;
-  if (auto outputs = root.Get("outputs")) {
-    outputs->ExpectKeys(
-        {"folder", "trajectory_interval", "figures", "figure_tick", "min_distance", "distance_reference"});
-    if (auto md = outputs->Get("min_distance")) run.min_distance = md->Bool();
-    if (auto ref = outputs->Get("distance_reference")) {
-      run.distance_reference = ref->NumberAbove(0, 1e6);
-      run.min_distance = true;
-    }
-    if (auto figures = outputs->Get("figures")) run.figures = figures->Bool();
-    if (auto tick = outputs->Get("figure_tick")) run.figure_tick = tick->NumberAbove(0, 1e9);
-    if (auto folder = outputs->Get("folder")) sc.output_folder = folder->Text();
-    if (auto interval = outputs->Get("trajectory_interval")) run.trajectory_interval = interval->NumberAbove(0, 1e6);
-  }
+  if (auto outputs = root.Get("outputs")) ReadOutputs(*outputs, sc);
   if (run.trajectory_interval < run.physics_step) {
     const auto outputs = root.Get("outputs");
     const auto interval = outputs ? outputs->Get("trajectory_interval") : std::nullopt;

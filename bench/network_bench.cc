@@ -55,7 +55,8 @@ double RunSanet(int count, double duration, agents::Registry& registry) {
     spec.nodes.push_back({"m" + std::to_string(i),
                           robots::ModelSpec::Defaults(robots::ModelKind::kMote),
                           {kSpacing * (i % layout.side), kSpacing * (i / layout.side), 0},
-                          std::nullopt});
+                          std::nullopt,
+                          {}});
   for (const auto& [source, destination] : layout.flows) {
     sim::ControllerSpec c;
     c.name = "pinger";

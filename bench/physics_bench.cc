@@ -32,7 +32,8 @@ sim::RunSpec Robots(int count, double duration, physics::Solver solver) {
     sim::NodeSpec n{"r" + std::to_string(i),
                     robots::ModelSpec::Defaults(robots::ModelKind::kOmni3),
                     {3.0 * (i % side), 3.0 * (i / side), 0},
-                    sim::ControllerSpec{}};
+                    sim::ControllerSpec{},
+                    {}};
     n.controller->name = "constant_velocity";  // a 1 m circle: the robots keep driving, apart
     ParamValue vx, omega;
     vx.rows = {{"0.3"}};
@@ -51,7 +52,8 @@ sim::RunSpec Motes(int count, double duration) {
     spec.nodes.push_back({"m" + std::to_string(i),
                           robots::ModelSpec::Defaults(robots::ModelKind::kMote),
                           {10.0 * (i % 20), 10.0 * (i / 20), 0},
-                          std::nullopt});
+                          std::nullopt,
+                          {}});
   return spec;
 }
 

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -27,6 +28,13 @@ class ParamError : public std::runtime_error {
   int line_;
 };
 
+// What a controller asked of its parameters: sanet lists a controller's parameters by creating
+// it once with none and noting each read (name, kind, default, range).
+struct ParamRead {
+  std::string key, kind, fallback;
+  double min = -HUGE_VAL, max = HUGE_VAL;
+};
+
 // One parameter value: a scalar, a list of scalars, or a list of lists (e.g. way points).
 struct ParamValue {
   enum class Shape { kScalar, kList, kTable };
@@ -40,6 +48,8 @@ class Params {
   Params() = default;
   void Set(const std::string& key, ParamValue value) { values_[key] = std::move(value); }
   bool Has(const std::string& key) const { return values_.count(key) != 0; }
+  // Every parameter as written, by key.
+  const std::map<std::string, ParamValue>& All() const { return values_; }
   // Line of `key` in the scenario (0 if absent).
   int Line(const std::string& key) const {
     auto it = values_.find(key);
@@ -47,12 +57,14 @@ class Params {
   }
 
   double Number(const std::string& key, double fallback, double min = -HUGE_VAL, double max = HUGE_VAL) const {
+    Note(key, "number", NumberText(fallback), min, max);
     const ParamValue* v = Find(key);
     if (!v) return fallback;
     return CheckRange(key, *v, ToNumber(key, *v, Scalar(key, *v)), min, max);
   }
 
   int Integer(const std::string& key, int fallback, int min = -2147483647, int max = 2147483647) const {
+    Note(key, "whole number", std::to_string(fallback), min, max);
     const ParamValue* v = Find(key);
     if (!v) return fallback;
     const double d = ToNumber(key, *v, Scalar(key, *v));
@@ -61,6 +73,7 @@ class Params {
   }
 
   bool Flag(const std::string& key, bool fallback) const {
+    Note(key, "boolean", fallback ? "true" : "false");
     const ParamValue* v = Find(key);
     if (!v) return fallback;
     const std::string& s = Scalar(key, *v);
@@ -70,12 +83,14 @@ class Params {
   }
 
   std::string Text(const std::string& key, const std::string& fallback) const {
+    Note(key, "text", fallback);
     const ParamValue* v = Find(key);
     return v ? Scalar(key, *v) : fallback;
   }
 
   // A word or a list of words, e.g. node names.
   std::vector<std::string> Words(const std::string& key, std::vector<std::string> fallback) const {
+    Note(key, "word or list of words", List(fallback));
     const ParamValue* v = Find(key);
     if (!v) return fallback;
     if (v->shape == ParamValue::Shape::kTable) Fail(key, *v, "must be a word or a list of words");
@@ -83,6 +98,9 @@ class Params {
   }
 
   std::vector<double> Numbers(const std::string& key, std::vector<double> fallback) const {
+    std::vector<std::string> texts;
+    for (double d : fallback) texts.push_back(NumberText(d));
+    Note(key, "list of numbers", List(texts));
     const ParamValue* v = Find(key);
     if (!v) return fallback;
     if (v->shape == ParamValue::Shape::kTable) Fail(key, *v, "must be a list of numbers");
@@ -94,6 +112,7 @@ class Params {
   // A list of rows of `width` numbers each, e.g. way points [[x, y], [x, y]].
   std::vector<std::vector<double>> Table(const std::string& key, std::size_t width,
                                          std::vector<std::vector<double>> fallback) const {
+    Note(key, "list of [" + std::to_string(width) + " numbers]", fallback.empty() ? "none" : "given");
     const ParamValue* v = Find(key);
     if (!v) return fallback;
     if (v->shape != ParamValue::Shape::kTable)
@@ -108,6 +127,9 @@ class Params {
     return out;
   }
 
+  // Every read so far, in order, each key once.
+  const std::vector<ParamRead>& Reads() const { return reads_; }
+
   // Throws for the first key that no getter has read: an unknown parameter.
   void CheckAllUsed() const {
     for (const auto& [key, value] : values_)
@@ -115,6 +137,23 @@ class Params {
   }
 
  private:
+  void Note(const std::string& key, std::string kind, std::string fallback, double min = -HUGE_VAL,
+            double max = HUGE_VAL) const {
+    for (const ParamRead& r : reads_)
+      if (r.key == key) return;
+    reads_.push_back({key, std::move(kind), std::move(fallback), min, max});
+  }
+  static std::string NumberText(double d) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", d);
+    return s;
+  }
+  static std::string List(const std::vector<std::string>& items) {
+    if (items.empty()) return "none";
+    std::string out = "[";
+    for (const std::string& i : items) out += (out.size() > 1 ? ", " : "") + i;
+    return out + "]";
+  }
   const ParamValue* Find(const std::string& key) const {
     auto it = values_.find(key);
     if (it == values_.end()) return nullptr;
@@ -154,6 +193,7 @@ class Params {
 
   std::map<std::string, ParamValue> values_;
   mutable std::set<std::string> used_;
+  mutable std::vector<ParamRead> reads_;
 };
 
 }  // namespace sanet

@@ -50,9 +50,16 @@ class SimulatedNode : public Node {
   bool SetWheelSpeeds(const std::vector<double>& w) override { return !off_ && model_.SetWheelSpeeds(w); }
   bool Holonomic() const override { return model_.holonomic(); }
 
-  void Send(NodeId to, const Bytes& payload) override { transport_.Send(id_, to, payload); }
-  void Broadcast(const Bytes& payload) override { transport_.Broadcast(id_, payload); }
-  void Flood(const Bytes& payload) override { transport_.Flood(id_, payload); }
+  // A switched-off node's radio is off: it sends nothing.
+  void Send(NodeId to, const Bytes& payload) override {
+    if (!off_) transport_.Send(id_, to, payload);
+  }
+  void Broadcast(const Bytes& payload) override {
+    if (!off_) transport_.Broadcast(id_, payload);
+  }
+  void Flood(const Bytes& payload) override {
+    if (!off_) transport_.Flood(id_, payload);
+  }
   NetworkView& Network() override { return transport_.View(id_); }
   void Log(const std::string& text) override { directory_.Log(id_, text); }
   void Transition(const std::string& from, const std::string& to, const std::string& why) override {

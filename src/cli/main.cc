@@ -22,6 +22,8 @@
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
 #include "robots/node_model.h"
+#include "scenario/catalogue.h"
+#include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "sim/sweep.h"
 #include "sim/world.h"
@@ -121,14 +123,24 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   hil::ServerSettings settings;
   settings.bind = bind;
   settings.port = static_cast<std::uint16_t>(port);
-  hil::SimServer server(world, settings);
+  std::unique_ptr<hil::SimServer> listening;
+  try {
+    listening = std::make_unique<hil::SimServer>(world, settings);
+  } catch (const std::runtime_error& e) {
+    throw CLI::ValidationError("--port", e.what());
+  }
+  hil::SimServer& server = *listening;
+  try {
+    if (!port_file.empty()) WriteFileAtomically(port_file, std::to_string(server.port()) + "\n");
+  } catch (const std::runtime_error&) {
+    throw CLI::ValidationError("--port-file", "cannot write " + port_file + " (does its folder exist?)");
+  }
   server.Start();
   std::signal(SIGINT, [](int) { hil::RequestStop(); });
   std::signal(SIGTERM, [](int) { hil::RequestStop(); });
   std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), bind.c_str(), server.port(),
               sc.run.duration);
   std::fflush(stdout);
-  if (!port_file.empty()) WriteFileAtomically(port_file, std::to_string(server.port()) + "\n");
   sim::RunOptions options;
   options.output_dir = output.empty() ? sc.output_folder : output;
   options.scenario_file = file;
@@ -175,8 +187,12 @@ int Launch(const std::string& file, const std::string& output, std::optional<int
   return hil::Launch(sc.run, settings);
 }
 
-int Validate(const std::string& file, agents::Registry& registry) {
+int Validate(const std::string& file, bool print, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, registry);
+  if (print) {
+    std::fputs(scenario::EffectiveScenarioYaml(sc).c_str(), stdout);
+    return 0;
+  }
   std::size_t robots = 0, controlled = 0;
   for (const auto& n : sc.run.nodes) {
     robots += n.model.kind != robots::ModelKind::kMote;
@@ -188,15 +204,8 @@ int Validate(const std::string& file, agents::Registry& registry) {
   return 0;
 }
 
-int List(agents::Registry& registry) {
-  std::printf("models:\n");
-  std::printf("  mote       a 10 cm cube of 50 g that rests until pushed; no drive\n");
-  std::printf("  omni3      Robertino-like omnidirectional robot: three omni wheels, six IR sensors\n");
-  std::printf("  diffdrive  Pioneer-P2DX-like differential drive: two wheels and a caster, 180-degree laser\n");
-  std::printf("sensors:\n");
-  std::printf("  ir, laser, odometry, ground_truth, bearing (see docs/scenario.md)\n");
-  std::printf("controllers:\n");
-  for (const ControllerInfo* c : registry.List()) std::printf("  %-18s %s\n", c->name.c_str(), c->description.c_str());
+int List(agents::Registry& registry, bool markdown) {
+  std::fputs((markdown ? scenario::ReferenceMarkdown() : scenario::Catalogue(registry)).c_str(), stdout);
   return 0;
 }
 
@@ -227,11 +236,15 @@ Command AddRun(CLI::App& app) {
 
 Command AddValidate(CLI::App& app) {
   auto file = std::make_shared<std::string>();
+  auto print = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("validate",
                                      "Check a scenario without running it: structure, types, ranges, "
                                      "models, controllers and their parameters");
   AddScenario(cmd, *file);
-  return {cmd, [file](agents::Registry& r) { return Validate(*file, r); }};
+  cmd->add_flag("--print", *print,
+                "Print the effective scenario: every default filled in, grids as their nodes (it loads and runs "
+                "to the same fingerprint)");
+  return {cmd, [file, print](agents::Registry& r) { return Validate(*file, *print, r); }};
 }
 
 Command AddSweep(CLI::App& app) {
@@ -322,11 +335,15 @@ Command AddLaunch(CLI::App& app) {
 
 Command AddList(CLI::App& app) {
   auto libraries = std::make_shared<std::vector<std::string>>();
-  CLI::App* cmd = app.add_subcommand("list", "List the models, sensors and controllers sanet knows");
+  auto markdown = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand("list",
+                                     "List the models (with their body keys), sensors (with their keys) and "
+                                     "controllers (with their parameters) that sanet knows");
   cmd->add_option("--library", *libraries, "Also load this controller library (repeatable)");
-  return {cmd, [libraries](agents::Registry& r) {
+  cmd->add_flag("--markdown", *markdown, "Print the scenario format's reference tables (as in docs/scenario.md)");
+  return {cmd, [libraries, markdown](agents::Registry& r) {
             for (const auto& lib : *libraries) r.LoadLibrary(lib);
-            return List(r);
+            return List(r, *markdown);
           }};
 }
 
@@ -359,7 +376,12 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "sanet 0.1.0");
   const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddServe(app),
                                          AddAgent(app), AddLaunch(app),   AddList(app)};
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help, the version or the error
+    return code == 0 ? 0 : kExitScenarioError;
+  }
   agents::Registry registry;
   controllers::RegisterBuiltinControllers(registry);
   for (const Command& c : commands)

@@ -351,19 +351,25 @@ void SimServer::Drop(Client& c, const std::string& why) {
   }
 }
 
-// SEND: the robot's message leaves from its own ns-3 node, like any node's.
+// SEND: the robot's message leaves from its own ns-3 node, like any node's. Values are
+// case-sensitive, as node names are.
 void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
   const std::string* delivery = m.Get("Delivery");
   const std::string* data = m.Get("Data");
   const auto kind = ParseDelivery(delivery ? *delivery : "unicast");
-  const auto payload = data ? FromHex(*data) : std::nullopt;
-  if (!kind || !payload) return Error(c, "SEND needs {Delivery unicast|broadcast|flood} and {Data hex bytes}");
+  if (!kind) return Error(c, "SEND {Delivery " + *delivery + "}: expected unicast, broadcast or flood");
+  if (!data) return Error(c, "SEND needs {Data hex bytes}");
+  const auto payload = FromHex(*data);
+  if (!payload) return Error(c, "SEND {Data ...}: expected hex bytes (pairs of 0-9, a-f), not '" + *data + "'");
   agents::SimulatedNode& node = NodeOf(c);
+  if (node.switched_off()) return Error(c, "robot " + node.Name() + " is switched off: SEND ignored");
   if (*kind == Delivery::kBroadcast) return node.Broadcast(*payload);
   if (*kind == Delivery::kFlood) return node.Flood(*payload);
   const std::string* to = m.Get("To");
-  const auto target = to ? world_.Lookup(*to) : std::nullopt;
-  if (!target) return Error(c, "SEND {Delivery unicast} needs {To node}: one of the scenario's nodes");
+  if (!to) return Error(c, "SEND to one node needs {To node}; or give {Delivery broadcast} or {Delivery flood}");
+  const auto target = world_.Lookup(*to);
+  if (!target) return Error(c, "SEND {To " + *to + "}: no node named '" + *to + "' in this scenario");
+  if (*target == node.Id()) return Error(c, "SEND {To " + *to + "}: that is this robot");
   node.Send(*target, *payload);
 }
 
@@ -371,14 +377,15 @@ void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
 void SimServer::Report(Client& c, const ProtocolMessage& m) {
   agents::SimulatedNode& node = NodeOf(c);
   const std::string* text = m.Get("Text");
-  if (m.type == "LOG") return text ? node.Log(*text) : Error(c, "LOG needs {Text ...}");
+  if (m.type == "LOG") return text && !text->empty() ? node.Log(*text) : Error(c, "LOG needs {Text ...}");
   if (m.type == "METRIC") {
     const std::string* name = m.Get("Name");
     const auto value = m.Number("Value");
     return name && value ? node.Metric(*name, *value) : Error(c, "METRIC needs {Name n} and a number {Value v}");
   }
   const std::string *from = m.Get("From"), *to = m.Get("To"), *why = m.Get("Why");
-  if (!from || !to) return Error(c, "TRANSITION needs {From state} {To state} and may give {Why ...}");
+  if (!from || !to || from->empty() || to->empty())
+    return Error(c, "TRANSITION needs {From state} {To state}, both named, and may give {Why ...}");
   node.Transition(*from, *to, why ? *why : "");
 }
 

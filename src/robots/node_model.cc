@@ -5,6 +5,18 @@
 
 namespace sanet::robots {
 
+const char* ModelSummary(ModelKind kind) {
+  switch (kind) {
+    case ModelKind::kMote:
+      return "a sensor mote: a cube that rests until something pushes it; no drive";
+    case ModelKind::kOmni3:
+      return "Robertino-like omnidirectional robot with three omni wheels (holonomic), six IR sensors";
+    case ModelKind::kDiffDrive:
+      return "Pioneer-P2DX-like differential drive: two wheels and a passive caster, 180-degree laser";
+  }
+  return "?";
+}
+
 const char* ModelName(ModelKind kind) {
   switch (kind) {
     case ModelKind::kMote:

@@ -15,6 +15,9 @@ namespace sanet::robots {
 enum class ModelKind { kMote, kOmni3, kDiffDrive };
 
 const char* ModelName(ModelKind kind);
+// What the model is, in a line (`sanet list`, the scenario reference).
+const char* ModelSummary(ModelKind kind);
+constexpr ModelKind kAllModels[] = {ModelKind::kMote, ModelKind::kOmni3, ModelKind::kDiffDrive};
 
 struct SensorSuite {
   std::optional<RangeSensorSpec> ir;

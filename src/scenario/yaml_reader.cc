@@ -1,5 +1,6 @@
 #include "scenario/yaml_reader.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -40,16 +41,18 @@ void Field::ExpectMap() const {
 }
 
 void Field::ExpectKeys(std::initializer_list<const char*> allowed) const {
+  ExpectKeys(std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+void Field::ExpectKeys(const std::vector<std::string>& allowed) const {
   ExpectMap();
   std::set<std::string> seen;
   for (const auto& entry : node_) {
     const std::string key = entry.first.Scalar();
     const std::string path = path_.empty() ? key : path_ + "." + key;
-    bool known = false;
-    for (const char* a : allowed) known = known || key == a;
-    if (!known) {
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       std::string list;
-      for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+      for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
       throw ScenarioError(*file_, entry.first.Mark().line + 1, path, "unknown key (expected one of: " + list + ")");
     }
     if (!seen.insert(key).second) throw ScenarioError(*file_, entry.first.Mark().line + 1, path, "key given twice");

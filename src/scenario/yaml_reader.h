@@ -42,6 +42,7 @@ class Field {
 
   // The mapping's keys must be among `allowed`, each at most once.
   void ExpectKeys(std::initializer_list<const char*> allowed) const;
+  void ExpectKeys(const std::vector<std::string>& allowed) const;
   std::optional<Field> Get(const std::string& key) const;
   Field Require(const std::string& key) const;
   std::vector<Field> Items() const;  // of a sequence

@@ -153,7 +153,7 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
   j["ended_at_s"] = ended_by_.empty() ? result.simulated : ended_at_;
   j["message_delay_s"] = Quartiles(delays_);
   j["messages_dropped_by_impairment"] = messages_lost_;
-  if (messages_undelivered_) j["messages_lost_before_their_controller"] = messages_undelivered_;
+  j["messages_lost_before_their_controller"] = messages_undelivered_;
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
   for (const auto& [node, named] : metrics_)
     for (const auto& [metric, values] : named) metrics[node][metric] = Quartiles(values);

@@ -108,6 +108,8 @@ class NodeRules(unittest.TestCase):
                 continue
             t = float(field(line, "Time"))
             c.send("DRIVE {Left 5} {Right 5}")  # as fast forward as it goes
+            if 4 < t < 4.15:
+                c.send("SEND {Delivery broadcast} {Data 0102}")
             if t < 3:
                 xs_before.append(ground_truth_x(line))
             elif t > 3.5:  # after it has coasted to a stop
@@ -121,21 +123,36 @@ class NodeRules(unittest.TestCase):
     def talk_to_mote(cls):
         c = Client(cls.port)
         c.send("INIT {ClassName USARBot.P2DX} {Name r1}")
-        received = []
+        for bad in ["SEND {To nobody} {Data 00}", "SEND {To m1} {Data 0g}", "SEND {Delivery multicast} {Data 00}",
+                    "SEND {Data 00}", "SEND {To r1} {Data 00}", "TRANSITION {From a} {To }"]:
+            c.send(bad)
+        received, errors = [], []
         for line in c.lines():
+            if line.startswith("ERR"):
+                errors.append(line)
             if line.startswith("MSG"):
                 received.append(line)
                 c.send("SEND {Delivery unicast} {To m1} {Data cafe%04x}" % len(received))
             if len(received) == 4:
                 break
         c.close()  # the mote goes on sending: to a robot nobody drives now
-        cls.messages = {"received": received}
+        cls.messages = {"received": received, "errors": errors}
 
     def test_a_switched_off_robot_ignores_drive_from_its_client(self):
         before, after = self.switched["before"], self.switched["after"]
         self.assertGreater(before[-1] - before[0], 0.1, "the robot should move before it is switched off")
         self.assertLess(max(after) - min(after), 0.01, "a switched-off robot must not move")
         self.assertTrue(any("switched off" in e for e in self.switched["errors"]))
+
+    def test_a_switched_off_robot_sends_nothing(self):
+        self.assertTrue(any("switched off: SEND ignored" in e for e in self.switched["errors"]))
+        self.assertFalse([r for r in self.rows if r["from"] == "off"])
+
+    def test_bad_lines_get_errors_that_say_what_is_wrong(self):
+        errors = "\n".join(self.messages["errors"])
+        for expected in ["no node named 'nobody'", "expected hex bytes", "expected unicast, broadcast or flood",
+                         "SEND to one node needs {To node}", "that is this robot", "TRANSITION needs"]:
+            self.assertIn(expected, errors)
 
     def test_the_mote_message_reaches_the_client_over_the_simulated_network(self):
         received = self.messages["received"]

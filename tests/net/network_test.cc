@@ -266,7 +266,9 @@ TEST(Network, RoutingTableAgreesWithNs3AndInvalidationStartsANewDiscovery) {
     if (e.destination == 4) route_to_4 = e.valid && e.hops == 4 && e.next_hop == 1;
   EXPECT_TRUE(route_to_4) << "m0 reaches m4 in four hops through m1";
   for (const RouteEntry& e : table_after)
-    if (e.destination == 4) EXPECT_FALSE(e.valid) << "invalidated";
+    if (e.destination == 4) {
+      EXPECT_FALSE(e.valid) << "invalidated";
+    }
 
   EXPECT_GE(probes.inboxes[1].size(), 3u) << "messages arrive before and after the invalidation";
   const std::string routes = ReadFile(dir + "/routes.csv");

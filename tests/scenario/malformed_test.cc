@@ -102,7 +102,9 @@ TEST_P(Malformed, IsRejectedWithFileLineAndField) {
   } catch (const scenario::ScenarioError& e) {
     EXPECT_EQ(e.file(), path);
     EXPECT_EQ(e.line(), c.line) << e.what();
-    if (*c.field) EXPECT_EQ(e.field(), c.field) << e.what();
+    if (*c.field) {
+      EXPECT_EQ(e.field(), c.field) << e.what();
+    }
     EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).rfind(path + ":" + std::to_string(c.line) + ": ", 0), 0u) << e.what();
   }

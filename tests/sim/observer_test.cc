@@ -88,7 +88,9 @@ TEST(Observers, SnapshotsShowTheWorldAsItIsAfterTheStep) {
       ++checked;
     }
     steps_with_messages_in_flight += !s.messages_in_flight().empty();
-    if (s.time() < 0.99) EXPECT_EQ(s.controller_states()[0], "");
+    if (s.time() < 0.99) {
+      EXPECT_EQ(s.controller_states()[0], "");
+    }
     last_states = s.controller_states();
   });
   world.Run({});

@@ -1,0 +1,16 @@
+// What sanet knows, described from the declarations (scenario/declarations.h) and from the
+// controllers themselves: the text of `sanet list`, and the reference tables of the scenario
+// format in markdown (`sanet list --markdown`, compared with docs/scenario.md by a test).
+#pragma once
+
+#include <string>
+
+#include "agents/controller_registry.h"
+
+namespace sanet::scenario {
+
+std::string Catalogue(const agents::Registry& registry);
+// Each table between `<!-- fields: NAME -->` and `<!-- /fields -->` lines, as in docs/scenario.md.
+std::string ReferenceMarkdown();
+
+}  // namespace sanet::scenario

@@ -1,0 +1,642 @@
+#include "scenario/declarations.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sanet::scenario {
+namespace {
+
+using robots::ModelKind;
+using robots::ModelSpec;
+constexpr double kInf = HUGE_VAL;
+
+Vec2 ReadPoint(const Field& f) {
+  const auto v = f.Numbers(2);
+  return {v[0], v[1]};
+}
+
+YAML::Node Numbers(std::initializer_list<double> values) {
+  YAML::Node out(YAML::NodeType::Sequence);
+  for (double v : values) out.push_back(NumberNode(v));
+  out.SetStyle(YAML::EmitterStyle::Flow);
+  return out;
+}
+
+sim::Obstacle ReadBox(const Field& box) {
+  box.ExpectKeys({"center", "size", "yaw"});
+  const Vec2 c = ReadPoint(box.Require("center"));
+  const Field size_field = box.Require("size");
+  const auto size = size_field.Numbers(3);
+  for (double s : size)
+    if (s <= 0) size_field.Fail("every side must be greater than 0");
+  const double yaw = box.Get("yaw") ? box.Get("yaw")->Number(-kInf, kInf) : 0;
+  return {"box", {{c.x, c.y, size[2] / 2}, {size[0], size[1], size[2]}, yaw}};
+}
+
+sim::Obstacle ReadWall(const Field& wall) {
+  wall.ExpectKeys({"from", "to", "height", "thickness"});
+  const Vec2 a = ReadPoint(wall.Require("from"));
+  const Vec2 b = ReadPoint(wall.Require("to"));
+  if (Norm(b - a) < 1e-6) wall.Require("to").Fail("a wall's two ends must differ");
+  const double height = wall.Get("height") ? wall.Get("height")->NumberAbove(0, 1000) : 1.0;
+  const double thickness = wall.Get("thickness") ? wall.Get("thickness")->NumberAbove(0, 1000) : 0.2;
+  const Vec2 mid = (a + b) * 0.5;
+  return {"wall", {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
+}
+
+sim::Obstacle ReadObstacle(const Field& f) {
+  f.ExpectKeys({"box", "wall"});
+  if (auto box = f.Get("box")) {
+    if (f.Get("wall")) f.Fail("an obstacle is either a box or a wall, not both");
+    return ReadBox(*box);
+  }
+  auto wall = f.Get("wall");
+  if (!wall) f.Fail("an obstacle needs a 'box' or a 'wall'");
+  return ReadWall(*wall);
+}
+
+// Every obstacle as the box it is (a wall's ends are not kept, its box is exact).
+YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
+  YAML::Node list(YAML::NodeType::Sequence);
+  for (const sim::Obstacle& o : obstacles) {
+    YAML::Node box;
+    box["center"] = Numbers({o.box.center.x, o.box.center.y});
+    box["size"] = Numbers({o.box.size.x, o.box.size.y, o.box.size.z});
+    box["yaw"] = NumberNode(o.box.yaw);
+    YAML::Node item;
+    item["box"] = box;
+    list.push_back(item);
+  }
+  return list;
+}
+
+template <typename S, typename T>
+std::function<T&(S&)> Member(T S::*m) {
+  return [m](S& s) -> T& { return s.*m; };
+}
+
+}  // namespace
+
+const Fields<sim::RunSpec>& WorldFields() {
+  using sim::RunSpec;
+  static const Fields<RunSpec> fields = [] {
+    Fields<RunSpec> f;
+    f.Custom(
+        {"size", "point `[x, y]`", "m", "", "both > 0", "extent of the field, for plots"},
+        [](const Field& v, RunSpec& s) {
+          s.world_size = ReadPoint(v);
+          if (s.world_size.x <= 0 || s.world_size.y <= 0) v.Fail("both sides must be greater than 0");
+        },
+        [](const RunSpec& s) {
+          return Numbers({s.world_size.x, s.world_size.y});
+        });
+    f.Number("physics_step", Member(&RunSpec::physics_step), "s", 0, 0.1, "length of each physics step", true);
+    f.Number(
+        "gravity", [](RunSpec& s) -> double& { return s.physics.gravity; }, "m/s²", 0, 100,
+        "magnitude, pointing along −z");
+    f.Number(
+        "ground_friction", [](RunSpec& s) -> double& { return s.physics.ground_friction; }, "", 0, 10,
+        "Coulomb coefficient of the ground and obstacles");
+    f.Choice<physics::Solver>(
+        "solver", [](RunSpec& s) -> physics::Solver& { return s.physics.solver; },
+        {{"exact", physics::Solver::kExact}, {"quick", physics::Solver::kQuick}}, "how ODE solves contacts and joints");
+    f.Whole<int>(
+        "solver_iterations", [](RunSpec& s) -> int& { return s.physics.solver_iterations; }, "", 1, 1000,
+        "iterations of the `quick` solver");
+    f.Custom(
+        {"obstacles", "list of obstacles", "", "none", "", "see [obstacles](#obstacles)"},
+        [](const Field& v, RunSpec& s) {
+          if (!v.node().IsNull())
+            for (const Field& o : v.Items()) s.obstacles.push_back(ReadObstacle(o));
+        },
+        [](const RunSpec& s) { return s.obstacles.empty() ? YAML::Node() : PrintObstacles(s.obstacles); });
+    return f;
+  }();
+  return fields;
+}
+
+namespace {
+
+bool AppliesTo(const std::string& key, net::LossModel model) {
+  if (key == "exponent" || key == "reference_loss" || key == "reference_distance")
+    return model == net::LossModel::kLogDistance;
+  if (key == "antenna_height") return model == net::LossModel::kTwoRayGround;
+  return true;
+}
+
+void ReadPropagation(const Field& p, net::NetworkSpec& n) {
+  PropagationFields().Read(p, n);
+  for (const char* key : {"exponent", "reference_loss", "reference_distance", "antenna_height"})
+    if (auto k = p.Get(key); k && !AppliesTo(key, n.loss))
+      k->Fail(std::string("applies to the ") +
+              (std::string(key) == "antenna_height" ? "two_ray_ground" : "log_distance") + " model only");
+}
+
+YAML::Node PrintPropagation(const net::NetworkSpec& n) {
+  YAML::Node all = PropagationFields().Print(n), out(YAML::NodeType::Map);
+  for (const auto& entry : all)
+    if (AppliesTo(entry.first.as<std::string>(), n.loss)) out[entry.first] = entry.second;
+  return out;
+}
+
+void ReadRadio(const Field& radio, net::NetworkSpec& n) {
+  const std::string text = radio.Text();
+  if (text == "802.15.4" || text == "lr-wpan" || text == "lrwpan")
+    radio.Fail(
+        "802.15.4 is not available: ns-3 carries only IPv6 (6LoWPAN) over it, and its AODV, "
+        "OLSR, DSDV and DSR route IPv4 only");
+  for (auto s : {net::WifiStandard::k80211b, net::WifiStandard::k80211g, net::WifiStandard::k80211a})
+    if (text == net::StandardName(s)) return void(n.standard = s);
+  radio.Fail("unknown value '" + text + "' (expected one of: 802.11b, 802.11g, 802.11a)");
+}
+
+void ReadDataRate(const Field& rate, net::NetworkSpec& n) {
+  const std::vector<double> rates = net::DataRates(n.standard);
+  n.data_rate = rate.Number(0, 1000);
+  if (std::find(rates.begin(), rates.end(), n.data_rate) != rates.end()) return;
+  std::string list;
+  for (double r : rates) list += (list.empty() ? "" : ", ") + ShortNumber(r);
+  rate.Fail(std::string(net::StandardName(n.standard)) + " offers " + list + " Mbps");
+}
+
+void ReadPort(const Field& port, net::NetworkSpec& n) {
+  n.port = static_cast<std::uint16_t>(port.Integer(1, 65535));
+  for (auto [taken, by] : {std::pair{654, "AODV"}, {698, "OLSR"}, {269, "DSDV"}})
+    if (n.port == taken) port.Fail(std::string("is the port of ") + by + "'s own messages");
+}
+
+}  // namespace
+
+const Fields<net::NetworkSpec>& NetworkFields() {
+  using net::NetworkSpec;
+  static const Fields<NetworkSpec> fields = [] {
+    Fields<NetworkSpec> f;
+    f.Custom({"radio", "text", "", "`802.11b`", "`802.11b`, `802.11g`, `802.11a`", "the 802.11 standard"}, ReadRadio,
+             [](const NetworkSpec& n) { return YAML::Node(std::string(net::StandardName(n.standard))); });
+    f.Custom(
+        {"data_rate", "number", "Mbps", "the standard's lowest: `1` (802.11b), `6` (802.11g, 802.11a)",
+         "802.11b: 1, 2, 5.5, 11; 802.11g and 802.11a: 6, 9, 12, 18, 24, 36, 48, 54", "rate of unicast data frames"},
+        ReadDataRate, [](const NetworkSpec& n) { return NumberNode(n.data_rate); });
+    f.Number("tx_power", Member(&NetworkSpec::tx_power), "dBm", -50, 60, "every node's transmit power");
+    f.Number("rx_threshold", Member(&NetworkSpec::rx_threshold), "dBm", -150, 0,
+             "weakest signal at which a frame is detected");
+    f.Custom(
+        {"propagation", "mapping", "", "log-distance, see below", "see [propagation](#propagation)", "path loss model"},
+        ReadPropagation, PrintPropagation);
+    f.Choice<net::DelayModel>(
+        "delay", Member(&NetworkSpec::delay),
+        {{"constant_speed", net::DelayModel::kConstantSpeed}, {"random", net::DelayModel::kRandom}},
+        "propagation delay: the speed of light, or uniform in [0, `random_delay_max`]");
+    f.Custom(
+        {"random_delay_max", "number", "s", "`1e-6`", "[0, 0.001]; with `delay: random` only",
+         "upper bound of `random` delays"},
+        [](const Field& v, NetworkSpec& n) {
+          if (n.delay != net::DelayModel::kRandom) v.Fail("applies to delay: random only");
+          n.random_delay_max = v.Number(0, 1e-3);  // beyond a millisecond acknowledgements time out
+        },
+        [](const NetworkSpec& n) {
+          return n.delay == net::DelayModel::kRandom ? NumberNode(n.random_delay_max) : YAML::Node();
+        });
+    f.Choice<net::Routing>("routing", Member(&NetworkSpec::routing),
+                           {{"aodv", net::Routing::kAodv},
+                            {"olsr", net::Routing::kOlsr},
+                            {"dsdv", net::Routing::kDsdv},
+                            {"dsr", net::Routing::kDsr},
+                            {"none", net::Routing::kNone}},
+                           "routing protocol (ns-3's), or one hop only");
+    f.Flag("aodv_hello", Member(&NetworkSpec::aodv_hello), "AODV's hello messages (neighbour sensing)");
+    f.Whole<int>("flood_ttl", Member(&NetworkSpec::flood_ttl), "hops", 1, 255, "how far a flood travels");
+    f.Custom({"port", "whole number", "", "", "[1, 65535], not 654, 698 or 269 (AODV, OLSR, DSDV)",
+              "UDP port of controller messages"},
+             ReadPort, [](const NetworkSpec& n) { return YAML::Node(static_cast<int>(n.port)); });
+    f.Flag("pcap", Member(&NetworkSpec::pcap), "write `pcap/<node>.pcap`");
+    f.Flag("flow_monitor", Member(&NetworkSpec::flow_monitor), "write `flowmon.xml`");
+    f.Flag("packet_log", Member(&NetworkSpec::packet_log), "write `packets/<node>.csv`");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<net::NetworkSpec>& PropagationFields() {
+  using net::NetworkSpec;
+  static const Fields<NetworkSpec> fields = [] {
+    Fields<NetworkSpec> f;
+    f.Choice<net::LossModel>("model", Member(&NetworkSpec::loss),
+                             {{"log_distance", net::LossModel::kLogDistance},
+                              {"friis", net::LossModel::kFriis},
+                              {"two_ray_ground", net::LossModel::kTwoRayGround}},
+                             "path loss model");
+    f.Number("exponent", Member(&NetworkSpec::exponent), "", 1, 10, "`log_distance` only");
+    f.Number("reference_loss", Member(&NetworkSpec::reference_loss), "dB", 0, 200, "`log_distance` only");
+    f.Number("reference_distance", Member(&NetworkSpec::reference_distance), "m", 0, 1e6, "`log_distance` only", true);
+    f.Number("antenna_height", Member(&NetworkSpec::antenna_height), "m", 0, 1000, "`two_ray_ground` only");
+    f.Number("max_range", Member(&NetworkSpec::max_range), "m", 0, 1e7,
+             "every model: nothing is received from farther (`0`: no cut-off)");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<sim::RunSpec>& MessagesFields() {
+  using sim::RunSpec;
+  static const Fields<RunSpec> fields = [] {
+    Fields<RunSpec> f;
+    f.Custom(
+        {"latency", "number", "s", "`0.001`", "[0, 1000]; without a network only", "delay of the local transport"},
+        [](const Field& v, RunSpec& s) {
+          if (s.network) v.Fail("is for runs without a network; with one, the network delivers");
+          s.message_latency = v.Number(0, 1000);
+        },
+        [](const RunSpec& s) { return s.network ? YAML::Node() : NumberNode(s.message_latency); });
+    f.Number("loss", Member(&RunSpec::message_loss), "", 0, 1, "probability that a controller never gets a message");
+    f.Number("delay", Member(&RunSpec::message_delay), "s", 0, 1000, "added before a controller gets a message");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<sim::LinkShaping>& NetemFields() {
+  using sim::LinkShaping;
+  static const Fields<LinkShaping> fields = [] {
+    Fields<LinkShaping> f;
+    f.Number("delay", Member(&LinkShaping::delay), "s", 0, 60, "added to each agent's outgoing packets");
+    f.Number("jitter", Member(&LinkShaping::jitter), "s", 0, 60, "spread of that delay");
+    f.Number("loss", Member(&LinkShaping::loss), "", 0, 1, "probability that a packet is dropped");
+    f.Number("rate", Member(&LinkShaping::rate), "bit/s", 0, 1e12, "link rate (`0`: no limit)");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<sim::LoopSpec>& LoopFields() {
+  using sim::LoopSpec;
+  static const Fields<LoopSpec> fields = [] {
+    Fields<LoopSpec> f;
+    f.Flag("namespaces", Member(&LoopSpec::namespaces), "one network namespace per agent (`sanet launch`)");
+    f.Custom(
+        {"netem", "mapping", "", "none", "see [netem](#netem)", "shaping of each agent's link; needs `namespaces`"},
+        [](const Field& v, LoopSpec& s) {
+          if (!s.namespaces) v.Fail("shapes the links between namespaces: set loop.namespaces: true");
+          NetemFields().Read(v, s.shaping);
+        },
+        [](const LoopSpec& s) { return s.namespaces ? NetemFields().Print(s.shaping) : YAML::Node(); });
+    f.Whole<std::uint16_t>("udp_port", Member(&LoopSpec::udp_port), "", 1024, 60000,
+                           "loopback: node i uses this + i; namespaces: every node uses it");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<sim::RunSpec>& EndFields() {
+  using sim::RunSpec;
+  static const Fields<RunSpec> fields = [] {
+    Fields<RunSpec> f;
+    f.Custom(
+        {"when_logged", "text or list of texts", "", "none", "",
+         "the run ends when a controller logs exactly one of these lines"},
+        [](const Field& v, RunSpec& s) {
+          if (v.IsScalar()) return s.end_when_logged.push_back(v.Text());
+          for (const Field& line : v.Items()) s.end_when_logged.push_back(line.Text());
+        },
+        [](const RunSpec& s) {
+          YAML::Node lines(YAML::NodeType::Sequence);
+          for (const std::string& line : s.end_when_logged) lines.push_back(line);
+          return s.end_when_logged.empty() ? YAML::Node() : lines;
+        });
+    f.Number("grace", Member(&RunSpec::end_grace), "s", 0, 1e6,
+             "the run goes on this long after, for messages in flight");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<Scenario>& OutputsFields() {
+  static const Fields<Scenario> fields = [] {
+    Fields<Scenario> f;
+    f.Custom(
+        {"folder", "text", "", "`results/<name>`", "", "the results folder"},
+        [](const Field& v, Scenario& s) { s.output_folder = v.Text(); },
+        [](const Scenario& s) { return YAML::Node(s.output_folder); });
+    f.Number(
+        "trajectory_interval", [](Scenario& s) -> double& { return s.run.trajectory_interval; }, "s", 0, 1e6,
+        "between trajectory samples; at least `world.physics_step`", true);
+    f.Flag(
+        "figures", [](Scenario& s) -> bool& { return s.run.figures; }, "draw `map.svg`, `packets.svg`");
+    f.Number(
+        "figure_tick", [](Scenario& s) -> double& { return s.run.figure_tick; }, "s", 0, 1e9,
+        "between time marks on trajectories", true);
+    f.Flag(
+        "min_distance", [](Scenario& s) -> bool& { return s.run.min_distance; },
+        "record the smallest distance between robots (`min_distance.csv`)");
+    f.Custom(
+        {"distance_reference", "number", "m", "none", "(0, 1e6]",
+         "the summary says how long the smallest distance stayed within 10 % of it; sets `min_distance`"},
+        [](const Field& v, Scenario& s) {
+          s.run.distance_reference = v.NumberAbove(0, 1e6);
+          s.run.min_distance = true;
+        },
+        [](const Scenario& s) {
+          return s.run.distance_reference > 0 ? NumberNode(s.run.distance_reference) : YAML::Node();
+        });
+    return f;
+  }();
+  return fields;
+}
+
+namespace {
+
+// `m.omni3.body_radius` and the like, as an accessor of the model spec.
+#define SANET_BODY(part, key) [](ModelSpec& m) -> double& { return m.part.key; }
+
+void DriveLimits(Fields<ModelSpec>& f, const char* speed_meaning, const char* turn_meaning) {
+  f.Number("max_speed", Member(&ModelSpec::max_speed), "m/s", 0, 100, speed_meaning);
+  f.Number("max_turn_rate", Member(&ModelSpec::max_turn_rate), "rad/s", 0, 100, turn_meaning);
+}
+
+Fields<ModelSpec> MoteBody() {
+  Fields<ModelSpec> f;
+  f.Number("size", SANET_BODY(mote, size), "m", 0.005, 10, "side of the cube");
+  f.Number("mass", SANET_BODY(mote, mass), "kg", 0.001, 1000, "");
+  return f;
+}
+
+Fields<ModelSpec> Omni3Body() {
+  Fields<ModelSpec> f;
+  f.Number("body_radius", SANET_BODY(omni3, body_radius), "m", 0.02, 5,
+           "radius of the lower cylinder; the upper cylinder is 80 % of it");
+  f.Number("body_height", SANET_BODY(omni3, body_height), "m", 0.02, 5, "both cylinders together, each half of it");
+  f.Number("body_mass", SANET_BODY(omni3, body_mass), "kg", 0.01, 1000, "");
+  f.Number("ground_clearance", SANET_BODY(omni3, ground_clearance), "m", 0, 1, "gap under the lower cylinder");
+  f.Number("wheel_radius", SANET_BODY(omni3, wheel_radius), "m", 0.005, 1, "");
+  f.Number("wheel_mass", SANET_BODY(omni3, wheel_mass), "kg", 0.001, 100, "for each wheel");
+  f.Number("wheel_distance", SANET_BODY(omni3, wheel_distance), "m", 0.01, 5,
+           "from the centre to each wheel; must be less than `body_radius + wheel_radius`");
+  f.Number("max_wheel_torque", SANET_BODY(omni3, max_wheel_torque), "N·m", 0.001, 1000, "motor limit");
+  f.Number("grip_friction", SANET_BODY(omni3, grip_friction), "", 0, 10,
+           "friction along each wheel's rolling direction");
+  f.Number("slip_friction", SANET_BODY(omni3, slip_friction), "", 0, 10,
+           "friction along each wheel's axle, standing in for the rollers");
+  DriveLimits(f, "limit on the magnitude of (`vx`, `vy`) given to `Drive`", "limit on `omega` given to `Drive`");
+  return f;
+}
+
+Fields<ModelSpec> DiffDriveBody() {
+  Fields<ModelSpec> f;
+  f.Number("body_length", SANET_BODY(diffdrive, body_length), "m", 0.02, 10, "box chassis, along x");
+  f.Number("body_width", SANET_BODY(diffdrive, body_width), "m", 0.02, 10, "along y");
+  f.Number("body_height", SANET_BODY(diffdrive, body_height), "m", 0.02, 10, "");
+  f.Number("body_mass", SANET_BODY(diffdrive, body_mass), "kg", 0.01, 10000, "");
+  f.Number("ground_clearance", SANET_BODY(diffdrive, ground_clearance), "m", 0, 1, "gap under the chassis");
+  f.Number("wheel_radius", SANET_BODY(diffdrive, wheel_radius), "m", 0.005, 2, "");
+  f.Number("wheel_mass", SANET_BODY(diffdrive, wheel_mass), "kg", 0.001, 100, "for each wheel");
+  f.Number("axle_length", SANET_BODY(diffdrive, axle_length), "m", 0.02, 10, "between the two wheels' contact points");
+  f.Number("caster_offset", SANET_BODY(diffdrive, caster_offset), "m", 0.01, 10,
+           "how far the caster sits behind the axle");
+  f.Number("caster_radius", SANET_BODY(diffdrive, caster_radius), "m", 0.005, 1, "frictionless caster");
+  f.Number("max_wheel_torque", SANET_BODY(diffdrive, max_wheel_torque), "N·m", 0.001, 10000, "motor limit");
+  f.Number("wheel_friction", SANET_BODY(diffdrive, wheel_friction), "", 0, 10, "");
+  DriveLimits(f, "limit on `vx` given to `Drive`", "limit on `omega` given to `Drive`");
+  return f;
+}
+
+#undef SANET_BODY
+
+}  // namespace
+
+const Fields<ModelSpec>& BodyFields(ModelKind kind) {
+  static const Fields<ModelSpec> mote = MoteBody(), omni3 = Omni3Body(), diffdrive = DiffDriveBody();
+  switch (kind) {
+    case ModelKind::kMote:
+      return mote;
+    case ModelKind::kOmni3:
+      return omni3;
+    case ModelKind::kDiffDrive:
+      return diffdrive;
+  }
+  return mote;
+}
+
+IrSettings IrSettingsOf(const robots::RangeSensorSpec& ir) {
+  return {ir.angles, ir.max_range, ir.mount_height, ir.noise};
+}
+
+robots::RangeSensorSpec ApplyIr(const IrSettings& settings, robots::RangeSensorSpec ir) {
+  ir.angles = settings.angles;
+  ir.max_range = settings.max_range;
+  ir.mount_height = settings.height;
+  ir.noise = settings.noise;
+  return ir;
+}
+
+// A fan's fov and beam count when its directions are exactly those of such a fan; its
+// directions otherwise.
+LaserSettings LaserSettingsOf(const robots::RangeSensorSpec& laser) {
+  LaserSettings s{0, 0, {}, laser.max_range, laser.mount_height, laser.mount_x, laser.noise};
+  const int beams = static_cast<int>(laser.angles.size());
+  const double fov = beams > 1 ? laser.angles.back() - laser.angles.front() : kPi;
+  if (beams > 0 && robots::RangeSensorSpec::Fan(fov, beams, 0, 0, 1).angles == laser.angles)
+    s.fov = fov, s.beams = beams;
+  else
+    s.angles = laser.angles;
+  return s;
+}
+
+robots::RangeSensorSpec ApplyLaser(const LaserSettings& s) {
+  robots::RangeSensorSpec laser = robots::RangeSensorSpec::Fan(s.fov, s.beams, s.mount_x, s.height, s.max_range);
+  if (!s.angles.empty()) laser.angles = s.angles;
+  laser.noise = s.noise;
+  return laser;
+}
+
+namespace {
+
+YAML::Node AngleList(const std::vector<double>& angles) {
+  YAML::Node out(YAML::NodeType::Sequence);
+  for (double a : angles) out.push_back(NumberNode(a));
+  out.SetStyle(YAML::EmitterStyle::Flow);
+  return out;
+}
+
+std::vector<double> ReadAngles(const Field& v) {
+  std::vector<double> angles;
+  for (const Field& a : v.Items()) angles.push_back(a.Number(-2 * kPi, 2 * kPi));
+  if (angles.empty()) v.Fail("needs at least one angle");
+  return angles;
+}
+
+}  // namespace
+
+const Fields<IrSettings>& IrFields() {
+  static const Fields<IrSettings> fields = [] {
+    Fields<IrSettings> f;
+    f.Custom(
+        {"count", "whole number", "", "`6`", "[1, 360]", "sensors evenly spaced, sensor 0 forward"},
+        [](const Field& v, IrSettings& s) {
+          s.angles = robots::RangeSensorSpec::Ring(v.Integer(1, 360), 0, 0, 1).angles;
+        },
+        [](const IrSettings&) { return YAML::Node(); });
+    f.Custom(
+        {"angles", "list of numbers", "rad", "evenly spaced", "each in [−2π, 2π]; not with `count`",
+         "each sensor's direction"},
+        [](const Field& v, IrSettings& s) { s.angles = ReadAngles(v); },
+        [](const IrSettings& s) { return AngleList(s.angles); });
+    f.Number("max_range", Member(&IrSettings::max_range), "m", 0, 100, "", true);
+    f.Number("height", Member(&IrSettings::height), "m", 0, 10, "above the ground");
+    f.Number("noise", Member(&IrSettings::noise), "m", 0, 100, "standard deviation of each range");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<LaserSettings>& LaserFields() {
+  static const Fields<LaserSettings> fields = [] {
+    Fields<LaserSettings> f;
+    f.Custom(
+        {"fov", "number", "rad", "`π`", "(0, 2π]", "spread of the fan"},
+        [](const Field& v, LaserSettings& s) { s.fov = v.NumberAbove(0, 2 * kPi); },
+        [](const LaserSettings& s) { return s.angles.empty() ? NumberNode(s.fov) : YAML::Node(); });
+    f.Custom(
+        {"beams", "whole number", "", "`181`", "[1, 10000]", "evenly spread from −fov/2 to +fov/2"},
+        [](const Field& v, LaserSettings& s) { s.beams = v.Integer(1, 10000); },
+        [](const LaserSettings& s) { return s.angles.empty() ? YAML::Node(s.beams) : YAML::Node(); });
+    f.Custom(
+        {"angles", "list of numbers", "rad", "none", "each in [−2π, 2π]; not with `fov` or `beams`",
+         "instead of a fan: each beam's direction, right to left"},
+        [](const Field& v, LaserSettings& s) { s.angles = ReadAngles(v); },
+        [](const LaserSettings& s) { return s.angles.empty() ? YAML::Node() : AngleList(s.angles); });
+    f.Number("max_range", Member(&LaserSettings::max_range), "m", 0, 1000, "", true);
+    f.Number("height", Member(&LaserSettings::height), "m", 0, 10, "above the ground");
+    f.Custom(
+        {"mount_x", "number", "m",
+         "the front of the body: `body_length / 2 − caster_offset / 4 + 0.01` (0.18) on diffdrive, "
+         "`body_radius` on omni3",
+         "[−10, 10]", "where the beams start, ahead of the reference point"},
+        [](const Field& v, LaserSettings& s) { s.mount_x = v.Number(-10, 10); },
+        [](const LaserSettings& s) { return NumberNode(s.mount_x); });
+    f.Number("noise", Member(&LaserSettings::noise), "m", 0, 100, "standard deviation of each range");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<robots::SensorSuite>& OdometryFields() {
+  static const Fields<robots::SensorSuite> fields = [] {
+    Fields<robots::SensorSuite> f;
+    f.Number("noise", Member(&robots::SensorSuite::odometry_noise), "relative", 0, 10,
+             "standard deviation of each increment's relative error");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<robots::SensorSuite>& GroundTruthFields() {
+  static const Fields<robots::SensorSuite> fields = [] {
+    Fields<robots::SensorSuite> f;
+    f.Number("noise_position", Member(&robots::SensorSuite::ground_truth_noise_position), "m", 0, 1000,
+             "standard deviation added to x and y");
+    f.Number("noise_angle", Member(&robots::SensorSuite::ground_truth_noise_angle), "rad", 0, 10,
+             "standard deviation added to theta");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<robots::BearingSpec>& BearingFields() {
+  using robots::BearingSpec;
+  static const Fields<BearingSpec> fields = [] {
+    Fields<BearingSpec> f;
+    f.Custom(
+        {"range", "number", "m", "required", "(0, 1e6]", "beyond it the sensor answers nothing"},
+        [](const Field& v, BearingSpec& s) { s.range = v.NumberAbove(0, 1e6); },
+        [](const BearingSpec& s) { return NumberNode(s.range); });
+    f.Number("noise_distance", Member(&BearingSpec::noise_distance), "m", 0, 1000, "standard deviation");
+    f.Number("noise_angle", Member(&BearingSpec::noise_angle), "rad", 0, 10, "standard deviation");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<net::NodeRadio>& RadioFields() {
+  static const Fields<net::NodeRadio> fields = [] {
+    Fields<net::NodeRadio> f;
+    f.Custom(
+        {"tx_power", "number", "dBm", "`network.tx_power`", "[−50, 60]", "this node's transmit power"},
+        [](const Field& v, net::NodeRadio& r) { r.tx_power = v.Number(-50, 60); },
+        [](const net::NodeRadio& r) { return r.tx_power ? NumberNode(*r.tx_power) : YAML::Node(); });
+    return f;
+  }();
+  return fields;
+}
+
+namespace {
+
+// A parameter as it was written: a scalar, a list, or a table of scalars.
+YAML::Node ParamNode(const ParamValue& value) {
+  const auto row = [](const std::vector<std::string>& cells) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    for (const std::string& cell : cells) out.push_back(cell);
+    out.SetStyle(YAML::EmitterStyle::Flow);
+    return out;
+  };
+  if (value.shape == ParamValue::Shape::kScalar) return YAML::Node(value.rows.at(0).at(0));
+  if (value.shape == ParamValue::Shape::kList) return row(value.rows.at(0));
+  YAML::Node table(YAML::NodeType::Sequence);
+  for (const auto& r : value.rows) table.push_back(row(r));
+  table.SetStyle(YAML::EmitterStyle::Flow);
+  return table;
+}
+
+}  // namespace
+
+const Fields<sim::ControllerSpec>& ControllerFields() {
+  using sim::ControllerSpec;
+  static const Fields<ControllerSpec> fields = [] {
+    Fields<ControllerSpec> f;
+    f.Custom(
+        {"name", "text", "", "required", "a built-in controller, or one registered by `library`",
+         "the controller's registered name"},
+        [](const Field& v, ControllerSpec& c) { c.name = v.Text(); },
+        [](const ControllerSpec& c) { return YAML::Node(c.name); });
+    f.Custom({"library", "text (path)", "", "none",
+              "must exist when the file is loaded; a relative path is taken from the scenario file's folder",
+              "a controller library to load first"},
+             nullptr,  // the loader resolves the path against the scenario's folder
+             [](const ControllerSpec& c) { return c.library.empty() ? YAML::Node() : YAML::Node(c.library); });
+    f.Number("rate", Member(&ControllerSpec::rate), "Hz", 0, 10000, "control steps per second", true);
+    f.Custom({"params", "mapping", "", "none", "read by the controller", "the controller's parameters"}, nullptr,
+             [](const ControllerSpec& c) {
+               YAML::Node params(YAML::NodeType::Map);
+               for (const auto& [key, value] : c.params.All()) params[key] = ParamNode(value);
+               return c.params.All().empty() ? YAML::Node() : params;
+             });
+    return f;
+  }();
+  return fields;
+}
+
+std::vector<SectionTable> SectionTables() {
+  const ModelSpec omni3 = ModelSpec::Defaults(ModelKind::kOmni3),
+                  diffdrive = ModelSpec::Defaults(ModelKind::kDiffDrive);
+  return {
+      {"world", WorldFields().Describe(sim::RunSpec{})},
+      {"network", NetworkFields().Describe(net::NetworkSpec{})},
+      {"network.propagation", PropagationFields().Describe(net::NetworkSpec{})},
+      {"body.mote", BodyFields(ModelKind::kMote).Describe(ModelSpec::Defaults(ModelKind::kMote))},
+      {"body.omni3", BodyFields(ModelKind::kOmni3).Describe(omni3)},
+      {"body.diffdrive", BodyFields(ModelKind::kDiffDrive).Describe(diffdrive)},
+      {"sensors.ir", IrFields().Describe(IrSettingsOf(robots::DefaultIr(omni3)))},
+      {"sensors.laser", LaserFields().Describe(LaserSettingsOf(robots::DefaultLaser(diffdrive)))},
+      {"sensors.odometry", OdometryFields().Describe(robots::SensorSuite{})},
+      {"sensors.ground_truth", GroundTruthFields().Describe(robots::SensorSuite{})},
+      {"sensors.bearing", BearingFields().Describe(robots::BearingSpec{})},
+      {"radio", RadioFields().Describe(net::NodeRadio{})},
+      {"controller", ControllerFields().Describe(sim::ControllerSpec{})},
+      {"messages", MessagesFields().Describe(sim::RunSpec{})},
+      {"end", EndFields().Describe(sim::RunSpec{})},
+      {"loop", LoopFields().Describe(sim::LoopSpec{})},
+      {"loop.netem", NetemFields().Describe(sim::LinkShaping{})},
+      {"outputs", OutputsFields().Describe(Scenario{})},
+  };
+}
+
+}  // namespace sanet::scenario

@@ -1,0 +1,56 @@
+// The scenario format's fields, section by section, declared once (scenario/fields.h). The
+// loader reads through these, `sanet validate --print` prints through them, and `sanet list`
+// and the tables of docs/scenario.md are made from them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scenario/fields.h"
+#include "scenario/scenario_loader.h"
+
+namespace sanet::scenario {
+
+const Fields<sim::RunSpec>& WorldFields();
+const Fields<net::NetworkSpec>& NetworkFields();
+const Fields<net::NetworkSpec>& PropagationFields();
+const Fields<sim::RunSpec>& MessagesFields();
+const Fields<sim::LoopSpec>& LoopFields();
+const Fields<sim::LinkShaping>& NetemFields();
+const Fields<sim::RunSpec>& EndFields();
+const Fields<Scenario>& OutputsFields();
+// A model's `body` keys (with its drive limits for robots).
+const Fields<robots::ModelSpec>& BodyFields(robots::ModelKind kind);
+// The keys of the IR ring and the laser, on top of a sensor they change (the model's default,
+// or the one already there): `ApplyIr`/`ApplyLaser` build the sensor from them.
+struct IrSettings {
+  std::vector<double> angles;  // rad
+  double max_range = 0, height = 0, noise = 0;
+};
+struct LaserSettings {
+  double fov = 0;
+  int beams = 0;
+  std::vector<double> angles;  // given instead of fov and beams: the beams' directions, right to left
+  double max_range = 0, height = 0, mount_x = 0, noise = 0;
+};
+IrSettings IrSettingsOf(const robots::RangeSensorSpec& ir);
+robots::RangeSensorSpec ApplyIr(const IrSettings& settings, robots::RangeSensorSpec ir);
+LaserSettings LaserSettingsOf(const robots::RangeSensorSpec& laser);
+robots::RangeSensorSpec ApplyLaser(const LaserSettings& settings);
+const Fields<IrSettings>& IrFields();
+const Fields<LaserSettings>& LaserFields();
+const Fields<robots::SensorSuite>& OdometryFields();
+const Fields<robots::SensorSuite>& GroundTruthFields();
+const Fields<robots::BearingSpec>& BearingFields();
+const Fields<net::NodeRadio>& RadioFields();
+const Fields<sim::ControllerSpec>& ControllerFields();
+
+// Every declared table with its name ("network", "body.omni3", ...) and defaults, in the order
+// of docs/scenario.md.
+struct SectionTable {
+  std::string name;
+  std::vector<FieldInfo> fields;
+};
+std::vector<SectionTable> SectionTables();
+
+}  // namespace sanet::scenario

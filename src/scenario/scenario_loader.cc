@@ -42,7 +42,6 @@ ModelKind ReadModel(const Field& f) {
   f.Fail("unknown model '" + name + "' (known: mote, omni3, diffdrive)");
 }
 
-
 void ReadBody(const Field& f, ModelSpec& m) {
   BodyFields(m.kind).Read(f, m);
   if (m.kind == ModelKind::kOmni3 && m.omni3.wheel_distance >= m.omni3.body_radius + m.omni3.wheel_radius)

@@ -1,9 +1,11 @@
 // An example controller library: `drive_to` turns towards a goal and drives straight to it,
-// using nothing but the portable controller interface, then reports its arrival by broadcast.
+// using nothing but the portable controller interface. It reports its steps (turning, driving,
+// arrived) as transitions, its travel time as a metric, and its arrival by broadcast.
 #include <sanet/plugin.h>
 
 #include <cmath>
 #include <memory>
+#include <string>
 
 namespace {
 
@@ -25,6 +27,8 @@ class DriveTo : public sanet::Controller {
     const sanet::Vec2 to_goal = goal_ - pose->position();
     if (sanet::Norm(to_goal) < tolerance_) {
       node.Drive({});
+      Enter(node, "arrived", "within tolerance of the goal");
+      node.Metric("travel_time", node.Now());
       node.Log("arrived");
       node.Broadcast({1});
       arrived_ = true;
@@ -32,11 +36,20 @@ class DriveTo : public sanet::Controller {
     }
     const double error = sanet::WrapAngle(std::atan2(to_goal.y, to_goal.x) - pose->theta);
     // Turn first, then drive; slow down near the goal.
-    const double v = std::abs(error) < 0.3 ? std::min(speed_, sanet::Norm(to_goal)) : 0.0;
+    const bool facing = std::abs(error) < 0.3;
+    Enter(node, facing ? "driving" : "turning", facing ? "facing the goal" : "goal off the bow");
+    const double v = facing ? std::min(speed_, sanet::Norm(to_goal)) : 0.0;
     node.Drive({v, 0, 1.5 * error});
   }
 
  private:
+  void Enter(sanet::Node& node, const std::string& state, const std::string& why) {
+    if (state == state_) return;
+    node.Transition(state_, state, why);
+    state_ = state;
+  }
+
+  std::string state_ = "start";
   double speed_, tolerance_;
   sanet::Vec2 goal_;
   bool arrived_ = false;

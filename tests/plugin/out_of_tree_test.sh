@@ -13,8 +13,10 @@ cmake --build "$tmp/plugin" > /dev/null
 library=$(find "$tmp/plugin" -name 'libdrive_to.so')
 sanet=$tmp/prefix/bin/sanet
 
-# The library lists its controller.
-"$sanet" list --library "$library" | grep -q "drive_to"
+# The library lists its controller, with the parameters it reads.
+"$sanet" list --library "$library" > "$tmp/list.txt"
+grep -q "drive_to" "$tmp/list.txt"
+grep -Eq "^ +speed +number, default 0.4, in \[0.01, 5\]" "$tmp/list.txt" || { cat "$tmp/list.txt"; exit 1; }
 
 cat > "$tmp/scenario.yaml" <<YAML
 duration: 40
@@ -35,6 +37,10 @@ rows = [r for r in csv.DictReader(open(sys.argv[1] + "/trajectories.csv")) if r[
 x, y = float(rows[-1]["x"]), float(rows[-1]["y"])
 assert math.hypot(x - 4, y + 3) < 0.5, f"the plugin's robot ended at ({x}, {y}), not at (4, -3)"
 assert "robot,arrived" in open(sys.argv[1] + "/log.csv").read(), "no arrival logged"
+steps = [(r["from"], r["to"]) for r in csv.DictReader(open(sys.argv[1] + "/transitions.csv"))]
+assert steps[-1][1] == "arrived" and ("start", "turning") in steps, f"transitions: {steps}"
+metrics = list(csv.DictReader(open(sys.argv[1] + "/metrics.csv")))
+assert [m["name"] for m in metrics] == ["travel_time"] and float(metrics[0]["value"]) > 1, metrics
 print(f"robot ended at ({x:.2f}, {y:.2f})")
 PY
 

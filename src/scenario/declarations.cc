@@ -1,6 +1,7 @@
 #include "scenario/declarations.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace sanet::scenario {
@@ -23,25 +24,19 @@ YAML::Node Numbers(std::initializer_list<double> values) {
 }
 
 sim::Obstacle ReadBox(const Field& box) {
-  box.ExpectKeys({"center", "size", "yaw"});
-  const Vec2 c = ReadPoint(box.Require("center"));
-  const Field size_field = box.Require("size");
-  const auto size = size_field.Numbers(3);
-  for (double s : size)
-    if (s <= 0) size_field.Fail("every side must be greater than 0");
-  const double yaw = box.Get("yaw") ? box.Get("yaw")->Number(-kInf, kInf) : 0;
-  return {"box", {{c.x, c.y, size[2] / 2}, {size[0], size[1], size[2]}, yaw}};
+  BoxSettings b;
+  BoxFields().Read(box, b);
+  return {"box", {{b.center.x, b.center.y, b.size[2] / 2}, {b.size[0], b.size[1], b.size[2]}, b.yaw}};
 }
 
 sim::Obstacle ReadWall(const Field& wall) {
-  wall.ExpectKeys({"from", "to", "height", "thickness"});
-  const Vec2 a = ReadPoint(wall.Require("from"));
-  const Vec2 b = ReadPoint(wall.Require("to"));
-  if (Norm(b - a) < 1e-6) wall.Require("to").Fail("a wall's two ends must differ");
-  const double height = wall.Get("height") ? wall.Get("height")->NumberAbove(0, 1000) : 1.0;
-  const double thickness = wall.Get("thickness") ? wall.Get("thickness")->NumberAbove(0, 1000) : 0.2;
-  const Vec2 mid = (a + b) * 0.5;
-  return {"wall", {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
+  WallSettings w;
+  WallFields().Read(wall, w);
+  const Vec2 mid = (w.from + w.to) * 0.5;
+  return {"wall",
+          {{mid.x, mid.y, w.height / 2},
+           {Norm(w.to - w.from), w.thickness, w.height},
+           std::atan2(w.to.y - w.from.y, w.to.x - w.from.x)}};
 }
 
 sim::Obstacle ReadObstacle(const Field& f) {
@@ -614,13 +609,193 @@ const Fields<sim::ControllerSpec>& ControllerFields() {
   return fields;
 }
 
+}  // namespace sanet::scenario
+
+namespace sanet::scenario {
+
+std::string ReadName(const Field& f) {
+  const std::string name = f.Text();
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
+      f.Fail("'" + name + "' may hold only letters, digits, '_', '-' and '.'");
+  if (name == "." || name == "..") f.Fail("'" + name + "' is not a name");
+  return name;
+}
+
+namespace {
+
+template <typename S>
+std::function<YAML::Node(const S&)> Unprinted() {
+  return [](const S&) { return YAML::Node(); };
+}
+
+template <typename S>
+std::function<void(const Field&, S&)> ReadPointInto(Vec2 S::*m) {
+  return [m](const Field& v, S& s) { s.*m = ReadPoint(v); };
+}
+
+}  // namespace
+
+const Fields<BoxSettings>& BoxFields() {
+  static const Fields<BoxSettings> fields = [] {
+    Fields<BoxSettings> f;
+    f.Custom({"center", "point `[x, y]`", "m", kRequired, "any", "the middle of the box, on the ground"},
+             ReadPointInto(&BoxSettings::center), Unprinted<BoxSettings>());
+    f.Custom(
+        {"size", "list of 3 numbers `[length, width, height]`", "m", kRequired, "each > 0",
+         "`length` runs along `yaw`"},
+        [](const Field& v, BoxSettings& b) {
+          b.size = v.Numbers(3);
+          for (double side : b.size)
+            if (side <= 0) v.Fail("every side must be greater than 0");
+        },
+        Unprinted<BoxSettings>());
+    f.Number("yaw", Member(&BoxSettings::yaw), "rad", -kInf, kInf, "counter-clockwise from +x");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<WallSettings>& WallFields() {
+  static const Fields<WallSettings> fields = [] {
+    Fields<WallSettings> f;
+    f.Custom({"from", "point `[x, y]`", "m", kRequired, "any", "one end"}, ReadPointInto(&WallSettings::from),
+             Unprinted<WallSettings>());
+    f.Custom(
+        {"to", "point `[x, y]`", "m", kRequired, "at least 1e-6 m from `from`", "the other end"},
+        [](const Field& v, WallSettings& w) {
+          w.to = ReadPoint(v);
+          if (Norm(w.to - w.from) < 1e-6) v.Fail("a wall's two ends must differ");
+        },
+        Unprinted<WallSettings>());
+    f.Number("height", Member(&WallSettings::height), "m", 0, 1000, "", true);
+    f.Number("thickness", Member(&WallSettings::thickness), "m", 0, 1000, "split evenly on both sides of the line",
+             true);
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<GridSettings>& GridFields() {
+  static const Fields<GridSettings> fields = [] {
+    Fields<GridSettings> f;
+    f.Custom(
+        {"name", "text", "", kRequired, "letters, digits, `_`, `-`, `.`", "name prefix: nodes NAME0, NAME1, ..."},
+        [](const Field& v, GridSettings& g) { g.name = ReadName(v); }, Unprinted<GridSettings>());
+    f.Whole<int>("rows", Member(&GridSettings::rows), "", 1, 10000, "along +y").Required();
+    f.Whole<int>("cols", Member(&GridSettings::cols), "", 1, 10000, "along +x").Required();
+    f.Custom({"origin", "point `[x, y]`", "m", "`[0, 0]`", "any", "where node 0 stands"},
+             ReadPointInto(&GridSettings::origin), Unprinted<GridSettings>());
+    f.Custom(
+        {"spacing", "number, or point `[dx, dy]`", "m", "`[1, 1]`", "> 0; a single number ≤ 1e6",
+         "between columns and rows"},
+        [](const Field& v, GridSettings& g) {
+          g.spacing = v.IsSequence() ? ReadPoint(v) : Vec2{v.Number(0, 1e6), v.Number(0, 1e6)};
+          if (g.spacing.x <= 0 || g.spacing.y <= 0) v.Fail("spacing must be greater than 0");
+        },
+        Unprinted<GridSettings>());
+    f.Number("heading", Member(&GridSettings::heading), "rad", -kInf, kInf, "every node's heading");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<EventSettings>& EventFields() {
+  static const Fields<EventSettings> fields = [] {
+    Fields<EventSettings> f;
+    f.Number("time", Member(&EventSettings::time), "s", 0, 1e9, "when it happens").Required();
+    f.Custom(
+        {"node", "text", "", kRequired, "a node's name", "to whom"},
+        [](const Field& v, EventSettings& e) { e.node = v.Text(); }, Unprinted<EventSettings>());
+    f.Choice<sim::NodeEvent::Action>(
+         "action", Member(&EventSettings::action), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}},
+         "`switch_off`: the node's controller stops, its motors stop and its radio goes off (ns-3's Wi-Fi off mode)")
+        .Required();
+    return f;
+  }();
+  return fields;
+}
+
+namespace {
+
+Fields<Keys>& Key(Fields<Keys>& f, const char* key, const char* type, const char* default_text, const char* meaning) {
+  return f.Custom({key, type, "", default_text, "", meaning}, nullptr, Unprinted<Keys>());
+}
+
+}  // namespace
+
+const Fields<Scenario>& TopLevelFields() {
+  static const Fields<Scenario> fields = [] {
+    Fields<Scenario> f;
+    const auto section = [&](const char* key, const char* type, const char* default_text, const char* meaning) {
+      f.Custom({key, type, "", default_text, "", meaning}, nullptr, Unprinted<Scenario>());
+    };
+    f.Custom(
+        {"name", "text", "", "the file name without its extension", "letters, digits, `_`, `-`, `.`",
+         "names the run and its results folder"},
+        [](const Field& v, Scenario& sc) { sc.run.name = ReadName(v); }, Unprinted<Scenario>());
+    f.Custom(
+        {"seed", "whole number", "", "`1`", "[0, 2^64)", "seeds every random stream of the run"},
+        [](const Field& v, Scenario& sc) { sc.run.seed = v.Unsigned(); }, Unprinted<Scenario>());
+    f.Number(
+         "duration", [](Scenario& sc) -> double& { return sc.run.duration; }, "s", 0, 1e9, "simulated time", true)
+        .Required();
+    section("world", "mapping", "see [world](#world)", "field, physics, obstacles");
+    section("network", "mapping", "no network", "ns-3's radios and routing; without it messages are delivered locally");
+    section("nodes", "list, at least one node", kRequired, "see [nodes](#nodes)");
+    section("messages", "mapping", "see [messages](#messages)", "impairments and the local transport");
+    section("events", "list", "none", "see [events](#events)");
+    section("end", "mapping", "the run lasts `duration`", "see [end](#end)");
+    section("loop", "mapping", "see [loop](#loop)", "how `sanet launch` links its agents");
+    section("outputs", "mapping", "see [outputs](#outputs)", "what is written where");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<Keys>& NodeFields() {
+  static const Fields<Keys> fields = [] {
+    Fields<Keys> f;
+    Key(f, "name", "text", kRequired, "unique; letters, digits, `_`, `-`, `.`");
+    Key(f, "model", "`mote`, `omni3` or `diffdrive`", kRequired, "see [model](#model)");
+    Key(f, "pose", "`[x, y, theta]`", kRequired, "m, m, rad; the node starts on the ground");
+    Key(f, "body", "mapping", "the model's", "overrides the model's dimensions; see [body](#body)");
+    Key(f, "sensors", "mapping", "the model's", "adds, changes or removes sensors; see [sensors](#sensors)");
+    Key(f, "radio", "mapping", "the network's", "this node's radio settings; see [radio](#radio)");
+    Key(f, "controller", "mapping", "none", "without one, a node only acts when something pushes it");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<Keys>& GridItemFields() {
+  static const Fields<Keys> fields = [] {
+    Fields<Keys> f;
+    Key(f, "grid", "mapping", kRequired, "see the table below");
+    for (const char* key : {"model", "body", "sensors", "radio", "controller"}) {
+      const auto& node = NodeFields().Describe(Keys{});
+      for (const FieldInfo& i : node)
+        if (i.key == key)
+          Key(f, key, i.type.c_str(), i.default_text.c_str(), "as for a single node; shared by the grid's nodes");
+    }
+    return f;
+  }();
+  return fields;
+}
+
 std::vector<SectionTable> SectionTables() {
   const ModelSpec omni3 = ModelSpec::Defaults(ModelKind::kOmni3),
                   diffdrive = ModelSpec::Defaults(ModelKind::kDiffDrive);
   return {
+      {"top", TopLevelFields().Describe(Scenario{})},
       {"world", WorldFields().Describe(sim::RunSpec{})},
+      {"obstacles.box", BoxFields().Describe(BoxSettings{})},
+      {"obstacles.wall", WallFields().Describe(WallSettings{})},
       {"network", NetworkFields().Describe(net::NetworkSpec{})},
       {"network.propagation", PropagationFields().Describe(net::NetworkSpec{})},
+      {"nodes.node", NodeFields().Describe(Keys{})},
+      {"nodes.grid_item", GridItemFields().Describe(Keys{})},
+      {"nodes.grid", GridFields().Describe(GridSettings{})},
       {"body.mote", BodyFields(ModelKind::kMote).Describe(ModelSpec::Defaults(ModelKind::kMote))},
       {"body.omni3", BodyFields(ModelKind::kOmni3).Describe(omni3)},
       {"body.diffdrive", BodyFields(ModelKind::kDiffDrive).Describe(diffdrive)},
@@ -632,6 +807,7 @@ std::vector<SectionTable> SectionTables() {
       {"radio", RadioFields().Describe(net::NodeRadio{})},
       {"controller", ControllerFields().Describe(sim::ControllerSpec{})},
       {"messages", MessagesFields().Describe(sim::RunSpec{})},
+      {"events", EventFields().Describe(EventSettings{})},
       {"end", EndFields().Describe(sim::RunSpec{})},
       {"loop", LoopFields().Describe(sim::LoopSpec{})},
       {"loop.netem", NetemFields().Describe(sim::LinkShaping{})},

@@ -45,6 +45,42 @@ const Fields<robots::BearingSpec>& BearingFields();
 const Fields<net::NodeRadio>& RadioFields();
 const Fields<sim::ControllerSpec>& ControllerFields();
 
+// Obstacles, grids, events: read into these, then into the run.
+struct BoxSettings {
+  Vec2 center;
+  std::vector<double> size;  // length, width, height
+  double yaw = 0;
+};
+struct WallSettings {
+  Vec2 from, to;
+  double height = 1.0, thickness = 0.2;
+};
+struct GridSettings {
+  std::string name;
+  int rows = 0, cols = 0;
+  Vec2 origin{0, 0}, spacing{1, 1};
+  double heading = 0;
+};
+struct EventSettings {
+  double time = 0;
+  std::string node;
+  sim::NodeEvent::Action action = sim::NodeEvent::Action::kSwitchOff;
+};
+const Fields<BoxSettings>& BoxFields();
+const Fields<WallSettings>& WallFields();
+const Fields<GridSettings>& GridFields();
+const Fields<EventSettings>& EventFields();
+// The top level: name, seed and duration are read here; the sections by their own code, in the
+// order declared (network before nodes, nodes before events).
+const Fields<Scenario>& TopLevelFields();
+// Keys whose values other code reads (a node's): declared for the key list and the docs.
+struct Keys {};
+const Fields<Keys>& NodeFields();
+const Fields<Keys>& GridItemFields();
+
+// Names keep to letters, digits, '_', '-' and '.': they end up in CSV files and folder names.
+std::string ReadName(const Field& f);
+
 // Every declared table with its name ("network", "body.omni3", ...) and defaults, in the order
 // of docs/scenario.md.
 struct SectionTable {

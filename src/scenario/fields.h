@@ -20,6 +20,7 @@ namespace sanet::scenario {
 struct FieldInfo {
   std::string key, type, unit, default_text, range, meaning;
 };
+inline const char* const kRequired = "required";  // the default of a field that must be given
 
 // Shortest text that reads back as the same double ("0.005", "9.81", "1e-06").
 std::string ShortNumber(double value);
@@ -80,14 +81,23 @@ class Fields {
     return Add(std::move(info), std::move(read), std::move(print));
   }
 
+  // The field declared last must be given.
+  Fields& Required() {
+    entries_.back().info.default_text = kRequired;
+    return *this;
+  }
+
   std::vector<std::string> Keys() const {
     std::vector<std::string> keys;
     for (const Entry& e : entries_) keys.push_back(e.info.key);
     return keys;
   }
   // Reads every declared key present in the mapping `f` (after checking that it has no others).
+  // A field whose default is "required" must be there.
   void Read(const Field& f, S& s) const {
     f.ExpectKeys(Keys());
+    for (const Entry& e : entries_)
+      if (e.info.default_text == kRequired) f.Require(e.info.key);
     for (const Entry& e : entries_)
       if (e.read)  // fields without a reader are read by the section's own code
         if (auto value = f.Get(e.info.key)) e.read(*value, s);

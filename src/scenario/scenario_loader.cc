@@ -20,21 +20,6 @@ using robots::RangeSensorSpec;
 
 constexpr double kInf = HUGE_VAL;
 
-// Names end up in CSV files and folder names: keep them to letters, digits, '_', '-' and '.'.
-std::string ReadName(const Field& f) {
-  const std::string name = f.Text();
-  for (char c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
-      f.Fail("'" + name + "' may hold only letters, digits, '_', '-' and '.'");
-  if (name == "." || name == "..") f.Fail("'" + name + "' is not a name");
-  return name;
-}
-
-Vec2 ReadPoint(const Field& f) {
-  const auto v = f.Numbers(2);
-  return {v[0], v[1]};
-}
-
 ModelKind ReadModel(const Field& f) {
   const std::string name = f.Text();
   for (ModelKind k : {ModelKind::kMote, ModelKind::kOmni3, ModelKind::kDiffDrive})
@@ -229,23 +214,17 @@ class NodeList {
 
 // `grid: {name, rows, cols, origin, spacing, heading}`: nodes NAME0, NAME1, ... row by row.
 void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& list) {
-  n.ExpectKeys({"grid", "model", "body", "sensors", "radio", "controller"});
-  const Field g = n.Require("grid");
-  g.ExpectKeys({"name", "rows", "cols", "origin", "spacing", "heading"});
-  const std::string prefix = ReadName(g.Require("name"));
-  const int rows = g.Require("rows").Integer(1, 10000);
-  const int cols = g.Require("cols").Integer(1, 10000);
-  const Vec2 origin = g.Get("origin") ? ReadPoint(*g.Get("origin")) : Vec2{0, 0};
-  Vec2 spacing{1, 1};
-  if (auto s = g.Get("spacing")) {
-    spacing = s->IsSequence() ? ReadPoint(*s) : Vec2{s->Number(0, 1e6), s->Number(0, 1e6)};
-    if (spacing.x <= 0 || spacing.y <= 0) s->Fail("spacing must be greater than 0");
-  }
-  const double heading = g.Get("heading") ? g.Get("heading")->Number(-kInf, kInf) : 0;
+  n.ExpectKeys(GridItemFields().Keys());
+  GridSettings g;
+  GridFields().Read(n.Require("grid"), g);
+  const Vec2 origin = g.origin, spacing = g.spacing;
+  const int rows = g.rows, cols = g.cols;
+  const double heading = g.heading;
+  const std::string& prefix = g.name;
   const NodeTemplate t = ReadNodeTemplate(n, dir, has_network);
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c)
-      list.Add(g.Require("name"),
+      list.Add(n.Require("grid").Require("name"),
                {prefix + std::to_string(r * cols + c),
                 t.model,
                 {origin.x + c * spacing.x, origin.y + r * spacing.y, heading},
@@ -262,7 +241,7 @@ void ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
       ReadGrid(n, dir, run.network.has_value(), list);
       continue;
     }
-    n.ExpectKeys({"name", "model", "pose", "body", "sensors", "radio", "controller"});
+    n.ExpectKeys(NodeFields().Keys());
     const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
     const auto pose = n.Require("pose").Numbers(3);
     list.Add(n.Require("name"),
@@ -278,16 +257,15 @@ void ReadMessages(const Field& messages, sim::RunSpec& run) { MessagesFields().R
 
 void ReadEvents(const Field& events, sim::RunSpec& run) {
   for (const Field& e : events.Items()) {
-    e.ExpectKeys({"time", "node", "action"});
+    EventSettings settings;
+    EventFields().Read(e, settings);
     sim::NodeEvent event;
-    event.time = e.Require("time").Number(0, 1e9);
-    const Field node = e.Require("node");
+    event.time = settings.time;
+    event.action = settings.action;
     bool found = false;
     for (std::size_t i = 0; i < run.nodes.size(); ++i)
-      if (run.nodes[i].name == node.Text()) event.node = static_cast<std::uint32_t>(i), found = true;
-    if (!found) node.Fail("no node named '" + node.Text() + "'");
-    event.action =
-        ReadChoice<sim::NodeEvent::Action>(e.Require("action"), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}});
+      if (run.nodes[i].name == settings.node) event.node = static_cast<std::uint32_t>(i), found = true;
+    if (!found) e.Require("node").Fail("no node named '" + settings.node + "'");
     run.events.push_back(event);
   }
 }
@@ -308,12 +286,9 @@ Scenario LoadScenario(const std::string& path) {
   Scenario sc;
   sc.file = path;
   sim::RunSpec& run = sc.run;
-  root.ExpectKeys(
-      {"name", "seed", "duration", "world", "network", "nodes", "messages", "events", "end", "loop", "outputs"});
+  TopLevelFields().Read(root, sc);
+  if (!root.Get("name")) run.name = fs::path(path).stem().string();
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
-  run.name = root.Get("name") ? ReadName(*root.Get("name")) : fs::path(path).stem().string();
-  if (auto seed = root.Get("seed")) run.seed = seed->Unsigned();
-  run.duration = root.Require("duration").NumberAbove(0, 1e9);
   if (auto world = root.Get("world")) ReadWorld(*world, run);
   ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc);
   if (auto messages = root.Get("messages")) ReadMessages(*messages, run);

@@ -198,8 +198,8 @@ int Validate(const std::string& file, bool print, agents::Registry& registry) {
     robots += n.model.kind != robots::ModelKind::kMote;
     controlled += n.controller.has_value();
   }
-  std::printf("%s: valid: %zu nodes (%zu robots, %zu with controllers), %zu obstacles, %.1f s, seed %llu\n",
-              file.c_str(), sc.run.nodes.size(), robots, controlled, sc.run.obstacles.size(), sc.run.duration,
+  std::printf("%s: valid: %zu nodes (%zu robot%s, %zu with controllers), %zu obstacles, %.1f s, seed %llu\n",
+              file.c_str(), sc.run.nodes.size(), robots, robots == 1 ? "" : "s", controlled, sc.run.obstacles.size(), sc.run.duration,
               static_cast<unsigned long long>(sc.run.seed));
   return 0;
 }

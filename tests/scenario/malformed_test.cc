@@ -18,6 +18,9 @@ struct Case {
   const char* message;  // expected part of the message
 };
 
+// gtest prints a parameter with this, instead of its bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 constexpr const char* kHeader = "duration: 10\n";  // line 1 of every case below
 
 const Case kCases[] = {

@@ -12,19 +12,11 @@
 
 #include "agents/controller_registry.h"
 #include "agents/controller_spec.h"
+#include "agents/host_clock.h"
 #include "core/random_stream.h"
 #include "sanet/controller.h"
 
 namespace sanet::agents {
-
-// The clock a host lives on: the simulation's, or the agent's estimate of it.
-class HostClock {
- public:
-  virtual ~HostClock() = default;
-  virtual double Now() const = 0;
-  // Runs `action` `delay` seconds from now on this clock.
-  virtual void After(double delay, std::function<void()> action) = 0;
-};
 
 // Impairments added on top of the network, as the receiving controller sees them: a message is
 // lost with probability `loss`, or reaches the controller `delay` later.

@@ -1,10 +1,6 @@
 #include "agents/simulated_node.h"
 
-#include <ns3/simulator.h>
-
 namespace sanet::agents {
-
-double SimulatedNode::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 
 std::optional<BearingReading> SimulatedNode::Bearing(NodeId target) {
   if (target >= directory_.NodeCount() || target == id_) return std::nullopt;

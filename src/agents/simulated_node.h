@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "agents/host_clock.h"
 #include "core/random_stream.h"
 #include "net/transport.h"
 #include "robots/node_model.h"
@@ -29,10 +30,16 @@ class NodeDirectory {
 class SimulatedNode : public Node {
  public:
   SimulatedNode(NodeId id, std::string name, robots::NodeModel& model, net::Transport& transport,
-                NodeDirectory& directory, RandomStream random)
-      : id_(id), name_(std::move(name)), model_(model), transport_(transport), directory_(directory), random_(random) {}
+                NodeDirectory& directory, const HostClock& clock, RandomStream random)
+      : id_(id),
+        name_(std::move(name)),
+        model_(model),
+        transport_(transport),
+        directory_(directory),
+        clock_(clock),
+        random_(random) {}
 
-  double Now() const override;
+  double Now() const override { return clock_.Now(); }
   NodeId Id() const override { return id_; }
   const std::string& Name() const override { return name_; }
   std::optional<NodeId> Lookup(const std::string& name) const override { return directory_.Lookup(name); }
@@ -80,6 +87,7 @@ class SimulatedNode : public Node {
   robots::NodeModel& model_;
   net::Transport& transport_;
   NodeDirectory& directory_;
+  const HostClock& clock_;
   RandomStream random_;
   bool off_ = false;
 };

@@ -187,6 +187,10 @@ int Launch(const std::string& file, const std::string& output, std::optional<int
   return hil::Launch(sc.run, settings);
 }
 
+std::string Count(std::size_t n, const std::string& thing) {
+  return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+
 int Validate(const std::string& file, bool print, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, registry);
   if (print) {
@@ -198,8 +202,9 @@ int Validate(const std::string& file, bool print, agents::Registry& registry) {
     robots += n.model.kind != robots::ModelKind::kMote;
     controlled += n.controller.has_value();
   }
-  std::printf("%s: valid: %zu nodes (%zu robot%s, %zu with controllers), %zu obstacles, %.1f s, seed %llu\n",
-              file.c_str(), sc.run.nodes.size(), robots, robots == 1 ? "" : "s", controlled, sc.run.obstacles.size(), sc.run.duration,
+  std::printf("%s: valid: %s (%s, %zu with controllers), %s, %.1f s, seed %llu\n", file.c_str(),
+              Count(sc.run.nodes.size(), "node").c_str(), Count(robots, "robot").c_str(), controlled,
+              Count(sc.run.obstacles.size(), "obstacle").c_str(), sc.run.duration,
               static_cast<unsigned long long>(sc.run.seed));
   return 0;
 }
@@ -208,6 +213,23 @@ int List(agents::Registry& registry, bool markdown) {
   std::fputs((markdown ? scenario::ReferenceMarkdown() : scenario::Catalogue(registry)).c_str(), stdout);
   return 0;
 }
+
+// The ranges a scenario's duration and seed have in a file hold on the command line too.
+const CLI::Validator kDurationRange(
+    [](std::string& text) {
+      const double d = std::strtod(text.c_str(), nullptr);
+      return d > 0 && d <= 1e9 ? std::string() : "must be greater than 0 and at most 1e9 s, not " + text;
+    },
+    "(0, 1e9] s");
+const CLI::Validator kSeedText(
+    [](std::string& text) {
+      const bool digits =
+          !text.empty() && text.size() <= 20 && text.find_first_not_of("0123456789") == std::string::npos;
+      return digits && (text.size() < 20 || text <= "18446744073709551615")
+                 ? std::string()
+                 : "must be a whole number from 0 to 18446744073709551615, not " + text;
+    },
+    "0..2^64-1");
 
 // One subcommand: its options live as long as the program, its action runs when it was chosen.
 struct Command {
@@ -225,8 +247,8 @@ Command AddRun(CLI::App& app) {
                                      "Run a scenario and write its results folder (trajectories.csv, "
                                      "log.csv, messages.csv, transitions.csv, metrics.csv, summary.json)");
   AddScenario(cmd, a->file);
-  cmd->add_option("--seed", a->seed, "Override the scenario's seed");
-  cmd->add_option("--duration", a->duration, "Override the simulated duration (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", a->seed, "Override the scenario's seed (0 to 2^64 - 1)")->check(kSeedText);
+  cmd->add_option("--duration", a->duration, "Override the simulated duration (s)")->check(kDurationRange);
   cmd->add_option("-o,--output", a->output,
                   "Results folder (default: the scenario's outputs.folder, or results/<name>)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
@@ -283,7 +305,7 @@ Command AddServe(CLI::App& app) {
       "Once listening, write the port number to this file (for programs that start the server with --port 0)");
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
-  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(kDurationRange);
   return {cmd, [a](agents::Registry& r) {
             return Serve(a->file, a->bind, a->port, a->port_file, a->output, a->quiet, a->duration, r);
           }};
@@ -327,7 +349,7 @@ Command AddLaunch(CLI::App& app) {
                                      "the scenario in real time, stop them all (also on Ctrl-C)");
   AddScenario(cmd, a->file);
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
-  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(kDurationRange);
   cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
   return {cmd, [a](agents::Registry& r) { return Launch(a->file, a->output, a->udp_base, a->duration, r); }};

@@ -63,7 +63,8 @@ std::string EffectiveScenarioYaml(const Scenario& sc) {
   root["nodes"] = nodes;
   YAML::Emitter out;
   out << root;
-  return std::string("# The effective scenario of ") + sc.file + ": every default filled in.\n" + out.c_str() + "\n";
+  return std::string("# The effective scenario of ") + sc.file + ": every default of the format filled in.\n" +
+         out.c_str() + "\n";
 }
 
 }  // namespace sanet::scenario

@@ -1,5 +1,6 @@
-// The effective scenario: every field of a loaded scenario with every default filled in, as a
-// scenario file that loads (and runs) to the same run. Grids appear as their nodes, obstacles
+// The effective scenario: every field of the scenario format with every default filled in
+// (controllers' parameters as written: their defaults are the controllers'), as a scenario
+// file that loads (and runs) to the same run. Grids appear as their nodes, obstacles
 // as boxes, sensors with all their keys. `sanet validate --print` writes it.
 #pragma once
 

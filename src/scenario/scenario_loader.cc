@@ -213,12 +213,17 @@ class NodeList {
 };
 
 // `grid: {name, rows, cols, origin, spacing, heading}`: nodes NAME0, NAME1, ... row by row.
+constexpr long long kMaxNodes = 100000;  // far beyond, memory for the specs alone runs out before the run starts
+
 void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& list) {
   n.ExpectKeys(GridItemFields().Keys());
   GridSettings g;
   GridFields().Read(n.Require("grid"), g);
   const Vec2 origin = g.origin, spacing = g.spacing;
   const int rows = g.rows, cols = g.cols;
+  if (static_cast<long long>(rows) * cols > kMaxNodes)
+    n.Require("grid").Fail("a grid of " + std::to_string(static_cast<long long>(rows) * cols) +
+                           " nodes; a scenario holds at most " + std::to_string(kMaxNodes));
   const double heading = g.heading;
   const std::string& prefix = g.name;
   const NodeTemplate t = ReadNodeTemplate(n, dir, has_network);
@@ -249,6 +254,9 @@ void ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
              t.controller_line);
   }
   if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
+  if (static_cast<long long>(run.nodes.size()) > kMaxNodes)
+    nodes.Fail("a scenario holds at most " + std::to_string(kMaxNodes) + " nodes, not " +
+               std::to_string(run.nodes.size()));
   if (run.network && run.nodes.size() > 65534)
     nodes.Fail("a network has room for 65534 nodes (10.0.0.0/16), not " + std::to_string(run.nodes.size()));
 }

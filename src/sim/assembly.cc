@@ -62,6 +62,7 @@ Assembly::Assembly(const RunSpec& spec, agents::Registry& registry) : spec_(spec
   if (spec.physics_step <= 0) throw WorldError("physics step must be positive");
   g_assembly_exists = true;
   try {
+    clock_ = std::make_unique<SimulationClock>();
     ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(spec.seed % 4294967295u) + 1);
     BuildBodies();
     BuildTransport();
@@ -100,12 +101,12 @@ bool Assembly::remote(NodeId id) const {
 }
 
 void Assembly::BuildNodes(agents::Registry& registry) {
-  clock_ = std::make_unique<SimulationClock>();
   const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
   for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
     const NodeSpec& n = spec_.nodes[id];
-    nodes_.push_back(std::make_unique<agents::SimulatedNode>(
-        id, n.name, *models_[id], *transport_, *this, RandomStream(spec_.seed, "node/" + n.name + "/controller")));
+    nodes_.push_back(
+        std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this, *clock_,
+                                                RandomStream(spec_.seed, "node/" + n.name + "/controller")));
     std::unique_ptr<Controller> controller =
         n.controller && !remote(id) ? agents::MakeController(*n.controller, registry) : nullptr;
     hosts_.push_back(std::make_unique<agents::ControllerHost>(*nodes_.back(), std::move(controller),

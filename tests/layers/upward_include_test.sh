@@ -18,3 +18,20 @@ if grep -q "net/transport.h: No such file" <<<"$out"; then
   exit 1
 fi
 echo "ok: net cannot include sim/world.h"
+
+# The libraries sanet keeps private are system headers here: check that only their layers
+# include them.
+src="$(dirname "$0")/../../src"
+check_private() {  # check_private PATTERN ALLOWED_DIRS...
+  local pattern=$1; shift
+  local found
+  found=$(grep -rlE "#include <$pattern" "$src" | grep -vE "$(printf '%s|' "$@" | sed 's/|$//')" || true)
+  if [ -n "$found" ]; then
+    echo "FAIL: <$pattern...> included outside $*: $found"
+    exit 1
+  fi
+}
+check_private "ns3/" "/src/net/" "/src/sim/"
+check_private "ode/" "/src/physics/ode/"
+check_private "yaml-cpp/" "/src/scenario/"
+echo "ok: ns-3, ODE and yaml-cpp stay in their layers"

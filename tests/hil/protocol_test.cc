@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/message_lines.h"
+
 namespace sanet::hil {
 namespace {
 
@@ -102,6 +104,34 @@ TEST(Protocol, LineReaderSplitsEveryLineEndAndLimitsLength) {
   r.Append(std::string(40, 'x'));
   EXPECT_FALSE(r.Next(&too_long));
   EXPECT_TRUE(too_long);
+}
+
+// A message handed to a client as a MSG line reads back as the same message on the agent's side.
+TEST(MessageLines, MsgLineRoundTripsThroughTheProtocol) {
+  Message m;
+  m.from = 3;
+  m.delivery = Delivery::kUnicast;
+  m.time_sent = 12.0001;
+  m.time_received = 12.004321;
+  m.hops = 2;
+  m.payload = {0x00, 0xff, 0x7b, 0x7d, 0x0a};  // braces and a line end: hex keeps them out of the line
+  const std::string line = FormatLine(MsgLine(m, "m3"));
+  std::string error;
+  const auto parsed = ParseLine(line.substr(0, line.size() - 2), &error);
+  ASSERT_TRUE(parsed) << error;
+  const auto back = ParseMsgLine(*parsed, NodeId{3}, 7, &error);
+  ASSERT_TRUE(back) << error;
+  EXPECT_EQ(back->payload, m.payload);
+  EXPECT_EQ(back->to, 7u);
+  EXPECT_EQ(back->hops, 2);
+  EXPECT_NEAR(back->time_received, m.time_received, 1e-6);
+  EXPECT_EQ(ToHex(m.payload), "00ff7b7d0a");
+  EXPECT_FALSE(FromHex("0g"));
+  EXPECT_FALSE(FromHex("abc"));
+  ProtocolMessage broken("MSG");
+  broken.Add("From", "m3").Add("Delivery", "sideways");
+  EXPECT_FALSE(ParseMsgLine(broken, NodeId{3}, 7, &error));
+  EXPECT_NE(error.find("MSG needs"), std::string::npos);
 }
 
 }  // namespace

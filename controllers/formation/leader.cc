@@ -32,7 +32,10 @@ class FormationLeader : public Controller {
     if (!pose) return;
     if (node.Now() + 1e-9 >= next_send_ && node.Now() < silent_after_) {
       next_send_ = node.Now() + period_;
-      const Bytes message = formation::PoseMessage{sequence_++, node.Now(), *pose}.Encode();
+      // Numbered by its slot on the send grid, so a pose that was due but never sent (a late
+      // step in the loop) shows as a gap to the followers, like one lost on the way.
+      const auto slot = static_cast<std::uint32_t>(std::llround(node.Now() / period_));
+      const Bytes message = formation::PoseMessage{slot, node.Now(), *pose}.Encode();
       for (NodeId to : send_to_) node.Send(to, message);
     }
     if (done_) {
@@ -69,7 +72,6 @@ class FormationLeader : public Controller {
   int lap_ = 0;
   bool done_ = false;
   double next_send_ = 0;
-  std::uint32_t sequence_ = 0;
 };
 
 }  // namespace

@@ -144,7 +144,10 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   sim::RunOptions options;
   options.output_dir = output.empty() ? sc.output_folder : output;
   options.scenario_file = file;
-  options.add_to_summary = [&](nlohmann::ordered_json& j) { j["real_time_lag"] = server.LagSummary(); };
+  options.add_to_summary = [&](nlohmann::ordered_json& j) {
+    j["real_time_lag"] = server.LagSummary();
+    j["agents"] = server.AgentStats();
+  };
   const sim::RunResult r = world.Run(options);
   if (!quiet) {
     const auto lag = server.LagSummary();

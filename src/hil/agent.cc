@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "agents/controller_host.h"
+#include "hil/agent_steps.h"
 
 namespace sanet::hil {
 namespace {
@@ -30,6 +31,16 @@ class AgentClock : public agents::HostClock {
   std::multimap<double, std::function<void()>> due_;  // in time order, then in order asked
 };
 
+// What the agent tells the server about its steps and messages (summary.json's `agents`).
+ProtocolMessage Stats(const StepGrid& grid, std::uint64_t sent, std::uint64_t received) {
+  ProtocolMessage m("STATS");
+  m.Add("Steps", std::to_string(grid.run())).Add("Missed", std::to_string(grid.missed()));
+  m.Add("Rate", FormatPrecise(grid.achieved_rate())).Add("Sent", std::to_string(sent));
+  m.Add("Received", std::to_string(received)).Add("LatenessP50", FormatPrecise(grid.Lateness(0.5)));
+  m.Add("LatenessP99", FormatPrecise(grid.Lateness(0.99))).Add("LatenessMax", FormatPrecise(grid.Lateness(1)));
+  return m;
+}
+
 }  // namespace
 
 int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, agents::Registry& registry) {
@@ -41,19 +52,29 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   hooks.failed = [&](const std::string& why) { failure = why; };
   agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
-  const auto deliver = [&](const Message& m) { host.Receive(m); };
+  std::uint64_t received = 0;
+  const auto deliver = [&](const Message& m) {
+    ++received;
+    host.Receive(m);
+  };
   // The first sensor lines tell where the robot is and what time it is.
   while (!node.HasPose()) {
     if (!node.Poll(deliver)) return 0;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  host.Start();
-  double next = node.Now();
+  StepGrid grid(controller.rate);
+  double next_report = 0;
   while (host.running() && node.Poll(deliver)) {
     clock.RunDue();
-    if (node.Now() >= next) {
+    if (const auto t = grid.Due(node.ClockNow())) {
+      node.SetStepTime(*t);
+      if (grid.run() == 1) host.Start();
       host.Step();
-      next = std::max(next + host.period(), node.Now() - host.period());  // no burst of steps after a stall
+      node.SetStepTime(std::nullopt);
+    }
+    if (node.ClockNow() >= next_report) {  // five times a second: the server keeps the last
+      node.Report(Stats(grid, node.messages_sent(), received));
+      next_report = node.ClockNow() + 0.2;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }

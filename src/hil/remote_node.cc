@@ -95,7 +95,9 @@ void RemoteNode::Command(const ProtocolMessage& m) {
   }
 }
 
-double RemoteNode::Now() const {
+double RemoteNode::Now() const { return step_time_ ? *step_time_ : ClockNow(); }
+
+double RemoteNode::ClockNow() const {
   const auto now = std::chrono::steady_clock::now();
   if (clock_origin_) return std::chrono::duration<double>(now.time_since_epoch()).count() - *clock_origin_;
   return server_time_ + std::chrono::duration<double>(now - server_time_at_).count();
@@ -143,7 +145,7 @@ void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
     m.time_sent = r.F64();
     if (!r.ok() || m.from >= spec_.nodes.size()) continue;
     m.delivery = kind == kUnicast ? Delivery::kUnicast : Delivery::kBroadcast;
-    m.time_received = Now();
+    m.time_received = ClockNow();
     m.hops = 1;
     m.payload.assign(datagram.begin() + 18, datagram.end());
     deliver(m);
@@ -242,7 +244,8 @@ bool RemoteNode::SetWheelSpeeds(const std::vector<double>& w) {
 }
 
 void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
-  Bytes datagram = Writer().U8(kUdpMagic).U32(id_).U32(kind == kUnicast ? to : kBroadcast).U8(kind).F64(Now()).bytes();
+  Bytes datagram =
+      Writer().U8(kUdpMagic).U32(id_).U32(kind == kUnicast ? to : kBroadcast).U8(kind).F64(ClockNow()).bytes();
   datagram.insert(datagram.end(), payload.begin(), payload.end());
   const sockaddr_in peer = Address(HostOf(to), PortOf(to));
   ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
@@ -272,6 +275,7 @@ void RemoteNode::SendThroughServer(Delivery delivery, std::optional<NodeId> to, 
 // Agents over UDP; nodes that live in the server through the robot's node there.
 void RemoteNode::Send(NodeId to, const Bytes& payload) {
   if (to >= spec_.nodes.size() || to == id_) return;
+  ++messages_sent_;
   if (IsAgent(to))
     SendUdp(to, kUnicast, payload);
   else
@@ -279,12 +283,14 @@ void RemoteNode::Send(NodeId to, const Bytes& payload) {
 }
 
 void RemoteNode::Broadcast(const Bytes& payload) {
+  ++messages_sent_;
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
     if (to != id_ && IsAgent(to)) SendUdp(to, kBroadcast, payload);
   SendThroughServer(Delivery::kBroadcast, std::nullopt, payload);
 }
 
 void RemoteNode::Flood(const Bytes& payload) {
+  ++messages_sent_;
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
     if (to != id_ && IsAgent(to)) SendUdp(to, kBroadcast, payload);
   SendThroughServer(Delivery::kFlood, std::nullopt, payload);

@@ -38,6 +38,14 @@ class RemoteNode : public Node {
   // host applies the scenario's impairments). False once the server is gone.
   bool Poll(const std::function<void(const Message&)>& deliver);
   bool HasPose() const { return truth_.has_value(); }
+  // Inside a control step, Now() is the step's time on the shared clock's grid, not the moment
+  // the process happened to wake (as in a simulated run); nullopt outside steps.
+  void SetStepTime(std::optional<double> t) { step_time_ = t; }
+  // The run's clock as this process reads it, steps or not.
+  double ClockNow() const;
+  std::uint64_t messages_sent() const { return messages_sent_; }
+  // Reports to the server (a sanet extension line), e.g. the agent's STATS.
+  void Report(const ProtocolMessage& m) { Command(m); }
 
   double Now() const override;
   NodeId Id() const override { return id_; }
@@ -85,6 +93,8 @@ class RemoteNode : public Node {
   std::chrono::steady_clock::time_point server_time_at_;
   std::optional<Pose2D> truth_, odometry_;
   std::optional<RangeScan> laser_, ir_;
+  std::optional<double> step_time_;
+  std::uint64_t messages_sent_ = 0;
 };
 
 }  // namespace sanet::hil

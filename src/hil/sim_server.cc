@@ -184,6 +184,7 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "DRIVE") return Drive(c, m);
   if (m.type == "SEND") return SendMessage(c, m);
   if (m.type == "LOG" || m.type == "TRANSITION" || m.type == "METRIC") return Report(c, m);
+  if (m.type == "STATS") return TakeStats(c, m);
   if (m.type == "GETCONF") {
     ProtocolMessage reply{"CONF"};
     reply.Add("Type", "GroundVehicle")
@@ -387,6 +388,29 @@ void SimServer::Report(Client& c, const ProtocolMessage& m) {
   if (!from || !to || from->empty() || to->empty())
     return Error(c, "TRANSITION needs {From state} {To state}, both named, and may give {Why ...}");
   node.Transition(*from, *to, why ? *why : "");
+}
+
+// STATS (sanet extension): an agent's steps and messages so far; the last one counts.
+void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
+  nlohmann::ordered_json stats = nlohmann::ordered_json::object();
+  const std::pair<const char*, const char*> keys[] = {{"Steps", "steps"},
+                                                      {"Missed", "steps_missed"},
+                                                      {"Rate", "achieved_rate_hz"},
+                                                      {"Sent", "messages_sent"},
+                                                      {"Received", "messages_received"},
+                                                      {"LatenessP50", "lateness_p50_s"},
+                                                      {"LatenessP99", "lateness_p99_s"},
+                                                      {"LatenessMax", "lateness_max_s"}};
+  for (const auto& [key, name] : keys) {
+    const auto value = m.Number(key);
+    if (!value) return Error(c, std::string("STATS needs a number {") + key + " ...}");
+    const bool count = std::string(name).rfind("lateness", 0) != 0 && std::string(name) != "achieved_rate_hz";
+    if (count)
+      stats[name] = static_cast<std::uint64_t>(*value);
+    else
+      stats[name] = *value;
+  }
+  agent_stats_[world_.NameOf(*c.robot)] = stats;
 }
 
 SimServer::Client* SimServer::ClientOf(NodeId robot) {

@@ -44,6 +44,8 @@ class SimServer : public sim::StepObserver {
   void AfterStep(const sim::WorldSnapshot& snapshot) override;
   // Lag of every physics step behind the wall clock: p50, p99, max, missed deadlines.
   nlohmann::ordered_json LagSummary() const;
+  // What each agent last reported of its steps and messages (STATS lines), by robot.
+  const nlohmann::ordered_json& AgentStats() const { return agent_stats_; }
 
  private:
   struct Client {
@@ -64,6 +66,7 @@ class SimServer : public sim::StepObserver {
   void Drive(Client& c, const ProtocolMessage& m);
   void SendMessage(Client& c, const ProtocolMessage& m);
   void Report(Client& c, const ProtocolMessage& m);
+  void TakeStats(Client& c, const ProtocolMessage& m);
   sim::InboxResult Forward(NodeId to, const Message& message);
   Client* ClientOf(NodeId robot);
   agents::SimulatedNode& NodeOf(const Client& c) { return world_.parts().node(*c.robot); }
@@ -80,6 +83,7 @@ class SimServer : public sim::StepObserver {
   std::vector<std::unique_ptr<Client>> clients_;
   std::vector<bool> claimed_;
   std::vector<double> lags_;  // s, per physics step
+  nlohmann::ordered_json agent_stats_ = nlohmann::ordered_json::object();
   double wall_start_ = -1;
 };
 

@@ -17,9 +17,17 @@ with tempfile.TemporaryDirectory() as tmp:
     summary = json.load(open(os.path.join(tmp, "summary.json")))
     assert summary["min_distance"]["min_m"] > 0.4, summary["min_distance"]
     assert summary["min_distance"]["fraction_within_10_percent"] > 0.8, summary["min_distance"]
+    # Exact rates in the loop: the leader's steps (and poses) on the 10 Hz grid.
+    agents = summary["agents"]
+    leader_stats = agents["leader"]
+    assert abs(leader_stats["achieved_rate_hz"] - 10) < 0.1, leader_stats
+    assert leader_stats["steps"] > 230 and leader_stats["messages_sent"] == 2 * leader_stats["steps"], leader_stats
     for follower in ("f1", "f2", "f3"):
         heard = summary["metrics"][follower]["pose_delay"]["count"]
-        assert heard > 150, (follower, heard)  # 10 Hz for 25 s
+        assert heard > 240, (follower, heard)  # 10 Hz for 25 s
+        missed = summary["metrics"][follower]["pose_missed"]  # poses due but never received
+        assert missed["count"] == heard and missed["max"] <= 2, (follower, missed)
+        assert set(agents[follower]) >= {"steps", "steps_missed", "lateness_p99_s", "messages_received"}
     leader = [r for r in open(os.path.join(tmp, "trajectories.csv")) if ",leader," in r]
     assert float(leader[-1].split(",")[2]) > 5, "the leader drove"
     print("lag:", summary["real_time_lag"])

@@ -7,6 +7,7 @@
 
 #include "agents/controller_host.h"
 #include "hil/agent_steps.h"
+#include "hil/message_lines.h"
 
 namespace sanet::hil {
 namespace {
@@ -50,6 +51,11 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   std::string failure;
   agents::ControllerHost::Hooks hooks;
   hooks.failed = [&](const std::string& why) { failure = why; };
+  // The server records what reaches this robot through it; what other agents send over UDP it
+  // learns from here, for messages.csv.
+  hooks.delivered = [&](const Message& m) {
+    if (node.IsAgent(m.from)) node.Report(RecvLine(m, node.NameOf(m.from)));
+  };
   agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
   std::uint64_t received = 0;

@@ -52,6 +52,35 @@ std::optional<Delivery> ParseDelivery(const std::string& name) {
   return std::nullopt;
 }
 
+ProtocolMessage RecvLine(const Message& m, const std::string& from_name) {
+  ProtocolMessage line("RECV");
+  line.Add("From", from_name).Add("Delivery", DeliveryName(m.delivery));
+  line.Add("TimeSent", FormatPrecise(m.time_sent)).Add("TimeReceived", FormatPrecise(m.time_received));
+  line.Add("Bytes", std::to_string(m.payload.size()));
+  if (m.hops) line.Add("Hops", std::to_string(*m.hops));
+  return line;
+}
+
+std::optional<ReceivedReport> ParseRecvLine(const ProtocolMessage& line, const std::optional<NodeId>& from, NodeId to,
+                                            std::string* error) {
+  const std::string* delivery = line.Get("Delivery");
+  const auto kind = delivery ? ParseDelivery(*delivery) : std::nullopt;
+  const auto sent = line.Number("TimeSent"), received = line.Number("TimeReceived"), bytes = line.Number("Bytes");
+  if (!from || !kind || !sent || !received || !bytes || *bytes < 0) {
+    *error = "RECV needs {From node} {Delivery unicast|broadcast|flood} {TimeSent} {TimeReceived} {Bytes n}";
+    return std::nullopt;
+  }
+  ReceivedReport r;
+  const Delivery delivery_kind = kind.value_or(Delivery::kUnicast);
+  r.message.from = *from, r.message.to = delivery_kind == Delivery::kUnicast ? to : kBroadcast;
+  r.message.delivery = delivery_kind;
+  r.message.time_sent = *sent, r.message.time_received = *received;
+  if (auto hops = line.Number("Hops")) r.message.hops = static_cast<int>(*hops);
+  r.bytes = static_cast<std::size_t>(*bytes);
+  r.message.payload.assign(r.bytes, 0);  // its size is what the results keep
+  return r;
+}
+
 ProtocolMessage MsgLine(const Message& m, const std::string& from_name) {
   ProtocolMessage line("MSG");
   line.Add("From", from_name).Add("Delivery", DeliveryName(m.delivery));

@@ -8,6 +8,8 @@
 // Controllers' typed events travel the same way:
 //   TRANSITION {From searching} {To travelling} {Why route found}
 //   METRIC {Name hop_time} {Value 3.25}
+// and an agent's record of what other agents sent it over UDP:
+//   RECV {From f1} {Delivery unicast} {TimeSent 12.000100} {TimeReceived 12.001300} {Bytes 41} {Hops 1}
 #pragma once
 
 #include <optional>
@@ -26,6 +28,17 @@ std::optional<Delivery> ParseDelivery(const std::string& name);
 
 // MSG line for a message that reached `message.to`'s node, with names for node ids.
 ProtocolMessage MsgLine(const Message& message, const std::string& from_name);
+
+// RECV line: an agent tells the server of a message another agent's UDP datagram brought it,
+// for messages.csv (the server never sees those).
+ProtocolMessage RecvLine(const Message& message, const std::string& from_name);
+// The server's side: the message (payload empty, `bytes` set) or nullopt with `error`.
+struct ReceivedReport {
+  Message message;
+  std::size_t bytes = 0;
+};
+std::optional<ReceivedReport> ParseRecvLine(const ProtocolMessage& line, const std::optional<NodeId>& from, NodeId to,
+                                            std::string* error);
 
 // Reads a MSG line back into a message (the agent side); `from` resolved by name. Says what is
 // wrong in `error` otherwise.

@@ -44,6 +44,8 @@ class RemoteNode : public Node {
   // The run's clock as this process reads it, steps or not.
   double ClockNow() const;
   std::uint64_t messages_sent() const { return messages_sent_; }
+  // A robot whose controller runs as an agent: reached over UDP, not through the server.
+  bool IsAgent(NodeId node) const;
   // Reports to the server (a sanet extension line), e.g. the agent's STATS.
   void Report(const ProtocolMessage& m) { Command(m); }
 
@@ -75,7 +77,6 @@ class RemoteNode : public Node {
   void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
   void TakeSensor(const ProtocolMessage& m);
   void ReadUdp(const std::function<void(const Message&)>& deliver);
-  bool IsAgent(NodeId node) const;  // a robot whose controller runs as an agent: reached over UDP
   void SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload);
   void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
   std::string HostOf(NodeId node) const;

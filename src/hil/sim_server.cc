@@ -185,6 +185,12 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "SEND") return SendMessage(c, m);
   if (m.type == "LOG" || m.type == "TRANSITION" || m.type == "METRIC") return Report(c, m);
   if (m.type == "STATS") return TakeStats(c, m);
+  if (m.type == "RECV") {
+    const std::string* from = m.Get("From");
+    std::string error;
+    const auto report = ParseRecvLine(m, from ? world_.Lookup(*from) : std::nullopt, id, &error);
+    return report ? world_.parts().RecordDelivery(id, report->message) : Error(c, error);
+  }
   if (m.type == "GETCONF") {
     ProtocolMessage reply{"CONF"};
     reply.Add("Type", "GroundVehicle")

@@ -51,6 +51,11 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void SetEvents(RunEvents* events) { events_ = events; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
   void SwitchOff(NodeId id);
+  // A message that reached a node outside the run's own transport (between agents, over UDP),
+  // recorded as delivered.
+  void RecordDelivery(NodeId to, const Message& message) {
+    if (events_) events_->Delivered(to, message);
+  }
 
   // NodeDirectory
   std::optional<NodeId> Lookup(const std::string& name) const override;

@@ -28,6 +28,15 @@ with tempfile.TemporaryDirectory() as tmp:
         missed = summary["metrics"][follower]["pose_missed"]  # poses due but never received
         assert missed["count"] == heard and missed["max"] <= 2, (follower, missed)
         assert set(agents[follower]) >= {"steps", "steps_missed", "lateness_p99_s", "messages_received"}
+    # messages.csv lists what the agents said to each other over UDP, with its delays.
+    import csv
+    with open(os.path.join(tmp, "messages.csv")) as f:
+        rows = list(csv.DictReader(f))
+    to_f1 = [r for r in rows if r["from"] == "leader" and r["to"] == "f1"]
+    relayed = [r for r in rows if r["from"] == "f1" and r["to"] == "f3"]
+    assert abs(len(to_f1) - summary["metrics"]["f1"]["pose_delay"]["count"]) <= 1, len(to_f1)
+    assert len(relayed) > 240 and all(0 < float(r["delay"]) < 0.5 for r in to_f1 + relayed), relayed[:2]
+    assert summary["rows"]["messages"] == len(rows)
     leader = [r for r in open(os.path.join(tmp, "trajectories.csv")) if ",leader," in r]
     assert float(leader[-1].split(",")[2]) > 5, "the leader drove"
     print("lag:", summary["real_time_lag"])

@@ -13,7 +13,7 @@ import tempfile
 sanet = sys.argv[1]
 seconds = float(sys.argv[2]) if len(sys.argv) > 2 else 20
 print(f"sanet real-time lag: physics step 5 ms, sensors 10 Hz, {seconds:.0f} s per case, one agent process per robot")
-print(f"{'robots':>6} {'p50 ms':>8} {'p99 ms':>8} {'max ms':>8} {'missed':>8} {'p99/step':>9} {'p99 vs 4':>9}")
+print(f"{'robots':>6} {'p50 ms':>8} {'p99 ms':>8} {'max ms':>8} {'missed':>8} {'p99/step':>9} {'p99 vs 4':>9}   server")
 base = None
 for count in (4, 16, 32):
     with tempfile.TemporaryDirectory() as tmp:
@@ -31,4 +31,5 @@ for count in (4, 16, 32):
         p99 = lag["p99_s"]
         base = base or max(p99, 1e-6)
         print(f"{count:>6} {1000 * lag['p50_s']:>8.2f} {1000 * p99:>8.2f} {1000 * lag['max_s']:>8.2f} "
-              f"{lag['missed_deadlines']:>8} {p99 / lag['deadline_s']:>9.2f} {p99 / base:>9.2f}", flush=True)
+              f"{lag['missed_deadlines']:>8} {p99 / lag['deadline_s']:>9.2f} {p99 / base:>9.2f}   "
+              f"{lag.get('scheduling', '')}", flush=True)

@@ -19,6 +19,7 @@
 #include "hil/agent.h"
 #include "hil/launch.h"
 #include "hil/namespaces.h"
+#include "hil/realtime_priority.h"
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
 #include "robots/node_model.h"
@@ -119,6 +120,7 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   if (duration) sc.run.duration = *duration;
   sc.run.robots_remote = true;
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
+  const std::string scheduling = hil::UseRealTimePriority();
   sim::World world(sc.run, registry);
   hil::ServerSettings settings;
   settings.bind = bind;
@@ -146,6 +148,7 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   options.scenario_file = file;
   options.add_to_summary = [&](nlohmann::ordered_json& j) {
     j["real_time_lag"] = server.LagSummary();
+    j["real_time_lag"]["scheduling"] = scheduling;
     j["agents"] = server.AgentStats();
   };
   const sim::RunResult r = world.Run(options);

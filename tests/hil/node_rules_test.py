@@ -107,7 +107,7 @@ class NodeRules(unittest.TestCase):
             if not line.startswith("SEN") or "GroundTruth" not in line:
                 continue
             t = float(field(line, "Time"))
-            c.send("DRIVE {Left 5} {Right 5}")  # as fast forward as it goes
+            c.send("DRIVE {Left 5} {Right 5} {Normalized false}")  # rad/s, as fast forward as it goes
             if 4 < t < 4.15:
                 c.send("SEND {Delivery broadcast} {Data 0102}")
             if t < 3:
@@ -122,7 +122,7 @@ class NodeRules(unittest.TestCase):
     @classmethod
     def talk_to_mote(cls):
         c = Client(cls.port)
-        c.send("INIT {ClassName USARBot.P2DX} {Name r1}")
+        c.send("INIT {ClassName USARBot.P2DX} {Name r1} {Location 5 0 0.2} {Rotation 0 0 0}")  # space-separated
         for bad in ["SEND {To nobody} {Data 00}", "SEND {To m1} {Data 0g}", "SEND {Delivery multicast} {Data 00}",
                     "SEND {Data 00}", "SEND {To r1} {Data 00}", "TRANSITION {From a} {To }"]:
             c.send(bad)

@@ -243,6 +243,10 @@ struct Command {
   std::function<int(agents::Registry&)> action;
 };
 
+void AddDuration(CLI::App* cmd, std::optional<double>& duration) {
+  cmd->add_option("--duration", duration, "Override the scenario's duration (s)")->check(kDurationRange);
+}
+
 CLI::Option* AddScenario(CLI::App* cmd, std::string& file) {
   return cmd->add_option("scenario", file, "Scenario file (YAML)")->required();
 }
@@ -254,7 +258,7 @@ Command AddRun(CLI::App& app) {
                                      "log.csv, messages.csv, transitions.csv, metrics.csv, summary.json)");
   AddScenario(cmd, a->file);
   cmd->add_option("--seed", a->seed, "Override the scenario's seed (0 to 2^64 - 1)")->check(kSeedText);
-  cmd->add_option("--duration", a->duration, "Override the simulated duration (s)")->check(kDurationRange);
+  AddDuration(cmd, a->duration);
   cmd->add_option("-o,--output", a->output,
                   "Results folder (default: the scenario's outputs.folder, or results/<name>)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
@@ -311,7 +315,7 @@ Command AddServe(CLI::App& app) {
       "Once listening, write the port number to this file (for programs that start the server with --port 0)");
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
-  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(kDurationRange);
+  AddDuration(cmd, a->duration);
   return {cmd, [a](agents::Registry& r) {
             return Serve(a->file, a->bind, a->port, a->port_file, a->output, a->quiet, a->duration, r);
           }};
@@ -355,7 +359,7 @@ Command AddLaunch(CLI::App& app) {
                                      "the scenario in real time, stop them all (also on Ctrl-C)");
   AddScenario(cmd, a->file);
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
-  cmd->add_option("--duration", a->duration, "Override the scenario's duration (s)")->check(kDurationRange);
+  AddDuration(cmd, a->duration);
   cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
   return {cmd, [a](agents::Registry& r) { return Launch(a->file, a->output, a->udp_base, a->duration, r); }};

@@ -37,8 +37,9 @@ ProtocolMessage Stats(const StepGrid& grid, std::uint64_t sent, std::uint64_t re
   ProtocolMessage m("STATS");
   m.Add("Steps", std::to_string(grid.run())).Add("Missed", std::to_string(grid.missed()));
   m.Add("Rate", FormatPrecise(grid.achieved_rate())).Add("Sent", std::to_string(sent));
-  m.Add("Received", std::to_string(received)).Add("LatenessP50", FormatPrecise(grid.Lateness(0.5)));
-  m.Add("LatenessP99", FormatPrecise(grid.Lateness(0.99))).Add("LatenessMax", FormatPrecise(grid.Lateness(1)));
+  const StepGrid::Lateness late = grid.lateness();
+  m.Add("Received", std::to_string(received)).Add("LatenessP50", FormatPrecise(late.p50));
+  m.Add("LatenessP99", FormatPrecise(late.p99)).Add("LatenessMax", FormatPrecise(late.max));
   return m;
 }
 

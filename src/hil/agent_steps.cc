@@ -23,11 +23,12 @@ std::optional<double> StepGrid::Due(double now) {
 
 double StepGrid::achieved_rate() const { return run_ > 1 && last_ > first_ ? (run_ - 1) / (last_ - first_) : 0; }
 
-double StepGrid::Lateness(double quantile) const {
-  if (lateness_.empty()) return 0;
+StepGrid::Lateness StepGrid::lateness() const {
+  if (lateness_.empty()) return {};
   std::vector<double> sorted = lateness_;
   std::sort(sorted.begin(), sorted.end());
-  return sorted[static_cast<std::size_t>(quantile * (sorted.size() - 1))];
+  const auto at = [&](double q) { return sorted[static_cast<std::size_t>(q * (sorted.size() - 1))]; };
+  return {at(0.5), at(0.99), sorted.back()};
 }
 
 }  // namespace sanet::hil

@@ -20,8 +20,11 @@ class StepGrid {
   std::uint64_t missed() const { return missed_; }
   // Steps run per second between the first and the last step run.
   double achieved_rate() const;
-  // How late steps ran (s): the given quantile (0..1) of the lateness of every step run.
-  double Lateness(double quantile) const;
+  // How late steps ran (s): median, 99th percentile and maximum over every step run (one sort).
+  struct Lateness {
+    double p50 = 0, p99 = 0, max = 0;
+  };
+  Lateness lateness() const;
 
  private:
   double Time(std::uint64_t k) const { return static_cast<double>(k) / rate_; }

@@ -30,7 +30,7 @@ volatile std::sig_atomic_t g_interrupted = 0;
 std::vector<NodeId> RobotsWithControllers(const sim::RunSpec& spec) {
   std::vector<NodeId> robots;
   for (NodeId i = 0; i < spec.nodes.size(); ++i)
-    if (spec.nodes[i].model.kind != robots::ModelKind::kMote && spec.nodes[i].controller) robots.push_back(i);
+    if (sim::RunsAsAgent(spec.nodes[i])) robots.push_back(i);
   return robots;
 }
 

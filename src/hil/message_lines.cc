@@ -34,24 +34,6 @@ std::optional<Bytes> FromHex(const std::string& text) {
   return out;
 }
 
-const char* DeliveryName(Delivery delivery) {
-  switch (delivery) {
-    case Delivery::kUnicast:
-      return "unicast";
-    case Delivery::kBroadcast:
-      return "broadcast";
-    case Delivery::kFlood:
-      return "flood";
-  }
-  return "unicast";
-}
-
-std::optional<Delivery> ParseDelivery(const std::string& name) {
-  for (Delivery d : {Delivery::kUnicast, Delivery::kBroadcast, Delivery::kFlood})
-    if (name == DeliveryName(d)) return d;
-  return std::nullopt;
-}
-
 ProtocolMessage RecvLine(const Message& m, const std::string& from_name) {
   ProtocolMessage line("RECV");
   line.Add("From", from_name).Add("Delivery", DeliveryName(m.delivery));

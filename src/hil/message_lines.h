@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "core/delivery.h"
 #include "hil/protocol.h"
 #include "sanet/message.h"
 
@@ -22,9 +23,6 @@ namespace sanet::hil {
 
 std::string ToHex(const Bytes& bytes);
 std::optional<Bytes> FromHex(const std::string& text);  // nullopt unless pairs of hex digits
-
-const char* DeliveryName(Delivery delivery);
-std::optional<Delivery> ParseDelivery(const std::string& name);
 
 // MSG line for a message that reached `message.to`'s node, with names for node ids.
 ProtocolMessage MsgLine(const Message& message, const std::string& from_name);

@@ -259,10 +259,7 @@ std::uint16_t RemoteNode::PortOf(NodeId node) const {
   return static_cast<std::uint16_t>(settings_.udp_base_port + (settings_.udp_subnet.empty() ? node : 0));
 }
 
-bool RemoteNode::IsAgent(NodeId node) const {
-  const sim::NodeSpec& n = spec_.nodes.at(node);
-  return n.model.kind != robots::ModelKind::kMote && n.controller.has_value();
-}
+bool RemoteNode::IsAgent(NodeId node) const { return sim::RunsAsAgent(spec_.nodes.at(node)); }
 
 void RemoteNode::SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload) {
   ProtocolMessage send("SEND");

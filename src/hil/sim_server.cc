@@ -429,8 +429,7 @@ SimServer::Client* SimServer::ClientOf(NodeId robot) {
 // hear each other over their own UDP sockets, so the server passes on only what comes from
 // nodes that live here.
 sim::InboxResult SimServer::Forward(NodeId to, const Message& m) {
-  const sim::RunSpec& spec = world_.spec();
-  if (world_.parts().remote(m.from) && spec.nodes[m.from].controller) return sim::InboxResult::kIgnored;
+  if (world_.spec().robots_remote && sim::RunsAsAgent(world_.spec().nodes[m.from])) return sim::InboxResult::kIgnored;
   Client* c = ClientOf(to);
   if (c) Send(*c, MsgLine(m, world_.NameOf(m.from)));
   return c && c->fd >= 0 ? sim::InboxResult::kDelivered : sim::InboxResult::kLost;

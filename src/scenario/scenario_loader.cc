@@ -1,11 +1,7 @@
 #include "scenario/scenario_loader.h"
 
-#include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <filesystem>
 #include <map>
-#include <sstream>
 
 #include "scenario/declarations.h"
 #include "sim/world.h"
@@ -18,13 +14,14 @@ using robots::ModelKind;
 using robots::ModelSpec;
 using robots::RangeSensorSpec;
 
-constexpr double kInf = HUGE_VAL;
-
 ModelKind ReadModel(const Field& f) {
   const std::string name = f.Text();
-  for (ModelKind k : {ModelKind::kMote, ModelKind::kOmni3, ModelKind::kDiffDrive})
+  std::string known;
+  for (ModelKind k : robots::kAllModels) {
     if (name == robots::ModelName(k)) return k;
-  f.Fail("unknown model '" + name + "' (known: mote, omni3, diffdrive)");
+    known += std::string(known.empty() ? "" : ", ") + robots::ModelName(k);
+  }
+  f.Fail("unknown model '" + name + "' (known: " + known + ")");
 }
 
 void ReadBody(const Field& f, ModelSpec& m) {
@@ -131,18 +128,6 @@ void ReadParams(const Field& controller, sim::ControllerSpec& c) {
     c.params.Set(key, ReadParamValue(Field(entry.second, params->path() + "." + key,
                                            std::make_shared<const std::string>(controller.file()))));
   }
-}
-
-// Picks one of `choices` (name -> value) by the field's text.
-template <typename T>
-T ReadChoice(const Field& f, std::initializer_list<std::pair<const char*, T>> choices) {
-  const std::string text = f.Text();
-  std::string list;
-  for (const auto& [name, value] : choices) {
-    if (text == name) return value;
-    list += std::string(list.empty() ? "" : ", ") + name;
-  }
-  f.Fail("unknown value '" + text + "' (expected one of: " + list + ")");
 }
 
 net::NetworkSpec ReadNetwork(const Field& f) {

@@ -67,6 +67,7 @@ Assembly::Assembly(const RunSpec& spec, agents::Registry& registry) : spec_(spec
     BuildBodies();
     BuildTransport();
     BuildNodes(registry);
+    states_.resize(spec_.nodes.size());
   } catch (...) {
     hosts_.clear();
     ns3::Simulator::Destroy();
@@ -91,8 +92,7 @@ void Assembly::BuildBodies() {
 
 void Assembly::BuildTransport() {
   const ns3::NodeContainer nodes = Ns3NodesOn(models_);
-  transport_ =
-      std::make_unique<MessageLedger>(MakeTransport(spec_, nodes), [] { return ns3::Simulator::Now().GetSeconds(); });
+  transport_ = std::make_unique<MessageLedger>(MakeTransport(spec_, nodes), [this] { return clock_->Now(); });
   transport_->SetReceiver([this](NodeId to, const Message& m) { Receive(to, m); });
 }
 
@@ -157,6 +157,7 @@ void Assembly::Log(NodeId node, const std::string& text) {
 }
 
 void Assembly::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
+  states_.at(node) = to;
   if (events_) events_->Transition(node, from, to, why);
 }
 
@@ -170,7 +171,5 @@ BodyState Assembly::Body(NodeId node) const {
 }
 
 std::vector<NodeId> Assembly::RadioNeighbours(NodeId node) const { return transport_->View(node).Neighbours(); }
-
-std::string Assembly::ControllerState(NodeId node) const { return state_reader_ ? state_reader_(node) : ""; }
 
 }  // namespace sanet::sim

@@ -70,8 +70,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   BodyState Body(NodeId node) const override;
   std::vector<NodeId> RadioNeighbours(NodeId node) const override;
   std::vector<MessageInFlight> MessagesInFlight() const override { return transport_->InFlight(); }
-  std::string ControllerState(NodeId node) const override;
-  void SetStateReader(std::function<std::string(NodeId)> reader) { state_reader_ = std::move(reader); }
+  std::string ControllerState(NodeId node) const override { return states_.at(node); }
 
  private:
   void BuildBodies();
@@ -89,7 +88,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   std::vector<std::unique_ptr<agents::ControllerHost>> hosts_;
   RunEvents* events_ = nullptr;
   RemoteInbox remote_inbox_;
-  std::function<std::string(NodeId)> state_reader_;
+  std::vector<std::string> states_;  // per node: the state of its controller's last transition
 };
 
 }  // namespace sanet::sim

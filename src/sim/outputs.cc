@@ -5,6 +5,7 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "core/delivery.h"
 #include "core/statistics.h"
 
 namespace sanet::sim {
@@ -18,11 +19,6 @@ std::string Format(const char* format, ...) {
   std::vsnprintf(line, sizeof line, format, args);
   va_end(args);
   return line;
-}
-
-const char* DeliveryName(Delivery d) {
-  static const char* kNames[] = {"unicast", "broadcast", "flood"};
-  return kNames[static_cast<int>(d)];
 }
 
 bool Unmoved(const Pose2D& p, const Pose2D& last) {
@@ -40,30 +36,27 @@ Outputs::Outputs(const RunSpec& spec, const std::string& dir)
       messages_(folder_.Csv("messages.csv", "time_sent,from,to,delivery,bytes,time_received,delay,hops")),
       transitions_(folder_.Csv("transitions.csv", "time,node,from,to,why")),
       metric_rows_(folder_.Csv("metrics.csv", "time,node,name,value")),
-      states_(spec.nodes.size()),
       last_recorded_(spec.nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
 }
 
-void Outputs::Log(double t, NodeId node, const std::string& text) {
-  log_.Row(Format("%.6f,", t) + trace::CsvField(Name(node)) + "," + trace::CsvField(text));
+// "time,node," as every per-node event row starts.
+std::string Outputs::Stamp(double t, NodeId node) const {
+  return Format("%.6f,", t) + trace::CsvField(Name(node)) + ",";
 }
+
+void Outputs::Log(double t, NodeId node, const std::string& text) { log_.Row(Stamp(t, node) + trace::CsvField(text)); }
 
 void Outputs::Transition(double t, NodeId node, const std::string& from, const std::string& to,
                          const std::string& why) {
   ++transitions_to_[to];
-  states_.at(node) = to;
-  transitions_.Row(Format("%.6f,", t) + trace::CsvField(Name(node)) + "," + trace::CsvField(from) + "," +
-                   trace::CsvField(to) + "," + trace::CsvField(why));
+  transitions_.Row(Stamp(t, node) + trace::CsvField(from) + "," + trace::CsvField(to) + "," + trace::CsvField(why));
 }
 
 void Outputs::Metric(double t, NodeId node, const std::string& name, double value) {
   metrics_[Name(node)][name].push_back(value);
-  metric_rows_.Row(Format("%.6f,", t) + trace::CsvField(Name(node)) + "," + trace::CsvField(name) +
-                   Format(",%.9g", value));
+  metric_rows_.Row(Stamp(t, node) + trace::CsvField(name) + Format(",%.9g", value));
 }
-
-std::string Outputs::State(NodeId node) const { return states_.at(node); }
 
 void Outputs::Delivered(NodeId to, const Message& m) {
   const double delay = m.time_received - m.time_sent;

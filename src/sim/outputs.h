@@ -62,8 +62,6 @@ class Outputs {
   const std::string& failure() const { return failure_; }
   const std::string& ended_by() const { return ended_by_; }
   double ended_at() const { return ended_at_; }
-  // The last state each node's controller entered ("" before any transition).
-  std::string State(NodeId node) const;
 
   // Trajectory rows (and the smallest distance) at time `now`; `final_row` for the end of the run.
   void Sample(double now, bool final_row, const PoseReader& world);
@@ -81,6 +79,7 @@ class Outputs {
                                  const std::vector<Pose2D>& final_poses) const;
   nlohmann::ordered_json MinDistanceSummary() const;
   const std::string& Name(NodeId id) const { return spec_.nodes.at(id).name; }
+  std::string Stamp(double t, NodeId node) const;
 
   const RunSpec& spec_;
   trace::ResultsFolder folder_;
@@ -92,7 +91,6 @@ class Outputs {
   std::uint64_t messages_undelivered_ = 0;                // reached a radio, not a controller
   std::map<std::string, std::map<std::string, std::vector<double>>> metrics_;  // node -> name -> values
   std::map<std::string, int> transitions_to_;                                  // state -> transitions into it
-  std::vector<std::string> states_;                                            // per node
   struct Recorded {
     Pose2D pose;
     double time;

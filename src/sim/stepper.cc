@@ -30,16 +30,12 @@ class StageTimer {
 Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers)
     : world_(world), outputs_(outputs), observers_(observers) {
   world_.SetEvents(this);
-  world_.SetStateReader([this](NodeId id) { return outputs_.State(id); });
   for (NodeId id = 0; id < world_.size(); ++id)
     if (world_.model(id).mobile()) vehicles_.push_back(id);
   if (!observers_.empty()) world_.transport().Watch();
 }
 
-Stepper::~Stepper() {
-  world_.SetEvents(nullptr);
-  world_.SetStateReader(nullptr);
-}
+Stepper::~Stepper() { world_.SetEvents(nullptr); }
 
 double Stepper::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 double Stepper::wall() const { return Since(wall_start_); }

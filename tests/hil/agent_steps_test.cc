@@ -25,7 +25,7 @@ TEST(StepGrid, CountsStepsSleptThroughAndRunsOnlyTheLatest) {
   EXPECT_EQ(grid.missed(), 2u);
   EXPECT_EQ(grid.run(), 2u);
   EXPECT_EQ(grid.Due(0.41), 0.4);
-  EXPECT_NEAR(grid.Lateness(1), 0.05, 1e-12);
+  EXPECT_NEAR(grid.lateness().max, 0.05, 1e-12);
 }
 
 TEST(StepGrid, StepsBeforeTheFirstAreNotMissed) {

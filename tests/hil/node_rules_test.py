@@ -124,7 +124,8 @@ class NodeRules(unittest.TestCase):
         c = Client(cls.port)
         c.send("INIT {ClassName USARBot.P2DX} {Name r1} {Location 5 0 0.2} {Rotation 0 0 0}")  # space-separated
         for bad in ["SEND {To nobody} {Data 00}", "SEND {To m1} {Data 0g}", "SEND {Delivery multicast} {Data 00}",
-                    "SEND {Data 00}", "SEND {To r1} {Data 00}", "TRANSITION {From a} {To }"]:
+                    "SEND {Data 00}", "SEND {To r1} {Data 00}", "TRANSITION {From a} {To }",
+                    "STATS {Steps many}", "RECV {From nobody} {Delivery unicast}"]:
             c.send(bad)
         received, errors = [], []
         for line in c.lines():
@@ -151,7 +152,8 @@ class NodeRules(unittest.TestCase):
     def test_bad_lines_get_errors_that_say_what_is_wrong(self):
         errors = "\n".join(self.messages["errors"])
         for expected in ["no node named 'nobody'", "expected hex bytes", "expected unicast, broadcast or flood",
-                         "SEND to one node needs {To node}", "that is this robot", "TRANSITION needs"]:
+                         "SEND to one node needs {To node}", "that is this robot", "TRANSITION needs",
+                         "STATS needs a number {Steps", "RECV needs {From node}"]:
             self.assertIn(expected, errors)
 
     def test_the_mote_message_reaches_the_client_over_the_simulated_network(self):

@@ -8,6 +8,7 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(ConstantVelocityInfo());
   registry.Add(WaypointInfo());
   registry.Add(PingerInfo());
+  registry.Add(EchoInfo());
   registry.Add(HelpRequestMoteInfo());
   registry.Add(HelpRequestRobotInfo());
   registry.Add(FormationLeaderInfo());

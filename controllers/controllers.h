@@ -8,6 +8,7 @@ namespace sanet::controllers {
 ControllerInfo ConstantVelocityInfo();
 ControllerInfo WaypointInfo();
 ControllerInfo PingerInfo();
+ControllerInfo EchoInfo();
 ControllerInfo HelpRequestMoteInfo();
 ControllerInfo HelpRequestRobotInfo();
 ControllerInfo FormationLeaderInfo();

@@ -35,7 +35,8 @@ std::optional<double> ToNumber(std::string_view text) {
 
 std::string FormatNumber(double value) {
   char s[40];
-  std::snprintf(s, sizeof s, "%.4f", value);
+  // Values that round to zero print as 0.0000, never -0.0000 (a frame change negates zeros).
+  std::snprintf(s, sizeof s, "%.4f", std::fabs(value) < 5e-5 ? 0.0 : value);
   return s;
 }
 

@@ -17,6 +17,7 @@
 
 #include "core/statistics.h"
 #include "hil/message_lines.h"
+#include "sim/spawning.h"
 
 namespace sanet::hil {
 namespace {
@@ -170,12 +171,13 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
     std::string poses;
     int count = 0;
     for (NodeId id = 0; id < world_.NodeCount(); ++id) {
-      if (world_.spec().nodes[id].model.kind == robots::ModelKind::kMote) continue;
+      const sim::NodeSpec& node = world_.spec().nodes[id];
+      if (node.model.kind == robots::ModelKind::kMote || world_.parts().IsSpawned(id)) continue;
       const auto p = ToUsarsim(world_.spec().nodes[id].pose);
       poses += (count++ ? " " : "") + world_.NameOf(id) + " " + FormatNumber(p[0]) + "," + FormatNumber(p[1]) +
                ",0.0000 0.0000,0.0000," + FormatNumber(p[2]);
     }
-    reply.Add("StartPoses", count).Add(poses.empty() ? "None" : poses, "");
+    reply.Add("StartPoses", std::to_string(count)).Add(poses.empty() ? "None" : poses, "");
     return Send(c, reply);
   }
   if (!c.robot) return Error(c, m.type + " before INIT");
@@ -212,18 +214,52 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   Error(c, "unknown command " + m.type);
 }
 
+// INIT {Name r} claims a robot that is there (the scenario's, or one spawned before); with a
+// {ClassName} and a name nobody has, it spawns a new robot, as in USARSim.
 void SimServer::Init(Client& c, const ProtocolMessage& m) {
   if (c.robot) return Error(c, "this connection already drives " + world_.NameOf(*c.robot));
   const std::string* name = m.Get("Name");
-  if (!name) return Error(c, "INIT needs {Name robot}: one of the scenario's robots");
-  const auto id = world_.Lookup(*name);
-  if (!id || world_.spec().nodes[*id].model.kind == robots::ModelKind::kMote)
-    return Error(c, "no robot named '" + *name + "' in this scenario");
-  if (claimed_[*id]) return Error(c, "robot '" + *name + "' is already driven by another client");
-  claimed_[*id] = true;
-  c.robot = *id;
+  const std::string* usarsim_class = m.Get("ClassName");
+  if (name)
+    if (const auto id = world_.Lookup(*name)) return Claim(c, *id);
+  if (!usarsim_class)
+    return Error(c, name ? "no robot named '" + *name + "' in this scenario; INIT {ClassName c} {Name " + *name +
+                               "} {Location x,y,z} adds one where the scenario allows it"
+                         : "INIT needs {Name robot} to claim one of the scenario's robots, or {ClassName c} "
+                           "{Location x,y,z} to add one");
+  if (m.Get("Start"))
+    return Error(c,
+                 "INIT {Start tag}: the start poses belong to the scenario's robots; claim one with INIT {Name tag}, "
+                 "or give {Location x,y,z} for a new robot");
+  Spawn(c, *usarsim_class, name ? *name : "", m);
+}
+
+void SimServer::Claim(Client& c, NodeId id) {
+  const std::string name = world_.NameOf(id);
+  if (world_.spec().nodes[id].model.kind == robots::ModelKind::kMote)
+    return Error(c, "the name '" + name + "' is taken by a mote of this scenario");
+  if (claimed_[id]) return Error(c, "robot '" + name + "' is already driven by another client");
+  claimed_[id] = true;
+  c.robot = id;
   c.next_sensors = c.next_status = world_.Now();
-  world_.parts().Log(*id, "client " + c.peer + " drives this robot");
+  world_.parts().Log(id, "client " + c.peer + " drives this robot");
+}
+
+// {Location} and {Rotation} are in USARSim's frame (y right, yaw clockwise); the robot stands
+// on the ground, whatever z says.
+void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const ProtocolMessage& m) {
+  const auto location = m.Numbers("Location");
+  if (!location || location->size() != 3)
+    return Error(c, "INIT {ClassName " + usarsim_class + "} needs {Location x,y,z}: where the new robot stands (m)");
+  const auto rotation = m.Get("Rotation") ? m.Numbers("Rotation") : std::vector<double>{0, 0, 0};
+  if (!rotation || rotation->size() != 3) return Error(c, "INIT {Rotation r,p,y} needs three numbers (rad)");
+  const sim::SpawnRequest request{usarsim_class, name, {(*location)[0], -(*location)[1], -(*rotation)[2]}};
+  const sim::SpawnPlan plan = sim::PlanSpawn(world_.parts(), request);
+  if (!plan.node) return Error(c, "INIT refused: " + plan.refusal);
+  const NodeId id =
+      world_.parts().Spawn(*plan.node, plan.usarsim_class, "spawned as " + plan.usarsim_class + " by client " + c.peer);
+  claimed_.resize(world_.NodeCount(), false);
+  Claim(c, id);
 }
 
 // Through the robot's simulated node, as its controller would drive it: a switched-off robot

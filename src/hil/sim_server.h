@@ -63,6 +63,8 @@ class SimServer : public sim::StepObserver {
   void Read(Client& c);
   void Handle(Client& c, const ProtocolMessage& m);
   void Init(Client& c, const ProtocolMessage& m);
+  void Claim(Client& c, NodeId robot);
+  void Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const ProtocolMessage& m);
   void Drive(Client& c, const ProtocolMessage& m);
   void SendMessage(Client& c, const ProtocolMessage& m);
   void Report(Client& c, const ProtocolMessage& m);

@@ -22,6 +22,7 @@ class AddressBook {
     return static_cast<NodeId>(a - kBase - 1);
   }
   std::size_t size() const { return count_; }
+  void Add() { ++count_; }  // the next node joins (a spawned robot)
 
  private:
   static constexpr std::uint32_t kBase = 0x0A000000;  // 10.0.0.0

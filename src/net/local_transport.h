@@ -20,6 +20,11 @@ class LocalTransport : public Transport {
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId) override { return view_; }
   void SwitchOff(NodeId node) override { off_.at(node) = true; }
+  // A node joins while the run goes (a spawned robot): it takes the next id.
+  void AddNode() {
+    ++node_count_;
+    off_.push_back(false);
+  }
 
  private:
   void Deliver(NodeId receiver, NodeId from, NodeId to, Delivery delivery, const Bytes& payload);

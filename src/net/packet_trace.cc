@@ -48,8 +48,16 @@ PacketTrace::PacketTrace(const NetworkSpec& spec, const AddressBook& book, std::
 void PacketTrace::Open(trace::ResultsFolder& folder) {
   logs_.clear();
   if (!spec_.packet_log) return;
+  folder_ = &folder;
   for (const std::string& name : names_)
     logs_.push_back(&folder.Csv("packets/" + name + ".csv", "time,event,protocol,bytes,peer,reason", 64 * 1024));
+}
+
+void PacketTrace::AddNode(const std::string& name) {
+  names_.push_back(name);
+  counts_.emplace_back();
+  if (folder_)
+    logs_.push_back(&folder_->Csv("packets/" + name + ".csv", "time,event,protocol,bytes,peer,reason", 64 * 1024));
 }
 
 void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {

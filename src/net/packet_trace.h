@@ -29,6 +29,8 @@ class PacketTrace {
   void Attach(NodeId node, ns3::Ptr<ns3::Node> ns3_node);
   // Opens the per-node packet logs (packets/<node>.csv) in the results folder.
   void Open(trace::ResultsFolder& folder);
+  // A node joins while the run goes (a spawned robot): counts, and its log if logs are open.
+  void AddNode(const std::string& name);
 
   void MessageSent(NodeId node) { ++counts_[node].messages_sent; }
   void MessageReceived(NodeId node) { ++counts_[node].messages_received; }
@@ -51,6 +53,7 @@ class PacketTrace {
   std::vector<std::string> names_;
   std::vector<PacketCounts> counts_;
   std::vector<trace::CsvSink*> logs_;  // owned by the results folder
+  trace::ResultsFolder* folder_ = nullptr;
   std::vector<Discovery> discoveries_;
   std::map<std::pair<NodeId, NodeId>, std::size_t> pending_;  // (node, destination) -> discovery
 };

@@ -71,9 +71,11 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
       trace_(spec_, book_, std::move(names)),
       next_sequence_(nodes.GetN(), 0),
       floods_seen_(nodes.GetN()) {
-  InstallRadios(radios);
+  ConfigureRadios();
+  // One node at a time: a node may transmit with its own power.
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) devices_.Add(InstallRadio(nodes_.Get(id), radios.at(id)));
   InstallInternet();
-  OpenSockets();
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) OpenSocket(id);
   jitter_ = ns3::CreateObject<ns3::UniformRandomVariable>();
   jitter_->SetAttribute("Min", ns3::DoubleValue(0));
   jitter_->SetAttribute("Max", ns3::DoubleValue(0.01));
@@ -89,17 +91,17 @@ WirelessNetwork::~WirelessNetwork() {
   for (auto& socket : sockets_) socket->SetRecvCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>());
 }
 
-void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
-  ns3::WifiHelper wifi;
-  wifi.SetStandard(spec_.standard == WifiStandard::k80211b   ? ns3::WIFI_STANDARD_80211b
-                   : spec_.standard == WifiStandard::k80211g ? ns3::WIFI_STANDARD_80211g
-                                                             : ns3::WIFI_STANDARD_80211a);
+// The helpers every node's radio is installed with: standard, rates, channel, PHY and MAC.
+void WirelessNetwork::ConfigureRadios() {
+  wifi_.SetStandard(spec_.standard == WifiStandard::k80211b   ? ns3::WIFI_STANDARD_80211b
+                    : spec_.standard == WifiStandard::k80211g ? ns3::WIFI_STANDARD_80211g
+                                                              : ns3::WIFI_STANDARD_80211a);
   const std::string data_mode = ModeName(spec_.standard, spec_.data_rate);
   const std::string control_mode = ModeName(spec_.standard, DataRates(spec_.standard).front());
   // Broadcasts (hence AODV's requests and floods) go at the standard's lowest rate, named here
   // because ns-3's own default for them is the first basic rate (1 Mbps DSSS even for 802.11g).
-  wifi.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode), "ControlMode",
-                               ns3::StringValue(control_mode), "NonUnicastMode", ns3::StringValue(control_mode));
+  wifi_.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode), "ControlMode",
+                                ns3::StringValue(control_mode), "NonUnicastMode", ns3::StringValue(control_mode));
 
   ns3::YansWifiChannelHelper channel;
   if (spec_.delay == DelayModel::kConstantSpeed) {
@@ -130,19 +132,17 @@ void WirelessNetwork::InstallRadios(const std::vector<NodeRadio>& radios) {
   if (spec_.max_range > 0)
     channel.AddPropagationLoss("ns3::RangePropagationLossModel", "MaxRange", ns3::DoubleValue(spec_.max_range));
 
-  ns3::YansWifiPhyHelper phy;
-  phy.SetChannel(channel.Create());
-  phy.SetPreambleDetectionModel("ns3::ThresholdPreambleDetectionModel", "MinimumRssi",
-                                ns3::DoubleValue(spec_.rx_threshold));
-  ns3::WifiMacHelper mac;
-  mac.SetType("ns3::AdhocWifiMac");
-  // One node at a time: a node may transmit with its own power.
-  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
-    const double power = radios.at(id).tx_power.value_or(spec_.tx_power);
-    phy.Set("TxPowerStart", ns3::DoubleValue(power));
-    phy.Set("TxPowerEnd", ns3::DoubleValue(power));
-    devices_.Add(wifi.Install(phy, mac, nodes_.Get(id)));
-  }
+  phy_.SetChannel(channel.Create());
+  phy_.SetPreambleDetectionModel("ns3::ThresholdPreambleDetectionModel", "MinimumRssi",
+                                 ns3::DoubleValue(spec_.rx_threshold));
+  mac_.SetType("ns3::AdhocWifiMac");
+}
+
+ns3::NetDeviceContainer WirelessNetwork::InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio) {
+  const double power = radio.tx_power.value_or(spec_.tx_power);
+  phy_.Set("TxPowerStart", ns3::DoubleValue(power));
+  phy_.Set("TxPowerEnd", ns3::DoubleValue(power));
+  return wifi_.Install(phy_, mac_, node);
 }
 
 // ns-3 numbers random streams from a process-wide counter as objects are created, so a second
@@ -153,18 +153,53 @@ void WirelessNetwork::AssignStreams() {
   stream += ns3::YansWifiChannelHelper().AssignStreams(
       ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel()), stream);
   stream += ns3::InternetStackHelper().AssignStreams(nodes_, stream);
-  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
-    auto routing = nodes_.Get(id)->GetObject<ns3::Ipv4>()->GetRoutingProtocol();
-    if (auto aodv = ns3::DynamicCast<ns3::aodv::RoutingProtocol>(routing)) stream += aodv->AssignStreams(stream);
-    if (auto olsr = ns3::DynamicCast<ns3::olsr::RoutingProtocol>(routing)) stream += olsr->AssignStreams(stream);
-    if (auto dsdv = ns3::DynamicCast<ns3::dsdv::RoutingProtocol>(routing)) stream += dsdv->AssignStreams(stream);
-    if (auto dsr = nodes_.Get(id)->GetObject<ns3::dsr::DsrRouting>()) stream += dsr->AssignStreams(stream);
-  }
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) stream += AssignRoutingStreams(nodes_.Get(id), stream);
   jitter_->SetStream(stream);
+  next_stream_ = stream + 1;
+}
+
+std::int64_t WirelessNetwork::AssignRoutingStreams(ns3::Ptr<ns3::Node> node, std::int64_t stream) {
+  auto routing = node->GetObject<ns3::Ipv4>()->GetRoutingProtocol();
+  if (auto aodv = ns3::DynamicCast<ns3::aodv::RoutingProtocol>(routing)) return aodv->AssignStreams(stream);
+  if (auto olsr = ns3::DynamicCast<ns3::olsr::RoutingProtocol>(routing)) return olsr->AssignStreams(stream);
+  if (auto dsdv = ns3::DynamicCast<ns3::dsdv::RoutingProtocol>(routing)) return dsdv->AssignStreams(stream);
+  if (auto dsr = node->GetObject<ns3::dsr::DsrRouting>()) return dsr->AssignStreams(stream);
+  return 0;
+}
+
+// Installed exactly as the first nodes were; its random streams follow all of theirs, so a run
+// without spawned robots draws the same numbers as before spawning existed.
+void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name, const NodeRadio& radio) {
+  const NodeId id = nodes_.GetN();
+  nodes_.Add(node);
+  book_.Add();
+  names_.push_back(name);
+  trace_.AddNode(name);
+  next_sequence_.push_back(0);
+  floods_seen_.emplace_back();
+  const ns3::NetDeviceContainer device = InstallRadio(node, radio);
+  devices_.Add(device);
+  internet_.Install(node);
+  if (spec_.routing == Routing::kDsr) {
+    ns3::DsrHelper dsr;
+    ns3::DsrMainHelper().Install(dsr, ns3::NodeContainer(node));
+  }
+  auto ip = node->GetObject<ns3::Ipv4>();
+  const std::int32_t interface = ip->AddInterface(device.Get(0));
+  ip->AddAddress(interface, ns3::Ipv4InterfaceAddress(book_.Of(id), ns3::Ipv4Mask(AddressBook::kMask)));
+  ip->SetMetric(interface, 1);
+  ip->SetUp(interface);
+  OpenSocket(id);
+  next_stream_ += wifi_.AssignStreams(device, next_stream_);
+  next_stream_ += ns3::InternetStackHelper().AssignStreams(ns3::NodeContainer(node), next_stream_);
+  next_stream_ += AssignRoutingStreams(node, next_stream_);
+  trace_.Attach(id, node);
+  if (flow_monitor_) flow_helper_->Install(node);
+  if (!pcap_dir_.empty()) OpenPcap(id);
 }
 
 void WirelessNetwork::InstallInternet() {
-  ns3::InternetStackHelper internet;
+  ns3::InternetStackHelper& internet = internet_;
   ns3::AodvHelper aodv;
   ns3::OlsrHelper olsr;
   ns3::DsdvHelper dsdv;
@@ -196,22 +231,20 @@ void WirelessNetwork::InstallInternet() {
   addresses.Assign(devices_);
 }
 
-void WirelessNetwork::OpenSockets() {
-  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
-    auto socket = ns3::Socket::CreateSocket(nodes_.Get(id), ns3::UdpSocketFactory::GetTypeId());
-    socket->Bind(ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), spec_.port));
-    socket->SetAllowBroadcast(true);
-    socket->SetIpRecvTtl(true);
-    socket->SetRecvCallback(
-        ns3::Callback<void, ns3::Ptr<ns3::Socket>>([this, id](ns3::Ptr<ns3::Socket> s) { Receive(id, s); }));
-    sockets_.push_back(socket);
-    views_.push_back(std::make_unique<RoutingView>(spec_.routing, nodes_.Get(id), book_, [this, id](NodeId to) {
-      if (to >= nodes_.GetN() || to == id) return;
-      if (spec_.routing == Routing::kAodv && !views_[id]->HasValidRoute(to))
-        trace_.RouteNeeded(id, to, ns3::Simulator::Now().GetSeconds());
-      Transmit(id, book_.Of(to), NewHeader(id, MessageHeader::kRouteProbe, to), {});
-    }));
-  }
+void WirelessNetwork::OpenSocket(NodeId id) {
+  auto socket = ns3::Socket::CreateSocket(nodes_.Get(id), ns3::UdpSocketFactory::GetTypeId());
+  socket->Bind(ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), spec_.port));
+  socket->SetAllowBroadcast(true);
+  socket->SetIpRecvTtl(true);
+  socket->SetRecvCallback(
+      ns3::Callback<void, ns3::Ptr<ns3::Socket>>([this, id](ns3::Ptr<ns3::Socket> s) { Receive(id, s); }));
+  sockets_.push_back(socket);
+  views_.push_back(std::make_unique<RoutingView>(spec_.routing, nodes_.Get(id), book_, [this, id](NodeId to) {
+    if (to >= nodes_.GetN() || to == id) return;
+    if (spec_.routing == Routing::kAodv && !views_[id]->HasValidRoute(to))
+      trace_.RouteNeeded(id, to, ns3::Simulator::Now().GetSeconds());
+    Transmit(id, book_.Of(to), NewHeader(id, MessageHeader::kRouteProbe, to), {});
+  }));
 }
 
 MessageHeader WirelessNetwork::NewHeader(NodeId from, MessageHeader::Kind kind, NodeId destination) {
@@ -306,38 +339,40 @@ void WirelessNetwork::SwitchOff(NodeId node) {
 void WirelessNetwork::Open(trace::ResultsFolder& folder) {
   trace_.Open(folder);
   if (!folder.writes()) return;
-  if (spec_.pcap) OpenPcap(folder.TempFolder("pcap"));
+  if (spec_.pcap) {
+    pcap_dir_ = folder.TempFolder("pcap");
+    for (NodeId id = 0; id < nodes_.GetN(); ++id) OpenPcap(id);
+  }
   if (flow_monitor_) flowmon_path_ = folder.TempFile("flowmon.xml");
 }
 
 // One file per node with every 802.11 frame its radio sent or received, in a temporary folder
 // that the results folder moves into place when the run ends.
-void WirelessNetwork::OpenPcap(const std::string& tmp) {
-  for (NodeId id = 0; id < nodes_.GetN(); ++id) {
-    auto file = ns3::CreateObject<ns3::PcapFileWrapper>();
-    file->Open(tmp + "/" + names_[id] + ".pcap", std::ios::out | std::ios::binary);
-    file->Init(kDltIeee80211);
-    pcap_.push_back(file);
-    auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(id))->GetPhy();
-    phy->TraceConnectWithoutContext(
-        "MonitorSnifferTx",
-        ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t>(
-            [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t) {
-              if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
-            }));
-    phy->TraceConnectWithoutContext(
-        "MonitorSnifferRx", ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
-                                          ns3::SignalNoiseDbm, uint16_t>(
-                                [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
-                                           ns3::SignalNoiseDbm, uint16_t) {
-                                  if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
-                                }));
-  }
+void WirelessNetwork::OpenPcap(NodeId id) {
+  auto file = ns3::CreateObject<ns3::PcapFileWrapper>();
+  file->Open(pcap_dir_ + "/" + names_[id] + ".pcap", std::ios::out | std::ios::binary);
+  file->Init(kDltIeee80211);
+  pcap_.push_back(file);
+  auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(id))->GetPhy();
+  phy->TraceConnectWithoutContext(
+      "MonitorSnifferTx",
+      ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t>(
+          [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t) {
+            if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
+          }));
+  phy->TraceConnectWithoutContext(
+      "MonitorSnifferRx",
+      ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, ns3::SignalNoiseDbm,
+                    uint16_t>([this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
+                                         ns3::SignalNoiseDbm, uint16_t) {
+        if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
+      }));
 }
 
 void WirelessNetwork::Close() {
   for (auto& file : pcap_) file->Close();
   pcap_.clear();
+  pcap_dir_.clear();
   if (flow_monitor_ && !flowmon_path_.empty()) {
     flow_monitor_->CheckForLostPackets();
     flow_monitor_->SerializeToXmlFile(flowmon_path_, true, true);

@@ -4,11 +4,14 @@
 #pragma once
 
 #include <ns3/flow-monitor-helper.h>
+#include <ns3/internet-stack-helper.h>
 #include <ns3/net-device-container.h>
 #include <ns3/node-container.h>
 #include <ns3/pcap-file-wrapper.h>
 #include <ns3/random-variable-stream.h>
 #include <ns3/socket.h>
+#include <ns3/wifi-helper.h>
+#include <ns3/yans-wifi-helper.h>
 
 #include <memory>
 #include <set>
@@ -30,6 +33,9 @@ class WirelessNetwork : public Transport {
   WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes, std::vector<std::string> names,
                   const std::vector<NodeRadio>& radios);
   ~WirelessNetwork() override;
+  // A node joins while the run goes (a robot a client spawned), with the next id: the same
+  // radio, channel, routing and traces as the others. `node` already carries its mobility.
+  void AddNode(ns3::Ptr<ns3::Node> node, const std::string& name, const NodeRadio& radio);
 
   void SetReceiver(Receiver receiver) override { receiver_ = std::move(receiver); }
   void Send(NodeId from, NodeId to, const Bytes& payload) override;
@@ -44,16 +50,24 @@ class WirelessNetwork : public Transport {
   const PacketTrace& packet_trace() const { return trace_; }
 
  private:
-  void InstallRadios(const std::vector<NodeRadio>& radios);
+  void ConfigureRadios();
+  ns3::NetDeviceContainer InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio);
   void InstallInternet();
   void AssignStreams();
-  void OpenSockets();
+  std::int64_t AssignRoutingStreams(ns3::Ptr<ns3::Node> node, std::int64_t stream);
+  void OpenSocket(NodeId id);
   void Receive(NodeId node, ns3::Ptr<ns3::Socket> socket);
   void Transmit(NodeId from, ns3::Ipv4Address to, const MessageHeader& header, const Bytes& payload);
   MessageHeader NewHeader(NodeId from, MessageHeader::Kind kind, NodeId destination);
-  void OpenPcap(const std::string& tmp_dir);
+  void OpenPcap(NodeId id);
 
   NetworkSpec spec_;
+  // Kept for nodes that join later: they are installed exactly as the first ones.
+  ns3::WifiHelper wifi_;
+  ns3::YansWifiPhyHelper phy_;
+  ns3::WifiMacHelper mac_;
+  ns3::InternetStackHelper internet_;
+  std::int64_t next_stream_ = 0;  // the first random stream nobody uses yet
   ns3::NodeContainer nodes_;
   ns3::NetDeviceContainer devices_;
   AddressBook book_;
@@ -66,6 +80,7 @@ class WirelessNetwork : public Transport {
   ns3::Ptr<ns3::UniformRandomVariable> jitter_;
   Receiver receiver_;
   std::string flowmon_path_;  // temporary, in the results folder
+  std::string pcap_dir_;      // temporary, in the results folder; empty: no pcap
   std::vector<ns3::Ptr<ns3::PcapFileWrapper>> pcap_;
   std::unique_ptr<ns3::FlowMonitorHelper> flow_helper_;
   ns3::Ptr<ns3::FlowMonitor> flow_monitor_;

@@ -45,6 +45,18 @@ RangeSensorSpec DefaultLaser(const ModelSpec& m) {
   return RangeSensorSpec::Fan(kPi, 181, front, 0.2, 8.0);
 }
 
+double FootprintRadius(const ModelSpec& m) {
+  switch (m.kind) {
+    case ModelKind::kOmni3:
+      return m.omni3.body_radius;
+    case ModelKind::kDiffDrive:  // the chassis sits a quarter of the caster offset behind the axle
+      return std::hypot(m.diffdrive.body_length / 2, m.diffdrive.body_width / 2) + m.diffdrive.caster_offset / 4;
+    case ModelKind::kMote:
+      return m.mote.size * std::sqrt(0.5);
+  }
+  return 0;
+}
+
 ModelSpec ModelSpec::Defaults(ModelKind kind) {
   ModelSpec s;
   s.kind = kind;

@@ -45,6 +45,8 @@ struct ModelSpec {
 // body's edge, 6 cm up (low enough to see motes); the laser at the front, 20 cm up.
 RangeSensorSpec DefaultIr(const ModelSpec& model);
 RangeSensorSpec DefaultLaser(const ModelSpec& model);
+// The radius of the circle about the pose's point that holds the whole body, seen from above.
+double FootprintRadius(const ModelSpec& model);
 
 class NodeModel {
  public:

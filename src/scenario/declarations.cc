@@ -305,6 +305,43 @@ const Fields<sim::RunSpec>& EndFields() {
   return fields;
 }
 
+namespace {
+
+void ReadRegion(const Field& v, sim::SpawnSpec& s) {
+  v.ExpectKeys({"min", "max"});
+  const Vec2 low = ReadPoint(v.Require("min")), high = ReadPoint(v.Require("max"));
+  if (!(low.x < high.x && low.y < high.y)) v.Require("max").Fail("must be above and to the right of 'min'");
+  s.region = {low, high};
+}
+
+YAML::Node PrintRegion(const sim::SpawnSpec& s) {
+  YAML::Node region;
+  region["min"] = Numbers({s.region.first.x, s.region.first.y});
+  region["max"] = Numbers({s.region.second.x, s.region.second.y});
+  return region;
+}
+
+}  // namespace
+
+const Fields<sim::SpawnSpec>& SpawnFields() {
+  using sim::SpawnSpec;
+  static const Fields<SpawnSpec> fields = [] {
+    Fields<SpawnSpec> f;
+    f.Whole<std::size_t>("max", Member(&SpawnSpec::max), "", 0, 65534, "robots clients may add over the whole run");
+    f.Custom({"region", "mapping `{min: [x, y], max: [x, y]}`", "m",
+              "the field of `world.size` centred on the scenario's nodes and obstacles", "min below and left of max",
+              "where a spawned robot may stand; INIT elsewhere is refused"},
+             ReadRegion, PrintRegion);
+    f.Custom({"classes", "list of classes (see below)", "",
+              "USARBot.P2DX, USARBot.P2AT, USARBot.P3AT (diffdrive), "
+              "sanet.DiffDrive, sanet.Omni3",
+              "", "the robot classes INIT may name, and what each becomes"},
+             nullptr, [](const SpawnSpec&) { return YAML::Node(); });
+    return f;
+  }();
+  return fields;
+}
+
 const Fields<Scenario>& OutputsFields() {
   static const Fields<Scenario> fields = [] {
     Fields<Scenario> f;
@@ -722,6 +759,14 @@ Fields<Keys>& Key(Fields<Keys>& f, const char* key, const char* type, const char
   return f.Custom({key, type, "", default_text, "", meaning}, nullptr, Unprinted<Keys>());
 }
 
+// Keys of a node, declared again for a section that takes them too.
+void NodeKeys(Fields<Keys>& f, std::initializer_list<const char*> keys, const char* meaning) {
+  const std::vector<FieldInfo> node = NodeFields().Describe(Keys{});
+  for (const char* key : keys)
+    for (const FieldInfo& i : node)
+      if (i.key == key) Key(f, key, i.type.c_str(), i.default_text.c_str(), meaning);
+}
+
 }  // namespace
 
 const Fields<Scenario>& TopLevelFields() {
@@ -747,6 +792,8 @@ const Fields<Scenario>& TopLevelFields() {
     section("events", "list", "none", "see [events](#events)");
     section("end", "mapping", "the run lasts `duration`", "see [end](#end)");
     section("loop", "mapping", "see [loop](#loop)", "how `sanet launch` links its agents");
+    section("spawn", "mapping", "no spawning",
+            "robots that clients of `sanet serve` may add with INIT; see [spawn](#spawn)");
     section("outputs", "mapping", "see [outputs](#outputs)", "what is written where");
     return f;
   }();
@@ -772,12 +819,18 @@ const Fields<Keys>& GridItemFields() {
   static const Fields<Keys> fields = [] {
     Fields<Keys> f;
     Key(f, "grid", "mapping", kRequired, "see the table below");
-    for (const char* key : {"model", "body", "sensors", "radio", "controller"}) {
-      const auto& node = NodeFields().Describe(Keys{});
-      for (const FieldInfo& i : node)
-        if (i.key == key)
-          Key(f, key, i.type.c_str(), i.default_text.c_str(), "as for a single node; shared by the grid's nodes");
-    }
+    NodeKeys(f, {"model", "body", "sensors", "radio", "controller"},
+             "as for a single node; shared by the grid's nodes");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<Keys>& SpawnClassFields() {
+  static const Fields<Keys> fields = [] {
+    Fields<Keys> f;
+    Key(f, "class", "text", kRequired, "the class name INIT gives in {ClassName}, matched without regard to case");
+    NodeKeys(f, {"model", "body", "sensors", "radio"}, "as for a node (`omni3` or `diffdrive`)");
     return f;
   }();
   return fields;
@@ -811,6 +864,8 @@ std::vector<SectionTable> SectionTables() {
       {"end", EndFields().Describe(sim::RunSpec{})},
       {"loop", LoopFields().Describe(sim::LoopSpec{})},
       {"loop.netem", NetemFields().Describe(sim::LinkShaping{})},
+      {"spawn", SpawnFields().Describe(sim::SpawnSpec{})},
+      {"spawn.class", SpawnClassFields().Describe(Keys{})},
       {"outputs", OutputsFields().Describe(Scenario{})},
   };
 }

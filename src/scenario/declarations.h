@@ -18,6 +18,8 @@ const Fields<sim::RunSpec>& MessagesFields();
 const Fields<sim::LoopSpec>& LoopFields();
 const Fields<sim::LinkShaping>& NetemFields();
 const Fields<sim::RunSpec>& EndFields();
+// `spawn:` (max, region; its classes are read by the loader, each as a SpawnClassFields item).
+const Fields<sim::SpawnSpec>& SpawnFields();
 const Fields<Scenario>& OutputsFields();
 // A model's `body` keys (with its drive limits for robots).
 const Fields<robots::ModelSpec>& BodyFields(robots::ModelKind kind);
@@ -77,6 +79,7 @@ const Fields<Scenario>& TopLevelFields();
 struct Keys {};
 const Fields<Keys>& NodeFields();
 const Fields<Keys>& GridItemFields();
+const Fields<Keys>& SpawnClassFields();
 
 // Names keep to letters, digits, '_', '-' and '.': they end up in CSV files and folder names.
 std::string ReadName(const Field& f);

@@ -16,18 +16,36 @@ YAML::Node Sensors(const robots::ModelSpec& m) {
   return out;
 }
 
+// model, body, sensors and radio, as a node and a spawn class give them.
+void PutRobot(YAML::Node& out, const robots::ModelSpec& model, const net::NodeRadio& radio, bool has_network) {
+  out["model"] = robots::ModelName(model.kind);
+  out["body"] = BodyFields(model.kind).Print(model);
+  out["sensors"] = Sensors(model);
+  if (has_network && radio.tx_power) out["radio"] = RadioFields().Print(radio);
+}
+
 YAML::Node Node(const sim::NodeSpec& n, bool has_network) {
   YAML::Node out;
   out["name"] = n.name;
-  out["model"] = robots::ModelName(n.model.kind);
   YAML::Node pose(YAML::NodeType::Sequence);
   for (double v : {n.pose.x, n.pose.y, n.pose.theta}) pose.push_back(NumberNode(v));
   pose.SetStyle(YAML::EmitterStyle::Flow);
   out["pose"] = pose;
-  out["body"] = BodyFields(n.model.kind).Print(n.model);
-  out["sensors"] = Sensors(n.model);
-  if (has_network && n.radio.tx_power) out["radio"] = RadioFields().Print(n.radio);
+  PutRobot(out, n.model, n.radio, has_network);
   if (n.controller) out["controller"] = ControllerFields().Print(*n.controller);
+  return out;
+}
+
+YAML::Node Spawn(const sim::SpawnSpec& spawn, bool has_network) {
+  YAML::Node out = SpawnFields().Print(spawn);
+  YAML::Node classes(YAML::NodeType::Sequence);
+  for (const sim::SpawnClass& c : spawn.classes) {
+    YAML::Node item;
+    item["class"] = c.usarsim_class;
+    PutRobot(item, c.model, c.radio, has_network);
+    classes.push_back(item);
+  }
+  out["classes"] = classes;
   return out;
 }
 
@@ -57,6 +75,7 @@ std::string EffectiveScenarioYaml(const Scenario& sc) {
   if (!run.events.empty()) root["events"] = Events(run);
   if (!run.end_when_logged.empty()) root["end"] = EndFields().Print(run);
   root["loop"] = LoopFields().Print(run.loop);
+  if (run.spawn) root["spawn"] = Spawn(*run.spawn, run.network.has_value());
   root["outputs"] = OutputsFields().Print(sc);
   YAML::Node nodes(YAML::NodeType::Sequence);
   for (const sim::NodeSpec& n : run.nodes) nodes.push_back(Node(n, run.network.has_value()));

@@ -1,9 +1,11 @@
 #include "scenario/scenario_loader.h"
 
+#include <cctype>
 #include <filesystem>
 #include <map>
 
 #include "scenario/declarations.h"
+#include "sim/spawning.h"
 #include "sim/world.h"
 
 namespace sanet::scenario {
@@ -272,6 +274,39 @@ void ReadEnd(const Field& end, sim::RunSpec& run) {
 
 void ReadOutputs(const Field& outputs, Scenario& sc) { OutputsFields().Read(outputs, sc); }
 
+sim::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool has_network) {
+  item.ExpectKeys(SpawnClassFields().Keys());
+  sim::SpawnClass c;
+  c.usarsim_class = item.Require("class").Text();
+  if (c.usarsim_class.empty()) item.Require("class").Fail("a class needs a name");
+  const NodeTemplate t = ReadNodeTemplate(item, dir, has_network);
+  if (t.model.kind == ModelKind::kMote) item.Require("model").Fail("a spawned robot is an omni3 or a diffdrive");
+  c.model = t.model;
+  c.radio = t.radio;
+  return c;
+}
+
+// After the nodes and the world: the default region is the field around them.
+void ReadSpawn(const Field& spawn, const fs::path& dir, sim::RunSpec& run) {
+  sim::SpawnSpec s;
+  s.region = sim::DefaultSpawnRegion(run);
+  SpawnFields().Read(spawn, s);
+  if (auto classes = spawn.Get("classes")) {
+    std::map<std::string, int> lines;  // lower-case class -> line
+    for (const Field& item : classes->Items()) {
+      s.classes.push_back(ReadSpawnClass(item, dir, run.network.has_value()));
+      std::string key = s.classes.back().usarsim_class;
+      for (char& ch : key) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if (auto [it, fresh] = lines.emplace(key, item.line()); !fresh)
+        item.Require("class").Fail("class given twice (first on line " + std::to_string(it->second) + ")");
+    }
+    if (s.classes.empty()) classes->Fail("list at least one class, or leave 'classes' out for the default ones");
+  } else {
+    s.classes = sim::DefaultSpawnClasses();
+  }
+  run.spawn = s;
+}
+
 }  // namespace
 
 Scenario LoadScenario(const std::string& path) {
@@ -290,6 +325,7 @@ Scenario LoadScenario(const std::string& path) {
   if (auto end = root.Get("end")) ReadEnd(*end, run);
   sc.output_folder = "results/" + run.name;
   if (auto outputs = root.Get("outputs")) ReadOutputs(*outputs, sc);
+  if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), run);
   if (run.trajectory_interval < run.physics_step) {
     const auto outputs = root.Get("outputs");
     const auto interval = outputs ? outputs->Get("trajectory_interval") : std::nullopt;

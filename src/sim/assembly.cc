@@ -23,36 +23,21 @@ class SimulationClock : public agents::HostClock {
   }
 };
 
-// One ns-3 node per body; its mobility model reads the body whenever ns-3 asks.
-ns3::NodeContainer Ns3NodesOn(const std::vector<std::unique_ptr<robots::NodeModel>>& models) {
-  ns3::NodeContainer nodes;
-  nodes.Create(models.size());
-  for (NodeId id = 0; id < models.size(); ++id) {
-    const physics::Body& body = models[id]->body();
-    auto mobility = ns3::CreateObject<net::BodyMobilityModel>();
-    mobility->Bind(
-        [&body] {
-          const physics::Vec3 p = body.position3();
-          return ns3::Vector(p.x, p.y, p.z);
-        },
-        [&body] {
-          const Twist2D v = body.velocity();
-          return ns3::Vector(v.vx, v.vy, 0);
-        });
-    nodes.Get(id)->AggregateObject(mobility);
-  }
-  return nodes;
-}
-
-std::unique_ptr<net::Transport> MakeTransport(const RunSpec& spec, const ns3::NodeContainer& nodes) {
-  if (!spec.network) return std::make_unique<net::LocalTransport>(spec.nodes.size(), spec.message_latency);
-  std::vector<std::string> names;
-  std::vector<net::NodeRadio> radios;
-  for (const NodeSpec& n : spec.nodes) {
-    names.push_back(n.name);
-    radios.push_back(n.radio);
-  }
-  return std::make_unique<net::WirelessNetwork>(*spec.network, nodes, names, radios);
+// An ns-3 node whose mobility model reads the body whenever ns-3 asks.
+ns3::Ptr<ns3::Node> Ns3NodeOn(const physics::Body& body) {
+  auto node = ns3::CreateObject<ns3::Node>();
+  auto mobility = ns3::CreateObject<net::BodyMobilityModel>();
+  mobility->Bind(
+      [&body] {
+        const physics::Vec3 p = body.position3();
+        return ns3::Vector(p.x, p.y, p.z);
+      },
+      [&body] {
+        const Twist2D v = body.velocity();
+        return ns3::Vector(v.vx, v.vy, 0);
+      });
+  node->AggregateObject(mobility);
+  return node;
 }
 
 }  // namespace
@@ -67,7 +52,6 @@ Assembly::Assembly(const RunSpec& spec, agents::Registry& registry) : spec_(spec
     BuildBodies();
     BuildTransport();
     BuildNodes(registry);
-    states_.resize(spec_.nodes.size());
   } catch (...) {
     hosts_.clear();
     ns3::Simulator::Destroy();
@@ -90,9 +74,24 @@ void Assembly::BuildBodies() {
     models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose, spec_.seed, "node/" + n.name));
 }
 
+// One ns-3 node per body, in node order (ns-3's node ids are sanet's).
 void Assembly::BuildTransport() {
-  const ns3::NodeContainer nodes = Ns3NodesOn(models_);
-  transport_ = std::make_unique<MessageLedger>(MakeTransport(spec_, nodes), [this] { return clock_->Now(); });
+  ns3::NodeContainer nodes;
+  for (const auto& model : models_) nodes.Add(Ns3NodeOn(model->body()));
+  std::unique_ptr<net::Transport> inner;
+  if (spec_.network) {
+    std::vector<std::string> names;
+    std::vector<net::NodeRadio> radios;
+    for (const NodeSpec& n : spec_.nodes) names.push_back(n.name), radios.push_back(n.radio);
+    auto wireless = std::make_unique<net::WirelessNetwork>(*spec_.network, nodes, names, radios);
+    wireless_ = wireless.get();
+    inner = std::move(wireless);
+  } else {
+    auto local = std::make_unique<net::LocalTransport>(spec_.nodes.size(), spec_.message_latency);
+    local_ = local.get();
+    inner = std::move(local);
+  }
+  transport_ = std::make_unique<MessageLedger>(std::move(inner), [this] { return clock_->Now(); });
   transport_->SetReceiver([this](NodeId to, const Message& m) { Receive(to, m); });
 }
 
@@ -101,18 +100,37 @@ bool Assembly::remote(NodeId id) const {
 }
 
 void Assembly::BuildNodes(agents::Registry& registry) {
-  const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
   for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
     const NodeSpec& n = spec_.nodes[id];
-    nodes_.push_back(
-        std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this, *clock_,
-                                                RandomStream(spec_.seed, "node/" + n.name + "/controller")));
-    std::unique_ptr<Controller> controller =
-        n.controller && !remote(id) ? agents::MakeController(*n.controller, registry) : nullptr;
-    hosts_.push_back(std::make_unique<agents::ControllerHost>(*nodes_.back(), std::move(controller),
-                                                              n.controller ? n.controller->rate : 1, impairments,
-                                                              spec_.seed, *clock_, HostHooks(id)));
+    AddNode(id, n.controller && !remote(id) ? agents::MakeController(*n.controller, registry) : nullptr);
   }
+}
+
+// The simulated node and the controller's host of node `id`, whose body exists.
+void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
+  const NodeSpec& n = spec_.nodes[id];
+  nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this, *clock_,
+                                                           RandomStream(spec_.seed, "node/" + n.name + "/controller")));
+  const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
+  hosts_.push_back(std::make_unique<agents::ControllerHost>(*nodes_.back(), std::move(controller),
+                                                            n.controller ? n.controller->rate : 1, impairments,
+                                                            spec_.seed, *clock_, HostHooks(id)));
+  states_.emplace_back();
+}
+
+NodeId Assembly::Spawn(const NodeSpec& node, const std::string& usarsim_class, const std::string& why) {
+  const NodeId id = spec_.nodes.size();
+  spec_.nodes.push_back(node);
+  models_.push_back(
+      std::make_unique<robots::NodeModel>(*physics_, node.model, node.pose, spec_.seed, "node/" + node.name));
+  ns3::Ptr<ns3::Node> ns3_node = Ns3NodeOn(models_.back()->body());
+  if (wireless_) wireless_->AddNode(ns3_node, node.name, node.radio);
+  if (local_) local_->AddNode();
+  AddNode(id, nullptr);
+  ++spawned_;
+  if (events_) events_->Spawned(id, usarsim_class);
+  Log(id, why);
+  return id;
 }
 
 agents::ControllerHost::Hooks Assembly::HostHooks(NodeId id) {

@@ -18,6 +18,11 @@
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
 
+namespace sanet::net {
+class LocalTransport;
+class WirelessNetwork;
+}  // namespace sanet::net
+
 namespace sanet::sim {
 
 class WorldError : public std::runtime_error {
@@ -51,6 +56,12 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void SetEvents(RunEvents* events) { events_ = events; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
   void SwitchOff(NodeId id);
+  // Adds a robot to the running world (sim::PlanSpawn checked it): its body, its own ns-3 node
+  // with the scenario's radio and routing, a simulated node and a host without a controller.
+  // Every other node can see it from now on. Returns its id, the next one.
+  NodeId Spawn(const NodeSpec& node, const std::string& usarsim_class, const std::string& why);
+  std::size_t spawned() const { return spawned_; }
+  bool IsSpawned(NodeId id) const { return id + spawned_ >= spec_.nodes.size(); }
   // A message that reached a node outside the run's own transport (between agents, over UDP),
   // recorded as delivered.
   void RecordDelivery(NodeId to, const Message& message) {
@@ -76,6 +87,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void BuildBodies();
   void BuildTransport();
   void BuildNodes(agents::Registry& registry);
+  void AddNode(NodeId id, std::unique_ptr<Controller> controller);
   void Receive(NodeId to, const Message& message);
   agents::ControllerHost::Hooks HostHooks(NodeId id);
 
@@ -83,6 +95,9 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   std::unique_ptr<physics::PhysicsWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
   std::unique_ptr<MessageLedger> transport_;
+  net::WirelessNetwork* wireless_ = nullptr;  // the inner transport, when it is ns-3's network
+  net::LocalTransport* local_ = nullptr;      // or when it is the local stand-in
+  std::size_t spawned_ = 0;
   std::unique_ptr<agents::HostClock> clock_;
   std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
   std::vector<std::unique_ptr<agents::ControllerHost>> hosts_;

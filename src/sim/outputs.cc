@@ -103,6 +103,7 @@ void Outputs::SampleMinDistance(double now, const PoseReader& world) {
 void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
   now = std::min(now, spec_.duration);
   if (min_distance_ && !final_row) SampleMinDistance(now, world);
+  last_recorded_.resize(spec_.nodes.size());  // robots spawned while the run goes
   for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
     const Pose2D p = world.pose(id);
     auto& last = last_recorded_[id];

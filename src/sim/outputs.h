@@ -57,6 +57,7 @@ class Outputs {
   void DroppedByImpairment() { ++messages_lost_; }
   // A message that reached a node's radio but not its controller (`why`, e.g. no client).
   void Lost(NodeId to, const Message& message, const std::string& why);
+  void Spawned(NodeId node, const std::string& usarsim_class) { spawned_as_[node] = usarsim_class; }
   void Ended(const std::string& by, double at);
   void Failed(const std::string& why);  // the first failure is kept
   const std::string& failure() const { return failure_; }
@@ -96,7 +97,8 @@ class Outputs {
     double time;
   };
   std::vector<std::optional<Recorded>> last_recorded_;
-  std::map<NodeId, trace::Track> tracks_;  // of robots, for the figures
+  std::map<NodeId, trace::Track> tracks_;     // of robots, for the figures
+  std::map<NodeId, std::string> spawned_as_;  // robots that clients added, with their classes
   std::string ended_by_, failure_;
   double ended_at_ = 0;
 };

@@ -146,6 +146,7 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
                      {"model", robots::ModelName(spec_.nodes[id].model.kind)},
                      {"controller", spec_.nodes[id].controller ? spec_.nodes[id].controller->name : ""},
                      {"final_pose", {p.x, p.y, p.theta}}});
+    if (auto it = spawned_as_.find(id); it != spawned_as_.end()) nodes.back()["spawned_as"] = it->second;
   }
   j["nodes"] = nodes;
   j["rows"] = {{"trajectories", trajectories_.rows()}, {"log", log_.rows()}, {"messages", messages_.rows()}};

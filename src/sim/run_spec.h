@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "agents/controller_spec.h"
@@ -59,6 +60,23 @@ struct LoopSpec {
   std::uint16_t udp_port = 47000;  // loopback: node i uses port + i; namespaces: every node this port
 };
 
+// A robot class that clients of the server may add with INIT (a USARSim class name, e.g.
+// USARBot.P2DX) and the robot it becomes here.
+struct SpawnClass {
+  std::string usarsim_class;  // matched without regard to case, as Unreal's class names are
+  robots::ModelSpec model;
+  net::NodeRadio radio;
+};
+
+// Which robots clients may add to a running world, how many, and where.
+struct SpawnSpec {
+  std::vector<SpawnClass> classes;
+  std::size_t max = 8;  // robots added over the whole run
+  // Where they may stand: min and max corners (the scenario loader's default is the field of
+  // `world_size` around the scenario's nodes and obstacles, sim::DefaultSpawnRegion).
+  std::pair<Vec2, Vec2> region{{-1e6, -1e6}, {1e6, 1e6}};
+};
+
 struct RunSpec {
   std::string name = "run";
   std::uint64_t seed = 1;
@@ -79,6 +97,7 @@ struct RunSpec {
   // here (motes' controllers still do).
   bool robots_remote = false;
   LoopSpec loop;
+  std::optional<SpawnSpec> spawn;  // clients may add robots with INIT (server only)
   // The run ends early when a controller logs one of these lines.
   std::vector<std::string> end_when_logged;
   double end_grace = 0;           // s the run goes on after the end condition, for messages in flight

@@ -138,6 +138,15 @@ void Stepper::Failed(const std::string& why) {
   ns3::Simulator::Stop();
 }
 
+// A robot joined: it moves with the others from the next physics step (the first one, if it is
+// the world's first vehicle).
+void Stepper::Spawned(NodeId node, const std::string& usarsim_class) {
+  outputs_.Spawned(node, usarsim_class);
+  if (!world_.model(node).mobile()) return;
+  if (vehicles_.empty()) ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
+  vehicles_.push_back(node);
+}
+
 void Stepper::ShowProgress() {
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_progress_).count() >= 0.5) {

@@ -37,6 +37,7 @@ class Stepper : public RunEvents {
   void DroppedByImpairment(NodeId, const Message&) override { outputs_.DroppedByImpairment(); }
   void Lost(NodeId to, const Message& message, const std::string& why) override { outputs_.Lost(to, message, why); }
   void Failed(const std::string& why) override;
+  void Spawned(NodeId node, const std::string& usarsim_class) override;
 
  private:
   void ScheduleAll();

@@ -2,7 +2,7 @@
 """`sanet validate --print` writes the effective scenario: it validates, prints itself again
 unchanged, and runs to the same fingerprint as the scenario it came from, for the shipped
 scenarios and for one that uses every kind of section (grids, radios, sensors changed and
-removed, events, impairments, end conditions)."""
+removed, events, impairments, end conditions, spawning)."""
 import json
 import os
 import subprocess
@@ -33,6 +33,11 @@ events:
   - {time: 15, node: m3, action: switch_off}
 end: {when_logged: [never logged, nor this], grace: 1}
 outputs: {trajectory_interval: 0.2, min_distance: true}
+spawn:
+  max: 3
+  classes:
+    - {class: USARBot.P2AT, model: diffdrive, body: {max_speed: 0.7}, radio: {tx_power: 12}}
+    - {class: Omni, model: omni3, sensors: {laser: {fov: 1, beams: 11}}}
 nodes:
   - grid: {name: m, rows: 2, cols: 3, origin: [0, -5], spacing: [10, 10], heading: 0.1}
     model: mote
@@ -99,6 +104,10 @@ class EffectiveScenario(unittest.TestCase):
                 self.assertNotIn(text, printed, "keys that do not apply to the model are left out")
             else:
                 self.assertIn(text, printed)
+        # The spawn section's default region is the field around the nodes: the world's 40 x 20 m
+        # centred between the nodes and obstacles (x from -1 to 20, y from -5 to 5).
+        self.assertIn("min: [-10.5, -10]", printed)
+        self.assertIn("max: [29.5, 10]", printed)
 
 
 if __name__ == "__main__":

@@ -8,13 +8,12 @@ in-process controller is. A client written from docs/protocol.md:
 import csv
 import json
 import os
-import re
-import socket
-import subprocess
 import sys
 import tempfile
-import time
+import threading
 import unittest
+
+from protocol_client import Client, field, serve
 
 SANET = sys.argv.pop(1)
 SOURCE = sys.argv.pop(1)
@@ -32,34 +31,6 @@ nodes:
 """
 
 
-class Client:
-    """A robot-protocol client: one line per message, `TYPE {Key Value} ...`."""
-
-    def __init__(self, port):
-        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
-        self.file = self.sock.makefile("rwb")
-        assert self.file.readline().startswith(b"NFO")
-
-    def send(self, line):
-        self.file.write(line.encode() + b"\r\n")
-        self.file.flush()
-
-    def lines(self):
-        while True:
-            line = self.file.readline().decode().strip()
-            if not line:
-                return
-            yield line
-
-    def close(self):
-        self.sock.close()
-
-
-def field(line, key):
-    m = re.search(r"\{" + key + r" ([^}]*)\}", line)
-    return m.group(1) if m else None
-
-
 def ground_truth_x(line):
     return float(field(line, "Location").split(",")[0])
 
@@ -68,20 +39,9 @@ class NodeRules(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.tmp = tempfile.TemporaryDirectory()
-        path = os.path.join(cls.tmp.name, "s.yaml")
-        open(path, "w").write(SCENARIO)
-        port_file = os.path.join(cls.tmp.name, "port")
-        cls.out = os.path.join(cls.tmp.name, "out")
-        cls.server = subprocess.Popen([SANET, "serve", path, "--port", "0", "--port-file", port_file, "-o", cls.out, "-q"],
-                                      stdout=subprocess.DEVNULL)
-        for _ in range(500):
-            if os.path.exists(port_file):
-                break
-            time.sleep(0.01)
-        cls.port = int(open(port_file).read())
+        cls.server, cls.port, cls.out = serve(SANET, SCENARIO, cls.tmp.name)
         cls.switched, cls.messages = {}, {}
         # Both clients at once, each on its own thread of the test, as two robots' programs would.
-        import threading
         threads = [threading.Thread(target=cls.drive_switched_off_robot), threading.Thread(target=cls.talk_to_mote)]
         for t in threads:
             t.start()

@@ -21,7 +21,8 @@ send(f"INIT {{ClassName USARBot.P2DX}} {{Name {robot}}} {{Location 0,0,0}}")
 start, scans, position = None, 0, None
 deadline = time.time() + 20
 while time.time() < deadline and (scans < 5 or start is None or math.dist(start, position) < 1.0):
-    kind, fields = message(stream.readline().decode().strip())
+    line = stream.readline().decode().strip()
+    kind, fields = message(line)
     values = dict(fields)
     if kind == "SEN" and values.get("Type") == "GroundTruth":
         position = [float(v) for v in values["Location"].split(",")][:2]

@@ -146,10 +146,11 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
   sim::RunOptions options;
   options.output_dir = output.empty() ? sc.output_folder : output;
   options.scenario_file = file;
-  options.add_to_summary = [&](nlohmann::ordered_json& j) {
+  options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
     j["real_time_lag"] = server.LagSummary();
     j["real_time_lag"]["scheduling"] = scheduling;
     j["agents"] = server.AgentStats();
+    server.WriteAgentTable(folder);
   };
   const sim::RunResult r = world.Run(options);
   if (!quiet) {

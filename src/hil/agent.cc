@@ -33,13 +33,16 @@ class AgentClock : public agents::HostClock {
 };
 
 // What the agent tells the server about its steps and messages (summary.json's `agents`).
-ProtocolMessage Stats(const StepGrid& grid, std::uint64_t sent, std::uint64_t received) {
+ProtocolMessage Stats(const StepGrid& grid, const RemoteNode& node, std::uint64_t received) {
   ProtocolMessage m("STATS");
   m.Add("Steps", std::to_string(grid.run())).Add("Missed", std::to_string(grid.missed()));
-  m.Add("Rate", FormatPrecise(grid.achieved_rate())).Add("Sent", std::to_string(sent));
+  m.Add("Rate", FormatPrecise(grid.achieved_rate())).Add("Sent", std::to_string(node.messages_sent()));
   const StepGrid::Lateness late = grid.lateness();
   m.Add("Received", std::to_string(received)).Add("LatenessP50", FormatPrecise(late.p50));
   m.Add("LatenessP99", FormatPrecise(late.p99)).Add("LatenessMax", FormatPrecise(late.max));
+  const RemoteNode::Datagrams& d = node.datagrams();
+  m.Add("DatagramsSent", std::to_string(d.sent)).Add("DatagramsReceived", std::to_string(d.received));
+  m.Add("SendErrors", std::to_string(d.send_errors));
   return m;
 }
 
@@ -80,7 +83,7 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
       node.SetStepTime(std::nullopt);
     }
     if (node.ClockNow() >= next_report) {  // five times a second: the server keeps the last
-      node.Report(Stats(grid, node.messages_sent(), received));
+      node.Report(Stats(grid, node, received));
       next_report = node.ClockNow() + 0.2;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(1));

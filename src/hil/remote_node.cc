@@ -148,6 +148,7 @@ void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
     m.time_received = ClockNow();
     m.hops = 1;
     m.payload.assign(datagram.begin() + 18, datagram.end());
+    ++datagrams_.received;
     deliver(m);
   }
 }
@@ -248,7 +249,9 @@ void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
       Writer().U8(kUdpMagic).U32(id_).U32(kind == kUnicast ? to : kBroadcast).U8(kind).F64(ClockNow()).bytes();
   datagram.insert(datagram.end(), payload.begin(), payload.end());
   const sockaddr_in peer = Address(HostOf(to), PortOf(to));
-  ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
+  const ssize_t n =
+      ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
+  ++(n < 0 ? datagrams_.send_errors : datagrams_.sent);
 }
 
 std::string RemoteNode::HostOf(NodeId node) const {

@@ -44,6 +44,12 @@ class RemoteNode : public Node {
   // The run's clock as this process reads it, steps or not.
   double ClockNow() const;
   std::uint64_t messages_sent() const { return messages_sent_; }
+  // The robot's own packets between agents (UDP datagrams): sent, refused by the sender's
+  // stack (sendto failed), and received whole from a known node.
+  struct Datagrams {
+    std::uint64_t sent = 0, send_errors = 0, received = 0;
+  };
+  const Datagrams& datagrams() const { return datagrams_; }
   // A robot whose controller runs as an agent: reached over UDP, not through the server.
   bool IsAgent(NodeId node) const;
   // Reports to the server (a sanet extension line), e.g. the agent's STATS.
@@ -96,6 +102,7 @@ class RemoteNode : public Node {
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;
   std::uint64_t messages_sent_ = 0;
+  Datagrams datagrams_;
 };
 
 }  // namespace sanet::hil

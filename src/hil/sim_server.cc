@@ -432,27 +432,55 @@ void SimServer::Report(Client& c, const ProtocolMessage& m) {
   node.Transition(*from, *to, why ? *why : "");
 }
 
-// STATS (sanet extension): an agent's steps and messages so far; the last one counts.
+namespace {
+
+// STATS keys and their names in the results; counts are whole numbers.
+struct StatsKey {
+  const char* key;
+  const char* name;
+  bool count;
+};
+constexpr StatsKey kStatsKeys[] = {{"Steps", "steps", true},
+                                   {"Missed", "steps_missed", true},
+                                   {"Rate", "achieved_rate_hz", false},
+                                   {"Sent", "messages_sent", true},
+                                   {"Received", "messages_received", true},
+                                   {"DatagramsSent", "datagrams_sent", true},
+                                   {"DatagramsReceived", "datagrams_received", true},
+                                   {"SendErrors", "send_errors", true},
+                                   {"LatenessP50", "lateness_p50_s", false},
+                                   {"LatenessP99", "lateness_p99_s", false},
+                                   {"LatenessMax", "lateness_max_s", false}};
+
+}  // namespace
+
+// STATS (sanet extension): an agent's steps, messages and packets so far; the last one counts.
 void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
   nlohmann::ordered_json stats = nlohmann::ordered_json::object();
-  const std::pair<const char*, const char*> keys[] = {{"Steps", "steps"},
-                                                      {"Missed", "steps_missed"},
-                                                      {"Rate", "achieved_rate_hz"},
-                                                      {"Sent", "messages_sent"},
-                                                      {"Received", "messages_received"},
-                                                      {"LatenessP50", "lateness_p50_s"},
-                                                      {"LatenessP99", "lateness_p99_s"},
-                                                      {"LatenessMax", "lateness_max_s"}};
-  for (const auto& [key, name] : keys) {
-    const auto value = m.Number(key);
-    if (!value) return Error(c, std::string("STATS needs a number {") + key + " ...}");
-    const bool count = std::string(name).rfind("lateness", 0) != 0 && std::string(name) != "achieved_rate_hz";
-    if (count)
-      stats[name] = static_cast<std::uint64_t>(*value);
+  for (const StatsKey& k : kStatsKeys) {
+    const auto value = m.Number(k.key);
+    if (!value) return Error(c, std::string("STATS needs a number {") + k.key + " ...}");
+    if (k.count)
+      stats[k.name] = static_cast<std::uint64_t>(*value);
     else
-      stats[name] = *value;
+      stats[k.name] = *value;
   }
   agent_stats_[world_.NameOf(*c.robot)] = stats;
+}
+
+// agents.csv: one row per agent, its last STATS, in node order.
+void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
+  if (agent_stats_.empty()) return;
+  std::string header = "node";
+  for (const StatsKey& k : kStatsKeys) header += std::string(",") + k.name;
+  trace::CsvSink& table = folder.Csv("agents.csv", header);
+  for (NodeId id = 0; id < world_.NodeCount(); ++id) {
+    const auto it = agent_stats_.find(world_.NameOf(id));
+    if (it == agent_stats_.end()) continue;
+    std::string row = trace::CsvField(world_.NameOf(id));
+    for (const StatsKey& k : kStatsKeys) row += "," + (*it)[k.name].dump();
+    table.Row(row);
+  }
 }
 
 SimServer::Client* SimServer::ClientOf(NodeId robot) {

@@ -18,6 +18,7 @@
 
 #include "hil/protocol.h"
 #include "sim/world.h"
+#include "trace/results_folder.h"
 
 namespace sanet::hil {
 
@@ -46,6 +47,8 @@ class SimServer : public sim::StepObserver {
   nlohmann::ordered_json LagSummary() const;
   // What each agent last reported of its steps and messages (STATS lines), by robot.
   const nlohmann::ordered_json& AgentStats() const { return agent_stats_; }
+  // The same as a table, agents.csv (nothing without agents).
+  void WriteAgentTable(trace::ResultsFolder& folder) const;
 
  private:
   struct Client {

@@ -76,7 +76,7 @@ RunResult World::Run(const RunOptions& options) {
   std::vector<Pose2D> final_poses;
   for (NodeId id = 0; id < parts_.size(); ++id) final_poses.push_back(parts_.model(id).body().pose());
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
-  if (options.add_to_summary) options.add_to_summary(extra);
+  if (options.add_results) options.add_results(extra, outputs.folder());
   outputs.Finish(result, parts_.transport().Traces(), options.scenario_file, final_poses, extra);
   if (!outputs.failure().empty()) throw WorldError(outputs.failure());
   return result;

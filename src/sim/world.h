@@ -14,6 +14,7 @@
 #include "sim/outputs.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
+#include "trace/results_folder.h"
 
 namespace sanet::sim {
 
@@ -23,8 +24,9 @@ struct RunOptions {
   std::string output_dir;     // "" writes nothing (tests, benchmarks)
   std::string scenario_file;  // recorded in the summary
   bool progress = false;      // print simulated time, real-time factor and ETA to stderr
-  // Adds fields of its own to summary.json (the server adds its lag).
-  std::function<void(nlohmann::ordered_json&)> add_to_summary = nullptr;
+  // Adds fields of its own to summary.json and files of its own to the results folder (the
+  // server adds its lag and the agents' reports), once the run has ended.
+  std::function<void(nlohmann::ordered_json& summary, trace::ResultsFolder& folder)> add_results = nullptr;
 };
 
 // Selects ns-3's real-time scheduler for the next World: the same schedule, run against the

@@ -39,6 +39,15 @@ with tempfile.TemporaryDirectory() as tmp:
     assert summary["rows"]["messages"] == len(rows)
     leader = [r for r in open(os.path.join(tmp, "trajectories.csv")) if ",leader," in r]
     assert float(leader[-1].split(",")[2]) > 5, "the leader drove"
+    # agents.csv: each agent's packets over UDP, as it counted them (the leader's poses went to
+    # f1 and f2 as one datagram each; f1 relays to f3).
+    with open(os.path.join(tmp, "agents.csv")) as f:
+        table = {r["node"]: r for r in csv.DictReader(f)}
+    assert sorted(table) == ["f1", "f2", "f3", "leader"], table.keys()
+    assert int(table["leader"]["datagrams_sent"]) == leader_stats["messages_sent"], table["leader"]
+    assert int(table["f1"]["datagrams_sent"]) == agents["f1"]["messages_sent"] > 240, table["f1"]
+    assert int(table["f3"]["datagrams_received"]) > 240 and table["f3"]["send_errors"] == "0", table["f3"]
+    assert "agents.csv" in summary["files"]
     print("lag:", summary["real_time_lag"])
 
 # Each agent in its own network namespace (or, where the machine does not allow it, a clear

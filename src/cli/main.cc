@@ -19,6 +19,7 @@
 #include "hil/agent.h"
 #include "hil/launch.h"
 #include "hil/namespaces.h"
+#include "hil/radio_taps.h"
 #include "hil/realtime_priority.h"
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
@@ -114,10 +115,39 @@ int Sweep(const std::string& file, const std::string& seeds_text, const std::str
   return 0;
 }
 
-int Serve(const std::string& file, const std::string& bind, int port, const std::string& port_file,
-          const std::string& output, bool quiet, std::optional<double> duration, agents::Registry& registry) {
+struct ServeArgs {
+  std::string file, bind = "127.0.0.1", output, port_file;
+  int port = 3000;
+  bool quiet = false;
+  std::optional<double> duration;
+  std::vector<std::string> taps;  // ROBOT=NAMESPACE
+};
+
+// --tap ROBOT=NAMESPACE: the robot's radio reaches a real IP stack in that namespace.
+void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
+  if (taps.empty()) return;
+  std::string why;
+  if (!hil::RadioTapsPermitted(&why)) throw CLI::ValidationError("--tap", why);
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const std::string& t : taps) {
+    const auto equals = t.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == t.size())
+      throw CLI::ValidationError("--tap", "expected ROBOT=NAMESPACE, not '" + t + "'");
+    pairs.emplace_back(t.substr(0, equals), t.substr(equals + 1));
+  }
+  try {
+    hil::JoinRadioTaps(world, pairs);
+  } catch (const std::exception& e) {
+    throw CLI::ValidationError("--tap", e.what());
+  }
+}
+
+int Serve(const ServeArgs& a, agents::Registry& registry) {
+  const std::string &file = a.file, &bind = a.bind, &port_file = a.port_file, &output = a.output;
+  const int port = a.port;
+  const bool quiet = a.quiet;
   scenario::Scenario sc = LoadChecked(file, registry);
-  if (duration) sc.run.duration = *duration;
+  if (a.duration) sc.run.duration = *a.duration;
   sc.run.robots_remote = true;
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
   const std::string scheduling = hil::UseRealTimePriority();
@@ -132,6 +162,7 @@ int Serve(const std::string& file, const std::string& bind, int port, const std:
     throw CLI::ValidationError("--port", e.what());
   }
   hil::SimServer& server = *listening;
+  JoinTaps(world, a.taps);
   try {
     if (!port_file.empty()) WriteFileAtomically(port_file, std::to_string(server.port()) + "\n");
   } catch (const std::runtime_error&) {
@@ -298,13 +329,7 @@ Command AddSweep(CLI::App& app) {
 }
 
 Command AddServe(CLI::App& app) {
-  struct Args {
-    std::string file, bind = "127.0.0.1", output, port_file;
-    int port = 3000;
-    bool quiet = false;
-    std::optional<double> duration;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<ServeArgs>();
   CLI::App* cmd = app.add_subcommand("serve",
                                      "Serve a scenario's world in real time over the robot protocol "
                                      "(USARSim-compatible; docs/protocol.md): clients drive its robots");
@@ -317,9 +342,11 @@ Command AddServe(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
   AddDuration(cmd, a->duration);
-  return {cmd, [a](agents::Registry& r) {
-            return Serve(a->file, a->bind, a->port, a->port_file, a->output, a->quiet, a->duration, r);
-          }};
+  cmd->add_option("--tap", a->taps,
+                  "ROBOT=NAMESPACE: give the network namespace an interface radio0 with the robot's address on the "
+                  "simulated radio, carried by ns-3 (needs root and /dev/net/tun; sanet launch does this for "
+                  "loop.network: simulated)");
+  return {cmd, [a](agents::Registry& r) { return Serve(*a, r); }};
 }
 
 Command AddAgent(CLI::App& app) {

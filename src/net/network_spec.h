@@ -13,6 +13,8 @@ enum class WifiStandard { k80211b, k80211g, k80211a };
 enum class LossModel { kLogDistance, kFriis, kTwoRayGround };
 enum class DelayModel { kConstantSpeed, kRandom };
 enum class Routing { kNone, kAodv, kOlsr, kDsdv, kDsr };
+// The UDP ports of ns-3's routing protocols.
+constexpr std::uint16_t kAodvPort = 654, kOlsrPort = 698, kDsdvPort = 269;
 
 const char* RoutingName(Routing routing);
 const char* StandardName(WifiStandard standard);

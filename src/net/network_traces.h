@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,12 +23,24 @@ struct Discovery {
   std::optional<double> established;
 };
 
+// What crossed one node's tap (a real IP stack joined to the node), counted at the taps.
+struct TapCounts {
+  std::uint64_t packets_sent = 0, bytes_sent = 0;  // from the real stack into the simulated network
+  std::uint64_t unicast_sent = 0;                  // of those, to one address
+  std::uint64_t unicast_arrived = 0;               // of those, delivered out of the addressee's tap
+  std::uint64_t packets_received = 0, bytes_received = 0;  // out of this tap, to the real stack
+  std::vector<double> delays;  // s, from tap to tap, of the packets received here
+};
+// Every tap's counts, by node id.
+using TapLedger = std::map<NodeId, TapCounts>;
+
 struct NetworkTraces {
   std::string radio, routing;  // names as in the scenario
   double data_rate_mbps = 0, tx_power_dbm = 0;
   std::vector<PacketCounts> counts;  // per node
   std::vector<Discovery> discoveries;
   bool packet_logs = false;  // packets/<node>.csv were written through the results folder
+  TapLedger taps;            // nodes joined to real IP stacks
 };
 
 }  // namespace sanet::net

@@ -13,7 +13,6 @@ namespace sanet::net {
 namespace {
 
 constexpr std::uint8_t kUdp = 17;
-constexpr std::uint16_t kAodvPort = 654, kOlsrPort = 698, kDsdvPort = 269;
 
 const char* EventName(int e) {
   static const char* names[] = {"sent", "received", "forwarded", "dropped"};

@@ -332,6 +332,15 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
   }
 }
 
+void WirelessNetwork::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
+  std::set<std::uint16_t> kept = {spec_.port};
+  if (spec_.routing == Routing::kAodv) kept.insert(kAodvPort);
+  if (spec_.routing == Routing::kOlsr) kept.insert(kOlsrPort);
+  if (spec_.routing == Routing::kDsdv) kept.insert(kDsdvPort);
+  taps_.push_back(
+      std::make_unique<TapPort>(nodes_.Get(id), id, fd, ns3::Mac48Address(tap_mac.c_str()), kept, tap_ledger_));
+}
+
 void WirelessNetwork::SwitchOff(NodeId node) {
   ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy()->SetOffMode();
 }
@@ -388,6 +397,7 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   t.counts = trace_.counts();
   t.discoveries = trace_.discoveries();
   t.packet_logs = spec_.packet_log;
+  t.taps = tap_ledger_;
   return t;
 }
 

@@ -23,6 +23,7 @@
 #include "net/network_spec.h"
 #include "net/packet_trace.h"
 #include "net/routing_view.h"
+#include "net/tap_port.h"
 #include "net/transport.h"
 
 namespace sanet::net {
@@ -36,6 +37,9 @@ class WirelessNetwork : public Transport {
   // A node joins while the run goes (a robot a client spawned), with the next id: the same
   // radio, channel, routing and traces as the others. `node` already carries its mobility.
   void AddNode(ns3::Ptr<ns3::Node> node, const std::string& name, const NodeRadio& radio);
+  // Joins a real IP stack to node `id` through the tap `fd` (net/tap_port.h): the stack uses the
+  // node's address (AddressBook), and its tap interface has the address `tap_mac`.
+  void JoinTap(NodeId id, int fd, const std::string& tap_mac);
 
   void SetReceiver(Receiver receiver) override { receiver_ = std::move(receiver); }
   void Send(NodeId from, NodeId to, const Bytes& payload) override;
@@ -84,6 +88,8 @@ class WirelessNetwork : public Transport {
   std::vector<ns3::Ptr<ns3::PcapFileWrapper>> pcap_;
   std::unique_ptr<ns3::FlowMonitorHelper> flow_helper_;
   ns3::Ptr<ns3::FlowMonitor> flow_monitor_;
+  std::vector<std::unique_ptr<TapPort>> taps_;
+  TapLedger tap_ledger_;
 };
 
 }  // namespace sanet::net

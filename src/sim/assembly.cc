@@ -164,6 +164,11 @@ void Assembly::SwitchOff(NodeId id) {
   Log(id, "switched off");
 }
 
+void Assembly::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
+  if (!wireless_) throw WorldError("a real IP stack joins the simulated radio: the scenario needs a network section");
+  wireless_->JoinTap(id, fd, tap_mac);
+}
+
 std::optional<NodeId> Assembly::Lookup(const std::string& name) const {
   for (NodeId id = 0; id < spec_.nodes.size(); ++id)
     if (spec_.nodes[id].name == name) return id;

@@ -61,6 +61,9 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // Every other node can see it from now on. Returns its id, the next one.
   NodeId Spawn(const NodeSpec& node, const std::string& usarsim_class, const std::string& why);
   std::size_t spawned() const { return spawned_; }
+  // Joins a real IP stack (an agent's network namespace) to node `id`'s radio through the tap
+  // `fd`, whose interface has the MAC address `tap_mac` ("02:..."). Needs ns-3's network.
+  void JoinTap(NodeId id, int fd, const std::string& tap_mac);
   bool IsSpawned(NodeId id) const { return id + spawned_ >= spec_.nodes.size(); }
   // A message that reached a node outside the run's own transport (between agents, over UDP),
   // recorded as delivered.

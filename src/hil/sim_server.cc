@@ -217,28 +217,31 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
 // INIT {Name r} claims a robot that is there (the scenario's, or one spawned before); with a
 // {ClassName} and a name nobody has, it spawns a new robot, as in USARSim.
 void SimServer::Init(Client& c, const ProtocolMessage& m) {
-  if (c.robot) return Error(c, "this connection already drives " + world_.NameOf(*c.robot));
+  if (c.robot) return Error(c, "INIT refused: this connection already drives " + world_.NameOf(*c.robot));
   const std::string* name = m.Get("Name");
   const std::string* usarsim_class = m.Get("ClassName");
   if (name)
-    if (const auto id = world_.Lookup(*name)) return Claim(c, *id);
+    if (const auto id = world_.Lookup(*name)) return Claim(c, *id, usarsim_class);
   if (!usarsim_class)
-    return Error(c, name ? "no robot named '" + *name + "' in this scenario; INIT {ClassName c} {Name " + *name +
-                               "} {Location x,y,z} adds one where the scenario allows it"
-                         : "INIT needs {Name robot} to claim one of the scenario's robots, or {ClassName c} "
+    return Error(c, name ? "INIT refused: no robot named '" + *name + "' in this scenario; INIT {ClassName c} {Name " +
+                               *name + "} {Location x,y,z} adds one where the scenario allows it"
+                         : "INIT refused: give {Name robot} to claim one of the scenario's robots, or {ClassName c} "
                            "{Location x,y,z} to add one");
   if (m.Get("Start"))
     return Error(c,
-                 "INIT {Start tag}: the start poses belong to the scenario's robots; claim one with INIT {Name tag}, "
-                 "or give {Location x,y,z} for a new robot");
+                 "INIT refused: {Start tag}: the start poses belong to the scenario's robots; claim one with INIT "
+                 "{Name tag}, or give {Location x,y,z} for a new robot");
   Spawn(c, *usarsim_class, name ? *name : "", m);
 }
 
-void SimServer::Claim(Client& c, NodeId id) {
+void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
   const std::string name = world_.NameOf(id);
   if (world_.spec().nodes[id].model.kind == robots::ModelKind::kMote)
-    return Error(c, "the name '" + name + "' is taken by a mote of this scenario");
-  if (claimed_[id]) return Error(c, "robot '" + name + "' is already driven by another client");
+    return Error(c, "INIT refused: the name '" + name + "' is taken by a mote of this scenario");
+  if (claimed_[id]) return Error(c, "INIT refused: robot '" + name + "' is already driven by another client");
+  const std::string spawned_as = world_.parts().SpawnedAs(id);
+  if (usarsim_class && !spawned_as.empty() && !sim::SameClass(*usarsim_class, spawned_as))
+    return Error(c, "INIT refused: robot '" + name + "' is a " + spawned_as + ", not a " + *usarsim_class);
   claimed_[id] = true;
   c.robot = id;
   c.next_sensors = c.next_status = world_.Now();
@@ -248,18 +251,22 @@ void SimServer::Claim(Client& c, NodeId id) {
 // {Location} and {Rotation} are in USARSim's frame (y right, yaw clockwise); the robot stands
 // on the ground, whatever z says.
 void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const ProtocolMessage& m) {
+  if (!m.Get("Location"))
+    return Error(
+        c, "INIT refused: {ClassName " + usarsim_class + "} needs {Location x,y,z}: where the new robot stands (m)");
   const auto location = m.Numbers("Location");
   if (!location || location->size() != 3)
-    return Error(c, "INIT {ClassName " + usarsim_class + "} needs {Location x,y,z}: where the new robot stands (m)");
+    return Error(c, "INIT refused: {Location " + *m.Get("Location") + "}: expected three numbers x,y,z");
   const auto rotation = m.Get("Rotation") ? m.Numbers("Rotation") : std::vector<double>{0, 0, 0};
-  if (!rotation || rotation->size() != 3) return Error(c, "INIT {Rotation r,p,y} needs three numbers (rad)");
+  if (!rotation || rotation->size() != 3)
+    return Error(c, "INIT refused: {Rotation " + *m.Get("Rotation") + "}: expected three numbers r,p,y (rad)");
   const sim::SpawnRequest request{usarsim_class, name, {(*location)[0], -(*location)[1], -(*rotation)[2]}};
   const sim::SpawnPlan plan = sim::PlanSpawn(world_.parts(), request);
   if (!plan.node) return Error(c, "INIT refused: " + plan.refusal);
   const NodeId id =
       world_.parts().Spawn(*plan.node, plan.usarsim_class, "spawned as " + plan.usarsim_class + " by client " + c.peer);
   claimed_.resize(world_.NodeCount(), false);
-  Claim(c, id);
+  Claim(c, id, nullptr);
 }
 
 // Through the robot's simulated node, as its controller would drive it: a switched-off robot

@@ -66,7 +66,7 @@ class SimServer : public sim::StepObserver {
   void Read(Client& c);
   void Handle(Client& c, const ProtocolMessage& m);
   void Init(Client& c, const ProtocolMessage& m);
-  void Claim(Client& c, NodeId robot);
+  void Claim(Client& c, NodeId robot, const std::string* usarsim_class);
   void Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const ProtocolMessage& m);
   void Drive(Client& c, const ProtocolMessage& m);
   void SendMessage(Client& c, const ProtocolMessage& m);

@@ -830,7 +830,8 @@ const Fields<Keys>& SpawnClassFields() {
   static const Fields<Keys> fields = [] {
     Fields<Keys> f;
     Key(f, "class", "text", kRequired, "the class name INIT gives in {ClassName}, matched without regard to case");
-    NodeKeys(f, {"model", "body", "sensors", "radio"}, "as for a node (`omni3` or `diffdrive`)");
+    Key(f, "model", "`omni3` or `diffdrive`", kRequired, "see [model](#model); a spawned robot is no mote");
+    NodeKeys(f, {"body", "sensors", "radio"}, "as for a node");
     return f;
   }();
   return fields;

@@ -128,6 +128,7 @@ NodeId Assembly::Spawn(const NodeSpec& node, const std::string& usarsim_class, c
   if (local_) local_->AddNode();
   AddNode(id, nullptr);
   ++spawned_;
+  spawned_as_.push_back(usarsim_class);
   if (events_) events_->Spawned(id, usarsim_class);
   Log(id, why);
   return id;
@@ -162,6 +163,10 @@ void Assembly::SwitchOff(NodeId id) {
   nodes_.at(id)->SwitchOff();
   hosts_.at(id)->SwitchOff();
   Log(id, "switched off");
+}
+
+std::string Assembly::SpawnedAs(NodeId id) const {
+  return IsSpawned(id) && id < spec_.nodes.size() ? spawned_as_.at(id + spawned_ - spec_.nodes.size()) : "";
 }
 
 void Assembly::JoinTap(NodeId id, int fd, const std::string& tap_mac) {

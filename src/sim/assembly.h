@@ -65,6 +65,8 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // `fd`, whose interface has the MAC address `tap_mac` ("02:..."). Needs ns-3's network.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
   bool IsSpawned(NodeId id) const { return id + spawned_ >= spec_.nodes.size(); }
+  // The class a client spawned the robot as; "" for the scenario's nodes.
+  std::string SpawnedAs(NodeId id) const;
   // A message that reached a node outside the run's own transport (between agents, over UDP),
   // recorded as delivered.
   void RecordDelivery(NodeId to, const Message& message) {
@@ -101,6 +103,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   net::WirelessNetwork* wireless_ = nullptr;  // the inner transport, when it is ns-3's network
   net::LocalTransport* local_ = nullptr;      // or when it is the local stand-in
   std::size_t spawned_ = 0;
+  std::vector<std::string> spawned_as_;  // of the spawned robots, in id order
   std::unique_ptr<agents::HostClock> clock_;
   std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
   std::vector<std::unique_ptr<agents::ControllerHost>> hosts_;

@@ -110,13 +110,23 @@ void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
     // Nodes at rest add no rows (a mote appears at the start and the end unless something moves
     // it); the last row of every node is its final pose.
     if (last && (final_row ? last->time >= spec_.duration : Unmoved(p, last->pose))) continue;
-    last = Recorded{p, now};
-    if (spec_.figures && spec_.nodes[id].model.kind != robots::ModelKind::kMote) {
-      trace::Track& track = tracks_[id];
-      track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
-    }
-    trajectories_.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, Name(id).c_str(), p.x, p.y, p.theta));
+    Record(now, id, p);
   }
+}
+
+void Outputs::Record(double now, NodeId id, const Pose2D& p) {
+  last_recorded_[id] = Recorded{p, now};
+  if (spec_.figures && spec_.nodes[id].model.kind != robots::ModelKind::kMote) {
+    trace::Track& track = tracks_[id];
+    track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
+  }
+  trajectories_.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, Name(id).c_str(), p.x, p.y, p.theta));
+}
+
+void Outputs::Spawned(double t, NodeId node, const std::string& usarsim_class, const Pose2D& pose) {
+  spawned_as_[node] = usarsim_class;
+  last_recorded_.resize(spec_.nodes.size());
+  Record(std::min(t, spec_.duration), node, pose);
 }
 
 }  // namespace sanet::sim

@@ -57,7 +57,8 @@ class Outputs {
   void DroppedByImpairment() { ++messages_lost_; }
   // A message that reached a node's radio but not its controller (`why`, e.g. no client).
   void Lost(NodeId to, const Message& message, const std::string& why);
-  void Spawned(NodeId node, const std::string& usarsim_class) { spawned_as_[node] = usarsim_class; }
+  // A robot a client added at time `t`, standing at `pose`: its first trajectory row.
+  void Spawned(double t, NodeId node, const std::string& usarsim_class, const Pose2D& pose);
   void Ended(const std::string& by, double at);
   void Failed(const std::string& why);  // the first failure is kept
   const std::string& failure() const { return failure_; }
@@ -74,7 +75,9 @@ class Outputs {
 
  private:
   void SampleMinDistance(double now, const PoseReader& world);
+  void Record(double now, NodeId id, const Pose2D& p);
   void AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp);
+  void AddTapFiles(const net::NetworkTraces& network, nlohmann::ordered_json& summary);
   void WriteFigures(const std::vector<Pose2D>& final_poses, const std::optional<net::NetworkTraces>& network);
   nlohmann::ordered_json Summary(const RunResult& result, const std::string& scenario_file,
                                  const std::vector<Pose2D>& final_poses) const;

@@ -54,7 +54,38 @@ nlohmann::ordered_json NetworkSummary(const net::NetworkTraces& n) {
             {"time_s", Quartiles(discovery_times)}}}};
 }
 
+std::string TapRow(const std::string& node, const net::TapCounts& c) {
+  char row[320];
+  std::snprintf(row, sizeof row, "%s,%llu,%llu,%llu,%llu,%llu,%llu,%.6f,%.6f", node.c_str(),
+                (unsigned long long)c.packets_sent, (unsigned long long)c.bytes_sent,
+                (unsigned long long)c.packets_received, (unsigned long long)c.bytes_received,
+                (unsigned long long)c.unicast_sent, (unsigned long long)(c.unicast_sent - c.unicast_arrived),
+                Quantile(c.delays, 0.5), Quantile(c.delays, 0.99));
+  return row;
+}
+
+nlohmann::ordered_json TapSummary(const net::TapCounts& c) {
+  return {{"packets_sent", c.packets_sent},         {"bytes_sent", c.bytes_sent},
+          {"packets_received", c.packets_received}, {"bytes_received", c.bytes_received},
+          {"unicast_sent", c.unicast_sent},         {"unicast_lost", c.unicast_sent - c.unicast_arrived},
+          {"delay_s", Quartiles(c.delays)},         {"delay_p99_s", Quantile(c.delays, 0.99)}};
+}
+
 }  // namespace
+
+// taps.csv: what real programs sent and received over the simulated radio (not fingerprinted:
+// real traffic follows the wall clock).
+void Outputs::AddTapFiles(const net::NetworkTraces& network, nlohmann::ordered_json& summary) {
+  if (network.taps.empty()) return;
+  trace::CsvSink& taps = folder_.Csv("taps.csv",
+                                     "node,packets_sent,bytes_sent,packets_received,bytes_received,unicast_sent,"
+                                     "unicast_lost,delay_p50_s,delay_p99_s");
+  for (const auto& [id, counts] : network.taps) {
+    taps.Row(TapRow(Name(id), counts));
+    summary[Name(id)] = TapSummary(counts);
+  }
+  folder_.Commit();
+}
 
 // packets.csv and routes.csv, then the packet logs the network wrote through the folder.
 void Outputs::AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp) {
@@ -85,6 +116,9 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
   if (network) {
     AddNetworkFiles(*network, fp);
     extra["network"] = NetworkSummary(*network);
+    nlohmann::ordered_json taps = nlohmann::ordered_json::object();
+    AddTapFiles(*network, taps);
+    if (!taps.empty()) extra["network"]["taps"] = taps;
   }
   result.fingerprint = fp.Hex();
   if (!folder_.writes()) return;

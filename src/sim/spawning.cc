@@ -10,12 +10,6 @@
 namespace sanet::sim {
 namespace {
 
-bool SameClass(const std::string& a, const std::string& b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
 // Node names end up in CSV rows and file names (packets/<name>.csv), as in scenarios.
 bool SafeName(const std::string& name) {
   if (name.empty() || name.size() > 64 || name == "." || name == "..") return false;
@@ -26,7 +20,7 @@ bool SafeName(const std::string& name) {
 
 std::string Metres(double v) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.2f", v);
+  std::snprintf(text, sizeof text, "%.2f", std::fabs(v) < 0.005 ? 0.0 : v);  // never "-0.00"
   return text;
 }
 
@@ -69,13 +63,13 @@ std::string PlaceRefusal(const Assembly& world, const robots::ModelSpec& model, 
   const Vec2 p = pose.position();
   if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(pose.theta)) return "the pose is not finite";
   if (p.x < low.x || p.x > high.x || p.y < low.y || p.y > high.y)
-    return Point(p) + " is outside the world, which spans x " + Metres(low.x) + " to " + Metres(high.x) + " m and y " +
-           Metres(low.y) + " to " + Metres(high.y) + " m (spawn.region)";
+    return Point(p) + " is outside spawn.region, which spans x " + Metres(low.x) + " to " + Metres(high.x) +
+           " m and y " + Metres(low.y) + " to " + Metres(high.y) + " m (sanet's frame: y to the left)";
   const double radius = robots::FootprintRadius(model);
   for (std::size_t i = 0; i < spec.obstacles.size(); ++i)
     if (DistanceToBox(p, spec.obstacles[i].box) < radius)
-      return Point(p) + " is inside obstacle " + std::to_string(i + 1) + " of the scenario, a " +
-             spec.obstacles[i].kind + " (a body of radius " + Metres(radius) + " m does not fit there)";
+      return Point(p) + " is inside world.obstacles[" + std::to_string(i) + "], a " + spec.obstacles[i].kind +
+             " (a body of radius " + Metres(radius) + " m does not fit there)";
   for (NodeId id = 0; id < world.NodeCount(); ++id) {
     const double gap = Norm(world.TruePose(id).position() - p);
     if (gap < radius + robots::FootprintRadius(spec.nodes[id].model))
@@ -86,6 +80,12 @@ std::string PlaceRefusal(const Assembly& world, const robots::ModelSpec& model, 
 }
 
 }  // namespace
+
+bool SameClass(const std::string& a, const std::string& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
 
 SpawnPlan PlanSpawn(const Assembly& world, const SpawnRequest& request) {
   const RunSpec& spec = world.spec();

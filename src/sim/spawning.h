@@ -30,6 +30,9 @@ struct SpawnPlan {
 
 SpawnPlan PlanSpawn(const Assembly& world, const SpawnRequest& request);
 
+// Whether two class names are the same class (Unreal's names ignore case).
+bool SameClass(const std::string& a, const std::string& b);
+
 // What a spawn section offers when it names no classes: USARSim's Pioneers as diffdrive robots
 // with their laser, and sanet's own models under their names.
 std::vector<SpawnClass> DefaultSpawnClasses();

@@ -141,7 +141,7 @@ void Stepper::Failed(const std::string& why) {
 // A robot joined: it moves with the others from the next physics step (the first one, if it is
 // the world's first vehicle).
 void Stepper::Spawned(NodeId node, const std::string& usarsim_class) {
-  outputs_.Spawned(node, usarsim_class);
+  outputs_.Spawned(Now(), node, usarsim_class, world_.model(node).body().pose());
   if (!world_.model(node).mobile()) return;
   if (vehicles_.empty()) ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
   vehicles_.push_back(node);

@@ -90,7 +90,8 @@ class Spawning(unittest.TestCase):
                            ("class", "INIT {ClassName USARBot.AirRobot} {Name Flyer} {Location 0,8,0}"),
                            ("wall", "INIT {ClassName USARBot.P2AT} {Name Stuck} {Location 10,0,0.2}"),
                            ("outside", "INIT {ClassName USARBot.P2AT} {Name Far} {Location 100,0,0.2}"),
-                           ("crowded", "INIT {ClassName USARBot.P2AT} {Name Close} {Location 2.2,2,0.2}")]:
+                           ("crowded", "INIT {ClassName USARBot.P2AT} {Name Close} {Location 2.2,2,0.2}"),
+                           ("two numbers", "INIT {ClassName USARBot.P2AT} {Name Flat} {Location 5,5}")]:
             c.send(line)
             refusals[case] = c.next("ERR")
         c.send("INIT {ClassName usarbot.p2at} {Name Probe2} {Location 18 -2 0.2} {Rotation 0 0 0}")  # y right
@@ -105,12 +106,14 @@ class Spawning(unittest.TestCase):
         c = Client(cls.port)
         c.send("INIT {ClassName USARBot.P2DX} {Name Probe3} {Location -5,-5,0.2}")
         over = c.next("ERR")
+        c.send("INIT {ClassName sanet.Omni3} {Name Probe1} {Location 0,8,0}")  # its client has gone
+        other_class = c.next("ERR")
         c.send("GETSTARTPOSES")
         poses = c.next("NFO")
         c.send("INIT {Name scout}")
         scout = c.sensor("GroundTruth")
         c.close()
-        cls.results["third"] = {"over": over, "poses": poses, "scout": location(scout)}
+        cls.results["third"] = {"over": over, "poses": poses, "scout": location(scout), "other class": other_class}
 
     def test_a_spawned_robot_stands_where_init_put_it_and_drives(self):
         p = self.results["probe1"]
@@ -136,14 +139,18 @@ class Spawning(unittest.TestCase):
         self.assertIn("taken by a mote", r["mote"])
         self.assertIn("may not be spawned here", r["class"])
         self.assertIn("USARBot.P2DX", r["class"])  # the classes that are allowed
-        self.assertIn("inside obstacle 1", r["wall"])
-        self.assertIn("outside the world", r["outside"])
+        self.assertIn("inside world.obstacles[0], a wall", r["wall"])
+        self.assertIn("outside spawn.region", r["outside"])
+        self.assertIn("expected three numbers x,y,z", r["two numbers"])
+        for refusal in r.values():
+            self.assertTrue(refusal.startswith("ERR {Message INIT refused: "), refusal)
         self.assertIn("taken by Probe1", r["crowded"])
         self.assertIsNotNone(self.results["probe2"]["reply"], "the same connection spawned Probe2 afterwards")
 
     def test_the_scenario_maximum_holds_and_scenario_robots_are_still_claimed(self):
         t = self.results["third"]
         self.assertIn("as many as this scenario allows", t["over"])
+        self.assertIn("robot 'Probe1' is a USARBot.P2DX, not a sanet.Omni3", t["other class"])
         self.assertIn("{StartPoses 1}", t["poses"])
         self.assertIn("scout", t["poses"])
         self.assertNotIn("Probe", t["poses"])
@@ -152,7 +159,10 @@ class Spawning(unittest.TestCase):
     def test_spawned_robots_are_in_the_results(self):
         probe1 = [r for r in self.rows["trajectories"] if r["node"] == "Probe1"]
         self.assertGreater(float(probe1[-1]["x"]) - float(probe1[0]["x"]), 0.8)
-        self.assertAlmostEqual(float(probe1[0]["y"]), -2, delta=0.05)  # sanet's frame: y left
+        # The first row is the pose INIT gave, at the time of the spawn (sanet's frame: y left).
+        self.assertEqual((float(probe1[0]["x"]), float(probe1[0]["y"])), (2.0, -2.0))
+        spawned_at = [r for r in self.rows["log"] if r["node"] == "Probe1" and "spawned as" in r["text"]][0]["time"]
+        self.assertAlmostEqual(float(probe1[0]["time"]), float(spawned_at), delta=0.001)
         messages = self.rows["messages"]
         sent = [r for r in messages if r["from"] == "Probe2" and r["to"] == "m1"]
         echoed = [r for r in messages if r["from"] == "m1" and r["to"] == "Probe2" and r["time_received"]]

@@ -214,14 +214,26 @@ int Agent(const std::string& file, const std::string& robot, const std::string& 
   return hil::RunAgent(sc.run, *id, settings, registry);
 }
 
-int Launch(const std::string& file, const std::string& output, std::optional<int> udp_base,
-           std::optional<double> duration, agents::Registry& registry) {
-  const scenario::Scenario sc = LoadChecked(file, registry);
+struct LaunchArgs {
+  std::string file, output, exec_robot;
+  std::optional<int> udp_base;
+  std::optional<double> duration;
+  std::vector<std::string> command;
+};
+
+int Launch(const LaunchArgs& a, agents::Registry& registry) {
+  const scenario::Scenario sc = LoadChecked(a.file, registry);
+  if (!a.command.empty() && a.exec_robot.empty())
+    throw CLI::ValidationError("--exec", "a command after -- runs in a robot's namespace: name it with --exec ROBOT");
+  if (!a.exec_robot.empty() && a.command.empty())
+    throw CLI::ValidationError("--exec", "give the program to run after --, e.g. --exec r1 -- ping 10.0.0.2");
   hil::LaunchSettings settings;
-  settings.scenario_file = file;
-  settings.output = output.empty() ? sc.output_folder : output;
-  settings.udp_base = udp_base.value_or(sc.run.loop.udp_port);
-  settings.duration = duration;
+  settings.scenario_file = a.file;
+  settings.output = a.output.empty() ? sc.output_folder : a.output;
+  settings.udp_base = a.udp_base.value_or(sc.run.loop.udp_port);
+  settings.duration = a.duration;
+  settings.exec_robot = a.exec_robot;
+  settings.exec_command = a.command;
   return hil::Launch(sc.run, settings);
 }
 
@@ -376,12 +388,7 @@ Command AddAgent(CLI::App& app) {
 }
 
 Command AddLaunch(CLI::App& app) {
-  struct Args {
-    std::string file, output;
-    std::optional<int> udp_base;
-    std::optional<double> duration;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<LaunchArgs>();
   CLI::App* cmd = app.add_subcommand("launch",
                                      "Start a server and one agent process per robot on this machine, run "
                                      "the scenario in real time, stop them all (also on Ctrl-C)");
@@ -390,7 +397,11 @@ Command AddLaunch(CLI::App& app) {
   AddDuration(cmd, a->duration);
   cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
-  return {cmd, [a](agents::Registry& r) { return Launch(a->file, a->output, a->udp_base, a->duration, r); }};
+  cmd->add_option("--exec", a->exec_robot,
+                  "Run the program given after -- beside the agents, in this robot's network namespace (with "
+                  "loop.namespaces or loop.network: simulated); it is stopped when the run ends");
+  cmd->add_option("command", a->command, "The program and its arguments for --exec, after --");
+  return {cmd, [a](agents::Registry& r) { return Launch(*a, r); }};
 }
 
 Command AddList(CLI::App& app) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hil/namespaces.h"
+#include "hil/radio_taps.h"
 
 namespace sanet::hil {
 namespace {
@@ -34,8 +35,40 @@ std::vector<NodeId> RobotsWithControllers(const sim::RunSpec& spec) {
   return robots;
 }
 
+// --exec ROBOT: one of the robots that run as agents.
+std::optional<NodeId> ExecRobot(const sim::RunSpec& spec, const LaunchSettings& settings,
+                                const std::vector<NodeId>& robots) {
+  if (settings.exec_command.empty()) return std::nullopt;
+  for (NodeId id : robots)
+    if (spec.nodes[id].name == settings.exec_robot) return id;
+  std::string names;
+  for (NodeId id : robots) names += (names.empty() ? "" : ", ") + spec.nodes[id].name;
+  throw std::runtime_error("--exec " + settings.exec_robot + ": not one of the robots that run as agents (" + names +
+                           ")");
+}
+
+bool SimulatedRadio(const sim::RunSpec& spec) { return spec.loop.network == sim::LoopNetwork::kSimulated; }
+
+// The simulated radio needs namespaces and taps: without them the run is refused, never moved to
+// other links.
+void RequireSimulatedRadio() {
+  std::string why;
+  if (NetworkNamespaces::Permitted(&why) && RadioTapsPermitted(&why)) return;
+  if (why.find("root") == std::string::npos)
+    why += " (run sanet launch as root, e.g. with sudo, on Linux with network namespaces)";
+  throw std::runtime_error("loop.network: simulated needs network namespaces and tap devices: " + why +
+                           "; it does not fall back to other links");
+}
+
 // Real links between namespaces where the machine allows it; loopback (null) otherwise.
 std::unique_ptr<NetworkNamespaces> MakeNamespaces(const sim::RunSpec& spec, const std::vector<NodeId>& robots) {
+  if (SimulatedRadio(spec)) {
+    RequireSimulatedRadio();
+    auto namespaces = std::make_unique<NetworkNamespaces>(robots, sim::LinkShaping{}, false);
+    std::printf("sanet: each agent in its own network namespace; their traffic crosses the simulated radio (%s)\n",
+                kRadioInterface);
+    return namespaces;
+  }
   if (!spec.loop.namespaces) return nullptr;
   std::string why;
   if (!NetworkNamespaces::Permitted(&why)) {
@@ -75,7 +108,7 @@ std::optional<int> WaitForPort(const std::string& path, pid_t server) {
 // Starts `sanet serve` and returns its process and address. The server tells its port through
 // a file, not through text meant for people.
 std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchSettings& settings,
-                                          const std::string& bind) {
+                                          const std::string& bind, const std::vector<std::string>& taps) {
   char port_dir[] = "/tmp/sanet-launch-XXXXXX";
   if (!::mkdtemp(port_dir)) throw std::runtime_error("cannot create a temporary folder for the server's port");
   const std::string port_file = std::string(port_dir) + "/port";
@@ -84,6 +117,7 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
     std::vector<std::string> args = {"sanet", "serve", settings.scenario_file, "--port", "0",           "--bind",
                                      bind,    "-o",    settings.output,        "-q",     "--port-file", port_file};
     if (settings.duration) args.insert(args.end(), {"--duration", std::to_string(*settings.duration)});
+    for (const std::string& tap : taps) args.insert(args.end(), {"--tap", tap});
     Exec(self, args);
   }
   const std::optional<int> port = WaitForPort(port_file, server);
@@ -96,7 +130,7 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
 }
 
 pid_t StartAgent(const std::string& self, const LaunchSettings& settings, const std::string& robot,
-                 const std::string& address, const std::string& namespace_name) {
+                 const std::string& address, const std::string& namespace_name, const std::string& subnet) {
   const pid_t agent = ::fork();
   if (agent != 0) return agent;
   std::vector<std::string> args = {"sanet",         "agent",
@@ -106,9 +140,19 @@ pid_t StartAgent(const std::string& self, const LaunchSettings& settings, const 
                                    "--udp-base",    std::to_string(settings.udp_base),
                                    "--shared-clock"};
   if (namespace_name.empty()) Exec(self, args);
-  args.insert(args.end(), {"--udp-subnet", NetworkNamespaces::Subnet()});
+  args.insert(args.end(), {"--udp-subnet", subnet});
   args[0] = self;  // ip runs the program itself: its path, not a name, comes first
   args.insert(args.begin(), {"ip", "netns", "exec", namespace_name});
+  Exec("ip", args);
+}
+
+// The user's program, in the robot's namespace when it has one.
+pid_t StartProgram(const std::vector<std::string>& command, const std::string& namespace_name) {
+  const pid_t program = ::fork();
+  if (program != 0) return program;
+  if (namespace_name.empty()) Exec(command.front(), command);
+  std::vector<std::string> args = {"ip", "netns", "exec", namespace_name};
+  args.insert(args.end(), command.begin(), command.end());
   Exec("ip", args);
 }
 
@@ -130,24 +174,35 @@ int WaitForServer(pid_t server) {
 
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
   const std::vector<NodeId> robots = RobotsWithControllers(spec);
+  const std::optional<NodeId> exec_robot = ExecRobot(spec, settings, robots);
   const std::unique_ptr<NetworkNamespaces> namespaces = MakeNamespaces(spec, robots);
   const std::string bind = namespaces ? NetworkNamespaces::ServerAddress() : "127.0.0.1";
   const std::string self = std::filesystem::read_symlink("/proc/self/exe");
   std::signal(SIGINT, [](int) { g_interrupted = 1; });
   std::signal(SIGTERM, [](int) { g_interrupted = 1; });
-  const auto [server, address] = StartServer(self, settings, bind);
-  std::vector<pid_t> agents;
+  std::vector<std::string> taps;
+  if (SimulatedRadio(spec))
+    for (NodeId id : robots) taps.push_back(spec.nodes[id].name + "=" + namespaces->Namespace(id));
+  const auto [server, address] = StartServer(self, settings, bind, taps);
+  const std::string subnet = SimulatedRadio(spec) ? kRadioSubnet : NetworkNamespaces::Subnet();
+  std::vector<pid_t> children;
   for (NodeId id : robots) {
     const std::string& name = spec.nodes[id].name;
     const std::string where = namespaces ? namespaces->Namespace(id) : "";
-    agents.push_back(StartAgent(self, settings, name, address, where));
-    std::printf("  agent %s: process %d%s\n", name.c_str(), agents.back(),
+    children.push_back(StartAgent(self, settings, name, address, where, subnet));
+    std::printf("  agent %s: process %d%s\n", name.c_str(), children.back(),
+                where.empty() ? "" : (" in namespace " + where).c_str());
+  }
+  if (exec_robot) {
+    const std::string where = namespaces ? namespaces->Namespace(*exec_robot) : "";
+    children.push_back(StartProgram(settings.exec_command, where));
+    std::printf("  program %s: process %d%s\n", settings.exec_command.front().c_str(), children.back(),
                 where.empty() ? "" : (" in namespace " + where).c_str());
   }
   std::fflush(stdout);
   const int status = WaitForServer(server);
-  for (pid_t a : agents) ::kill(a, SIGTERM);
-  for (pid_t a : agents) ::waitpid(a, nullptr, 0);
+  for (pid_t a : children) ::kill(a, SIGTERM);
+  for (pid_t a : children) ::waitpid(a, nullptr, 0);
   std::printf("  results in %s/\n", settings.output.c_str());
   return status;
 }

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sim/run_spec.h"
 
@@ -15,6 +16,10 @@ struct LaunchSettings {
   std::string output;  // the results folder
   int udp_base = 47000;
   std::optional<double> duration;  // overrides the scenario's
+  // A program to run beside the agents, in `exec_robot`'s network namespace when there is one
+  // (ended when the run ends).
+  std::string exec_robot;
+  std::vector<std::string> exec_command;
 };
 
 // Returns the server's exit code.

@@ -50,7 +50,7 @@ bool RadioTapsPermitted(std::string* why) {
   return true;
 }
 
-std::string RadioAddress(NodeId node) { return "10.0.0." + std::to_string(node + 1); }
+std::string RadioAddress(NodeId node) { return std::string(kRadioSubnet) + "." + std::to_string(node + 1); }
 
 std::string RadioMac(NodeId node) {
   char mac[32];

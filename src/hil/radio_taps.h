@@ -21,6 +21,7 @@ bool RadioTapsPermitted(std::string* why);
 std::string RadioAddress(NodeId node);
 std::string RadioMac(NodeId node);
 constexpr const char* kRadioInterface = "radio0";
+constexpr const char* kRadioSubnet = "10.0.0";  // robot i is kRadioSubnet.(i+1)
 
 // Opens a tap for every (robot, namespace), moves it into the namespace, configures it and joins
 // it to the robot's node in `world`. Throws std::runtime_error naming the step that failed. The

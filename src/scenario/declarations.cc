@@ -267,10 +267,18 @@ const Fields<sim::LoopSpec>& LoopFields() {
   using sim::LoopSpec;
   static const Fields<LoopSpec> fields = [] {
     Fields<LoopSpec> f;
-    f.Flag("namespaces", Member(&LoopSpec::namespaces), "one network namespace per agent (`sanet launch`)");
+    f.Choice<sim::LoopNetwork>(
+        "network", Member(&LoopSpec::network),
+        {{"host", sim::LoopNetwork::kHost}, {"simulated", sim::LoopNetwork::kSimulated}},
+        "what carries the agents' traffic to each other: the host's links, or the scenario's simulated radio "
+        "(ns-3; each agent in its own namespace with an interface `radio0`; needs root)");
+    f.Flag("namespaces", Member(&LoopSpec::namespaces),
+           "one network namespace per agent (`sanet launch`); always with `network: simulated`");
     f.Custom(
         {"netem", "mapping", "", "none", "see [netem](#netem)", "shaping of each agent's link; needs `namespaces`"},
         [](const Field& v, LoopSpec& s) {
+          if (s.network == sim::LoopNetwork::kSimulated)
+            v.Fail("shapes the host's links; with network: simulated the simulated radio shapes them");
           if (!s.namespaces) v.Fail("shapes the links between namespaces: set loop.namespaces: true");
           NetemFields().Read(v, s.shaping);
         },

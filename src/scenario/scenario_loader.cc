@@ -265,7 +265,18 @@ void ReadEvents(const Field& events, sim::RunSpec& run) {
   }
 }
 
-void ReadLoop(const Field& loop, sim::RunSpec& run) { LoopFields().Read(loop, run.loop); }
+void ReadLoop(const Field& loop, sim::RunSpec& run) {
+  LoopFields().Read(loop, run.loop);
+  if (run.loop.network != sim::LoopNetwork::kSimulated) return;
+  const Field network = loop.Require("network");
+  if (!run.network) network.Fail("simulated needs the scenario's network section: the radio that carries the agents");
+  const std::uint16_t port = run.loop.udp_port;
+  if (port == run.network->port || port == net::kAodvPort || port == net::kOlsrPort || port == net::kDsdvPort)
+    (loop.Get("udp_port") ? *loop.Get("udp_port") : network)
+        .Fail("the agents' UDP port " + std::to_string(port) +
+              " is taken in the simulated network (network.port, or a routing protocol's)");
+  run.loop.namespaces = true;
+}
 
 void ReadEnd(const Field& end, sim::RunSpec& run) {
   end.Require("when_logged");

@@ -53,9 +53,16 @@ struct LinkShaping {
   double rate = 0;    // bit/s, 0 for no limit
 };
 
+// What carries the agents' own traffic to each other in `sanet launch`.
+enum class LoopNetwork {
+  kHost,       // the host's links: loopback, or veth pairs and a bridge between namespaces
+  kSimulated,  // the scenario's simulated radio (ns-3), through a tap in each agent's namespace
+};
+
 // How `sanet launch` connects the agents.
 struct LoopSpec {
-  bool namespaces = false;  // each agent in its own network namespace (falls back to loopback)
+  LoopNetwork network = LoopNetwork::kHost;
+  bool namespaces = false;  // each agent in its own network namespace (always with kSimulated)
   LinkShaping shaping;
   std::uint16_t udp_port = 47000;  // loopback: node i uses port + i; namespaces: every node this port
 };

@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""Real programs over the simulated radio (loop.network: simulated): each agent's namespace has a
+tap, radio0, whose packets cross ns-3's 802.11 network between the robots' simulated positions.
+- ping from one robot to another stops when the second drives out of range and resumes when it
+  comes back; the largest distance at which it got through agrees with the log-distance model;
+- a real UDP datagram from A to C crosses mote B, the only route, and B's forwarded count shows it;
+- a TCP stream (iperf3) carries data at a rate bounded by the simulated 802.11b data rate.
+Needs root and /dev/net/tun: elsewhere it says why and is skipped (exit 77)."""
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+SANET = sys.argv.pop(1)
+TX_POWER = 0  # dBm
+RANGE = 10 ** ((TX_POWER - 46.6777 + 82) / 30)  # m: log-distance (exponent 3, 46.6777 dB at 1 m) meets -82 dBm
+
+PING = f"""duration: 28
+network: {{tx_power: {TX_POWER}, routing: aodv}}
+loop: {{network: simulated}}
+nodes:
+  - {{name: base, model: omni3, pose: [0, 0, 0], controller: {{name: constant_velocity, params: {{vx: 0}}}}}}
+  - name: rover
+    model: omni3
+    pose: [10, 0, 0]
+    controller: {{name: waypoint, params: {{waypoints: [[20, 0], [10, 0]], speed: 1.0}}}}
+"""
+
+RELAY = f"""duration: 14
+network: {{tx_power: {TX_POWER}, routing: aodv}}
+loop: {{network: simulated}}
+nodes:
+  - {{name: a, model: omni3, pose: [0, 0, 0], controller: {{name: constant_velocity, params: {{vx: 0}}}}}}
+  - {{name: b, model: mote, pose: [12, 0, 0]}}
+  - {{name: c, model: omni3, pose: [24, 0, 0], controller: {{name: constant_velocity, params: {{vx: 0}}}}}}
+"""
+
+TCP = """duration: 14
+network: {radio: 802.11b, data_rate: 11, routing: aodv}
+loop: {network: simulated}
+nodes:
+  - {name: a, model: omni3, pose: [0, 0, 0], controller: {name: constant_velocity, params: {vx: 0}}}
+  - {name: b, model: omni3, pose: [5, 0, 0], controller: {name: constant_velocity, params: {vx: 0}}}
+"""
+
+LISTEN = """import socket, sys
+s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+s.bind(("10.0.0.3", 5000))
+s.settimeout(12)
+try:
+    while True:
+        data, peer = s.recvfrom(2048)
+        print(peer[0], data.decode(), flush=True)
+except socket.timeout:
+    pass
+"""
+
+SEND = """import socket, time
+s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+for i in range(30):
+    s.sendto(b"hello %d" % i, ("10.0.0.3", 5000))
+    time.sleep(0.1)
+"""
+
+
+def permitted():
+    if os.geteuid() != 0:
+        return "not root"
+    if not os.path.exists("/dev/net/tun"):
+        return "no /dev/net/tun"
+    return None
+
+
+class Launch:
+    """`sanet launch` running in the background; knows each agent's namespace."""
+
+    def __init__(self, folder, scenario, *extra):
+        self.out = os.path.join(folder, "out")
+        path = os.path.join(folder, "scenario.yaml")
+        with open(path, "w") as f:
+            f.write(scenario)
+        self.process = subprocess.Popen([SANET, "launch", path, "-o", self.out, *extra], stdout=subprocess.PIPE,
+                                        stderr=subprocess.STDOUT, text=True)
+        self.namespaces, self.lines = {}, []
+        for line in self.process.stdout:
+            self.lines.append(line)
+            m = re.match(r"\s*agent (\S+): process \d+ in namespace (\S+)", line)
+            if m:
+                self.namespaces[m.group(1)] = m.group(2)
+            if len(self.namespaces) == scenario.count("controller:"):  # every agent has started
+                break
+
+    def run_in(self, robot, *command, **kwargs):
+        return subprocess.run(["ip", "netns", "exec", self.namespaces[robot], *command], **kwargs)
+
+    def finish(self):
+        rest = self.process.communicate(timeout=90)[0]
+        self.lines.append(rest)
+        assert self.process.returncode == 0, "".join(self.lines)
+        return self.out
+
+
+def rows(folder, name):
+    with open(os.path.join(folder, name)) as f:
+        return list(csv.DictReader(f))
+
+
+class Refusal(unittest.TestCase):
+    def test_without_privileges_the_run_says_what_is_missing_and_refuses(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            os.chmod(tmp, 0o777)
+            path = os.path.join(tmp, "s.yaml")
+            with open(path, "w") as f:
+                f.write(TCP)
+            os.chmod(path, 0o644)
+            # As an unprivileged user (dropping root's rights if the test has them).
+            drop = ["setpriv", "--reuid=65534", "--regid=65534", "--clear-groups"] if os.geteuid() == 0 else []
+            out = subprocess.run(drop + [SANET, "launch", path, "-o", os.path.join(tmp, "out")], capture_output=True,
+                                 text=True, timeout=60)
+            self.assertNotEqual(out.returncode, 0)
+            self.assertIn("loop.network: simulated needs network namespaces and tap devices", out.stderr)
+            self.assertIn("root", out.stderr)
+            self.assertIn("does not fall back", out.stderr)
+            self.assertFalse(os.path.exists(os.path.join(tmp, "out")), "nothing runs")
+
+
+@unittest.skipIf(permitted(), f"the simulated radio needs root and /dev/net/tun ({permitted()})")
+class SimulatedRadio(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_ping_stops_out_of_range_and_resumes(self):
+        run = Launch(self.tmp.name, PING, "--exec", "base", "--", "ping", "-i", "0.1", "-W", "1", "-q", "10.0.0.2")
+        out = run.finish()
+        track = [(float(r["time"]), float(r["x"])) for r in rows(out, "trajectories.csv") if r["node"] == "rover"]
+
+        def x_at(t):
+            return max((p for p in track if p[0] <= t), default=track[0])[1]
+
+        pings = [float(r["time"]) for r in rows(out, "packets/rover.csv")
+                 if r["event"] == "received" and r["protocol"] == "ip" and r["peer"] == "base"]
+        self.assertGreater(len(pings), 50, "pings should reach the rover while it is near")
+        farthest = max(x_at(t) for t in pings)
+        self.assertLess(abs(farthest - RANGE) / RANGE, 0.10, f"pings got through up to {farthest:.2f} m, model {RANGE:.2f} m")
+        gaps = [(a, b) for a, b in zip(pings, pings[1:]) if b - a > 2]
+        self.assertEqual(len(gaps), 1, f"one silence while out of range, not {gaps}")
+        self.assertGreater(x_at(gaps[0][0]), RANGE * 0.9)
+        self.assertGreater(max(x for _, x in track), RANGE * 1.2, "the rover left the range")
+        self.assertLess(x_at(pings[-1]), RANGE, "pings resumed after the rover came back")
+        taps = {r["node"]: r for r in rows(out, "taps.csv")}
+        self.assertGreater(int(taps["base"]["unicast_lost"]), 20, "requests sent while out of range are lost")
+        self.assertEqual(taps["rover"]["packets_received"], taps["rover"]["packets_sent"], "every request answered")
+
+    def test_a_datagram_crosses_a_mote_that_is_the_only_route(self):
+        self.assertGreater(24, RANGE * 1.2)
+        run = Launch(self.tmp.name, RELAY)
+        listener = subprocess.Popen(["ip", "netns", "exec", run.namespaces["c"], sys.executable, "-c", LISTEN],
+                                    stdout=subprocess.PIPE, text=True)
+        time.sleep(0.5)
+        run.run_in("a", sys.executable, "-c", SEND, check=True, timeout=30)
+        heard = listener.communicate(timeout=30)[0].split("\n")
+        out = run.finish()
+        heard = [h for h in heard if h.startswith("10.0.0.1 hello")]
+        self.assertGreaterEqual(len(heard), 25, heard)
+        packets = {r["node"]: r for r in rows(out, "packets.csv")}
+        self.assertGreaterEqual(int(packets["b"]["forwarded"]), len(heard))
+        self.assertEqual(int(packets["a"]["forwarded"]), 0)
+
+    def test_tcp_is_bounded_by_the_simulated_data_rate(self):
+        run = Launch(self.tmp.name, TCP, "--exec", "b", "--", "iperf3", "-s", "-1")
+        time.sleep(1)
+        result = run.run_in("a", "iperf3", "-c", "10.0.0.2", "-t", "6", "-J", capture_output=True, text=True,
+                            timeout=60)
+        out = run.finish()
+        mbps = json.loads(result.stdout)["end"]["sum_received"]["bits_per_second"] / 1e6
+        self.assertLess(mbps, 11, "802.11b at 11 Mbit/s cannot carry more")
+        self.assertGreater(mbps, 1, "the stream should flow")
+        with open(os.path.join(out, "summary.json")) as f:
+            taps = json.load(f)["network"]["taps"]
+        self.assertGreater(taps["b"]["bytes_received"], 6 * 1e6 / 8, "the stream crossed b's tap")
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

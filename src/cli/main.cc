@@ -23,6 +23,7 @@
 #include "hil/realtime_priority.h"
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
+#include "hil/wss_server.h"
 #include "robots/node_model.h"
 #include "scenario/catalogue.h"
 #include "scenario/effective_scenario.h"
@@ -116,8 +117,9 @@ int Sweep(const std::string& file, const std::string& seeds_text, const std::str
 }
 
 struct ServeArgs {
-  std::string file, bind = "127.0.0.1", output, port_file;
+  std::string file, bind = "127.0.0.1", output, port_file, wss_port_file;
   int port = 3000;
+  std::optional<int> wss_port;
   bool quiet = false;
   std::optional<double> duration;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
@@ -142,6 +144,32 @@ void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
   }
 }
 
+void WritePortFile(const std::string& path, std::uint16_t port, const char* option) {
+  try {
+    if (!path.empty()) WriteFileAtomically(path, std::to_string(port) + "\n");
+  } catch (const std::runtime_error&) {
+    throw CLI::ValidationError(option, "cannot write " + path + " (does its folder exist?)");
+  }
+}
+
+// --wss-port: a Wireless Simulation Server beside the robot protocol's server.
+std::unique_ptr<hil::WssServer> StartWss(sim::World& world, const ServeArgs& a) {
+  if (!a.wss_port) return nullptr;
+  hil::WssSettings settings;
+  settings.bind = a.bind;
+  settings.port = static_cast<std::uint16_t>(*a.wss_port);
+  std::unique_ptr<hil::WssServer> wss;
+  try {
+    wss = std::make_unique<hil::WssServer>(world, settings);
+  } catch (const std::runtime_error& e) {
+    throw CLI::ValidationError("--wss-port", e.what());
+  }
+  WritePortFile(a.wss_port_file, wss->port(), "--wss-port-file");
+  wss->Start();
+  std::printf("sanet: wireless simulation server (WSS) on %s:%u\n", a.bind.c_str(), wss->port());
+  return wss;
+}
+
 int Serve(const ServeArgs& a, agents::Registry& registry) {
   const std::string &file = a.file, &bind = a.bind, &port_file = a.port_file, &output = a.output;
   const int port = a.port;
@@ -163,11 +191,8 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   }
   hil::SimServer& server = *listening;
   JoinTaps(world, a.taps);
-  try {
-    if (!port_file.empty()) WriteFileAtomically(port_file, std::to_string(server.port()) + "\n");
-  } catch (const std::runtime_error&) {
-    throw CLI::ValidationError("--port-file", "cannot write " + port_file + " (does its folder exist?)");
-  }
+  const std::unique_ptr<hil::WssServer> wss = StartWss(world, a);
+  WritePortFile(port_file, server.port(), "--port-file");
   server.Start();
   std::signal(SIGINT, [](int) { hil::RequestStop(); });
   std::signal(SIGTERM, [](int) { hil::RequestStop(); });
@@ -181,6 +206,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
     j["real_time_lag"] = server.LagSummary();
     j["real_time_lag"]["scheduling"] = scheduling;
     j["agents"] = server.AgentStats();
+    if (wss) j["wss"] = wss->Summary();
     server.WriteAgentTable(folder);
   };
   const sim::RunResult r = world.Run(options);
@@ -358,6 +384,11 @@ Command AddServe(CLI::App& app) {
                   "ROBOT=NAMESPACE: give the network namespace an interface radio0 with the robot's address on the "
                   "simulated radio, carried by ns-3 (needs root and /dev/net/tun; sanet launch does this for "
                   "loop.network: simulated)");
+  cmd->add_option("--wss-port", a->wss_port,
+                  "Also serve USARSim's Wireless Simulation Server protocol on this TCP port (its default is 50000; "
+                  "0: any free port), with signal strengths and links from the simulated radio")
+      ->check(CLI::Range(0, 65535));
+  cmd->add_option("--wss-port-file", a->wss_port_file, "Once listening, write the WSS port number to this file");
   return {cmd, [a](agents::Registry& r) { return Serve(*a, r); }};
 }
 

@@ -17,6 +17,7 @@
 
 #include "core/statistics.h"
 #include "hil/message_lines.h"
+#include "hil/sockets.h"
 #include "sim/spawning.h"
 
 namespace sanet::hil {
@@ -37,24 +38,7 @@ void RequestStop() { g_stop = 1; }
 SimServer::SimServer(sim::World& world, ServerSettings settings)
     : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
   world_.parts().SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
-  listener_ = ::socket(AF_INET, SOCK_STREAM, 0);
-  if (listener_ < 0) throw std::runtime_error(std::string("cannot open a socket: ") + std::strerror(errno));
-  const int yes = 1;
-  ::setsockopt(listener_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(settings_.port);
-  if (::inet_pton(AF_INET, settings_.bind.c_str(), &address.sin_addr) != 1)
-    throw std::runtime_error("not an IPv4 address to bind to: " + settings_.bind);
-  if (::bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(listener_, 16) != 0) {
-    const std::string why = std::strerror(errno);
-    ::close(listener_);
-    throw std::runtime_error("cannot listen on " + settings_.bind + ":" + std::to_string(settings_.port) + ": " + why);
-  }
-  ::fcntl(listener_, F_SETFL, O_NONBLOCK);
-  socklen_t size = sizeof address;
-  ::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &size);
-  port_ = ntohs(address.sin_port);
+  listener_ = ListenTcp(settings_.bind, settings_.port, 16, &port_);
 }
 
 SimServer::~SimServer() {

@@ -13,8 +13,11 @@
 #include <ns3/internet-stack-helper.h>
 #include <ns3/ipv4-address-helper.h>
 #include <ns3/ipv4-static-routing-helper.h>
+#include <ns3/mobility-model.h>
 #include <ns3/olsr-helper.h>
 #include <ns3/olsr-routing-protocol.h>
+#include <ns3/pointer.h>
+#include <ns3/propagation-loss-model.h>
 #include <ns3/simulator.h>
 #include <ns3/string.h>
 #include <ns3/udp-socket-factory.h>
@@ -70,7 +73,8 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
       names_(names),
       trace_(spec_, book_, std::move(names)),
       next_sequence_(nodes.GetN(), 0),
-      floods_seen_(nodes.GetN()) {
+      floods_seen_(nodes.GetN()),
+      radios_(radios) {
   ConfigureRadios();
   // One node at a time: a node may transmit with its own power.
   for (NodeId id = 0; id < nodes_.GetN(); ++id) devices_.Add(InstallRadio(nodes_.Get(id), radios.at(id)));
@@ -177,6 +181,7 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   trace_.AddNode(name);
   next_sequence_.push_back(0);
   floods_seen_.emplace_back();
+  radios_.push_back(radio);
   const ns3::NetDeviceContainer device = InstallRadio(node, radio);
   devices_.Add(device);
   internet_.Install(node);
@@ -339,6 +344,15 @@ void WirelessNetwork::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
   if (spec_.routing == Routing::kDsdv) kept.insert(kDsdvPort);
   taps_.push_back(
       std::make_unique<TapPort>(nodes_.Get(id), id, fd, ns3::Mac48Address(tap_mac.c_str()), kept, tap_ledger_));
+}
+
+double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
+  auto channel = ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel());
+  ns3::PointerValue loss;
+  channel->GetAttribute("PropagationLossModel", loss);
+  return loss.Get<ns3::PropagationLossModel>()->CalcRxPower(radios_.at(from).tx_power.value_or(spec_.tx_power),
+                                                            nodes_.Get(from)->GetObject<ns3::MobilityModel>(),
+                                                            nodes_.Get(to)->GetObject<ns3::MobilityModel>());
 }
 
 void WirelessNetwork::SwitchOff(NodeId node) {

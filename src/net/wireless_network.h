@@ -40,6 +40,11 @@ class WirelessNetwork : public Transport {
   // Joins a real IP stack to node `id` through the tap `fd` (net/tap_port.h): the stack uses the
   // node's address (AddressBook), and its tap interface has the address `tap_mac`.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
+  // The power (dBm) at which `to` receives `from`'s transmissions now: the channel's own
+  // propagation loss model at the nodes' positions (what ns-3 itself computes for each frame).
+  double ReceivedPower(NodeId from, NodeId to) const;
+  // Frames received weaker than this (dBm) are not detected.
+  double DetectionThreshold() const { return spec_.rx_threshold; }
 
   void SetReceiver(Receiver receiver) override { receiver_ = std::move(receiver); }
   void Send(NodeId from, NodeId to, const Bytes& payload) override;
@@ -88,6 +93,7 @@ class WirelessNetwork : public Transport {
   std::vector<ns3::Ptr<ns3::PcapFileWrapper>> pcap_;
   std::unique_ptr<ns3::FlowMonitorHelper> flow_helper_;
   ns3::Ptr<ns3::FlowMonitor> flow_monitor_;
+  std::vector<NodeRadio> radios_;  // per node
   std::vector<std::unique_ptr<TapPort>> taps_;
   TapLedger tap_ledger_;
 };

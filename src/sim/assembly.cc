@@ -169,6 +169,11 @@ std::string Assembly::SpawnedAs(NodeId id) const {
   return IsSpawned(id) && id < spec_.nodes.size() ? spawned_as_.at(id + spawned_ - spec_.nodes.size()) : "";
 }
 
+std::optional<Assembly::Signal> Assembly::SignalBetween(NodeId from, NodeId to) const {
+  if (!wireless_) return std::nullopt;
+  return Signal{wireless_->ReceivedPower(from, to), wireless_->DetectionThreshold()};
+}
+
 void Assembly::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
   if (!wireless_) throw WorldError("a real IP stack joins the simulated radio: the scenario needs a network section");
   wireless_->JoinTap(id, fd, tap_mac);

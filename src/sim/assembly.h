@@ -64,6 +64,12 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // Joins a real IP stack (an agent's network namespace) to node `id`'s radio through the tap
   // `fd`, whose interface has the MAC address `tap_mac` ("02:..."). Needs ns-3's network.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
+  // How strongly `to` hears `from` now (dBm), and the radio's detection threshold: from ns-3's
+  // channel at the bodies' positions. Empty without ns-3's network.
+  struct Signal {
+    double received_dbm, threshold_dbm;
+  };
+  std::optional<Signal> SignalBetween(NodeId from, NodeId to) const;
   bool IsSpawned(NodeId id) const { return id + spawned_ >= spec_.nodes.size(); }
   // The class a client spawned the robot as; "" for the scenario's nodes.
   std::string SpawnedAs(NodeId id) const;

@@ -52,14 +52,15 @@ def field(line, key):
     return m.group(1) if m else None
 
 
-def serve(sanet, scenario_text, folder):
-    """Starts `sanet serve` on the scenario in `folder`; returns (process, port, results folder)."""
+def serve(sanet, scenario_text, folder, *extra):
+    """Starts `sanet serve` on the scenario in `folder` (with `extra` options); returns (process,
+    port, results folder) once it listens."""
     path = os.path.join(folder, "scenario.yaml")
     with open(path, "w") as f:
         f.write(scenario_text)
     port_file = os.path.join(folder, "port")
     out = os.path.join(folder, "out")
-    server = subprocess.Popen([sanet, "serve", path, "--port", "0", "--port-file", port_file, "-o", out, "-q"],
+    server = subprocess.Popen([sanet, "serve", path, "--port", "0", "--port-file", port_file, "-o", out, "-q", *extra],
                               stdout=subprocess.DEVNULL)
     for _ in range(1000):
         if os.path.exists(port_file):

@@ -1,0 +1,49 @@
+#include "hil/sockets.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace sanet::hil {
+
+int ListenTcp(const std::string& bind, std::uint16_t port, int backlog, std::uint16_t* bound) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) throw std::runtime_error(std::string("cannot open a socket: ") + std::strerror(errno));
+  const int yes = 1;
+  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(port);
+  if (::inet_pton(AF_INET, bind.c_str(), &address.sin_addr) != 1) {
+    ::close(fd);
+    throw std::runtime_error("not an IPv4 address to bind to: " + bind);
+  }
+  if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(fd, backlog) != 0) {
+    const std::string why = std::strerror(errno);
+    ::close(fd);
+    throw std::runtime_error("cannot listen on " + bind + ":" + std::to_string(port) + ": " + why);
+  }
+  ::fcntl(fd, F_SETFL, O_NONBLOCK);
+  socklen_t size = sizeof address;
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &size);
+  *bound = ntohs(address.sin_port);
+  return fd;
+}
+
+std::string PeerOf(int fd, std::string* host) {
+  sockaddr_in peer{};
+  socklen_t size = sizeof peer;
+  ::getpeername(fd, reinterpret_cast<sockaddr*>(&peer), &size);
+  char text[INET_ADDRSTRLEN] = "?";
+  ::inet_ntop(AF_INET, &peer.sin_addr, text, sizeof text);
+  if (host) *host = text;
+  return std::string(text) + ":" + std::to_string(ntohs(peer.sin_port));
+}
+
+}  // namespace sanet::hil

@@ -1,0 +1,16 @@
+// Small helpers for the servers' non-blocking TCP sockets.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace sanet::hil {
+
+// A non-blocking TCP socket listening on `bind`:`port` (0: any free port); sets `bound` to the
+// port it got. Throws std::runtime_error naming the address and the reason.
+int ListenTcp(const std::string& bind, std::uint16_t port, int backlog, std::uint16_t* bound);
+
+// "host:port" of a connected socket's peer; its host alone in `host` if given.
+std::string PeerOf(int fd, std::string* host = nullptr);
+
+}  // namespace sanet::hil

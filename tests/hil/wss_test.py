@@ -1,0 +1,181 @@
+#!/usr/bin/env python3
+"""`sanet serve --wss-port`: a client of USARSim's Wireless Simulation Server protocol, written from
+docs/protocol.md with the standard library only, registers two robots, reads a signal strength
+that falls with their simulated distance as ns-3's log-distance model says, opens a relayed TCP
+connection to the other robot's port and talks through it, learns who is behind it (REVERSEDNS),
+and sees it cut, and the relay port closed, once the robot drives out of range. Errors are
+answered as WSS answers them."""
+import math
+import os
+import socket
+import sys
+import tempfile
+import threading
+import time
+import unittest
+import warnings
+
+from protocol_client import Client, field, serve
+
+SANET = sys.argv.pop(1)
+TX_POWER = 0
+RANGE = 10 ** ((TX_POWER - 46.6777 + 82) / 30)  # m, where log-distance loss meets the -82 dBm threshold
+SCENARIO = f"""duration: 25
+network: {{tx_power: {TX_POWER}, routing: aodv}}
+nodes:
+  - {{name: r1, model: omni3, pose: [0, 0, 0]}}
+  - {{name: r2, model: omni3, pose: [8, 0, 0]}}
+"""
+
+
+def model_dbm(distance):
+    return TX_POWER - 46.6777 - 30 * math.log10(distance)
+
+
+class Wss:
+    """A WSS control connection."""
+
+    def __init__(self, port):
+        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
+        self.file = self.sock.makefile("rwb")
+
+    def ask(self, line):
+        self.file.write(line.encode() + b"\r\n")
+        self.file.flush()
+        return self.file.readline().decode().strip()
+
+
+def echo_server():
+    """A robot's program listening on a port: echoes what it gets. Returns (port, peers seen)."""
+    listener = socket.socket()
+    listener.bind(("127.0.0.1", 0))
+    listener.listen()
+    peers = []
+
+    def serve_forever():
+        while True:
+            conn, peer = listener.accept()
+            peers.append(peer[1])
+            threading.Thread(target=lambda c=conn: [c.sendall(d) for d in iter(lambda: c.recv(4096), b"")],
+                             daemon=True).start()
+
+    threading.Thread(target=serve_forever, daemon=True).start()
+    return listener.getsockname()[1], peers
+
+
+class WirelessSimulationServer(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        path = os.path.join(cls.tmp.name, "wss")
+        os.makedirs(path)
+        port_file = os.path.join(path, "wss-port")
+        cls.server, cls.port, cls.out = serve(SANET, SCENARIO, path, "--wss-port", "0", "--wss-port-file", port_file)
+        with open(port_file) as f:
+            cls.wss_port = int(f.read())
+        cls.r2_port, cls.r2_peers = echo_server()
+        cls.errors = cls.try_errors()
+        cls.run_the_story()
+        cls.server.wait(timeout=60)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    @classmethod
+    def try_errors(cls):
+        w = Wss(cls.wss_port)
+        errors = {"before init": w.ask("GETSS {Robot r2}"), "bad ports": w.ask("INIT {Robot x} {Port five}"),
+                  "no name": w.ask("INIT {Robot } {Port 5000}"), "not in world": w.ask("INIT {Robot ghost} {Port 5000}")}
+        w.sock.close()
+        return errors
+
+    @classmethod
+    def run_the_story(cls):
+        w1, w2 = Wss(cls.wss_port), Wss(cls.wss_port)
+        cls.init = [w1.ask("INIT {Robot r1} {Port 4999}"), w2.ask(f"INIT {{Robot r2}} {{Port {cls.r2_port}}}")]
+        cls.errors.update({"taken": Wss(cls.wss_port).ask("INIT {Robot r1} {Port 5000}"),
+                           "self": w1.ask("GETSS {Robot r1}"), "unknown": w1.ask("GETSS {Robot nobody}"),
+                           "dns unknown": w1.ask("DNS {Robot nobody}"), "dns self": w1.ask("DNS {Robot r1}"),
+                           "dns port": w1.ask("DNS {Robot r2} {Port 1}"), "second init": w1.ask("INIT {Robot r1} {Port 1}"),
+                           "reverse unknown": w2.ask("REVERSEDNS {Port 1}")})
+        dns = w1.ask("DNS {Robot r2}")
+        cls.relay_port = int(field(dns, "Port"))
+        cls.dns_again = w1.ask(f"DNS {{Robot r2}} {{Port {cls.r2_port}}}")
+        relayed = socket.create_connection(("127.0.0.1", cls.relay_port), timeout=5)
+        relayed.sendall(b"hello r2")
+        cls.echo = relayed.recv(100)
+        cls.reverse = w2.ask(f"REVERSEDNS {{Port {cls.r2_peers[0]}}}")
+        # Drive r2 away along +x while asking for the signal and watching the relayed connection.
+        driver = Client(cls.port)
+        driver.send("INIT {Name r2}")
+        driver.send("DRIVE {LinearVelocity 1.0}")
+        cls.samples, cls.cut_at = [], None
+        relayed.settimeout(0.05)
+        while True:
+            x = float(field(driver.sensor("GroundTruth"), "Location").split(",")[0])
+            strength = field(w1.ask("GETSS {Robot r2}"), "Strength")
+            cls.samples.append((x, float(strength)))
+            if cls.cut_at is None:
+                try:
+                    if relayed.recv(100) == b"":
+                        cls.cut_at = x
+                except socket.timeout:
+                    pass
+                except ConnectionError:
+                    cls.cut_at = x
+            if x > RANGE + 2:
+                break
+        try:
+            socket.create_connection(("127.0.0.1", cls.relay_port), timeout=2).close()
+            cls.relay_closed = False
+        except ConnectionRefusedError:
+            cls.relay_closed = True
+        driver.send("DRIVE {LinearVelocity -1.0}")  # back into range: the relay listens again
+        while float(field(driver.sensor("GroundTruth"), "Location").split(",")[0]) > RANGE - 3:
+            pass
+        time.sleep(0.1)
+        again = socket.create_connection(("127.0.0.1", cls.relay_port), timeout=5)
+        again.sendall(b"back")
+        cls.echo_again = again.recv(100)
+        driver.close()
+
+    def test_registration_and_errors_are_answered_as_wss_does(self):
+        self.assertEqual(self.init, ["INITREPLY {Status OK}"] * 2)
+        e = self.errors
+        self.assertEqual(e["before init"], "ERROR {Reason Must.Use.INIT.Method.First}")
+        self.assertEqual(e["bad ports"], "ERROR {Reason Ports.List.Must.Be.Integer}")
+        self.assertEqual(e["no name"], "ERROR {Reason Robot.Name.Must.Not.Be.Empty}")
+        self.assertEqual(e["not in world"], "ERROR {Reason Robot.Not.In.Simulation}")
+        self.assertEqual(e["taken"], "ERROR {Reason Robot.Alread.Exists}")
+        self.assertEqual(e["self"], "SS {Robot r1} {Strength INF} {Error SS.To.Self}")
+        self.assertEqual(e["unknown"], "SS {Robot nobody} {Strength NaN} {Error Robot.Does.Not.Exist}")
+        self.assertEqual(e["dns unknown"], "DNSREPLY {Robot nobody} {Port -1} {Error NoSuchRobot}")
+        self.assertEqual(e["dns self"], "DNSREPLY {Robot r1} {Port -1} {Error NoSuchRobot}")
+        self.assertEqual(e["dns port"], "DNSREPLY {Robot r2} {Port -1} {Error RobotDoesNotListenOnThisPort}")
+        self.assertEqual(e["second init"], "ERROR {Reason Method.Unknown.Or.Can.INIT.only.once}")
+        self.assertEqual(e["reverse unknown"], "REVERSEDNSREPLY {Port 1} {Error UnknownOrIllegalPort}")
+
+    def test_a_relayed_connection_reaches_the_robot_and_says_who_calls(self):
+        self.assertEqual(self.echo, b"hello r2")
+        self.assertEqual(field(self.dns_again, "Port"), str(self.relay_port), "the same pair gets the same port")
+        self.assertEqual(self.reverse, f"REVERSEDNSREPLY {{Port {self.r2_peers[0]}}} {{Robot r1}}")
+
+    def test_signal_strength_falls_with_distance_as_the_radio_model_says(self):
+        xs = [x for x, _ in self.samples]
+        self.assertGreater(max(xs) - min(xs), 5)
+        for x, dbm in self.samples:
+            self.assertAlmostEqual(dbm, model_dbm(x), delta=0.5)  # positions move between the two reads
+        strengths = [s for _, s in self.samples]
+        self.assertLess(strengths[-1], strengths[0] - 5)
+
+    def test_the_connection_is_cut_out_of_range_and_the_relay_comes_back(self):
+        self.assertIsNotNone(self.cut_at, "the relayed connection should end when the link does")
+        self.assertLess(abs(self.cut_at - RANGE), 0.5, f"cut at {self.cut_at:.2f} m, range {RANGE:.2f} m")
+        self.assertTrue(self.relay_closed, "the relay port stops listening while the link is down")
+        self.assertEqual(self.echo_again, b"back")
+
+
+if __name__ == "__main__":
+    warnings.simplefilter("ignore", ResourceWarning)  # relayed sockets are left to the server to cut
+    unittest.main(verbosity=2, warnings="ignore")

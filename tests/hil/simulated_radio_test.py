@@ -4,7 +4,9 @@ tap, radio0, whose packets cross ns-3's 802.11 network between the robots' simul
 - ping from one robot to another stops when the second drives out of range and resumes when it
   comes back; the largest distance at which it got through agrees with the log-distance model;
 - a real UDP datagram from A to C crosses mote B, the only route, and B's forwarded count shows it;
-- a TCP stream (iperf3) carries data at a rate bounded by the simulated 802.11b data rate.
+- a TCP stream (iperf3) carries data at a rate bounded by the simulated 802.11b data rate;
+- the formation of case study 2 (scenarios/formation-radio.yaml, shortened) keeps its distances
+  while the agents' poses cross the simulated radio.
 Needs root and /dev/net/tun: elsewhere it says why and is skipped (exit 77)."""
 import csv
 import json
@@ -17,6 +19,7 @@ import time
 import unittest
 
 SANET = sys.argv.pop(1)
+SOURCE = sys.argv.pop(1)
 TX_POWER = 0  # dBm
 RANGE = 10 ** ((TX_POWER - 46.6777 + 82) / 30)  # m: log-distance (exponent 3, 46.6777 dB at 1 m) meets -82 dBm
 
@@ -186,6 +189,21 @@ class SimulatedRadio(unittest.TestCase):
         with open(os.path.join(out, "summary.json")) as f:
             taps = json.load(f)["network"]["taps"]
         self.assertGreater(taps["b"]["bytes_received"], 6 * 1e6 / 8, "the stream crossed b's tap")
+
+    def test_the_formation_keeps_its_distances_over_the_simulated_radio(self):
+        scenario = os.path.join(SOURCE, "scenarios", "formation-radio.yaml")
+        out = os.path.join(self.tmp.name, "formation")
+        run = subprocess.run([SANET, "launch", scenario, "--duration", "25", "-o", out], capture_output=True,
+                             text=True, timeout=120)
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+        self.assertGreater(summary["min_distance"]["min_m"], 0.4, summary["min_distance"])
+        for follower in ("f1", "f2", "f3"):
+            self.assertGreater(summary["metrics"][follower]["pose_delay"]["count"], 230, follower)
+        taps = summary["network"]["taps"]
+        self.assertGreater(taps["leader"]["packets_sent"], 2 * 230, "poses to f1 and f2 at 10 Hz")
+        self.assertGreater(taps["f3"]["packets_received"], 230, "f1 relays the poses to f3 over the radio")
 
 
 if __name__ == "__main__":

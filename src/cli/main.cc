@@ -253,10 +253,21 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
     throw CLI::ValidationError("--exec", "a command after -- runs in a robot's namespace: name it with --exec ROBOT");
   if (!a.exec_robot.empty() && a.command.empty())
     throw CLI::ValidationError("--exec", "give the program to run after --, e.g. --exec r1 -- ping 10.0.0.2");
+  const auto exec = sc.run.nodes.end() != std::find_if(sc.run.nodes.begin(), sc.run.nodes.end(), [&](const auto& n) {
+                      return n.name == a.exec_robot && sim::RunsAsAgent(n);
+                    });
+  if (!a.exec_robot.empty() && !exec)
+    throw CLI::ValidationError("--exec", a.exec_robot + " is not a robot with a controller (only those run as agents)");
+  const int udp_base = a.udp_base.value_or(sc.run.loop.udp_port);
+  if (sc.run.loop.network == sim::LoopNetwork::kSimulated && sc.run.network &&
+      (udp_base == sc.run.network->port || udp_base == net::kAodvPort || udp_base == net::kOlsrPort ||
+       udp_base == net::kDsdvPort))
+    throw CLI::ValidationError(
+        "--udp-base", std::to_string(udp_base) + " is network.port, which the simulated network serves itself");
   hil::LaunchSettings settings;
   settings.scenario_file = a.file;
   settings.output = a.output.empty() ? sc.output_folder : a.output;
-  settings.udp_base = a.udp_base.value_or(sc.run.loop.udp_port);
+  settings.udp_base = udp_base;
   settings.duration = a.duration;
   settings.exec_robot = a.exec_robot;
   settings.exec_command = a.command;

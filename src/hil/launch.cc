@@ -156,6 +156,15 @@ pid_t StartProgram(const std::vector<std::string>& command, const std::string& n
   Exec("ip", args);
 }
 
+void ReportProgram(const std::string& program, int status) {
+  if (WIFEXITED(status))
+    std::printf("  program %s exited with status %d%s\n", program.c_str(), WEXITSTATUS(status),
+                WEXITSTATUS(status) == 127 ? " (could not be started)" : "");
+  else if (WIFSIGNALED(status))
+    std::printf("  program %s was stopped by signal %d%s\n", program.c_str(), WTERMSIG(status),
+                WTERMSIG(status) == SIGTERM ? " at the end of the run" : "");
+}
+
 // Waits for the server's run to end; Ctrl-C asks it to end the run and write its results.
 int WaitForServer(pid_t server) {
   int status = 0;
@@ -202,7 +211,11 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
   std::fflush(stdout);
   const int status = WaitForServer(server);
   for (pid_t a : children) ::kill(a, SIGTERM);
-  for (pid_t a : children) ::waitpid(a, nullptr, 0);
+  for (pid_t a : children) {
+    int ended = 0;
+    ::waitpid(a, &ended, 0);
+    if (exec_robot && a == children.back()) ReportProgram(settings.exec_command.front(), ended);
+  }
   std::printf("  results in %s/\n", settings.output.c_str());
   return status;
 }

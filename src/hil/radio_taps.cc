@@ -61,7 +61,9 @@ std::string RadioMac(NodeId node) {
 void JoinRadioTaps(sim::World& world, const std::vector<std::pair<std::string, std::string>>& robot_namespaces) {
   for (const auto& [robot, ns] : robot_namespaces) {
     const auto id = world.Lookup(robot);
-    if (!id) throw std::runtime_error("no robot named '" + robot + "' in this scenario");
+    if (!id) throw std::runtime_error("no node named '" + robot + "' in this scenario");
+    if (::access(("/var/run/netns/" + ns).c_str(), F_OK) != 0)
+      throw std::runtime_error("no network namespace named '" + ns + "' (make one with: ip netns add " + ns + ")");
     if (*id >= 253) throw std::runtime_error("the simulated radio joins robots with node ids below 253");
     const std::string name = "sn" + std::to_string(::getpid() % 100000) + "r" + std::to_string(*id);
     const int fd = OpenTap(name);

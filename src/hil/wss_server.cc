@@ -59,7 +59,7 @@ nlohmann::ordered_json WssServer::Summary() const {
   for (const auto& [key, relay] : relays_)
     cut += relay->cut(), connections += relay->connections(), bytes += relay->bytes();
   return {{"port", port_},
-          {"relays", relays_.size()},
+          {"relays", relays_opened_},
           {"connections", connections},
           {"connections_cut", cut},
           {"bytes", bytes}};
@@ -157,6 +157,8 @@ void WssServer::Dns(Robot& r, const ProtocolMessage& m) {
   reply.Add("Robot", other ? *other : "");
   Robot* o = other ? Registered(*other) : nullptr;
   if (!o || o == &r) return Send(r, reply.Add("Port", "-1").Add("Error", "NoSuchRobot"));
+  if (!world_.parts().SignalBetween(r.node, o->node))
+    return Send(r, reply.Add("Port", "-1").Add("Error", "No.Simulated.Radio"));
   std::uint16_t port = o->ports.front();
   if (const std::string* asked = m.Get("Port")) {
     const auto list = Ports(*asked);
@@ -169,6 +171,7 @@ void WssServer::Dns(Robot& r, const ProtocolMessage& m) {
   if (it == relays_.end()) {
     try {
       it = relays_.emplace(key, std::make_unique<WssRelay>(settings_.bind, o->host, port)).first;
+      ++relays_opened_;
     } catch (const std::runtime_error&) {
       return Error(r, "Could.Not.Allocate.Port");
     }

@@ -71,6 +71,7 @@ class WssServer {
   std::vector<std::unique_ptr<Robot>> robots_;
   std::map<RelayKey, std::unique_ptr<WssRelay>> relays_;
   std::uint64_t relays_cut_ = 0, connections_ = 0, bytes_ = 0;  // of relays already gone
+  std::uint64_t relays_opened_ = 0;
 };
 
 }  // namespace sanet::hil

@@ -26,7 +26,7 @@ struct Discovery {
 // What crossed one node's tap (a real IP stack joined to the node), counted at the taps.
 struct TapCounts {
   std::uint64_t packets_sent = 0, bytes_sent = 0;          // from the real stack into the simulated network
-  std::uint64_t unicast_sent = 0;                          // of those, to one address
+  std::uint64_t unicast_sent = 0;                          // of those, to another node's tap (not to motes)
   std::uint64_t unicast_arrived = 0;                       // of those, delivered out of the addressee's tap
   std::uint64_t packets_received = 0, bytes_received = 0;  // out of this tap, to the real stack
   std::vector<double> delays;                              // s, from tap to tap, of the packets received here

@@ -34,6 +34,10 @@ class PacketTrace {
 
   void MessageSent(NodeId node) { ++counts_[node].messages_sent; }
   void MessageReceived(NodeId node) { ++counts_[node].messages_received; }
+  // A real program's packet entered the network at `node` (through its tap): sent, as the node's own.
+  void ExternalSent(NodeId node, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) {
+    Record(node, Event::kSent, ip, packet);
+  }
   // A packet to `destination` is waiting for a route (AODV): a discovery starts unless one is on.
   void RouteNeeded(NodeId node, NodeId destination, double now);
 

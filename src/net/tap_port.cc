@@ -101,9 +101,9 @@ class IcmpDiverter : public ns3::Icmpv4L4Protocol {
 
 }  // namespace
 
-TapPort::TapPort(ns3::Ptr<ns3::Node> node, NodeId id, int fd, ns3::Mac48Address tap_mac,
-                 std::set<std::uint16_t> kept_udp_ports, TapLedger& ledger)
-    : node_(node), id_(id), tap_mac_(tap_mac), kept_udp_ports_(std::move(kept_udp_ports)), ledger_(ledger) {
+TapPort::TapPort(ns3::Ptr<ns3::Node> node, NodeId id, int fd, ns3::Mac48Address tap_mac, Network network,
+                 TapLedger& ledger)
+    : node_(node), id_(id), tap_mac_(tap_mac), network_(std::move(network)), ledger_(ledger) {
   ledger_[id_];  // a row even if nothing crosses
   device_ = ns3::CreateObject<ns3::FdNetDevice>();
   device_->SetAddress(ns3::Mac48Address::Allocate());
@@ -150,15 +150,23 @@ void TapPort::FromTap(ns3::Ptr<ns3::NetDevice>, ns3::Ptr<const ns3::Packet> pack
   // Only what the node itself could have sent: its own source address, not multicast.
   if (ip->GetInterfaceForAddress(header.GetSource()) < 0 || to.IsMulticast()) return;
   const bool broadcast = to.IsBroadcast() || to.IsSubnetDirectedBroadcast(ip->GetAddress(1, 0).GetMask());
+  // Unicasts to another real stack can be counted as lost or arrived; those to a mote cannot.
+  const std::optional<NodeId> addressee = network_.node_at(to);
+  const bool to_a_tap = !broadcast && addressee && ledger_.count(*addressee) > 0;
   TapCounts& mine = ledger_[id_];
   ++mine.packets_sent;
   mine.bytes_sent += p->GetSize();
-  mine.unicast_sent += !broadcast;
+  mine.unicast_sent += to_a_tap;
   TapEntryTag tag;
   tag.entered_ns = ns3::Simulator::Now().GetNanoSeconds();
   tag.origin = id_;
-  tag.unicast = !broadcast;
+  tag.unicast = to_a_tap;
   p->AddPacketTag(tag);
+  if (network_.entered) {
+    ns3::Ptr<ns3::Packet> payload = p->Copy();
+    payload->RemoveHeader(header);
+    network_.entered(id_, header, payload);
+  }
   (broadcast ? broadcast_ : unicast_)->SendTo(p, 0, ns3::InetSocketAddress(to, 0));
 }
 

@@ -15,6 +15,8 @@
 #include <ns3/socket.h>
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <set>
 
 #include "net/network_traces.h"
@@ -23,16 +25,22 @@ namespace sanet::net {
 
 class TapPort {
  public:
+  // What the port needs of the network it joins.
+  struct Network {
+    std::set<std::uint16_t> kept_udp_ports;                          // UDP ports ns-3 itself serves
+    std::function<std::optional<NodeId>(ns3::Ipv4Address)> node_at;  // the node with this address
+    // A real packet entered the network at `node` (IP header apart), for the packet traces.
+    std::function<void(NodeId node, const ns3::Ipv4Header&, ns3::Ptr<const ns3::Packet>)> entered;
+  };
   // `fd`: an open tap (IFF_TAP | IFF_NO_PI); `tap_mac`: the address of the tap interface in the
-  // real stack, to which frames are sent; `kept_udp_ports`: UDP ports that ns-3 itself serves.
-  TapPort(ns3::Ptr<ns3::Node> node, NodeId id, int fd, ns3::Mac48Address tap_mac,
-          std::set<std::uint16_t> kept_udp_ports, TapLedger& ledger);
+  // real stack, to which frames are sent. `ledger` holds every tap's counts.
+  TapPort(ns3::Ptr<ns3::Node> node, NodeId id, int fd, ns3::Mac48Address tap_mac, Network network, TapLedger& ledger);
   TapPort(const TapPort&) = delete;
   TapPort& operator=(const TapPort&) = delete;
 
   // Out of the tap: the packet (IP header included) as the node received it for itself.
   void ToTap(ns3::Ptr<ns3::Packet> packet, ns3::Ipv4Header header);
-  bool KeepsUdpPort(std::uint16_t port) const { return kept_udp_ports_.count(port) > 0; }
+  bool KeepsUdpPort(std::uint16_t port) const { return network_.kept_udp_ports.count(port) > 0; }
 
  private:
   void FromTap(ns3::Ptr<ns3::NetDevice> device, ns3::Ptr<const ns3::Packet> packet, std::uint16_t protocol,
@@ -43,7 +51,7 @@ class TapPort {
   NodeId id_;
   ns3::Ptr<ns3::FdNetDevice> device_;
   ns3::Mac48Address tap_mac_;
-  std::set<std::uint16_t> kept_udp_ports_;
+  Network network_;
   ns3::Ptr<ns3::Socket> unicast_, broadcast_;  // raw IP, header included; the second bound to the radio
   TapLedger& ledger_;
 };

@@ -338,12 +338,21 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
 }
 
 void WirelessNetwork::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
-  std::set<std::uint16_t> kept = {spec_.port};
-  if (spec_.routing == Routing::kAodv) kept.insert(kAodvPort);
-  if (spec_.routing == Routing::kOlsr) kept.insert(kOlsrPort);
-  if (spec_.routing == Routing::kDsdv) kept.insert(kDsdvPort);
-  taps_.push_back(
-      std::make_unique<TapPort>(nodes_.Get(id), id, fd, ns3::Mac48Address(tap_mac.c_str()), kept, tap_ledger_));
+  TapPort::Network network;
+  network.kept_udp_ports = {spec_.port};
+  if (spec_.routing == Routing::kAodv) network.kept_udp_ports.insert(kAodvPort);
+  if (spec_.routing == Routing::kOlsr) network.kept_udp_ports.insert(kOlsrPort);
+  if (spec_.routing == Routing::kDsdv) network.kept_udp_ports.insert(kDsdvPort);
+  network.node_at = [this](ns3::Ipv4Address a) { return book_.Find(a); };
+  // A real packet counts as the node's own: sent, and the start of an AODV discovery if it needs one.
+  network.entered = [this](NodeId from, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) {
+    trace_.ExternalSent(from, ip, packet);
+    const auto to = book_.Find(ip.GetDestination());
+    if (spec_.routing == Routing::kAodv && to && *to != from && !views_[from]->HasValidRoute(*to))
+      trace_.RouteNeeded(from, *to, ns3::Simulator::Now().GetSeconds());
+  };
+  taps_.push_back(std::make_unique<TapPort>(nodes_.Get(id), id, fd, ns3::Mac48Address(tap_mac.c_str()),
+                                            std::move(network), tap_ledger_));
 }
 
 double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {

@@ -274,7 +274,7 @@ void ReadLoop(const Field& loop, sim::RunSpec& run) {
   if (port == run.network->port || port == net::kAodvPort || port == net::kOlsrPort || port == net::kDsdvPort)
     (loop.Get("udp_port") ? *loop.Get("udp_port") : network)
         .Fail("the agents' UDP port " + std::to_string(port) +
-              " is taken in the simulated network (network.port, or a routing protocol's)");
+              " is network.port, which the simulated network serves itself");
   run.loop.namespaces = true;
 }
 

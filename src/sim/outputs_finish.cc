@@ -54,21 +54,28 @@ nlohmann::ordered_json NetworkSummary(const net::NetworkTraces& n) {
             {"time_s", Quartiles(discovery_times)}}}};
 }
 
+// Delays are left empty for a tap that received nothing.
 std::string TapRow(const std::string& node, const net::TapCounts& c) {
-  char row[320];
-  std::snprintf(row, sizeof row, "%s,%llu,%llu,%llu,%llu,%llu,%llu,%.6f,%.6f", node.c_str(),
+  char row[320], delays[64] = ",";
+  if (!c.delays.empty())
+    std::snprintf(delays, sizeof delays, "%.6f,%.6f", Quantile(c.delays, 0.5), Quantile(c.delays, 0.99));
+  std::snprintf(row, sizeof row, "%s,%llu,%llu,%llu,%llu,%llu,%llu,%s", node.c_str(),
                 (unsigned long long)c.packets_sent, (unsigned long long)c.bytes_sent,
                 (unsigned long long)c.packets_received, (unsigned long long)c.bytes_received,
-                (unsigned long long)c.unicast_sent, (unsigned long long)(c.unicast_sent - c.unicast_arrived),
-                Quantile(c.delays, 0.5), Quantile(c.delays, 0.99));
+                (unsigned long long)c.unicast_sent, (unsigned long long)(c.unicast_sent - c.unicast_arrived), delays);
   return row;
 }
 
 nlohmann::ordered_json TapSummary(const net::TapCounts& c) {
-  return {{"packets_sent", c.packets_sent},         {"bytes_sent", c.bytes_sent},
-          {"packets_received", c.packets_received}, {"bytes_received", c.bytes_received},
-          {"unicast_sent", c.unicast_sent},         {"unicast_lost", c.unicast_sent - c.unicast_arrived},
-          {"delay_s", Quartiles(c.delays)},         {"delay_p99_s", Quantile(c.delays, 0.99)}};
+  return {
+      {"packets_sent", c.packets_sent},
+      {"bytes_sent", c.bytes_sent},
+      {"packets_received", c.packets_received},
+      {"bytes_received", c.bytes_received},
+      {"unicast_sent", c.unicast_sent},
+      {"unicast_lost", c.unicast_sent - c.unicast_arrived},
+      {"delay_s", Quartiles(c.delays)},
+      {"delay_p99_s", c.delays.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(Quantile(c.delays, 0.99))}};
 }
 
 }  // namespace

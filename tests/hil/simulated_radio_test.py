@@ -131,6 +131,19 @@ class Refusal(unittest.TestCase):
             self.assertIn("does not fall back", out.stderr)
             self.assertFalse(os.path.exists(os.path.join(tmp, "out")), "nothing runs")
 
+    def test_options_that_cannot_work_are_refused_before_anything_starts(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "s.yaml")
+            with open(path, "w") as f:
+                f.write(RELAY)
+            for args, says in [(["--exec", "b", "--", "true"], "b is not a robot with a controller"),
+                               (["--exec", "a"], "give the program to run after --"),
+                               (["--udp-base", "9000"], "9000 is network.port")]:
+                out = subprocess.run([SANET, "launch", path, "-o", os.path.join(tmp, "out"), *args],
+                                     capture_output=True, text=True, timeout=60)
+                self.assertEqual(out.returncode, 2, out.stderr)
+                self.assertIn(says, out.stderr)
+
 
 @unittest.skipIf(permitted(), f"the simulated radio needs root and /dev/net/tun ({permitted()})")
 class SimulatedRadio(unittest.TestCase):
@@ -160,6 +173,11 @@ class SimulatedRadio(unittest.TestCase):
         self.assertLess(x_at(pings[-1]), RANGE, "pings resumed after the rover came back")
         taps = {r["node"]: r for r in rows(out, "taps.csv")}
         self.assertGreater(int(taps["base"]["unicast_lost"]), 20, "requests sent while out of range are lost")
+        # The real packets count as the node's own in packets.csv, and start AODV discoveries.
+        packets = {r["node"]: r for r in rows(out, "packets.csv")}
+        self.assertGreaterEqual(int(packets["base"]["sent"]), int(taps["base"]["packets_sent"]))
+        discoveries = [r for r in rows(out, "routes.csv") if r["node"] == "base" and r["destination"] == "rover"]
+        self.assertGreaterEqual(len(discoveries), 2, "one at the start, one when the rover is back")
         self.assertEqual(taps["rover"]["packets_received"], taps["rover"]["packets_sent"], "every request answered")
 
     def test_a_datagram_crosses_a_mote_that_is_the_only_route(self):

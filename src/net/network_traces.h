@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -33,6 +34,17 @@ struct TapCounts {
 };
 // Every tap's counts, by node id.
 using TapLedger = std::map<NodeId, TapCounts>;
+
+// One radio frame a node's PHY sent or received.
+struct FrameEvent {
+  double t = 0;  // s
+  NodeId node = 0;
+  bool sent = false;
+  std::optional<NodeId> peer;  // to (sent) or from (received); empty for broadcasts and unknown senders
+  const char* kind = "";       // data, routing, arp, broadcast, ack, control, management
+  std::uint32_t bytes = 0;     // the MPDU, MAC header included
+};
+using FrameObserver = std::function<void(const FrameEvent&)>;
 
 struct NetworkTraces {
   std::string radio, routing;  // names as in the scenario

@@ -31,6 +31,9 @@ class Transport {
   virtual void Open(trace::ResultsFolder& folder) { (void)folder; }
   // After the run: close them (they are committed with the folder).
   virtual void Close() {}
+  // Every radio frame from now on goes to `observer` (the run's trace); transports without
+  // radios have none.
+  virtual void ObserveFrames(FrameObserver observer) { (void)observer; }
   // What the network did, for the results; empty for a transport without radios.
   virtual std::optional<NetworkTraces> Traces() const { return std::nullopt; }
 };

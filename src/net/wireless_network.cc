@@ -201,6 +201,13 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   trace_.Attach(id, node);
   if (flow_monitor_) flow_helper_->Install(node);
   if (!pcap_dir_.empty()) OpenPcap(id);
+  if (frames_) frames_->Attach(id, ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0)));
+}
+
+void WirelessNetwork::ObserveFrames(FrameObserver observer) {
+  frames_ = std::make_unique<FrameTrace>(std::move(observer));
+  for (NodeId id = 0; id < nodes_.GetN(); ++id)
+    frames_->Attach(id, ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(id)));
 }
 
 void WirelessNetwork::InstallInternet() {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "net/address_book.h"
+#include "net/frame_trace.h"
 #include "net/message_header.h"
 #include "net/network_spec.h"
 #include "net/packet_trace.h"
@@ -55,6 +56,7 @@ class WirelessNetwork : public Transport {
   void Open(trace::ResultsFolder& folder) override;
   void Close() override;
   std::optional<NetworkTraces> Traces() const override;
+  void ObserveFrames(FrameObserver observer) override;
   const AddressBook& addresses() const { return book_; }
   const PacketTrace& packet_trace() const { return trace_; }
 
@@ -95,6 +97,7 @@ class WirelessNetwork : public Transport {
   ns3::Ptr<ns3::FlowMonitor> flow_monitor_;
   std::vector<NodeRadio> radios_;  // per node
   std::vector<std::unique_ptr<TapPort>> taps_;
+  std::unique_ptr<FrameTrace> frames_;  // while someone traces the frames
   TapLedger tap_ledger_;
 };
 

@@ -378,6 +378,11 @@ const Fields<Scenario>& OutputsFields() {
         [](const Scenario& s) {
           return s.run.distance_reference > 0 ? NumberNode(s.run.distance_reference) : YAML::Node();
         });
+    f.Custom(
+        {"trace", "boolean", "", "`true` for runs of up to 200 nodes", "",
+         "write `trace.sqlite`, the trace of both worlds (docs/trace.md); never changes the fingerprint"},
+        [](const Field& v, Scenario& s) { s.trace = v.Bool(); },
+        [](const Scenario& s) { return YAML::Node(s.run.trace); });
     return f;
   }();
   return fields;

@@ -200,7 +200,9 @@ class NodeList {
 };
 
 // `grid: {name, rows, cols, origin, spacing, heading}`: nodes NAME0, NAME1, ... row by row.
-constexpr long long kMaxNodes = 100000;  // far beyond, memory for the specs alone runs out before the run starts
+constexpr long long kMaxNodes = 100000;
+constexpr std::size_t kMaxTracedNodes = 200;  // beyond, a trace is written only when asked for  // far beyond, memory
+                                              // for the specs alone runs out before the run starts
 
 void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& list) {
   n.ExpectKeys(GridItemFields().Keys());
@@ -336,6 +338,7 @@ Scenario LoadScenario(const std::string& path) {
   if (auto end = root.Get("end")) ReadEnd(*end, run);
   sc.output_folder = "results/" + run.name;
   if (auto outputs = root.Get("outputs")) ReadOutputs(*outputs, sc);
+  run.trace = sc.trace.value_or(run.nodes.size() <= kMaxTracedNodes);
   if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), run);
   if (run.trajectory_interval < run.physics_step) {
     const auto outputs = root.Get("outputs");

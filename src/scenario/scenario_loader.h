@@ -2,6 +2,7 @@
 // file, line and field. The format is documented in docs/scenario.md.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "agents/controller_registry.h"
@@ -16,6 +17,7 @@ struct Scenario {
   std::string output_folder;                   // as given, or results/<name>
   std::vector<int> controller_lines;           // per node: line of its controller (0 if none)
   std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"
+  std::optional<bool> trace;                   // outputs.trace as given (run.trace is the effective one)
 };
 
 // Reads and checks the file (structure, types, ranges, names). Does not look at controllers.

@@ -30,6 +30,7 @@ class MessageLedger : public net::Transport {
   void Open(trace::ResultsFolder& folder) override { inner_->Open(folder); }
   void Close() override { inner_->Close(); }
   std::optional<net::NetworkTraces> Traces() const override { return inner_->Traces(); }
+  void ObserveFrames(net::FrameObserver observer) override { inner_->ObserveFrames(std::move(observer)); }
 
  private:
   void Sent(NodeId from, std::optional<NodeId> to, Delivery delivery, const Bytes& payload);

@@ -38,6 +38,29 @@ Outputs::Outputs(const RunSpec& spec, const std::string& dir)
       metric_rows_(folder_.Csv("metrics.csv", "time,node,name,value")),
       last_recorded_(spec.nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
+  if (spec_.trace && folder_.writes()) StartTrace();
+}
+
+// The trace begins with what does not change: the run, its nodes where they start, the obstacles.
+void Outputs::StartTrace() {
+  trace_ = std::make_unique<trace::RunTrace>(folder_.TempFile("trace.sqlite"));
+  trace_->Info("format", "sanet trace 1");
+  trace_->Info("name", spec_.name);
+  trace_->Info("seed", std::to_string(spec_.seed));
+  trace_->Info("duration_s", Format("%.9g", spec_.duration));
+  trace_->Info("world_size_m", Format("%.9g %.9g", spec_.world_size.x, spec_.world_size.y));
+  trace_->Info("pose_interval_s", Format("%.9g", spec_.trajectory_interval));
+  trace_->Info("network", spec_.network ? "ns-3" : "none");
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
+    const NodeSpec& n = spec_.nodes[id];
+    trace_->Node(id, n.name, robots::ModelName(n.model.kind), n.pose.x, n.pose.y, n.pose.theta);
+  }
+  for (const Obstacle& o : spec_.obstacles)
+    trace_->Obstacle(o.kind, o.box.center.x, o.box.center.y, o.box.size.x, o.box.size.y, o.box.size.z, o.box.yaw);
+}
+
+void Outputs::Event(double t, NodeId node, const char* kind, const std::string& detail) {
+  if (trace_) trace_->Event(t, node, kind, detail);
 }
 
 // "time,node," as every per-node event row starts.
@@ -45,22 +68,30 @@ std::string Outputs::Stamp(double t, NodeId node) const {
   return Format("%.6f,", t) + trace::CsvField(Name(node)) + ",";
 }
 
-void Outputs::Log(double t, NodeId node, const std::string& text) { log_.Row(Stamp(t, node) + trace::CsvField(text)); }
+void Outputs::Log(double t, NodeId node, const std::string& text) {
+  log_.Row(Stamp(t, node) + trace::CsvField(text));
+  Event(t, node, "log", text);
+}
 
 void Outputs::Transition(double t, NodeId node, const std::string& from, const std::string& to,
                          const std::string& why) {
   ++transitions_to_[to];
+  if (trace_) trace_->Transition(t, node, from, to, why);
   transitions_.Row(Stamp(t, node) + trace::CsvField(from) + "," + trace::CsvField(to) + "," + trace::CsvField(why));
 }
 
 void Outputs::Metric(double t, NodeId node, const std::string& name, double value) {
   metrics_[Name(node)][name].push_back(value);
+  if (trace_) trace_->Metric(t, node, name, value);
   metric_rows_.Row(Stamp(t, node) + trace::CsvField(name) + Format(",%.9g", value));
 }
 
 void Outputs::Delivered(NodeId to, const Message& m) {
   const double delay = m.time_received - m.time_sent;
   delays_.push_back(delay);
+  if (trace_)
+    trace_->Message(m.time_sent, m.time_received, m.from, to, DeliveryName(m.delivery),
+                    static_cast<std::uint32_t>(m.payload.size()), m.hops);
   messages_.Row(Format("%.6f,%s,%s,%s,%zu,%.6f,%.6f,%s", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
                        DeliveryName(m.delivery), m.payload.size(), m.time_received, delay,
                        m.hops ? std::to_string(*m.hops).c_str() : ""));
@@ -70,6 +101,9 @@ void Outputs::Delivered(NodeId to, const Message& m) {
 // drives it.
 void Outputs::Lost(NodeId to, const Message& m, const std::string& why) {
   ++messages_undelivered_;
+  if (trace_)
+    trace_->Message(m.time_sent, std::nullopt, m.from, to, DeliveryName(m.delivery),
+                    static_cast<std::uint32_t>(m.payload.size()), std::nullopt);
   messages_.Row(Format("%.6f,%s,%s,%s,%zu,,,", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
                        DeliveryName(m.delivery), m.payload.size()));
   Log(m.time_received, to, "message from " + Name(m.from) + " lost: " + why);
@@ -121,10 +155,15 @@ void Outputs::Record(double now, NodeId id, const Pose2D& p) {
     track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
   }
   trajectories_.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, Name(id).c_str(), p.x, p.y, p.theta));
+  if (trace_) trace_->Pose(now, id, p.x, p.y, p.theta);
 }
 
 void Outputs::Spawned(double t, NodeId node, const std::string& usarsim_class, const Pose2D& pose) {
   spawned_as_[node] = usarsim_class;
+  if (trace_) {
+    trace_->Node(node, Name(node), robots::ModelName(spec_.nodes[node].model.kind), pose.x, pose.y, pose.theta);
+    trace_->Event(t, node, "spawn", usarsim_class);
+  }
   last_recorded_.resize(spec_.nodes.size());
   Record(std::min(t, spec_.duration), node, pose);
 }

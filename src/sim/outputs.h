@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 #include "sim/run_spec.h"
 #include "trace/figures.h"
 #include "trace/results_folder.h"
+#include "trace/run_trace.h"
 
 namespace sanet::sim {
 
@@ -48,6 +50,10 @@ class Outputs {
  public:
   Outputs(const RunSpec& spec, const std::string& dir);
   trace::ResultsFolder& folder() { return folder_; }
+  // The run's trace, when the scenario asks for one and the results are written.
+  trace::RunTrace* trace() { return trace_.get(); }
+  // Something that happened to a node (switch-off), for the trace.
+  void Event(double t, NodeId node, const char* kind, const std::string& detail);
 
   // Events of the run, at simulated time `t`.
   void Log(double t, NodeId node, const std::string& text);
@@ -76,6 +82,7 @@ class Outputs {
  private:
   void SampleMinDistance(double now, const PoseReader& world);
   void Record(double now, NodeId id, const Pose2D& p);
+  void StartTrace();
   void AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp);
   void AddTapFiles(const net::NetworkTraces& network, nlohmann::ordered_json& summary);
   void WriteFigures(const std::vector<Pose2D>& final_poses, const std::optional<net::NetworkTraces>& network);
@@ -102,6 +109,7 @@ class Outputs {
   std::vector<std::optional<Recorded>> last_recorded_;
   std::map<NodeId, trace::Track> tracks_;     // of robots, for the figures
   std::map<NodeId, std::string> spawned_as_;  // robots that clients added, with their classes
+  std::unique_ptr<trace::RunTrace> trace_;
   std::string ended_by_, failure_;
   double ended_at_ = 0;
 };

@@ -111,6 +111,7 @@ void Outputs::AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp
 void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>& network,
                      const std::string& scenario_file, const std::vector<Pose2D>& final_poses,
                      nlohmann::ordered_json extra) {
+  if (trace_) trace_->Close();
   folder_.Commit();
   Fingerprint fp;
   fp.Add(spec_.seed);

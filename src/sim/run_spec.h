@@ -109,6 +109,7 @@ struct RunSpec {
   std::vector<std::string> end_when_logged;
   double end_grace = 0;           // s the run goes on after the end condition, for messages in flight
   bool figures = false;           // draw map.svg and packets.svg (and min_distance.svg)
+  bool trace = false;             // write trace.sqlite (trace/run_trace.h)
   bool min_distance = false;      // record the smallest distance between robots over time
   double distance_reference = 0;  // m; the summary says how long the smallest distance stayed within 10 % of it
   double figure_tick = 50;        // s between time marks on trajectories

@@ -33,6 +33,9 @@ Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserv
   for (NodeId id = 0; id < world_.size(); ++id)
     if (world_.model(id).mobile()) vehicles_.push_back(id);
   if (!observers_.empty()) world_.transport().Watch();
+  if (trace::RunTrace* trace = outputs_.trace())
+    world_.transport().ObserveFrames(
+        [trace](const net::FrameEvent& f) { trace->Frame(f.t, f.node, f.sent, f.peer, f.kind, f.bytes); });
 }
 
 Stepper::~Stepper() { world_.SetEvents(nullptr); }
@@ -61,7 +64,7 @@ void Stepper::ScheduleAll() {
   for (NodeId id = 0; id < world_.size(); ++id)
     if (world_.host(id).has_controller()) ns3::Simulator::ScheduleNow(&Stepper::ControlStep, this, id);
   for (const NodeEvent& e : spec.events)
-    ns3::Simulator::Schedule(Period(e.time), &Assembly::SwitchOff, &world_, static_cast<NodeId>(e.node));
+    ns3::Simulator::Schedule(Period(e.time), &Stepper::SwitchOff, this, static_cast<NodeId>(e.node));
   ns3::Simulator::ScheduleNow(&Stepper::Record, this);
   // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
   if (!vehicles_.empty()) ns3::Simulator::Schedule(Period(spec.physics_step), &Stepper::PhysicsStep, this);
@@ -107,6 +110,7 @@ void Stepper::Record() {
   {
     StageTimer timer(profile_.recording);
     outputs_.Sample(Now(), false, Poses());
+    if (trace::RunTrace* trace = outputs_.trace()) routes_.Look(Now(), world_, *trace);
   }
   if (vehicles_.empty()) Notify();  // no physics steps: observers see the world at each sample
   ns3::Simulator::Schedule(Period(world_.spec().trajectory_interval), &Stepper::Record, this);
@@ -114,6 +118,11 @@ void Stepper::Record() {
 
 PoseReader Stepper::Poses() const {
   return {[this](NodeId id) { return world_.model(id).body().pose(); }, vehicles_};
+}
+
+void Stepper::SwitchOff(NodeId node) {
+  outputs_.Event(Now(), node, "switch_off", "");
+  world_.SwitchOff(node);
 }
 
 void Stepper::Log(NodeId node, const std::string& text) {

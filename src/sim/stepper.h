@@ -11,6 +11,7 @@
 
 #include "sim/assembly.h"
 #include "sim/outputs.h"
+#include "sim/route_watch.h"
 #include "sim/run_events.h"
 #include "sim/snapshot.h"
 
@@ -47,12 +48,14 @@ class Stepper : public RunEvents {
   void Record();
   void Notify();
   void ShowProgress();
+  void SwitchOff(NodeId node);
   PoseReader Poses() const;
 
   Assembly& world_;
   Outputs& outputs_;
   std::vector<StepObserver*> observers_;
   std::vector<NodeId> vehicles_;
+  RouteWatch routes_;
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   std::chrono::steady_clock::time_point wall_start_, last_progress_;

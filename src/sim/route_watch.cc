@@ -1,0 +1,22 @@
+#include "sim/route_watch.h"
+
+namespace sanet::sim {
+
+void RouteWatch::Look(double t, Assembly& world, trace::RunTrace& trace) {
+  last_.resize(world.size());
+  for (NodeId node = 0; node < world.size(); ++node) {
+    Table now;
+    for (const RouteEntry& r : world.transport().View(node).RoutingTable())
+      if (r.valid && r.destination != node) now[r.destination] = {r.next_hop, r.hops};
+    Table& before = last_[node];
+    for (const auto& [destination, route] : now) {
+      const auto it = before.find(destination);
+      if (it == before.end() || it->second != route) trace.Route(t, node, destination, route.first, route.second);
+    }
+    for (const auto& [destination, route] : before)
+      if (!now.count(destination)) trace.Route(t, node, destination, std::nullopt, 0);
+    before = std::move(now);
+  }
+}
+
+}  // namespace sanet::sim

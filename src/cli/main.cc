@@ -30,6 +30,7 @@
 #include "scenario/scenario_loader.h"
 #include "sim/sweep.h"
 #include "sim/world.h"
+#include "view/viewer_server.h"
 
 namespace {
 
@@ -446,6 +447,44 @@ Command AddLaunch(CLI::App& app) {
   return {cmd, [a](agents::Registry& r) { return Launch(*a, r); }};
 }
 
+volatile std::sig_atomic_t g_view_stop = 0;
+
+int View(const view::ViewerSettings& settings, const std::string& port_file) {
+  std::signal(SIGINT, [](int) { g_view_stop = 1; });
+  std::signal(SIGTERM, [](int) { g_view_stop = 1; });
+  try {
+    view::ServeViewer(
+        settings,
+        [&](int port) {
+          WritePortFile(port_file, static_cast<std::uint16_t>(port), "--port-file");
+          std::printf("sanet: viewing %s at http://%s:%d/ (Ctrl-C to stop)\n", settings.results.c_str(),
+                      settings.bind.c_str(), port);
+          std::fflush(stdout);
+        },
+        [] { return g_view_stop != 0; });
+  } catch (const std::runtime_error& e) {
+    throw CLI::ValidationError("results", e.what());
+  }
+  return 0;
+}
+
+Command AddView(CLI::App& app) {
+  auto settings = std::make_shared<view::ViewerSettings>();
+  auto port_file = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("view",
+                                     "Serve a web page (on loopback) that replays a run from its results folder: the "
+                                     "world from above and in 3D, radio links and packets, timeline, plots");
+  cmd->add_option("results", settings->results, "A results folder with trace.sqlite")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--bind", settings->bind, "Address to listen on (loopback by default)")->capture_default_str();
+  cmd->add_option("--port", settings->port, "HTTP port (0: any free port)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  cmd->add_option("--port-file", *port_file, "Once listening, write the port number to this file");
+  return {cmd, [settings, port_file](agents::Registry&) { return View(*settings, *port_file); }};
+}
+
 Command AddList(CLI::App& app) {
   auto libraries = std::make_shared<std::vector<std::string>>();
   auto markdown = std::make_shared<bool>(false);
@@ -488,7 +527,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "sanet 0.1.0");
   const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddServe(app),
-                                         AddAgent(app), AddLaunch(app),   AddList(app)};
+                                         AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,237 @@
+// The sanet viewer: replays a run's trace (served as /api/... by `sanet view`) with three.js and
+// Chart.js. window.sanet is a small API for tests and scripts: ready, seek(t), state(), select(name).
+"use strict";
+
+const api = (path) => fetch(path).then((r) => { if (!r.ok) throw new Error(path + ": " + r.status); return r.json(); });
+
+const view = { t: 0, playing: false, selected: null, frames: [], framesFrom: -1, routes: [], routesAt: -1 };
+
+// The pose of a node at time t, between its recorded samples (docs/trace.md: poses).
+function poseAt(rows, t) {
+  if (!rows || rows.length === 0) return null;
+  if (t <= rows[0][0]) return rows[0];
+  let lo = 0, hi = rows.length - 1;
+  while (lo < hi) { const mid = (lo + hi + 1) >> 1; if (rows[mid][0] <= t) lo = mid; else hi = mid - 1; }
+  const a = rows[lo], b = rows[lo + 1];
+  if (!b) return a;
+  const f = (t - a[0]) / (b[0] - a[0]);
+  return [t, a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2]), a[3] + f * (b[3] - a[3])];
+}
+
+function bounds(run, poses) {
+  const xs = [], ys = [];
+  for (const n of run.nodes) { xs.push(n.x); ys.push(n.y); }
+  for (const rows of Object.values(poses)) for (const p of rows) { xs.push(p[1]); ys.push(p[2]); }
+  for (const o of run.obstacles) { xs.push(o[1]); ys.push(o[2]); }
+  const box = { x0: Math.min(...xs), x1: Math.max(...xs), y0: Math.min(...ys), y1: Math.max(...ys) };
+  box.size = Math.max(box.x1 - box.x0, box.y1 - box.y0, 1);
+  box.cx = (box.x0 + box.x1) / 2; box.cy = (box.y0 + box.y1) / 2;
+  return box;
+}
+
+function buildScene(run, poses, box) {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xffffff);
+  scene.add(new THREE.AmbientLight(0xffffff, 0.7));
+  const sun = new THREE.DirectionalLight(0xffffff, 0.5); sun.position.set(1, -1, 2); scene.add(sun);
+  const grid = new THREE.GridHelper(box.size * 1.2, 12, 0xdddddd, 0xeeeeee);
+  grid.rotation.x = Math.PI / 2; grid.position.set(box.cx, box.cy, -0.01); scene.add(grid);
+  for (const [kind, cx, cy, length, width, height, yaw] of run.obstacles) {
+    const mesh = new THREE.Mesh(new THREE.BoxGeometry(length, width, height),
+                                new THREE.MeshLambertMaterial({ color: kind === "wall" ? 0x777777 : 0x999999 }));
+    mesh.position.set(cx, cy, height / 2); mesh.rotation.z = yaw; scene.add(mesh);
+  }
+  const moteSize = Math.max(0.1, box.size / 120), robotSize = Math.max(0.4, box.size / 70);
+  const nodes = run.nodes.map((n) => {
+    const mote = n.model === "mote";
+    const geometry = mote ? new THREE.BoxGeometry(moteSize, moteSize, moteSize)
+                          : new THREE.CylinderGeometry(robotSize / 2, robotSize / 2, robotSize / 2, 20).rotateX(Math.PI / 2);
+    const mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({ color: mote ? 0x2060c0 : 0xd04010 }));
+    mesh.userData = n; scene.add(mesh);
+    const label = document.createElement("div");
+    label.className = "label" + (mote ? "" : " robot"); label.textContent = n.name;
+    document.getElementById("labels").appendChild(label);
+    let track = null;
+    const rows = poses[n.id] || [];
+    if (!mote && rows.length > 1) {
+      const points = rows.map((p) => new THREE.Vector3(p[1], p[2], 0.02));
+      track = new THREE.Line(new THREE.BufferGeometry().setFromPoints(points),
+                             new THREE.LineBasicMaterial({ color: 0xe08060 }));
+      scene.add(track);
+    }
+    return { node: n, mesh, label, track, rows, mote, state: "" };
+  });
+  return { scene, nodes };
+}
+
+function cameras(box, element) {
+  const aspect = element.clientWidth / Math.max(1, element.clientHeight);
+  const half = box.size * 0.6;
+  const top = new THREE.OrthographicCamera(-half * aspect, half * aspect, half, -half, -1000, 1000);
+  top.position.set(box.cx, box.cy, 100);
+  const perspective = new THREE.PerspectiveCamera(50, aspect, 0.1, box.size * 20);
+  perspective.up.set(0, 0, 1);
+  perspective.position.set(box.cx - box.size * 0.6, box.cy - box.size * 0.9, box.size * 0.7);
+  return { top, perspective };
+}
+
+// Radio links heard in the last second, and data frames in flight in the last 0.3 s (hop by hop).
+async function frameWindow(t) {
+  const from = Math.floor(t * 2) / 2 - 1;
+  if (from !== view.framesFrom) {
+    view.framesFrom = from;
+    view.frames = await api(`/api/frames?from=${from}&to=${from + 1.5}`);
+  }
+  return view.frames.filter((f) => f[0] <= t && f[0] > t - 1);
+}
+
+function drawRadio(world, frames, t) {
+  for (const line of world.radio) world.scene.remove(line);
+  world.radio = [];
+  const position = (id) => world.nodes[id].mesh.position;
+  const links = new Set();
+  for (const [ft, node, tx, peer, kind] of frames) {
+    if (peer === null || world.nodes[peer] === undefined) continue;
+    if (!tx) links.add(Math.min(node, peer) + "-" + Math.max(node, peer));
+    if (tx && t - ft < 0.3 && (kind === "data" || kind === "routing")) {
+      const f = (t - ft) / 0.3, a = position(node), b = position(peer);
+      const dot = new THREE.Mesh(new THREE.SphereGeometry(world.dotSize, 8, 8),
+                                 new THREE.MeshBasicMaterial({ color: kind === "data" ? 0x00a000 : 0x9050d0 }));
+      dot.position.set(a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), 0.3);
+      world.scene.add(dot); world.radio.push(dot);
+    }
+  }
+  for (const link of links) {
+    const [a, b] = link.split("-").map(Number);
+    const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([position(a), position(b)]),
+                                new THREE.LineBasicMaterial({ color: 0x80b0ff }));
+    world.scene.add(line); world.radio.push(line);
+  }
+  world.linksUp = links.size;
+}
+
+function place(world, t) {
+  for (const n of world.nodes) {
+    const p = poseAt(n.rows, t) || [t, n.node.x, n.node.y, n.node.theta];
+    n.mesh.position.set(p[1], p[2], n.mote ? world.moteLift : 0.1);
+    n.mesh.rotation.z = p[3];
+    if (n.track) n.track.geometry.setDrawRange(0, n.rows.filter((r) => r[0] <= t).length);
+    const last = world.transitions.filter((x) => x[1] === n.node.id && x[0] <= t).pop();
+    n.state = last ? last[3] : "";
+    n.label.textContent = n.node.name + (n.state ? ` [${n.state}]` : "");
+  }
+}
+
+function placeLabels(world, camera, element) {
+  const w = element.clientWidth, h = element.clientHeight;
+  for (const n of world.nodes) {
+    const v = n.mesh.position.clone().project(camera);
+    const visible = v.z < 1 && Math.abs(v.x) <= 1 && Math.abs(v.y) <= 1 && (!n.mote || world.nodes.length < 60);
+    n.label.style.display = visible ? "" : "none";
+    n.label.style.left = ((v.x + 1) / 2) * w + "px"; n.label.style.top = ((1 - v.y) / 2) * h + "px";
+  }
+}
+
+async function showPanel(world, n, t) {
+  if (view.routesAt !== Math.round(t)) { view.routesAt = Math.round(t); view.routes = await api(`/api/routes?t=${t}`); }
+  const name = (id) => (world.nodes[id] ? world.nodes[id].node.name : id);
+  const p = n.node.packets || {};
+  const sent = world.messages.filter((m) => m[2] === n.node.id && m[0] <= t).length;
+  const received = world.messages.filter((m) => m[3] === n.node.id && m[1] !== null && m[1] <= t).length;
+  const routes = view.routes.filter((r) => r[0] === n.node.id)
+    .map((r) => `<tr><td>${name(r[1])}</td><td>${name(r[2])}</td><td>${r[3]}</td></tr>`).join("");
+  const states = world.transitions.filter((x) => x[1] === n.node.id && x[0] <= t)
+    .map((x) => `<tr><td>${x[0].toFixed(1)}</td><td>${x[3]}</td><td>${x[4]}</td></tr>`).join("");
+  document.getElementById("panel").innerHTML =
+    `<h3 id="panel-name">${n.node.name}</h3><p>${n.node.model}; state: ${n.state || "none"}</p>` +
+    `<h4>Packets (whole run)</h4><table id="panel-packets">` +
+    ["sent", "received", "forwarded", "dropped"].map((k) => `<tr><th>${k}</th><td data-key="${k}">${p[k] ?? "-"}</td></tr>`).join("") +
+    `</table><h4>Messages up to now</h4><p>${sent} sent, ${received} received</p>` +
+    `<h4>Routing table</h4><table><tr><th>to</th><th>via</th><th>hops</th></tr>${routes}</table>` +
+    `<h4>States</h4><table><tr><th>t</th><th>state</th><th>why</th></tr>${states}</table>`;
+}
+
+function plots(world, duration) {
+  const timeLine = { id: "timeline", afterDraw(chart) {
+    if (!chart.scales.x || chart.config.type === "bar") return;
+    const x = chart.scales.x.getPixelForValue(view.t), ctx = chart.ctx;
+    ctx.save(); ctx.strokeStyle = "#d04010"; ctx.beginPath();
+    ctx.moveTo(x, chart.chartArea.top); ctx.lineTo(x, chart.chartArea.bottom); ctx.stroke(); ctx.restore();
+  } };
+  const common = { animation: false, responsive: true, maintainAspectRatio: false, plugins: { legend: { display: false } } };
+  const linear = { x: { type: "linear", min: 0, max: duration, title: { display: true, text: "time (s)" } } };
+  const delays = world.messages.filter((m) => m[1] !== null).map((m) => ({ x: m[1], y: m[1] - m[0] }));
+  const charts = [
+    new Chart(document.getElementById("delay"), { type: "scatter", plugins: [timeLine], options: { ...common, scales: linear },
+      data: { datasets: [{ data: delays, pointRadius: 2, backgroundColor: "#2060c0" }] } }),
+    new Chart(document.getElementById("distance"), { type: "line", plugins: [timeLine], options: { ...common, scales: linear },
+      data: { datasets: [{ data: world.distances.map(([x, y]) => ({ x, y })), pointRadius: 0, borderColor: "#d04010" }] } }),
+    new Chart(document.getElementById("packets"), { type: "bar", options: common,
+      data: { labels: world.nodes.map((n) => n.node.name),
+              datasets: [{ data: world.nodes.map((n) => (n.node.packets || {}).received || 0), backgroundColor: "#80b0ff" }] } }),
+  ];
+  return () => { charts[0].draw(); charts[1].draw(); };
+}
+
+async function main() {
+  const [run, poses, messages, transitions, distances] = await Promise.all(
+    [api("/api/run"), api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance")]);
+  const duration = Number(run.info.duration_s);
+  document.getElementById("title").textContent = run.info.name;
+  const element = document.getElementById("world");
+  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(window.devicePixelRatio);
+  renderer.setSize(element.clientWidth, element.clientHeight);
+  element.insertBefore(renderer.domElement, element.firstChild);
+  const box = bounds(run, poses);
+  const world = { ...buildScene(run, poses, box), messages, transitions, distances, radio: [], linksUp: 0,
+                  dotSize: Math.max(0.15, box.size / 200), moteLift: Math.max(0.05, box.size / 240) };
+  const cams = cameras(box, element);
+  const controls = new THREE.OrbitControls(cams.perspective, renderer.domElement);
+  controls.target.set(box.cx, box.cy, 0);
+  const redrawPlots = plots(world, duration);
+  const slider = document.getElementById("time");
+  slider.max = duration;
+  const camera = () => (document.getElementById("view").value === "3d" ? cams.perspective : cams.top);
+  async function render() {
+    place(world, view.t);
+    drawRadio(world, await frameWindow(view.t), view.t);
+    renderer.render(world.scene, camera());
+    placeLabels(world, camera(), element);
+    document.getElementById("clock").textContent = `t = ${view.t.toFixed(1)} s`;
+    slider.value = view.t;
+    redrawPlots();
+    if (view.selected) await showPanel(world, view.selected, view.t);
+  }
+  let last = performance.now();
+  function tick(now) {
+    if (view.playing) {
+      view.t = Math.min(duration, view.t + ((now - last) / 1000) * Number(document.getElementById("speed").value));
+      if (view.t >= duration) view.playing = false;
+    }
+    last = now;
+    render().then(() => requestAnimationFrame(tick));
+  }
+  document.getElementById("play").onclick = (e) => { view.playing = !view.playing; e.target.textContent = view.playing ? "Pause" : "Play"; };
+  slider.oninput = () => { view.t = Number(slider.value); };
+  renderer.domElement.onclick = (e) => {
+    const r = renderer.domElement.getBoundingClientRect();
+    const ray = new THREE.Raycaster();
+    ray.setFromCamera(new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1), camera());
+    const hit = ray.intersectObjects(world.nodes.map((n) => n.mesh))[0];
+    if (hit) view.selected = world.nodes.find((n) => n.mesh === hit.object);
+  };
+  window.sanet = {
+    ready: true,
+    async seek(t) { view.playing = false; view.t = Math.max(0, Math.min(duration, t)); await render(); },
+    select(name) { view.selected = world.nodes.find((n) => n.node.name === name) || null; return render(); },
+    state() {
+      return { t: view.t, duration, linksUp: world.linksUp, motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length,
+               nodes: world.nodes.map((n) => ({ name: n.node.name, model: n.node.model, state: n.state,
+                                                x: n.mesh.position.x, y: n.mesh.position.y })) };
+    },
+  };
+  requestAnimationFrame(tick);
+}
+
+main().catch((error) => { console.error(error); document.getElementById("panel").textContent = String(error); });

@@ -1,0 +1,102 @@
+#include "view/viewer_server.h"
+
+#include <httplib.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "view/page_files.h"
+#include "view/trace_reader.h"
+
+namespace sanet::view {
+namespace {
+
+const char* ContentType(const std::string& name) {
+  if (name.size() > 5 && name.substr(name.size() - 5) == ".html") return "text/html; charset=utf-8";
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".css") return "text/css";
+  return "application/javascript";
+}
+
+// Debian's builds of the libraries the page loads: /lib/NAME -> file under `javascript`.
+const std::map<std::string, std::string>& Libraries() {
+  static const std::map<std::string, std::string> libraries = {
+      {"three.min.js", "three/three.min.js"},
+      {"OrbitControls.js", "three/examples/js/controls/OrbitControls.js"},
+      {"chart.min.js", "chart.js/chart.min.js"}};
+  return libraries;
+}
+
+void CheckLibraries(const std::string& root) {
+  for (const auto& [name, path] : Libraries())
+    if (!std::filesystem::exists(root + "/" + path))
+      throw std::runtime_error(root + "/" + path +
+                               " is missing: install libjs-three and libjs-chart.js (./setup does)");
+}
+
+double Number(const httplib::Request& request, const char* key, double fallback) {
+  return request.has_param(key) ? std::stod(request.get_param_value(key)) : fallback;
+}
+
+void Json(httplib::Response& response, const nlohmann::json& body) {
+  response.set_content(body.dump(), "application/json");
+}
+
+void AddRoutes(httplib::Server& server, const TraceReader& trace, const std::string& javascript) {
+  for (const auto& [name, content] : PageFiles()) {
+    const std::string path = name == "index.html" ? "/" : "/" + name;
+    server.Get(path, [&content = content, type = ContentType(name)](const httplib::Request&, httplib::Response& r) {
+      r.set_content(content, type);
+    });
+  }
+  for (const auto& [name, file] : Libraries())
+    server.Get("/lib/" + name, [path = javascript + "/" + file](const httplib::Request&, httplib::Response& r) {
+      std::ifstream in(path);
+      std::stringstream text;
+      text << in.rdbuf();
+      r.set_content(text.str(), "application/javascript");
+    });
+  server.Get("/api/run", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Run()); });
+  server.Get("/api/poses", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Poses()); });
+  server.Get("/api/messages", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Messages()); });
+  server.Get("/api/transitions", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Transitions()); });
+  server.Get("/api/min_distance", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.MinDistance()); });
+  server.Get("/api/frames", [&](const httplib::Request& q, httplib::Response& r) {
+    Json(r, trace.Frames(Number(q, "from", 0), Number(q, "to", 0)));
+  });
+  server.Get("/api/routes",
+             [&](const httplib::Request& q, httplib::Response& r) { Json(r, trace.RoutesAt(Number(q, "t", 0))); });
+  server.set_exception_handler([](const httplib::Request&, httplib::Response& r, std::exception_ptr e) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::exception& error) {
+      r.status = 400;
+      r.set_content(error.what(), "text/plain");
+    }
+  });
+}
+
+}  // namespace
+
+void ServeViewer(const ViewerSettings& settings, const std::function<void(int port)>& listening,
+                 const std::function<bool()>& stop) {
+  CheckLibraries(settings.javascript);
+  const TraceReader trace(settings.results);
+  httplib::Server server;
+  AddRoutes(server, trace, settings.javascript);
+  const int port = settings.port == 0 ? server.bind_to_any_port(settings.bind)
+                                      : (server.bind_to_port(settings.bind, settings.port) ? settings.port : -1);
+  if (port < 0) throw std::runtime_error("cannot listen on " + settings.bind + ":" + std::to_string(settings.port));
+  listening(port);
+  std::thread watcher([&] {
+    while (!stop()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    server.stop();
+  });
+  server.listen_after_bind();
+  watcher.join();
+}
+
+}  // namespace sanet::view

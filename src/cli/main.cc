@@ -30,6 +30,7 @@
 #include "scenario/scenario_loader.h"
 #include "sim/sweep.h"
 #include "sim/world.h"
+#include "view/live_view.h"
 #include "view/viewer_server.h"
 
 namespace {
@@ -39,6 +40,41 @@ using namespace sanet;
 constexpr int kExitScenarioError = 2;
 constexpr int kExitRunFailed = 1;
 
+// --view: the live view of a run (docs/viewer.md).
+struct ViewArgs {
+  bool on = false;
+  int port = 8000;
+  std::string port_file;
+};
+
+void AddViewOptions(CLI::App* cmd, ViewArgs& v) {
+  cmd->add_flag("--view", v.on, "Stream a live view of the run to a web page on loopback (docs/viewer.md)");
+  cmd->add_option("--view-port", v.port, "The live view's HTTP port (0: any free port)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  cmd->add_option("--view-port-file", v.port_file, "Once the live view listens, write its port to this file");
+}
+
+void WritePortFile(const std::string& path, std::uint16_t port, const char* option);
+
+// The live view, watching `world`; null without --view.
+std::unique_ptr<view::LiveView> StartLiveView(sim::World& world, const ViewArgs& v, bool announce = true) {
+  if (!v.on) return nullptr;
+  view::LiveSettings settings;
+  settings.port = v.port;
+  std::unique_ptr<view::LiveView> live;
+  try {
+    live = std::make_unique<view::LiveView>(world.spec(), settings);
+  } catch (const std::runtime_error& e) {
+    throw CLI::ValidationError("--view", e.what());
+  }
+  WritePortFile(v.port_file, static_cast<std::uint16_t>(live->port()), "--view-port-file");
+  world.AddObserver(*live);
+  if (announce) std::printf("sanet: live view at http://127.0.0.1:%d/\n", live->port());
+  std::fflush(stdout);
+  return live;
+}
+
 struct RunArgs {
   std::string file;
   std::optional<std::uint64_t> seed;
@@ -46,6 +82,7 @@ struct RunArgs {
   std::string output;
   bool quiet = false;
   bool no_progress = false;
+  ViewArgs view;
 };
 
 scenario::Scenario LoadChecked(const std::string& file, agents::Registry& registry) {
@@ -66,7 +103,9 @@ int Run(const RunArgs& args, agents::Registry& registry) {
     std::printf("sanet: running %s (%zu nodes, %.1f s simulated, seed %llu)\n", sc.run.name.c_str(),
                 sc.run.nodes.size(), sc.run.duration, static_cast<unsigned long long>(sc.run.seed));
   sim::World world(sc.run, registry);
+  const std::unique_ptr<view::LiveView> live = StartLiveView(world, args.view, !args.quiet);
   const sim::RunResult r = world.Run(options);
+  if (live) live->Finish();
   if (!args.quiet) {
     std::printf("  simulated %.1f s in %.2f s wall (%.1fx real time), %llu events\n", r.simulated, r.wall,
                 r.real_time_factor, static_cast<unsigned long long>(r.events));
@@ -124,6 +163,7 @@ struct ServeArgs {
   bool quiet = false;
   std::optional<double> duration;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
+  ViewArgs view;
 };
 
 // --tap ROBOT=NAMESPACE: the robot's radio reaches a real IP stack in that namespace.
@@ -193,6 +233,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   hil::SimServer& server = *listening;
   JoinTaps(world, a.taps);
   const std::unique_ptr<hil::WssServer> wss = StartWss(world, a);
+  const std::unique_ptr<view::LiveView> live = StartLiveView(world, a.view);
   WritePortFile(port_file, server.port(), "--port-file");
   server.Start();
   std::signal(SIGINT, [](int) { hil::RequestStop(); });
@@ -211,6 +252,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
     server.WriteAgentTable(folder);
   };
   const sim::RunResult r = world.Run(options);
+  if (live) live->Finish();
   if (!quiet) {
     const auto lag = server.LagSummary();
     std::printf(
@@ -345,6 +387,7 @@ Command AddRun(CLI::App& app) {
                   "Results folder (default: the scenario's outputs.folder, or results/<name>)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
   cmd->add_flag("--no-progress", a->no_progress, "Do not show progress (shown only on a terminal)");
+  AddViewOptions(cmd, a->view);
   return {cmd, [a](agents::Registry& r) { return Run(*a, r); }};
 }
 
@@ -401,6 +444,7 @@ Command AddServe(CLI::App& app) {
                   "0: any free port), with signal strengths and links from the simulated radio")
       ->check(CLI::Range(0, 65535));
   cmd->add_option("--wss-port-file", a->wss_port_file, "Once listening, write the WSS port number to this file");
+  AddViewOptions(cmd, a->view);
   return {cmd, [a](agents::Registry& r) { return Serve(*a, r); }};
 }
 

@@ -9,33 +9,11 @@
 #include <stdexcept>
 #include <thread>
 
-#include "view/page_files.h"
+#include "view/page_routes.h"
 #include "view/trace_reader.h"
 
 namespace sanet::view {
 namespace {
-
-const char* ContentType(const std::string& name) {
-  if (name.size() > 5 && name.substr(name.size() - 5) == ".html") return "text/html; charset=utf-8";
-  if (name.size() > 4 && name.substr(name.size() - 4) == ".css") return "text/css";
-  return "application/javascript";
-}
-
-// Debian's builds of the libraries the page loads: /lib/NAME -> file under `javascript`.
-const std::map<std::string, std::string>& Libraries() {
-  static const std::map<std::string, std::string> libraries = {
-      {"three.min.js", "three/three.min.js"},
-      {"OrbitControls.js", "three/examples/js/controls/OrbitControls.js"},
-      {"chart.min.js", "chart.js/chart.min.js"}};
-  return libraries;
-}
-
-void CheckLibraries(const std::string& root) {
-  for (const auto& [name, path] : Libraries())
-    if (!std::filesystem::exists(root + "/" + path))
-      throw std::runtime_error(root + "/" + path +
-                               " is missing: install libjs-three and libjs-chart.js (./setup does)");
-}
 
 double Number(const httplib::Request& request, const char* key, double fallback) {
   return request.has_param(key) ? std::stod(request.get_param_value(key)) : fallback;
@@ -46,19 +24,7 @@ void Json(httplib::Response& response, const nlohmann::json& body) {
 }
 
 void AddRoutes(httplib::Server& server, const TraceReader& trace, const std::string& javascript) {
-  for (const auto& [name, content] : PageFiles()) {
-    const std::string path = name == "index.html" ? "/" : "/" + name;
-    server.Get(path, [&content = content, type = ContentType(name)](const httplib::Request&, httplib::Response& r) {
-      r.set_content(content, type);
-    });
-  }
-  for (const auto& [name, file] : Libraries())
-    server.Get("/lib/" + name, [path = javascript + "/" + file](const httplib::Request&, httplib::Response& r) {
-      std::ifstream in(path);
-      std::stringstream text;
-      text << in.rdbuf();
-      r.set_content(text.str(), "application/javascript");
-    });
+  AddPageRoutes(server, javascript);
   server.Get("/api/run", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Run()); });
   server.Get("/api/poses", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Poses()); });
   server.Get("/api/messages", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Messages()); });

@@ -6,6 +6,7 @@ equal packets.csv; screenshots of both case studies are taken (into docs/figures
 SANET_UPDATE_FIGURES=1). Skipped, saying why, where Chromium or Selenium is missing.
 Run with Debian's python: /usr/bin/python3 viewer_test.py SANET SOURCE"""
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -50,7 +51,10 @@ class Viewer:
                 break
             time.sleep(0.01)
         with open(port_file) as f:
-            self.url = f"http://127.0.0.1:{int(f.read())}/"
+            self.open_browser(f"http://127.0.0.1:{int(f.read())}/")
+
+    def open_browser(self, url):
+        self.url = url
         options = webdriver.ChromeOptions()
         for argument in ["--headless=new", "--no-sandbox", "--window-size=1400,1000", "--enable-unsafe-swiftshader",
                          "--use-angle=swiftshader"]:
@@ -135,6 +139,72 @@ class ViewerTest(unittest.TestCase):
             self.assertEqual(second.errors(), [])
         finally:
             second.close()
+
+
+def sse_frames(port_file, timeout=60):
+    """Connects to a live view as soon as it listens and counts its frames until the run ends."""
+    import urllib.request
+    for _ in range(2000):
+        if os.path.exists(port_file) and open(port_file).read().strip():
+            break
+        time.sleep(0.005)
+    with open(port_file) as f:
+        port = int(f.read())
+    frames, ended = 0, False
+    with urllib.request.urlopen(f"http://127.0.0.1:{port}/api/live", timeout=timeout) as stream:
+        for line in stream:
+            if line.startswith(b"data: "):
+                frames += 1
+            if line.startswith(b"event: end"):
+                ended = True
+                break
+    return frames, ended
+
+
+class LiveTest(unittest.TestCase):
+    def test_a_live_run_streams_frames_and_keeps_its_fingerprint(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = os.path.join(SOURCE, "scenarios", "formation.yaml")
+            port_file = os.path.join(tmp, "port")
+            run = subprocess.Popen([SANET, "run", scenario, "--duration", "90", "-q", "-o", os.path.join(tmp, "live"),
+                                    "--view", "--view-port", "0", "--view-port-file", port_file])
+            frames, ended = sse_frames(port_file)
+            self.assertEqual(run.wait(timeout=120), 0)
+            subprocess.run([SANET, "run", scenario, "--duration", "90", "-q", "-o", os.path.join(tmp, "plain")],
+                           check=True)
+            fingerprints = []
+            for name in ("live", "plain"):
+                with open(os.path.join(tmp, name, "summary.json")) as f:
+                    fingerprints.append(json.load(f)["fingerprint"])
+            self.assertGreaterEqual(frames, 5)
+            self.assertTrue(ended, "the stream says when the run is over")
+            self.assertEqual(fingerprints[0], fingerprints[1])
+
+    @unittest.skipIf(missing(), f"needs a browser: {missing()}")
+    def test_a_browser_follows_a_served_world_live(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            port_file = os.path.join(tmp, "view-port")
+            server = subprocess.Popen([SANET, "serve", os.path.join(SOURCE, "scenarios", "sensor-network.yaml"),
+                                       "--port", "0", "--duration", "8", "-q", "-o", os.path.join(tmp, "out"),
+                                       "--view", "--view-port", "0", "--view-port-file", port_file],
+                                      stdout=subprocess.DEVNULL)
+            for _ in range(500):
+                if os.path.exists(port_file):
+                    break
+                time.sleep(0.01)
+            viewer = Viewer.__new__(Viewer)
+            viewer.server = server
+            with open(port_file) as f:
+                Viewer.open_browser(viewer, f"http://127.0.0.1:{int(f.read())}/")
+            try:
+                time.sleep(3)
+                state = viewer.browser.execute_script("return window.sanet.state()")
+                self.assertGreater(state["frames"], 10)
+                self.assertEqual(len(state["nodes"]), 28)
+                self.assertGreater(state["t"], 1)
+                self.assertEqual(viewer.errors(), [])
+            finally:
+                viewer.close()
 
 
 if __name__ == "__main__":

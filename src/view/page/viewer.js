@@ -173,16 +173,71 @@ function plots(world, duration) {
   return () => { charts[0].draw(); charts[1].draw(); };
 }
 
-async function main() {
-  const [run, poses, messages, transitions, distances] = await Promise.all(
-    [api("/api/run"), api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance")]);
-  const duration = Number(run.info.duration_s);
-  document.getElementById("title").textContent = run.info.name;
-  const element = document.getElementById("world");
+function makeRenderer(element) {
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
   renderer.setPixelRatio(window.devicePixelRatio);
   renderer.setSize(element.clientWidth, element.clientHeight);
   element.insertBefore(renderer.domElement, element.firstChild);
+  return renderer;
+}
+
+// The live view (sanet run/serve --view): frames of poses, states and radio neighbours arrive as
+// server-sent events; the latest is drawn.
+function live(run) {
+  document.getElementById("title").textContent = run.info.name + " (live)";
+  for (const id of ["play", "time", "speed", "plots"]) document.getElementById(id).style.display = "none";
+  const element = document.getElementById("world");
+  const renderer = makeRenderer(element);
+  const box = bounds(run, {});
+  box.size *= 2;  // robots drive beyond where they start
+  const world = { ...buildScene(run, {}, box), radio: [], linksUp: 0, moteLift: Math.max(0.05, box.size / 240) };
+  const cams = cameras(box, element);
+  const controls = new THREE.OrbitControls(cams.perspective, renderer.domElement);
+  controls.target.set(box.cx, box.cy, 0);
+  const camera = () => (document.getElementById("view").value === "3d" ? cams.perspective : cams.top);
+  const state = { t: 0, frames: 0, ended: false };
+  const draw = (frame) => {
+    frame.poses.forEach(([x, y, theta], id) => {
+      const n = world.nodes[id];
+      if (!n) return;
+      n.mesh.position.set(x, y, n.mote ? world.moteLift : 0.1); n.mesh.rotation.z = theta;
+      n.state = frame.states[id] || "";
+      n.label.textContent = n.node.name + (n.state ? ` [${n.state}]` : "");
+    });
+    for (const line of world.radio) world.scene.remove(line);
+    world.radio = frame.links.map(([a, b]) => {
+      const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([world.nodes[a].mesh.position, world.nodes[b].mesh.position]),
+                                  new THREE.LineBasicMaterial({ color: 0x80b0ff }));
+      world.scene.add(line); return line;
+    });
+    world.linksUp = frame.links.length;
+    renderer.render(world.scene, camera());
+    placeLabels(world, camera(), element);
+    document.getElementById("clock").textContent = `t = ${frame.t.toFixed(1)} s`;
+  };
+  const events = new EventSource("/api/live");
+  events.onmessage = (e) => { const frame = JSON.parse(e.data); state.t = frame.t; state.frames += 1; draw(frame); };
+  events.addEventListener("end", () => { state.ended = true; events.close();
+    document.getElementById("clock").textContent += " (run ended)"; });
+  window.sanet = {
+    ready: true, live: true,
+    state() {
+      return { t: state.t, frames: state.frames, ended: state.ended, linksUp: world.linksUp,
+               nodes: world.nodes.map((n) => ({ name: n.node.name, model: n.node.model, state: n.state,
+                                                x: n.mesh.position.x, y: n.mesh.position.y })) };
+    },
+  };
+}
+
+async function main() {
+  const run = await api("/api/run");
+  if (run.info.live) return live(run);
+  const [poses, messages, transitions, distances] = await Promise.all(
+    [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance")]);
+  const duration = Number(run.info.duration_s);
+  document.getElementById("title").textContent = run.info.name;
+  const element = document.getElementById("world");
+  const renderer = makeRenderer(element);
   const box = bounds(run, poses);
   const world = { ...buildScene(run, poses, box), messages, transitions, distances, radio: [], linksUp: 0,
                   dotSize: Math.max(0.15, box.size / 200), moteLift: Math.max(0.05, box.size / 240) };

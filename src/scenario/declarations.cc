@@ -361,7 +361,8 @@ const Fields<Scenario>& OutputsFields() {
         "trajectory_interval", [](Scenario& s) -> double& { return s.run.trajectory_interval; }, "s", 0, 1e6,
         "between trajectory samples; at least `world.physics_step`", true);
     f.Flag(
-        "figures", [](Scenario& s) -> bool& { return s.run.figures; }, "draw `map.svg`, `packets.svg`");
+        "figures", [](Scenario& s) -> bool& { return s.run.figures; },
+        "draw `map.svg`, `packets.svg`, `trajectory-3d.svg` (and PNG copies); see [figures](#figures)");
     f.Number(
         "figure_tick", [](Scenario& s) -> double& { return s.run.figure_tick; }, "s", 0, 1e9,
         "between time marks on trajectories", true);

@@ -5,6 +5,7 @@
 
 #include "core/statistics.h"
 #include "sim/outputs.h"
+#include "trace/png_export.h"
 
 namespace sanet::sim {
 namespace {
@@ -130,7 +131,10 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
   }
   result.fingerprint = fp.Hex();
   if (!folder_.writes()) return;
-  if (spec_.figures) WriteFigures(final_poses, network);
+  if (spec_.figures) {
+    WriteFigures(final_poses, network);
+    folder_.Commit();  // the PNG copies
+  }
   nlohmann::ordered_json summary = Summary(result, scenario_file, final_poses);
   for (const auto& [key, value] : extra.items()) summary[key] = value;
   folder_.Listed("summary.json");
@@ -154,11 +158,25 @@ void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::op
   }
   if (network)
     for (const net::PacketCounts& c : network->counts) in.received.push_back(c.received);
+  std::vector<std::string> figures = {"map"};
   folder_.WriteWhole("map.svg", trace::MapSvg(in, spec_.figure_tick));
-  if (!min_distances_.empty())
+  if (!in.tracks.empty()) {
+    folder_.WriteWhole("trajectory-3d.svg", trace::Trajectory3dSvg(in));
+    figures.push_back("trajectory-3d");
+  }
+  if (!min_distances_.empty()) {
     folder_.WriteWhole("min_distance.svg", trace::LineSvg(spec_.name + ": smallest distance between robots", "time (s)",
                                                           "distance (m)", min_distances_, spec_.distance_reference));
-  if (!in.received.empty()) folder_.WriteWhole("packets.svg", trace::PacketsSvg(in));
+    figures.push_back("min_distance");
+  }
+  if (!in.received.empty()) {
+    folder_.WriteWhole("packets.svg", trace::PacketsSvg(in));
+    figures.push_back("packets");
+  }
+  // PNG copies where rsvg-convert is installed (./setup installs it).
+  if (trace::PngExportAvailable())
+    for (const std::string& name : figures)
+      trace::SvgToPng(folder_.dir() + "/" + name + ".svg", folder_.TempFile(name + ".png"));
 }
 
 nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::string& scenario_file,

@@ -1,5 +1,7 @@
-// Figures of a run as SVG files a browser opens: the map (obstacles, motes, trajectories with a
-// mark every `tick` seconds) and the packets map (each node shaded by the packets it received).
+// Figures of a run as SVG files that browsers, rsvg-convert and ImageMagick draw alike: the map
+// (obstacles, motes, trajectories with a mark every `tick` seconds), the packets map (each node a
+// disc coloured by the packets it received, with a colour scale), trajectories over time, and a
+// time series. Maps have axes in metres, a scale bar and a legend; labels never overlap.
 #pragma once
 
 #include <cstdint>
@@ -38,6 +40,7 @@ struct FigureInput {
 
 std::string MapSvg(const FigureInput& in, double tick);
 std::string PacketsSvg(const FigureInput& in);
+std::string Trajectory3dSvg(const FigureInput& in);
 // A time series as a line, with a dashed horizontal reference line when `reference` > 0.
 std::string LineSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
                     const std::vector<std::pair<double, double>>& points, double reference);

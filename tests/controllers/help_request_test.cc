@@ -90,7 +90,7 @@ TEST(HelpRequest, TheRobotArrivesAroundTheWall) {
   EXPECT_EQ(map.rfind("<?xml", 0), 0u);
   EXPECT_NE(map.find("<polyline"), std::string::npos);
   EXPECT_NE(map.find("50 s</text>"), std::string::npos) << "time marks on the trajectory";
-  EXPECT_NE(ReadFile(dir + "/packets.svg").find("packets</title>"), std::string::npos);
+  EXPECT_NE(ReadFile(dir + "/packets.svg").find(">packets received</text>"), std::string::npos) << "the colour scale";
 }
 
 // Passes every call to the real node, remembering the routing table it handed out, and checks

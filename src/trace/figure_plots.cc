@@ -12,7 +12,7 @@ using svg::Escape;
 using svg::Num;
 using svg::Short;
 
-constexpr const char* kColors[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+using svg::kColors;
 
 void Document(std::ostringstream& s, double w, double h, const std::string& title) {
   s << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w

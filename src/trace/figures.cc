@@ -12,7 +12,7 @@ using svg::Escape;
 using svg::Num;
 using svg::Short;
 
-constexpr const char* kColors[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+using svg::kColors;
 constexpr const char* kMote = "#1a7f37";
 constexpr const char* kObstacle = "#555555";
 

@@ -11,6 +11,9 @@
 
 namespace sanet::trace::svg {
 
+// Colours of the robots' tracks, in node order (repeated after six).
+constexpr const char* kColors[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+
 std::string Num(double v);    // 1 decimal
 std::string Short(double v);  // as few decimals as it needs (tick labels)
 std::string Escape(const std::string& text);

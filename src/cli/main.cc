@@ -506,8 +506,10 @@ int View(const view::ViewerSettings& settings, const std::string& port_file) {
           std::fflush(stdout);
         },
         [] { return g_view_stop != 0; });
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--port", e.what());
   } catch (const std::runtime_error& e) {
-    throw CLI::ValidationError("results", e.what());
+    throw CLI::ValidationError("RESULTS_DIR", e.what());
   }
   return 0;
 }

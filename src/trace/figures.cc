@@ -82,12 +82,15 @@ std::string PacketsSvg(const FigureInput& in) {
   const svg::Frame f = svg::Frame::Around(in);
   std::ostringstream s;
   svg::Labels labels;
-  f.Open(s, in.title + ": IP packets received per node");
+  const bool motes = std::any_of(in.nodes.begin(), in.nodes.end(), [](const FigureNode& n) { return n.mote; });
+  f.Open(s, in.title + (motes ? ": IP packets received per mote" : ": IP packets received per robot"));
   Obstacles(s, f, in);
   const auto [few_it, most_it] = std::minmax_element(in.received.begin(), in.received.end());
   const double few = in.received.empty() ? 0 : *few_it, most = in.received.empty() ? 0 : *most_it;
+  // With motes the map is theirs (a robot ends on top of one); without, robots where they ended.
   for (std::size_t i = 0; i < in.nodes.size() && i < in.received.size(); ++i) {
-    const Pose2D& p = in.nodes[i].final_pose;  // robots are drawn where they ended
+    if (motes && !in.nodes[i].mote) continue;
+    const Pose2D& p = in.nodes[i].final_pose;
     const double share = most > few ? (in.received[i] - few) / (most - few) : 1;
     const bool mote = in.nodes[i].mote;
     s << "<circle cx=\"" << Num(f.X(p.x)) << "\" cy=\"" << Num(f.Y(p.y)) << "\" r=\"" << (mote ? 12 : 8) << "\" fill=\""

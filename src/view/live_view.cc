@@ -54,7 +54,10 @@ LiveView::~LiveView() {
 // What the page needs before the first frame: as /api/run of a replay, marked live.
 nlohmann::json LiveView::RunJson(const sim::RunSpec& spec) const {
   nlohmann::json run;
-  run["info"] = {{"name", spec.name}, {"duration_s", std::to_string(spec.duration)}, {"live", true}};
+  run["info"] = {{"name", spec.name},
+                 {"duration_s", std::to_string(spec.duration)},
+                 {"world_size_m", std::to_string(spec.world_size.x) + " " + std::to_string(spec.world_size.y)},
+                 {"live", true}};
   run["nodes"] = nlohmann::json::array();
   for (NodeId id = 0; id < spec.nodes.size(); ++id) {
     const sim::NodeSpec& n = spec.nodes[id];

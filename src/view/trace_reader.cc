@@ -56,6 +56,17 @@ TraceReader::TraceReader(const std::string& folder) : folder_(folder) {
     sqlite3_close(db_);
     throw std::runtime_error("cannot read " + path + ": " + why);
   }
+  // A trace of another format, or no trace at all, is refused now rather than by the page.
+  sqlite3_stmt* s = nullptr;
+  const bool ours =
+      sqlite3_prepare_v2(db_, "SELECT value FROM info WHERE key = 'format'", -1, &s, nullptr) == SQLITE_OK &&
+      sqlite3_step(s) == SQLITE_ROW &&
+      std::string(reinterpret_cast<const char*>(sqlite3_column_text(s, 0))) == "sanet trace 1";
+  sqlite3_finalize(s);
+  if (!ours) {
+    sqlite3_close(db_);
+    throw std::runtime_error(path + " is not a sanet trace (format 'sanet trace 1'): " + sqlite3_errstr(SQLITE_NOTADB));
+  }
 }
 
 TraceReader::~TraceReader() { sqlite3_close(db_); }

@@ -55,7 +55,9 @@ void ServeViewer(const ViewerSettings& settings, const std::function<void(int po
   AddRoutes(server, trace, settings.javascript);
   const int port = settings.port == 0 ? server.bind_to_any_port(settings.bind)
                                       : (server.bind_to_port(settings.bind, settings.port) ? settings.port : -1);
-  if (port < 0) throw std::runtime_error("cannot listen on " + settings.bind + ":" + std::to_string(settings.port));
+  if (port < 0)
+    throw std::invalid_argument("cannot listen on " + settings.bind + ":" + std::to_string(settings.port) +
+                                " (is the port in use, or the address not this machine's?)");
   listening(port);
   std::thread watcher([&] {
     while (!stop()) std::this_thread::sleep_for(std::chrono::milliseconds(100));

@@ -123,6 +123,10 @@ class ViewerTest(unittest.TestCase):
         for key in ("sent", "received", "forwarded", "dropped"):
             self.assertEqual(cells[key], expected[key])
         self.assertEqual(self.viewer.browser.find_element("id", "panel-name").text, "m7")
+        # Its routes at the time shown are drawn to their next hops.
+        self.viewer.call("window.sanet.seek(600)")
+        routes = self.viewer.browser.execute_script("return window.sanet.state().routesDrawn")
+        self.assertGreater(routes, 0)
 
     def test_screenshots_of_both_case_studies(self):
         formation = os.path.join(self.tmp.name, "formation")

@@ -71,7 +71,7 @@ function cameras(box, element) {
   top.position.set(box.cx, box.cy, 100);
   const perspective = new THREE.PerspectiveCamera(50, aspect, 0.1, box.size * 20);
   perspective.up.set(0, 0, 1);
-  perspective.position.set(box.cx - box.size * 0.6, box.cy - box.size * 0.9, box.size * 0.7);
+  perspective.position.set(box.cx - box.size * 0.8, box.cy - box.size * 1.3, box.size * 1.0);
   return { top, perspective };
 }
 
@@ -133,7 +133,12 @@ function placeLabels(world, camera, element) {
 }
 
 async function showPanel(world, n, t) {
-  if (view.routesAt !== Math.round(t)) { view.routesAt = Math.round(t); view.routes = await api(`/api/routes?t=${t}`); }
+  // Renders overlap (playback and seek): only the answer for the latest time asked is kept.
+  if (view.routesAt !== Math.round(t)) {
+    const asked = (view.routesAt = Math.round(t));
+    const routes = await api(`/api/routes?t=${asked}`);
+    if (view.routesAt === asked) view.routes = routes;
+  }
   const name = (id) => (world.nodes[id] ? world.nodes[id].node.name : id);
   const p = n.node.packets || {};
   const sent = world.messages.filter((m) => m[2] === n.node.id && m[0] <= t).length;
@@ -149,6 +154,41 @@ async function showPanel(world, n, t) {
     `</table><h4>Messages up to now</h4><p>${sent} sent, ${received} received</p>` +
     `<h4>Routing table</h4><table><tr><th>to</th><th>via</th><th>hops</th></tr>${routes}</table>` +
     `<h4>States</h4><table><tr><th>t</th><th>state</th><th>why</th></tr>${states}</table>`;
+}
+
+// The selected node's routes: a dashed line to the next hop of each destination it has a route to.
+function drawRoutes(world, n) {
+  const hops = new Set(view.routes.filter((r) => r[0] === n.node.id).map((r) => r[2]));
+  for (const hop of hops) {
+    if (!world.nodes[hop]) continue;
+    const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([n.mesh.position, world.nodes[hop].mesh.position]),
+                                new THREE.LineDashedMaterial({ color: 0x9050d0, dashSize: world.dotSize * 3, gapSize: world.dotSize * 2 }));
+    line.computeLineDistances();
+    world.scene.add(line); world.radio.push(line);
+  }
+  world.routesDrawn = hops.size;
+}
+
+// The node drawn nearest to a click, within 14 px (motes are small on a large field).
+function nearestNode(world, camera, canvas, e) {
+  const r = canvas.getBoundingClientRect();
+  let best = null, bestDistance = 14;
+  for (const n of world.nodes) {
+    const v = n.mesh.position.clone().project(camera);
+    const d = Math.hypot(((v.x + 1) / 2) * r.width - (e.clientX - r.left), ((1 - v.y) / 2) * r.height - (e.clientY - r.top));
+    if (d < bestDistance) { best = n; bestDistance = d; }
+  }
+  return best;
+}
+
+// The view from above zooms with the wheel and pans with the mouse; it does not turn.
+function topControls(camera, canvas, box) {
+  const controls = new THREE.OrbitControls(camera, canvas);
+  controls.enableRotate = false;
+  controls.screenSpacePanning = true;
+  controls.target.set(box.cx, box.cy, 0);
+  camera.lookAt(box.cx, box.cy, 0);
+  return controls;
 }
 
 function plots(world, duration) {
@@ -186,10 +226,14 @@ function makeRenderer(element) {
 function live(run) {
   document.getElementById("title").textContent = run.info.name + " (live)";
   for (const id of ["play", "time", "speed", "plots"]) document.getElementById(id).style.display = "none";
+  document.getElementById("speed").parentElement.style.display = "none";
+  document.getElementById("panel").innerHTML = "<p>Live: the latest state of the run, as it goes.</p>";
   const element = document.getElementById("world");
   const renderer = makeRenderer(element);
   const box = bounds(run, {});
-  box.size *= 2;  // robots drive beyond where they start
+  // Robots drive beyond where they start: frame the scenario's field (world.size) around them.
+  const [wx, wy] = String(run.info.world_size_m || "0 0").split(" ").map(Number);
+  box.size = Math.max(box.size * 1.5, wx, wy);
   const world = { ...buildScene(run, {}, box), radio: [], linksUp: 0, moteLift: Math.max(0.05, box.size / 240) };
   const cams = cameras(box, element);
   const controls = new THREE.OrbitControls(cams.perspective, renderer.domElement);
@@ -219,6 +263,10 @@ function live(run) {
   events.onmessage = (e) => { const frame = JSON.parse(e.data); state.t = frame.t; state.frames += 1; draw(frame); };
   events.addEventListener("end", () => { state.ended = true; events.close();
     document.getElementById("clock").textContent += " (run ended)"; });
+  renderer.domElement.onclick = (e) => {
+    const n = nearestNode(world, camera(), renderer.domElement, e);
+    if (n) document.getElementById("panel").innerHTML = `<h3 id="panel-name">${n.node.name}</h3><p>${n.node.model}; state: ${n.state || "none"}</p>`;
+  };
   window.sanet = {
     ready: true, live: true,
     state() {
@@ -234,8 +282,10 @@ async function main() {
   if (run.info.live) return live(run);
   const [poses, messages, transitions, distances] = await Promise.all(
     [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance")]);
-  const duration = Number(run.info.duration_s);
+  // The run may have ended before the scenario's duration (an end condition).
+  const duration = Number((run.summary && run.summary.simulated_s) || run.info.duration_s);
   document.getElementById("title").textContent = run.info.name;
+  if (!distances.length) document.getElementById("distance").parentElement.style.display = "none";
   const element = document.getElementById("world");
   const renderer = makeRenderer(element);
   const box = bounds(run, poses);
@@ -244,6 +294,10 @@ async function main() {
   const cams = cameras(box, element);
   const controls = new THREE.OrbitControls(cams.perspective, renderer.domElement);
   controls.target.set(box.cx, box.cy, 0);
+  const zoom = topControls(cams.top, renderer.domElement, box);
+  document.getElementById("view").onchange = () => { const top = document.getElementById("view").value === "top";
+    controls.enabled = !top; zoom.enabled = top; };
+  controls.enabled = false;
   const redrawPlots = plots(world, duration);
   const slider = document.getElementById("time");
   slider.max = duration;
@@ -251,12 +305,15 @@ async function main() {
   async function render() {
     place(world, view.t);
     drawRadio(world, await frameWindow(view.t), view.t);
+    if (view.selected) {
+      await showPanel(world, view.selected, view.t);
+      drawRoutes(world, view.selected);
+    }
     renderer.render(world.scene, camera());
     placeLabels(world, camera(), element);
     document.getElementById("clock").textContent = `t = ${view.t.toFixed(1)} s`;
     slider.value = view.t;
     redrawPlots();
-    if (view.selected) await showPanel(world, view.selected, view.t);
   }
   let last = performance.now();
   function tick(now) {
@@ -264,24 +321,26 @@ async function main() {
       view.t = Math.min(duration, view.t + ((now - last) / 1000) * Number(document.getElementById("speed").value));
       if (view.t >= duration) view.playing = false;
     }
+    playButton.textContent = view.playing ? "Pause" : "Play";
     last = now;
     render().then(() => requestAnimationFrame(tick));
   }
-  document.getElementById("play").onclick = (e) => { view.playing = !view.playing; e.target.textContent = view.playing ? "Pause" : "Play"; };
+  const playButton = document.getElementById("play");
+  playButton.onclick = () => {
+    if (!view.playing && view.t >= duration) view.t = 0;  // at the end, play again from the start
+    view.playing = !view.playing;
+  };
   slider.oninput = () => { view.t = Number(slider.value); };
   renderer.domElement.onclick = (e) => {
-    const r = renderer.domElement.getBoundingClientRect();
-    const ray = new THREE.Raycaster();
-    ray.setFromCamera(new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1), camera());
-    const hit = ray.intersectObjects(world.nodes.map((n) => n.mesh))[0];
-    if (hit) view.selected = world.nodes.find((n) => n.mesh === hit.object);
+    view.selected = nearestNode(world, camera(), renderer.domElement, e);
+    if (!view.selected) document.getElementById("panel").innerHTML = "<p>Click a node to see its packets, messages, routes and states.</p>";
   };
   window.sanet = {
     ready: true,
-    async seek(t) { view.playing = false; view.t = Math.max(0, Math.min(duration, t)); await render(); },
+    async seek(t) { view.playing = false; playButton.textContent = "Play"; view.t = Math.max(0, Math.min(duration, t)); await render(); },
     select(name) { view.selected = world.nodes.find((n) => n.node.name === name) || null; return render(); },
     state() {
-      return { t: view.t, duration, linksUp: world.linksUp, motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length,
+      return { t: view.t, duration, linksUp: world.linksUp, routesDrawn: world.routesDrawn || 0, motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length,
                nodes: world.nodes.map((n) => ({ name: n.node.name, model: n.node.model, state: n.state,
                                                 x: n.mesh.position.x, y: n.mesh.position.y })) };
     },

@@ -133,12 +133,15 @@ function placeLabels(world, camera, element) {
 }
 
 async function showPanel(world, n, t) {
-  // Renders overlap (playback and seek): only the answer for the latest time asked is kept.
+  // Renders overlap (playback and seek): every render waits for the answer for the latest time
+  // asked, and only that answer is kept.
   if (view.routesAt !== Math.round(t)) {
     const asked = (view.routesAt = Math.round(t));
-    const routes = await api(`/api/routes?t=${asked}`);
-    if (view.routesAt === asked) view.routes = routes;
+    view.routesAnswer = api(`/api/routes?t=${asked}`).then((routes) => {
+      if (view.routesAt === asked) view.routes = routes;
+    });
   }
+  await view.routesAnswer;
   const name = (id) => (world.nodes[id] ? world.nodes[id].node.name : id);
   const p = n.node.packets || {};
   const sent = world.messages.filter((m) => m[2] === n.node.id && m[0] <= t).length;

@@ -113,6 +113,9 @@ class ViewerTest(unittest.TestCase):
             expected = (float(before[axis]) + float(after[axis])) / 2
             self.assertAlmostEqual(robot[axis], expected, delta=2.0)
         self.assertEqual(state["motes"], 25)
+        # The help request floods the network at t = 10 s: its broadcasts are drawn as they go.
+        self.viewer.call("window.sanet.seek(10.1)")
+        self.assertGreater(self.viewer.browser.execute_script("return window.sanet.state().broadcastsShown"), 0)
 
     def test_a_motes_panel_shows_its_packet_counts(self):
         self.viewer.call("window.sanet.select('m7')")

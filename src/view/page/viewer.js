@@ -91,6 +91,14 @@ function drawRadio(world, frames, t) {
   const position = (id) => world.nodes[id].mesh.position;
   const links = new Set();
   for (const [ft, node, tx, peer, kind] of frames) {
+    if (tx && peer === null && t - ft < 0.3 && (kind === "broadcast" || kind === "routing") && world.nodes[node]) {
+      // A frame sent to all in range: a ring that widens from its sender.
+      const ring = new THREE.Mesh(new THREE.RingGeometry(world.dotSize * (1 + 20 * (t - ft)), world.dotSize * (1.6 + 20 * (t - ft)), 24),
+                                  new THREE.MeshBasicMaterial({ color: kind === "broadcast" ? 0x00a000 : 0x9050d0, transparent: true, opacity: 0.6 }));
+      ring.position.copy(position(node)); ring.position.z = 0.3;
+      world.scene.add(ring); world.radio.push(ring);
+      world.broadcastsShown = (world.broadcastsShown || 0) + 1;
+    }
     if (peer === null || world.nodes[peer] === undefined) continue;
     if (!tx) links.add(Math.min(node, peer) + "-" + Math.max(node, peer));
     if (tx && t - ft < 0.3 && (kind === "data" || kind === "routing")) {
@@ -343,7 +351,7 @@ async function main() {
     async seek(t) { view.playing = false; playButton.textContent = "Play"; view.t = Math.max(0, Math.min(duration, t)); await render(); },
     select(name) { view.selected = world.nodes.find((n) => n.node.name === name) || null; return render(); },
     state() {
-      return { t: view.t, duration, linksUp: world.linksUp, routesDrawn: world.routesDrawn || 0, motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length,
+      return { t: view.t, duration, linksUp: world.linksUp, routesDrawn: world.routesDrawn || 0, broadcastsShown: world.broadcastsShown || 0, motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length,
                nodes: world.nodes.map((n) => ({ name: n.node.name, model: n.node.model, state: n.state,
                                                 x: n.mesh.position.x, y: n.mesh.position.y })) };
     },

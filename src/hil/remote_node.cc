@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "hil/message_lines.h"
+#include "hil/sockets.h"
 #include "robots/kinematics.h"
 #include "sanet/codec.h"
 
@@ -24,14 +25,6 @@ namespace {
 
 constexpr std::uint8_t kUdpMagic = 0x53;  // 'S'
 constexpr std::uint8_t kUnicast = 1, kBroadcast = 2;
-
-sockaddr_in Address(const std::string& host, std::uint16_t port) {
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(port);
-  if (::inet_pton(AF_INET, host.c_str(), &a.sin_addr) != 1) throw std::runtime_error("not an IPv4 address: " + host);
-  return a;
-}
 
 // USARSim frame (y right, yaw clockwise) back to sanet's.
 Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
@@ -44,7 +37,7 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
       settings_(std::move(settings)),
       random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
       server_time_at_(std::chrono::steady_clock::now()) {
-  const sockaddr_in server = Address(settings_.server_host, settings_.server_port);
+  const sockaddr_in server = Ipv4Endpoint(settings_.server_host, settings_.server_port);
   for (int attempt = 0; attempt < 100; ++attempt) {  // the server may still be starting
     tcp_ = ::socket(AF_INET, SOCK_STREAM, 0);
     if (::connect(tcp_, reinterpret_cast<const sockaddr*>(&server), sizeof server) == 0) break;
@@ -60,7 +53,7 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   ::fcntl(tcp_, F_SETFL, O_NONBLOCK);
 
   udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
-  const sockaddr_in mine = Address(HostOf(id_), PortOf(id_));
+  const sockaddr_in mine = Ipv4Endpoint(HostOf(id_), PortOf(id_));
   if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
     throw std::runtime_error("cannot bind UDP " + HostOf(id_) + ":" + std::to_string(PortOf(id_)) + ": " +
                              std::strerror(errno));
@@ -248,7 +241,7 @@ void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
   Bytes datagram =
       Writer().U8(kUdpMagic).U32(id_).U32(kind == kUnicast ? to : kBroadcast).U8(kind).F64(ClockNow()).bytes();
   datagram.insert(datagram.end(), payload.begin(), payload.end());
-  const sockaddr_in peer = Address(HostOf(to), PortOf(to));
+  const sockaddr_in peer = Ipv4Endpoint(HostOf(to), PortOf(to));
   const ssize_t n =
       ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
   ++(n < 0 ? datagrams_.send_errors : datagrams_.sent);

@@ -92,25 +92,12 @@ void SimServer::Poll() {
 
 void SimServer::Accept() {
   while (true) {
-    sockaddr_in peer{};
-    socklen_t size = sizeof peer;
-    const int fd = ::accept(listener_, reinterpret_cast<sockaddr*>(&peer), &size);
+    const int fd = AcceptClient(listener_);
     if (fd < 0) return;
-    ::fcntl(fd, F_SETFL, O_NONBLOCK);
-    const int yes = 1;
-    ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
     const int buffer = 64 * 1024;  // a client that stops reading is noticed within seconds
     ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &buffer, sizeof buffer);
-    char host[INET_ADDRSTRLEN];
-    ::inet_ntop(AF_INET, &peer.sin_addr, host, sizeof host);
-    clients_.push_back(std::make_unique<Client>(Client{fd,
-                                                       std::string(host) + ":" + std::to_string(ntohs(peer.sin_port)),
-                                                       LineReader(settings_.max_line),
-                                                       "",
-                                                       {},
-                                                       0,
-                                                       0,
-                                                       WallNow()}));
+    clients_.push_back(
+        std::make_unique<Client>(Client{fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow()}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes

@@ -3,6 +3,7 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -12,15 +13,32 @@
 
 namespace sanet::hil {
 
+sockaddr_in Ipv4Endpoint(const std::string& host, std::uint16_t port) {
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(port);
+  if (::inet_pton(AF_INET, host.c_str(), &a.sin_addr) != 1) throw std::runtime_error("not an IPv4 address: " + host);
+  return a;
+}
+
+int AcceptClient(int listener) {
+  const int fd = ::accept(listener, nullptr, nullptr);
+  if (fd < 0) return -1;
+  ::fcntl(fd, F_SETFL, O_NONBLOCK);
+  const int yes = 1;
+  ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+  return fd;
+}
+
 int ListenTcp(const std::string& bind, std::uint16_t port, int backlog, std::uint16_t* bound) {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   if (fd < 0) throw std::runtime_error(std::string("cannot open a socket: ") + std::strerror(errno));
   const int yes = 1;
   ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(port);
-  if (::inet_pton(AF_INET, bind.c_str(), &address.sin_addr) != 1) {
+  try {
+    address = Ipv4Endpoint(bind, port);
+  } catch (const std::runtime_error&) {
     ::close(fd);
     throw std::runtime_error("not an IPv4 address to bind to: " + bind);
   }

@@ -1,6 +1,8 @@
 // Small helpers for the servers' non-blocking TCP sockets.
 #pragma once
 
+#include <netinet/in.h>
+
 #include <cstdint>
 #include <string>
 
@@ -9,6 +11,13 @@ namespace sanet::hil {
 // A non-blocking TCP socket listening on `bind`:`port` (0: any free port); sets `bound` to the
 // port it got. Throws std::runtime_error naming the address and the reason.
 int ListenTcp(const std::string& bind, std::uint16_t port, int backlog, std::uint16_t* bound);
+
+// An IPv4 address and port; throws std::runtime_error when `host` is not a dotted IPv4 address.
+sockaddr_in Ipv4Endpoint(const std::string& host, std::uint16_t port);
+
+// The next connection waiting on `listener`, non-blocking and without Nagle's delay (lines go
+// out as they are written); -1 when none waits.
+int AcceptClient(int listener);
 
 // "host:port" of a connected socket's peer; its host alone in `host` if given.
 std::string PeerOf(int fd, std::string* host = nullptr);

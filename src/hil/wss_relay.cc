@@ -11,18 +11,12 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "hil/sockets.h"
+
 namespace sanet::hil {
 namespace {
 
 constexpr std::size_t kMaxPending = 256 * 1024;  // per direction: stop reading beyond it
-
-sockaddr_in Address(const std::string& host, std::uint16_t port) {
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(port);
-  if (::inet_pton(AF_INET, host.c_str(), &a.sin_addr) != 1) throw std::runtime_error("not an IPv4 address: " + host);
-  return a;
-}
 
 void NonBlocking(int fd) { ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
@@ -42,7 +36,7 @@ void WssRelay::Listen() {
   if (fd < 0) return;
   const int yes = 1;
   ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  sockaddr_in a = Address(bind_, port_);
+  sockaddr_in a = Ipv4Endpoint(bind_, port_);
   if (::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd, 8) != 0) {
     ::close(fd);
     return;
@@ -75,7 +69,7 @@ void WssRelay::Accept() {
     pipe.accepted = accepted;
     pipe.outgoing = ::socket(AF_INET, SOCK_STREAM, 0);
     NonBlocking(pipe.outgoing);
-    const sockaddr_in target = Address(target_host_, target_port_);
+    const sockaddr_in target = Ipv4Endpoint(target_host_, target_port_);
     if (::connect(pipe.outgoing, reinterpret_cast<const sockaddr*>(&target), sizeof target) != 0 &&
         errno != EINPROGRESS) {
       Close(pipe);

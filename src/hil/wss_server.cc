@@ -85,11 +85,8 @@ void WssServer::Poll() {
 
 void WssServer::Accept() {
   while (true) {
-    const int fd = ::accept(listener_, nullptr, nullptr);
+    const int fd = AcceptClient(listener_);
     if (fd < 0) return;
-    ::fcntl(fd, F_SETFL, O_NONBLOCK);
-    const int yes = 1;
-    ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
     auto robot = std::make_unique<Robot>();
     robot->fd = fd;
     robot->reader = LineReader(settings_.max_line);

@@ -35,7 +35,9 @@ with tempfile.TemporaryDirectory() as tmp:
     to_f1 = [r for r in rows if r["from"] == "leader" and r["to"] == "f1"]
     relayed = [r for r in rows if r["from"] == "f1" and r["to"] == "f3"]
     assert abs(len(to_f1) - summary["metrics"]["f1"]["pose_delay"]["count"]) <= 1, len(to_f1)
-    assert len(relayed) > 240 and all(0 < float(r["delay"]) < 0.5 for r in to_f1 + relayed), relayed[:2]
+    assert len(relayed) > 240, len(relayed)
+    late = [r for r in to_f1 + relayed if not 0 < float(r["delay"]) < 0.5]
+    assert not late, late[:3]  # says which message, and when, if one ever is
     assert summary["rows"]["messages"] == len(rows)
     leader = [r for r in open(os.path.join(tmp, "trajectories.csv")) if ",leader," in r]
     assert float(leader[-1].split(",")[2]) > 5, "the leader drove"

@@ -1,10 +1,14 @@
-// Cost of coupling the network with the rest of sanet. For 25, 100 and 400 static motes on a
-// grid (40 m apart, so routes are multi-hop) with AODV and light traffic (a tenth of the motes
-// send 64 bytes to a far mote every 2 s), it times
-//   sanet:  a whole sanet run (physics world, controllers, recording, outputs in memory)
-//   ns-3:   the same wireless network alone, sockets fed by plain ns-3 events
-// and prints the real-time factors and their ratio (the coupling overhead), measured in the
-// same process so that machine noise affects both alike.
+// Cost of the network in sanet, against ns-3 alone. For 25, 100 and 400 static motes on a grid
+// (40 m apart, so routes are multi-hop) with AODV and light traffic (a tenth of the motes send 64
+// bytes to a far mote every 2 s), it times
+//   ns-3:           the wireless network alone with ns-3's YansWifiChannel, sockets fed by plain
+//                   ns-3 events (the baseline)
+//   sanet yans:     a whole sanet run (physics world, controllers, recording, outputs in memory)
+//                   on the same channel: the coupling's own overhead
+//   sanet indexed:  the same run on sanet's default channel (net/indexed_channel.h, floor at
+//                   -85 dBm), which hands each frame only to the radios it reaches
+// and prints real-time factors and wall-time ratios against the baseline, all measured in the
+// same process so that machine noise affects them alike.
 //
 //   bench/network_bench [simulated seconds, default 30]
 #include <ns3/constant-position-mobility-model.h>
@@ -45,12 +49,13 @@ double WallSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double RunSanet(int count, double duration, agents::Registry& registry) {
+double RunSanet(int count, double duration, agents::Registry& registry, net::ChannelModel channel) {
   const Layout layout = MakeLayout(count);
   sim::RunSpec spec;
   spec.duration = duration;
   spec.network = net::NetworkSpec{};
   spec.network->packet_log = false;
+  spec.network->channel = channel;
   for (int i = 0; i < count; ++i)
     spec.nodes.push_back({"m" + std::to_string(i),
                           robots::ModelSpec::Defaults(robots::ModelKind::kMote),
@@ -86,6 +91,7 @@ double RunNs3Alone(int count, double duration) {
   }
   net::NetworkSpec spec;
   spec.packet_log = false;
+  spec.channel = net::ChannelModel::kYans;
   {
     net::WirelessNetwork network(spec, nodes, names, std::vector<net::NodeRadio>(count));
     trace::ResultsFolder nowhere("");
@@ -118,13 +124,14 @@ int main(int argc, char** argv) {
       "sanet network benchmark: static motes 40 m apart, AODV, 802.11b 1 Mbps, a tenth of the\n"
       "motes send 64 B to a far mote every 2 s; %.0f s simulated per case\n",
       duration);
-  std::printf("%-8s %12s %12s %12s %12s %10s\n", "motes", "sanet wall", "sanet RTF", "ns-3 wall", "ns-3 RTF",
-              "overhead");
+  std::printf("%-6s %10s %8s | %10s %8s | %12s %8s %8s\n", "motes", "ns-3 wall", "RTF", "sanet yans", "ratio",
+              "sanet indexed", "RTF", "ratio");
   for (int count : {25, 100, 400}) {
     const double ns3_wall = RunNs3Alone(count, duration);
-    const double sanet_wall = RunSanet(count, duration, registry);
-    std::printf("%-8d %11.3fs %12.1f %11.3fs %12.1f %9.2fx\n", count, sanet_wall, duration / sanet_wall, ns3_wall,
-                duration / ns3_wall, sanet_wall / ns3_wall);
+    const double yans_wall = RunSanet(count, duration, registry, net::ChannelModel::kYans);
+    const double indexed_wall = RunSanet(count, duration, registry, net::ChannelModel::kIndexed);
+    std::printf("%-6d %9.3fs %8.1f | %9.3fs %7.2fx | %11.3fs %8.1f %7.3fx\n", count, ns3_wall, duration / ns3_wall,
+                yans_wall, yans_wall / ns3_wall, indexed_wall, duration / indexed_wall, indexed_wall / ns3_wall);
     std::fflush(stdout);
   }
   return 0;

@@ -3,7 +3,9 @@
 // on a shared machine, so every case is also given as a ratio to a baseline measured in the same
 // run: the empty world for motes (motes at rest should cost nothing), one robot for robots (cost
 // per robot should stay flat; one robot among 25 motes should cost what one robot alone does),
-// and the exact solver for the quick one.
+// and the exact solver for the quick one. Last, the two engines at swarm scale: the physics
+// stage alone (profile_s.physics) per robot-step for 1,000 diffdrive robots on the 2D engine
+// (Box2D) against the 3D one (ODE).
 //
 //   bench/physics_bench [simulated seconds per case, default 20]
 #include <chrono>
@@ -23,14 +25,16 @@ struct Measure {
   double wall, steps_per_s, rtf;
 };
 
-sim::RunSpec Robots(int count, double duration, physics::Solver solver) {
+sim::RunSpec Robots(int count, double duration, physics::Solver solver,
+                    robots::ModelKind kind = robots::ModelKind::kOmni3, physics::Engine engine = physics::Engine::k3d) {
   sim::RunSpec spec;
   spec.duration = duration;
   spec.physics.solver = solver;
+  spec.physics.engine = engine;
   const int side = static_cast<int>(std::ceil(std::sqrt(count)));
   for (int i = 0; i < count; ++i) {
     sim::NodeSpec n{"r" + std::to_string(i),
-                    robots::ModelSpec::Defaults(robots::ModelKind::kOmni3),
+                    robots::ModelSpec::Defaults(kind),
                     {3.0 * (i % side), 3.0 * (i / side), 0},
                     sim::ControllerSpec{},
                     {}};
@@ -96,5 +100,18 @@ int main(int argc, char** argv) {
   const Measure exact100 = Time(Robots(100, duration / 4, physics::Solver::kExact), registry);
   const Measure quick100 = Time(Robots(100, duration / 4, physics::Solver::kQuick), registry);
   Row("100 omni3, quick solver", quick100, "wall of exact solver", quick100.wall / exact100.wall);
+
+  std::printf("\nphysics stage alone, 1000 diffdrive robots (%.1f s simulated each)\n", duration / 10);
+  std::printf("%-24s %14s %20s\n", "engine", "physics wall s", "us per robot-step");
+  double per_robot_step[2];
+  for (physics::Engine engine : {physics::Engine::k3d, physics::Engine::k2d}) {
+    sim::World world(Robots(1000, duration / 10, physics::Solver::kExact, robots::ModelKind::kDiffDrive, engine),
+                     registry);
+    const sim::RunResult r = world.Run({});
+    const int i = engine == physics::Engine::k2d;
+    per_robot_step[i] = r.profile.physics / (1000.0 * r.physics_steps) * 1e6;
+    std::printf("%-24s %14.3f %20.2f\n", i ? "2d (Box2D)" : "3d (ODE)", r.profile.physics, per_robot_step[i]);
+  }
+  std::printf("2d / 3d cost per robot-step: %.3f\n", per_robot_step[1] / per_robot_step[0]);
   return 0;
 }

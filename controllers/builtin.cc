@@ -13,6 +13,7 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(HelpRequestRobotInfo());
   registry.Add(FormationLeaderInfo());
   registry.Add(FormationFollowerInfo());
+  registry.Add(FlockInfo());
 }
 
 }  // namespace sanet::controllers

@@ -13,5 +13,6 @@ ControllerInfo HelpRequestMoteInfo();
 ControllerInfo HelpRequestRobotInfo();
 ControllerInfo FormationLeaderInfo();
 ControllerInfo FormationFollowerInfo();
+ControllerInfo FlockInfo();
 
 }  // namespace sanet::controllers

@@ -25,6 +25,8 @@ const char* StandardName(WifiStandard standard) {
   return "?";
 }
 
+const char* ChannelName(ChannelModel model) { return model == ChannelModel::kYans ? "yans" : "indexed"; }
+
 const char* RoutingName(Routing routing) {
   switch (routing) {
     case Routing::kNone:

@@ -12,11 +12,15 @@ namespace sanet::net {
 enum class WifiStandard { k80211b, k80211g, k80211a };
 enum class LossModel { kLogDistance, kFriis, kTwoRayGround };
 enum class DelayModel { kConstantSpeed, kRandom };
+// Which radios a frame is handed to: every other radio (ns-3's YansWifiChannel), or only those
+// where it arrives at least at the floor (net/indexed_channel.h).
+enum class ChannelModel { kYans, kIndexed };
 enum class Routing { kNone, kAodv, kOlsr, kDsdv, kDsr };
 // The UDP ports of ns-3's routing protocols.
 constexpr std::uint16_t kAodvPort = 654, kOlsrPort = 698, kDsdvPort = 269;
 
 const char* RoutingName(Routing routing);
+const char* ChannelName(ChannelModel model);
 const char* StandardName(WifiStandard standard);
 // The data rates (Mbps) a standard offers.
 std::vector<double> DataRates(WifiStandard standard);
@@ -36,9 +40,15 @@ struct NetworkSpec {
   DelayModel delay = DelayModel::kConstantSpeed;
   double random_delay_max = 1e-6;  // s: `random` delays are uniform in [0, this]
 
+  ChannelModel channel = ChannelModel::kIndexed;
+  std::optional<double> channel_floor;               // dBm; unset: kFloorBelowThreshold under rx_threshold
+  static constexpr double kFloorBelowThreshold = 9;  // dB: docs/network.md#the-indexed-channel
+  double ChannelFloor() const { return channel_floor.value_or(rx_threshold - kFloorBelowThreshold); }
+
   Routing routing = Routing::kAodv;
-  bool aodv_hello = true;  // AODV hello messages (neighbour sensing)
-  int flood_ttl = 16;      // hops a flooded message may travel
+  bool aodv_hello = true;       // AODV hello messages (neighbour sensing)
+  int flood_ttl = 16;           // hops a flooded message may travel
+  double broadcast_jitter = 0;  // s: a broadcast waits uniformly up to this before it is sent
 
   std::uint16_t port = 9000;  // UDP port of controller messages
   bool pcap = false;          // a pcap file per node (802.11 frames)

@@ -46,6 +46,14 @@ struct FrameEvent {
 };
 using FrameObserver = std::function<void(const FrameEvent&)>;
 
+// What the channel did: how many radios each frame was handed to.
+struct ChannelCounts {
+  std::string model;                                   // as in the scenario
+  std::optional<double> floor_dbm;                     // indexed only, as are the counts
+  std::uint64_t frames_sent = 0, frames_received = 0;  // by the PHYs; received: whole and decoded
+  std::uint64_t candidates = 0, handed = 0;            // radios the grid offered, receptions scheduled
+};
+
 struct NetworkTraces {
   std::string radio, routing;  // names as in the scenario
   double data_rate_mbps = 0, tx_power_dbm = 0;
@@ -53,6 +61,7 @@ struct NetworkTraces {
   std::vector<Discovery> discoveries;
   bool packet_logs = false;  // packets/<node>.csv were written through the results folder
   TapLedger taps;            // nodes joined to real IP stacks
+  ChannelCounts channel;
 };
 
 }  // namespace sanet::net

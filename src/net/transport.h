@@ -34,6 +34,9 @@ class Transport {
   // Every radio frame from now on goes to `observer` (the run's trace); transports without
   // radios have none.
   virtual void ObserveFrames(FrameObserver observer) { (void)observer; }
+  // The bodies of `nodes` moved (in the physics step just taken): radios that index positions
+  // bring them up to date before the next frame.
+  virtual void Moved(const std::vector<NodeId>& nodes) { (void)nodes; }
   // What the network did, for the results; empty for a transport without radios.
   virtual std::optional<NetworkTraces> Traces() const { return std::nullopt; }
 };

@@ -136,7 +136,19 @@ void WirelessNetwork::ConfigureRadios() {
   if (spec_.max_range > 0)
     channel.AddPropagationLoss("ns3::RangePropagationLossModel", "MaxRange", ns3::DoubleValue(spec_.max_range));
 
-  phy_.SetChannel(channel.Create());
+  ns3::Ptr<ns3::YansWifiChannel> yans = channel.Create();
+  if (spec_.channel == ChannelModel::kIndexed) {
+    indexed_ = ns3::CreateObject<IndexedWifiChannel>();
+    ns3::PointerValue loss, delay;
+    yans->GetAttribute("PropagationLossModel", loss);
+    yans->GetAttribute("PropagationDelayModel", delay);
+    indexed_->SetPropagationLossModel(loss.Get<ns3::PropagationLossModel>());
+    indexed_->SetPropagationDelayModel(delay.Get<ns3::PropagationDelayModel>());
+    indexed_->SetFloor(spec_.ChannelFloor());
+    phy_.UseIndexedPhy();
+    yans = indexed_;
+  }
+  phy_.SetChannel(yans);
   phy_.SetPreambleDetectionModel("ns3::ThresholdPreambleDetectionModel", "MinimumRssi",
                                  ns3::DoubleValue(spec_.rx_threshold));
   mac_.SetType("ns3::AdhocWifiMac");
@@ -146,7 +158,20 @@ ns3::NetDeviceContainer WirelessNetwork::InstallRadio(ns3::Ptr<ns3::Node> node, 
   const double power = radio.tx_power.value_or(spec_.tx_power);
   phy_.Set("TxPowerStart", ns3::DoubleValue(power));
   phy_.Set("TxPowerEnd", ns3::DoubleValue(power));
-  return wifi_.Install(phy_, mac_, node);
+  ns3::NetDeviceContainer device = wifi_.Install(phy_, mac_, node);
+  CountFrames(ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0))->GetPhy());
+  return device;
+}
+
+// Frames sent and frames received whole, over all radios: how well the channel delivers,
+// whichever channel model carries them.
+void WirelessNetwork::CountFrames(ns3::Ptr<ns3::WifiPhy> phy) {
+  phy->TraceConnectWithoutContext("PhyTxBegin",
+                                  ns3::Callback<void, ns3::Ptr<const ns3::Packet>, double>(
+                                      [this](ns3::Ptr<const ns3::Packet>, double) { ++frame_counts_.frames_sent; }));
+  phy->TraceConnectWithoutContext("PhyRxEnd",
+                                  ns3::Callback<void, ns3::Ptr<const ns3::Packet>>(
+                                      [this](ns3::Ptr<const ns3::Packet>) { ++frame_counts_.frames_received; }));
 }
 
 // ns-3 numbers random streams from a process-wide counter as objects are created, so a second
@@ -284,9 +309,15 @@ void WirelessNetwork::Send(NodeId from, NodeId to, const Bytes& payload) {
   Transmit(from, book_.Of(to), NewHeader(from, MessageHeader::kUnicast, to), payload);
 }
 
+// With `broadcast_jitter`, the datagram waits a random time first (from the stream that also
+// jitters flood relays), so that nodes whose control steps coincide do not all transmit at once.
 void WirelessNetwork::Broadcast(NodeId from, const Bytes& payload) {
   trace_.MessageSent(from);
-  Transmit(from, ns3::Ipv4Address::GetBroadcast(), NewHeader(from, MessageHeader::kBroadcast, kBroadcast), payload);
+  const MessageHeader header = NewHeader(from, MessageHeader::kBroadcast, kBroadcast);
+  if (spec_.broadcast_jitter <= 0) return Transmit(from, ns3::Ipv4Address::GetBroadcast(), header, payload);
+  ns3::Simulator::Schedule(ns3::Seconds(jitter_->GetValue(0, spec_.broadcast_jitter)), [this, from, header, payload] {
+    Transmit(from, ns3::Ipv4Address::GetBroadcast(), header, payload);
+  });
 }
 
 void WirelessNetwork::Flood(NodeId from, const Bytes& payload) {
@@ -418,6 +449,11 @@ void WirelessNetwork::Close() {
   }
 }
 
+void WirelessNetwork::Moved(const std::vector<NodeId>& nodes) {
+  if (indexed_)
+    for (NodeId id : nodes) indexed_->Moved(id);
+}
+
 std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   NetworkTraces t;
   t.radio = StandardName(spec_.standard);
@@ -428,6 +464,13 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   t.discoveries = trace_.discoveries();
   t.packet_logs = spec_.packet_log;
   t.taps = tap_ledger_;
+  t.channel = frame_counts_;
+  t.channel.model = ChannelName(spec_.channel);
+  if (indexed_) {
+    t.channel.floor_dbm = spec_.ChannelFloor();
+    t.channel.candidates = indexed_->counters().candidates;
+    t.channel.handed = indexed_->counters().handed;
+  }
   return t;
 }
 

@@ -20,6 +20,7 @@
 
 #include "net/address_book.h"
 #include "net/frame_trace.h"
+#include "net/indexed_channel.h"
 #include "net/message_header.h"
 #include "net/network_spec.h"
 #include "net/packet_trace.h"
@@ -57,12 +58,14 @@ class WirelessNetwork : public Transport {
   void Close() override;
   std::optional<NetworkTraces> Traces() const override;
   void ObserveFrames(FrameObserver observer) override;
+  void Moved(const std::vector<NodeId>& nodes) override;
   const AddressBook& addresses() const { return book_; }
   const PacketTrace& packet_trace() const { return trace_; }
 
  private:
   void ConfigureRadios();
   ns3::NetDeviceContainer InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio);
+  void CountFrames(ns3::Ptr<ns3::WifiPhy> phy);
   void InstallInternet();
   void AssignStreams();
   std::int64_t AssignRoutingStreams(ns3::Ptr<ns3::Node> node, std::int64_t stream);
@@ -75,7 +78,7 @@ class WirelessNetwork : public Transport {
   NetworkSpec spec_;
   // Kept for nodes that join later: they are installed exactly as the first ones.
   ns3::WifiHelper wifi_;
-  ns3::YansWifiPhyHelper phy_;
+  RadioPhyHelper phy_;
   ns3::WifiMacHelper mac_;
   ns3::InternetStackHelper internet_;
   std::int64_t next_stream_ = 0;  // the first random stream nobody uses yet
@@ -99,6 +102,8 @@ class WirelessNetwork : public Transport {
   std::vector<std::unique_ptr<TapPort>> taps_;
   std::unique_ptr<FrameTrace> frames_;  // while someone traces the frames
   TapLedger tap_ledger_;
+  ns3::Ptr<IndexedWifiChannel> indexed_;  // with `channel: indexed`
+  ChannelCounts frame_counts_;
 };
 
 }  // namespace sanet::net

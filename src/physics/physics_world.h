@@ -1,6 +1,6 @@
 // The physical world as the rest of sanet sees it: static obstacles, wheeled vehicles, resting
 // bodies (motes), ray casts and a fixed-length step. No engine header leaks through here; the
-// ODE implementation lives in physics/ode/.
+// ODE implementation lives in physics/ode/, the Box2D one in physics/box2d/.
 #pragma once
 
 #include <array>
@@ -16,6 +16,11 @@ struct Vec3 {
   double x = 0, y = 0, z = 0;
 };
 
+// Which engine simulates the world: ODE in 3D (wheels, casters and contacts as bodies and
+// joints), or Box2D seen from above (robots as single bodies driven at their wheels' contact
+// points; for swarms).
+enum class Engine { k3d, k2d };
+
 // How contacts and joints are solved each step. `kExact` (a direct LCP solve per island) is
 // exact and, for islands as small as one robot, also the faster; `kQuick` (iterative) scales
 // better when many bodies touch each other in one island, but does not fully converge: a robot
@@ -23,6 +28,7 @@ struct Vec3 {
 enum class Solver { kExact, kQuick };
 
 struct WorldSettings {
+  Engine engine = Engine::k3d;
   double gravity = 9.81;         // m/s^2, pointing down (-z)
   double ground_friction = 1.0;  // Coulomb coefficient for bodies on the ground
   Solver solver = Solver::kExact;
@@ -118,5 +124,8 @@ class PhysicsWorld {
 };
 
 std::unique_ptr<PhysicsWorld> CreateOdeWorld(const WorldSettings& settings);
+std::unique_ptr<PhysicsWorld> CreateBox2dWorld(const WorldSettings& settings);
+// The engine `settings` name.
+std::unique_ptr<PhysicsWorld> CreatePhysicsWorld(const WorldSettings& settings);
 
 }  // namespace sanet::physics

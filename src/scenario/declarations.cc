@@ -85,6 +85,10 @@ const Fields<sim::RunSpec>& WorldFields() {
         [](const RunSpec& s) {
           return Numbers({s.world_size.x, s.world_size.y});
         });
+    f.Choice<physics::Engine>(
+        "physics", [](RunSpec& s) -> physics::Engine& { return s.physics.engine; },
+        {{"3d", physics::Engine::k3d}, {"2d", physics::Engine::k2d}},
+        "the physics engine: `3d` (ODE: wheels, casters, contacts) or `2d` (Box2D, seen from above: for swarms)");
     f.Number("physics_step", Member(&RunSpec::physics_step), "s", 0, 0.1, "length of each physics step", true);
     f.Number(
         "gravity", [](RunSpec& s) -> double& { return s.physics.gravity; }, "m/s²", 0, 100,
@@ -134,6 +138,21 @@ YAML::Node PrintPropagation(const net::NetworkSpec& n) {
   return out;
 }
 
+void ReadChannel(const Field& c, net::NetworkSpec& n) {
+  ChannelFields().Read(c, n);
+  auto floor = c.Get("floor");
+  if (floor && n.channel != net::ChannelModel::kIndexed) floor->Fail("applies to the indexed channel only");
+  if (floor && n.ChannelFloor() > n.rx_threshold)
+    floor->Fail("is above rx_threshold (" + ShortNumber(n.rx_threshold) +
+                " dBm): frames strong enough to be detected would be skipped");
+}
+
+YAML::Node PrintChannel(const net::NetworkSpec& n) {
+  YAML::Node out = ChannelFields().Print(n);
+  if (n.channel != net::ChannelModel::kIndexed) out.remove("floor");
+  return out;
+}
+
 void ReadRadio(const Field& radio, net::NetworkSpec& n) {
   const std::string text = radio.Text();
   if (text == "802.15.4" || text == "lr-wpan" || text == "lrwpan")
@@ -178,6 +197,9 @@ const Fields<net::NetworkSpec>& NetworkFields() {
     f.Custom(
         {"propagation", "mapping", "", "log-distance, see below", "see [propagation](#propagation)", "path loss model"},
         ReadPropagation, PrintPropagation);
+    f.Custom({"channel", "mapping", "", "indexed, see below", "see [channel](#channel)",
+              "which radios each frame is handed to"},
+             ReadChannel, PrintChannel);
     f.Choice<net::DelayModel>(
         "delay", Member(&NetworkSpec::delay),
         {{"constant_speed", net::DelayModel::kConstantSpeed}, {"random", net::DelayModel::kRandom}},
@@ -201,6 +223,8 @@ const Fields<net::NetworkSpec>& NetworkFields() {
                            "routing protocol (ns-3's), or one hop only");
     f.Flag("aodv_hello", Member(&NetworkSpec::aodv_hello), "AODV's hello messages (neighbour sensing)");
     f.Whole<int>("flood_ttl", Member(&NetworkSpec::flood_ttl), "hops", 1, 255, "how far a flood travels");
+    f.Number("broadcast_jitter", Member(&NetworkSpec::broadcast_jitter), "s", 0, 10,
+             "a broadcast waits a uniform random time up to this before it is sent");
     f.Custom({"port", "whole number", "", "", "[1, 65535], not 654, 698 or 269 (AODV, OLSR, DSDV)",
               "UDP port of controller messages"},
              ReadPort, [](const NetworkSpec& n) { return YAML::Node(static_cast<int>(n.port)); });
@@ -227,6 +251,24 @@ const Fields<net::NetworkSpec>& PropagationFields() {
     f.Number("antenna_height", Member(&NetworkSpec::antenna_height), "m", 0, 1000, "`two_ray_ground` only");
     f.Number("max_range", Member(&NetworkSpec::max_range), "m", 0, 1e7,
              "every model: nothing is received from farther (`0`: no cut-off)");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<net::NetworkSpec>& ChannelFields() {
+  using net::NetworkSpec;
+  static const Fields<NetworkSpec> fields = [] {
+    Fields<NetworkSpec> f;
+    f.Choice<net::ChannelModel>("model", Member(&NetworkSpec::channel),
+                                {{"indexed", net::ChannelModel::kIndexed}, {"yans", net::ChannelModel::kYans}},
+                                "`indexed`: only radios where a frame arrives at `floor` or stronger get it; "
+                                "`yans`: every radio (ns-3's YansWifiChannel)");
+    f.Custom(
+        {"floor", "number", "dBm", "9 dB under `rx_threshold` (`-91`)", "[-200, `rx_threshold`]; indexed only",
+         "frames arriving weaker are not handed to the radio"},
+        [](const Field& v, NetworkSpec& n) { n.channel_floor = v.Number(-200, 0); },
+        [](const NetworkSpec& n) { return NumberNode(n.ChannelFloor()); });
     return f;
   }();
   return fields;
@@ -861,6 +903,7 @@ std::vector<SectionTable> SectionTables() {
       {"obstacles.wall", WallFields().Describe(WallSettings{})},
       {"network", NetworkFields().Describe(net::NetworkSpec{})},
       {"network.propagation", PropagationFields().Describe(net::NetworkSpec{})},
+      {"network.channel", ChannelFields().Describe(net::NetworkSpec{})},
       {"nodes.node", NodeFields().Describe(Keys{})},
       {"nodes.grid_item", GridItemFields().Describe(Keys{})},
       {"nodes.grid", GridFields().Describe(GridSettings{})},

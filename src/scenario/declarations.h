@@ -14,6 +14,7 @@ namespace sanet::scenario {
 const Fields<sim::RunSpec>& WorldFields();
 const Fields<net::NetworkSpec>& NetworkFields();
 const Fields<net::NetworkSpec>& PropagationFields();
+const Fields<net::NetworkSpec>& ChannelFields();
 const Fields<sim::RunSpec>& MessagesFields();
 const Fields<sim::LoopSpec>& LoopFields();
 const Fields<sim::LinkShaping>& NetemFields();

@@ -68,7 +68,7 @@ Assembly::~Assembly() {
 }
 
 void Assembly::BuildBodies() {
-  physics_ = physics::CreateOdeWorld(spec_.physics);
+  physics_ = physics::CreatePhysicsWorld(spec_.physics);
   for (const Obstacle& o : spec_.obstacles) physics_->add_static_box(o.box);
   for (const NodeSpec& n : spec_.nodes)
     models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose, spec_.seed, "node/" + n.name));

@@ -30,6 +30,7 @@ class MessageLedger : public net::Transport {
   void Open(trace::ResultsFolder& folder) override { inner_->Open(folder); }
   void Close() override { inner_->Close(); }
   std::optional<net::NetworkTraces> Traces() const override { return inner_->Traces(); }
+  void Moved(const std::vector<NodeId>& nodes) override { inner_->Moved(nodes); }
   void ObserveFrames(net::FrameObserver observer) override { inner_->ObserveFrames(std::move(observer)); }
 
  private:

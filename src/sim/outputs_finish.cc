@@ -28,6 +28,18 @@ std::string RouteRow(const std::string& node, const std::string& destination, co
   return row;
 }
 
+// With the indexed channel: how many radios a frame was handed to, on average.
+nlohmann::ordered_json ChannelSummary(const net::ChannelCounts& c) {
+  nlohmann::ordered_json out = {
+      {"model", c.model}, {"frames_sent", c.frames_sent}, {"frames_received", c.frames_received}};
+  if (!c.floor_dbm) return out;
+  const double frames = c.frames_sent ? static_cast<double>(c.frames_sent) : 1.0;
+  out["floor_dbm"] = *c.floor_dbm;
+  out["receivers_considered_per_frame"] = c.candidates / frames;
+  out["receivers_per_frame"] = c.handed / frames;
+  return out;
+}
+
 nlohmann::ordered_json NetworkSummary(const net::NetworkTraces& n) {
   net::PacketCounts total;
   for (const net::PacketCounts& c : n.counts) {
@@ -42,6 +54,7 @@ nlohmann::ordered_json NetworkSummary(const net::NetworkTraces& n) {
           {"data_rate_mbps", n.data_rate_mbps},
           {"tx_power_dbm", n.tx_power_dbm},
           {"routing", n.routing},
+          {"channel", ChannelSummary(n.channel)},
           {"packets",
            {{"sent", total.sent},
             {"received", total.received},

@@ -30,8 +30,7 @@ class StageTimer {
 Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers)
     : world_(world), outputs_(outputs), observers_(observers) {
   world_.SetEvents(this);
-  for (NodeId id = 0; id < world_.size(); ++id)
-    if (world_.model(id).mobile()) vehicles_.push_back(id);
+  for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
   if (!observers_.empty()) world_.transport().Watch();
   if (trace::RunTrace* trace = outputs_.trace())
     world_.transport().ObserveFrames(
@@ -95,9 +94,18 @@ void Stepper::PhysicsStep() {
     StageTimer timer(profile_.sensing);
     for (NodeId id : vehicles_) world_.model(id).AfterPhysicsStep();
   }
+  TellRadiosWhoMoved();
   ++physics_steps_;
   Notify();
   ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
+}
+
+// Vehicles, and motes a vehicle pushed (awake): a resting mote has not moved.
+void Stepper::TellRadiosWhoMoved() {
+  moved_ = vehicles_;
+  for (NodeId id : motes_)
+    if (world_.model(id).body().awake()) moved_.push_back(id);
+  world_.transport().Moved(moved_);
 }
 
 void Stepper::Notify() {

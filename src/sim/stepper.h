@@ -47,6 +47,7 @@ class Stepper : public RunEvents {
   void PhysicsStep();
   void Record();
   void Notify();
+  void TellRadiosWhoMoved();
   void ShowProgress();
   void SwitchOff(NodeId node);
   PoseReader Poses() const;
@@ -54,7 +55,8 @@ class Stepper : public RunEvents {
   Assembly& world_;
   Outputs& outputs_;
   std::vector<StepObserver*> observers_;
-  std::vector<NodeId> vehicles_;
+  std::vector<NodeId> vehicles_, motes_;
+  std::vector<NodeId> moved_;  // scratch: bodies that moved in the last physics step
   RouteWatch routes_;
   Profile profile_;
   std::uint64_t physics_steps_ = 0;

@@ -33,5 +33,6 @@ check_private() {  # check_private PATTERN ALLOWED_DIRS...
 }
 check_private "ns3/" "/src/net/" "/src/sim/"
 check_private "ode/" "/src/physics/ode/"
+check_private "box2d/" "/src/physics/box2d/"
 check_private "yaml-cpp/" "/src/scenario/"
-echo "ok: ns-3, ODE and yaml-cpp stay in their layers"
+echo "ok: ns-3, ODE, Box2D and yaml-cpp stay in their layers"

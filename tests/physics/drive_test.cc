@@ -1,4 +1,5 @@
-// The drives move as commanded: omni3 forward, sideways and turning in place; diffdrive circles.
+// The drives move as commanded, on either physics engine: omni3 forward, sideways and turning
+// in place; diffdrive circles; walls stop them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,12 +18,16 @@ struct Track {
   std::vector<Pose2D> poses;
 };
 
+class Drive : public ::testing::TestWithParam<physics::Engine> {};
+
+sim::NodeSpec Driven(ModelKind kind, Twist2D v, Pose2D pose = {0, 0, 0}) {
+  return Robot(
+      "r", kind, pose,
+      UseController("constant_velocity", {{"vx", Scalar(v.vx)}, {"vy", Scalar(v.vy)}, {"omega", Scalar(v.omega)}}));
+}
+
 Track DriveFor(ModelKind kind, Twist2D v, double seconds) {
-  sim::World world(
-      Spec(seconds, {Robot("r", kind, {0, 0, 0},
-                           UseController("constant_velocity",
-                                         {{"vx", Scalar(v.vx)}, {"vy", Scalar(v.vy)}, {"omega", Scalar(v.omega)}}))}),
-      BuiltinRegistry());
+  sim::World world(On(Drive::GetParam(), Spec(seconds, {Driven(kind, v)})), BuiltinRegistry());
   Track t;
   t.start = world.model(0).body().pose();
   double last_theta = t.start.theta;
@@ -37,30 +42,28 @@ Track DriveFor(ModelKind kind, Twist2D v, double seconds) {
   return t;
 }
 
-TEST(Omni3, ForwardAtThirtyCentimetresPerSecondForTenSecondsCoversThreeMetres) {
+TEST_P(Drive, Omni3ForwardAtThirtyCentimetresPerSecondForTenSecondsCoversThreeMetres) {
   const Track t = DriveFor(ModelKind::kOmni3, {0.3, 0, 0}, 10);
   EXPECT_NEAR(t.end.x - t.start.x, 3.0, 0.3);
   EXPECT_NEAR(t.end.y, 0.0, 0.15);
   EXPECT_NEAR(t.end.theta, 0.0, 5 * kPi / 180);
 }
 
-TEST(Omni3, SidewaysKeepsItsHeading) {
+TEST_P(Drive, Omni3SidewaysKeepsItsHeading) {
   const Track t = DriveFor(ModelKind::kOmni3, {0, 0.3, 0}, 10);
   EXPECT_NEAR(t.end.y, 3.0, 0.3);
   EXPECT_NEAR(t.end.x, 0.0, 0.15);
   for (const Pose2D& p : t.poses) ASSERT_LT(std::fabs(p.theta), 5 * kPi / 180) << "heading drifted";
 }
 
-TEST(Omni3, TurnsInPlace) {
+TEST_P(Drive, Omni3TurnsInPlace) {
   const Track t = DriveFor(ModelKind::kOmni3, {0, 0, 1.0}, 10);
   EXPECT_NEAR(t.turned, 10.0, 1.0);  // rad
   for (const Pose2D& p : t.poses) ASSERT_LT(Norm(p.position()), 0.05) << "centre wandered";
 }
 
-TEST(Omni3, OdometryFollowsTheTruePose) {
-  sim::World world(Spec(8, {Robot("r", ModelKind::kOmni3, {1, 2, 0.5},
-                                  UseController("constant_velocity",
-                                                {{"vx", Scalar(0.3)}, {"vy", Scalar(0.1)}, {"omega", Scalar(0.2)}}))}),
+TEST_P(Drive, Omni3OdometryFollowsTheTruePose) {
+  sim::World world(On(GetParam(), Spec(8, {Driven(ModelKind::kOmni3, {0.3, 0.1, 0.2}, {1, 2, 0.5})})),
                    BuiltinRegistry());
   world.Run({});
   const Pose2D truth = world.model(0).body().pose();
@@ -70,7 +73,7 @@ TEST(Omni3, OdometryFollowsTheTruePose) {
   EXPECT_LT(std::fabs(WrapAngle(truth.theta - odo.theta)), 0.05);
 }
 
-TEST(DiffDrive, ConstantSpeedAndTurnRateDriveACircleOfRadiusVOverOmega) {
+TEST_P(Drive, DiffDriveConstantSpeedAndTurnRateDriveACircleOfRadiusVOverOmega) {
   const double v = 0.5, omega = 0.25;  // radius 2 m, one lap in 25 s
   const Track t = DriveFor(ModelKind::kDiffDrive, {v, 0, omega}, 32);
   // Fit the circle on the last full lap (after the start-up transient).
@@ -86,12 +89,12 @@ TEST(DiffDrive, ConstantSpeedAndTurnRateDriveACircleOfRadiusVOverOmega) {
   EXPECT_GT(t.turned, 6.0);  // it went round, counter-clockwise
 }
 
-TEST(DiffDrive, EqualWheelSpeedsDriveStraightAtWheelRadiusTimesSpeed) {
+TEST_P(Drive, DiffDriveEqualWheelSpeedsDriveStraightAtWheelRadiusTimesSpeed) {
   ParamValue wheels;
   wheels.shape = ParamValue::Shape::kList;
   wheels.rows = {{"4", "4"}};  // rad/s; 4 * 0.0975 m = 0.39 m/s
-  sim::World world(Spec(5, {Robot("r", ModelKind::kDiffDrive, {0, 0, 0},
-                                  UseController("constant_velocity", {{"wheel_speeds", wheels}}))}),
+  sim::World world(On(GetParam(), Spec(5, {Robot("r", ModelKind::kDiffDrive, {0, 0, 0},
+                                                 UseController("constant_velocity", {{"wheel_speeds", wheels}}))})),
                    BuiltinRegistry());
   world.Run({});
   const Pose2D p = world.model(0).body().pose();
@@ -99,11 +102,31 @@ TEST(DiffDrive, EqualWheelSpeedsDriveStraightAtWheelRadiusTimesSpeed) {
   EXPECT_NEAR(p.y, 0, 0.05);
 }
 
-TEST(DiffDrive, StandsStillWithoutCommands) {
-  sim::World world(Spec(5, {Robot("r", ModelKind::kDiffDrive, {3, 4, 1})}), BuiltinRegistry());
+TEST_P(Drive, DiffDriveStandsStillWithoutCommands) {
+  sim::World world(On(GetParam(), Spec(5, {Robot("r", ModelKind::kDiffDrive, {3, 4, 1})})), BuiltinRegistry());
   world.Run({});
   EXPECT_LT(Norm(world.model(0).body().pose().position() - Vec2{3, 4}), 0.01);
 }
+
+// Driving at a wall 1 m ahead for long enough to cross it twice over: the robot stops at the
+// wall's face (within 2 cm of touching it) and stays there.
+TEST_P(Drive, AWallStopsEitherRobot) {
+  for (ModelKind kind : {ModelKind::kOmni3, ModelKind::kDiffDrive}) {
+    sim::RunSpec spec = On(GetParam(), Spec(8, {Driven(kind, {0.3, 0, 0})}));
+    spec.obstacles = {Wall({1.6, -3}, {1.6, 3})};  // face at x = 1.5
+    sim::World world(spec, BuiltinRegistry());
+    double farthest = 0;
+    world.Observe([&](const sim::WorldSnapshot&) { farthest = std::max(farthest, world.model(0).body().pose().x); });
+    world.Run({});
+    const robots::ModelSpec& m = spec.nodes[0].model;
+    const double front =
+        kind == ModelKind::kOmni3 ? m.omni3.body_radius : m.diffdrive.body_length / 2 - m.diffdrive.caster_offset / 4;
+    EXPECT_NEAR(world.model(0).body().pose().x, 1.5 - front, 0.02) << "stopped at the face";
+    EXPECT_LT(farthest, 1.5 - front + 0.02) << "never went into the wall";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothEngines, Drive, kEngines, EngineName);
 
 }  // namespace
 }  // namespace sanet

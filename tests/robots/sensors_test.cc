@@ -1,4 +1,4 @@
-// Range sensors measure the distance to walls and boxes.
+// Range sensors measure the distance to walls and boxes, on either physics engine.
 #include <gtest/gtest.h>
 
 #include "support/test_world.h"
@@ -14,8 +14,10 @@ constexpr double kTolerance = 0.02;  // m, without noise
 // Settles the robots on the ground, then returns the world for reading.
 void Settle(sim::World& world) { world.Run({}); }
 
-TEST(Ir, ReadsTheDistanceToAWallAndABox) {
-  sim::RunSpec spec = Spec(0.2, {Robot("r", ModelKind::kOmni3, {0, 0, 0})});
+class RangeSensors : public ::testing::TestWithParam<physics::Engine> {};
+
+TEST_P(RangeSensors, IrReadsTheDistanceToAWallAndABox) {
+  sim::RunSpec spec = On(GetParam(), Spec(0.2, {Robot("r", ModelKind::kOmni3, {0, 0, 0})}));
   spec.obstacles = {Wall({0.6, -2}, {0.6, 2}),       // face at x = 0.5, ahead
                     Box({0.3, 0.9}, 0.4, 0.4, 0.5),  // lower face at y = 0.7, ahead left
                     Box({-0.7, 0}, 0.2, 0.2, 0.5)};  // face at x = -0.6, behind
@@ -33,8 +35,8 @@ TEST(Ir, ReadsTheDistanceToAWallAndABox) {
   EXPECT_DOUBLE_EQ(ir.ranges[4], ir.max_range) << "nothing at 240 degrees";
 }
 
-TEST(Laser, ReadsTheDistanceToAWallAheadAndABoxToTheSide) {
-  sim::RunSpec spec = Spec(0.2, {Robot("r", ModelKind::kDiffDrive, {0, 0, 0})});
+TEST_P(RangeSensors, LaserReadsTheDistanceToAWallAheadAndABoxToTheSide) {
+  sim::RunSpec spec = On(GetParam(), Spec(0.2, {Robot("r", ModelKind::kDiffDrive, {0, 0, 0})}));
   spec.obstacles = {Wall({3.0, -1}, {3.0, 1}),   // face at x = 2.9
                     Box({0.2, -2.0}, 1, 1, 1)};  // face at y = -1.5, right
   sim::World world(spec, BuiltinRegistry());
@@ -51,6 +53,8 @@ TEST(Laser, ReadsTheDistanceToAWallAheadAndABoxToTheSide) {
   EXPECT_NEAR(scan.angles[80], -kPi / 18, 1e-9);
   EXPECT_NEAR(scan.ranges[80], (2.9 - mount_x) / std::cos(kPi / 18), kTolerance);
 }
+
+INSTANTIATE_TEST_SUITE_P(BothEngines, RangeSensors, kEngines, EngineName);
 
 TEST(Laser, NoiseChangesReadingsAroundTheTruth) {
   sim::RunSpec spec = Spec(0.2, {Robot("r", ModelKind::kDiffDrive, {0, 0, 0})});

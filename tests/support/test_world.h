@@ -1,6 +1,8 @@
 // Builders shared by tests: small run specs and a registry with the built-in controllers.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -48,6 +50,17 @@ inline sim::RunSpec Spec(double duration, std::vector<sim::NodeSpec> nodes) {
   sim::RunSpec spec;
   spec.duration = duration;
   spec.nodes = std::move(nodes);
+  return spec;
+}
+
+// Both physics engines, for tests that every backend must pass (INSTANTIATE_TEST_SUITE_P).
+inline const auto kEngines = ::testing::Values(physics::Engine::k3d, physics::Engine::k2d);
+inline std::string EngineName(const ::testing::TestParamInfo<physics::Engine>& info) {
+  return info.param == physics::Engine::k3d ? "Ode3d" : "Box2d";
+}
+
+inline sim::RunSpec On(physics::Engine engine, sim::RunSpec spec) {
+  spec.physics.engine = engine;
   return spec;
 }
 

@@ -1,4 +1,6 @@
 // The end of a run's outputs: network files, figures, summary.json and the fingerprint.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -192,6 +194,15 @@ void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::op
       trace::SvgToPng(folder_.dir() + "/" + name + ".svg", folder_.TempFile(name + ".png"));
 }
 
+namespace {
+// The process's peak resident set (getrusage reports it in KiB on Linux).
+double PeakMemoryMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+}  // namespace
+
 nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::string& scenario_file,
                                         const std::vector<Pose2D>& final_poses) const {
   nlohmann::ordered_json j;
@@ -203,6 +214,7 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
   j["simulated_s"] = result.simulated;
   j["wall_time_s"] = result.wall;
   j["real_time_factor"] = result.real_time_factor;
+  j["peak_memory_mb"] = PeakMemoryMb();
   j["events"] = result.events;
   j["physics_steps"] = result.physics_steps;
   j["physics_step_s"] = spec_.physics_step;

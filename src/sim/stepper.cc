@@ -2,6 +2,7 @@
 
 #include <ns3/core-module.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -75,6 +76,9 @@ void Stepper::StartControllers() {
     if (world_.host(id).has_controller()) world_.host(id).Start();
 }
 
+// A node's first step is its own event; from then on, controllers that share a rate step in
+// one event per round, in node order, as their separate events did (same time, scheduled in
+// node order).
 void Stepper::ControlStep(NodeId id) {
   agents::ControllerHost& host = world_.host(id);
   if (!host.running()) return;
@@ -82,30 +86,56 @@ void Stepper::ControlStep(NodeId id) {
     StageTimer timer(profile_.controllers);
     host.Step();
   }
-  if (host.running()) ns3::Simulator::Schedule(Period(host.period()), &Stepper::ControlStep, this, id);
+  if (!host.running()) return;
+  const ns3::Time period = Period(host.period());
+  auto [group, added] = control_rounds_.try_emplace(period.GetNanoSeconds());
+  if (added) ns3::Simulator::Schedule(period, &Stepper::ControlRound, this, period.GetNanoSeconds());
+  group->second.push_back(id);
 }
 
+void Stepper::ControlRound(std::int64_t period_ns) {
+  std::vector<NodeId>& nodes = control_rounds_.at(period_ns);
+  {
+    StageTimer timer(profile_.controllers);
+    for (NodeId id : nodes)
+      if (world_.host(id).running()) world_.host(id).Step();
+  }
+  nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [this](NodeId id) { return !world_.host(id).running(); }),
+              nodes.end());
+  if (nodes.empty()) return void(control_rounds_.erase(period_ns));
+  ns3::Simulator::Schedule(ns3::NanoSeconds(period_ns), &Stepper::ControlRound, this, period_ns);
+}
+
+// Only what moves costs anything: bodies asleep before and after the step (robots at rest
+// on the 2D engine, motes) are neither sensed nor re-indexed for the radios.
 void Stepper::PhysicsStep() {
+  CollectMoving();  // awake before the step
   {
     StageTimer timer(profile_.physics);
     world_.physics().step(world_.spec().physics_step);
   }
+  CollectMoving();  // woken during it
   {
     StageTimer timer(profile_.sensing);
-    for (NodeId id : vehicles_) world_.model(id).AfterPhysicsStep();
+    for (NodeId id : moved_)
+      if (world_.model(id).mobile()) world_.model(id).AfterPhysicsStep();
   }
-  TellRadiosWhoMoved();
+  world_.transport().Moved(moved_);
+  for (NodeId id : moved_) moving_[id] = 0;
+  moved_.clear();
   ++physics_steps_;
   Notify();
   ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
 }
 
-// Vehicles, and motes a vehicle pushed (awake): a resting mote has not moved.
-void Stepper::TellRadiosWhoMoved() {
-  moved_ = vehicles_;
-  for (NodeId id : motes_)
-    if (world_.model(id).body().awake()) moved_.push_back(id);
-  world_.transport().Moved(moved_);
+void Stepper::CollectMoving() {
+  moving_.resize(world_.size(), 0);
+  for (const std::vector<NodeId>* group : {&vehicles_, &motes_})
+    for (NodeId id : *group)
+      if (!moving_[id] && world_.model(id).body().awake()) {
+        moving_[id] = 1;
+        moved_.push_back(id);
+      }
 }
 
 void Stepper::Notify() {

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
+#include <map>
 #include <vector>
 
 #include "sim/assembly.h"
@@ -44,10 +46,11 @@ class Stepper : public RunEvents {
   void ScheduleAll();
   void StartControllers();
   void ControlStep(NodeId node);
+  void ControlRound(std::int64_t period_ns);
   void PhysicsStep();
   void Record();
   void Notify();
-  void TellRadiosWhoMoved();
+  void CollectMoving();
   void ShowProgress();
   void SwitchOff(NodeId node);
   PoseReader Poses() const;
@@ -56,7 +59,9 @@ class Stepper : public RunEvents {
   Outputs& outputs_;
   std::vector<StepObserver*> observers_;
   std::vector<NodeId> vehicles_, motes_;
-  std::vector<NodeId> moved_;  // scratch: bodies that moved in the last physics step
+  std::map<std::int64_t, std::vector<NodeId>> control_rounds_;  // period (ns) -> nodes, in node order
+  std::vector<NodeId> moved_;  // scratch: bodies awake before or after the physics step
+  std::vector<char> moving_;   // per node: listed in moved_
   RouteWatch routes_;
   Profile profile_;
   std::uint64_t physics_steps_ = 0;

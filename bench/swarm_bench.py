@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""Swarm scale: the shipped swarms (flocking diffdrive robots on the 2D engine, a one-hop 802.11
+beacon a second each) run as `sanet run` runs them, for a few simulated seconds each:
+
+  swarm-1k, swarm-10k        with the radio (sanet's indexed channel)
+  ... without radio          the same robots, controllers and physics, with no network and
+                             no beacons: the baseline, measured in the same run, that tells
+                             the radio's share of the cost
+  swarm-1k, yans channel     the radio on ns-3's YansWifiChannel (every frame to every radio)
+
+It prints wall time, real-time factor, the profile's stages, the ratio of each case to its
+baseline, the cost per robot-second, and peak memory per robot (summary.json's peak_memory_mb,
+the process's peak resident set).
+
+  bench/swarm_bench.py [--sanet build/sanet] [--seconds 10] [--seconds-10k 3]
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def variant(path, folder, tag, edit):
+    text = edit(open(path).read())
+    out = os.path.join(folder, tag + ".yaml")
+    with open(out, "w") as f:
+        f.write(text)
+    return out
+
+
+def without_radio(text):
+    text = re.sub(r"^network:\n(  .*\n)+", "", text, flags=re.M)
+    return text.replace("params: {", "params: {beacon: 1.0e9, ", 1)
+
+
+def with_yans(text):
+    return text.replace("network:\n", "network:\n  channel: {model: yans}\n", 1)
+
+
+def run(sanet, scenario, seconds, out):
+    subprocess.run([sanet, "run", scenario, "--duration", str(seconds), "-q", "-o", out], check=True)
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--sanet", default=os.path.join(ROOT, "build", "sanet"))
+    parser.add_argument("--seconds", type=float, default=10, help="simulated seconds per 1k case")
+    parser.add_argument("--seconds-10k", type=float, default=3, help="simulated seconds per 10k case")
+    args = parser.parse_args()
+    print("%-28s %8s %7s %9s %9s %9s %12s %9s %10s" % (
+        "case", "wall s", "RTF", "physics", "control", "other", "us/robot-s", "vs base", "MB/robot"))
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, seconds, robots, extra in (("swarm-1k", args.seconds, 1000, True),
+                                             ("swarm-10k", args.seconds_10k, 10000, False)):
+            path = os.path.join(ROOT, "scenarios", name + ".yaml")
+            cases = [("without radio", variant(path, tmp, name + "-local", without_radio)),
+                     ("indexed channel", path)]
+            if extra:
+                cases.append(("yans channel", variant(path, tmp, name + "-yans", with_yans)))
+            base = None
+            for label, scenario in cases:
+                s = run(args.sanet, scenario, seconds, os.path.join(tmp, name + label.replace(" ", "-")))
+                wall = s["wall_time_s"]
+                p = s["profile_s"]
+                other = wall - p["physics"] - p["sensing"] - p["controllers"] - p["recording"]
+                base = base or wall
+                print("%-28s %8.2f %7.2f %9.2f %9.2f %9.2f %12.1f %8.2fx %10.3f" % (
+                    name + ", " + label, wall, s["real_time_factor"], p["physics"] + p["sensing"],
+                    p["controllers"], other, wall / (robots * seconds) * 1e6, wall / base,
+                    s["peak_memory_mb"] / robots), flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -118,6 +118,12 @@ class PhysicsWorld {
   // Distance along the ray from `origin` in direction `direction` (unit) to the first surface,
   // ignoring the ground and the parts of `ignore`; `max_range` if nothing is nearer.
   virtual double cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const = 0;
+  struct Ray {
+    Vec3 origin, direction;
+  };
+  // The rays of one sensor at once, each answered as cast_ray answers it; an engine may find the
+  // things near all of them once instead of once per ray.
+  virtual std::vector<double> cast_rays(const std::vector<Ray>& rays, double max_range, const Body* ignore) const;
 
   virtual void step(double dt) = 0;
   virtual std::size_t awake_body_count() const = 0;

@@ -29,16 +29,18 @@ RangeScan RangeSensor::Read(const physics::PhysicsWorld& world, const physics::B
   RangeScan scan;
   scan.angles = spec_.angles;
   scan.max_range = spec_.max_range;
-  scan.ranges.reserve(spec_.angles.size());
   const Vec2 mount = ToWorld(pose, {spec_.mount_x, 0});
+  std::vector<physics::PhysicsWorld::Ray> rays;
+  rays.reserve(spec_.angles.size());
   for (double angle : spec_.angles) {
     const double heading = pose.theta + angle;
     const Vec2 dir{std::cos(heading), std::sin(heading)};
     const Vec2 origin = mount + dir * spec_.mount_radius;
-    double range = world.cast_ray({origin.x, origin.y, spec_.mount_height}, {dir.x, dir.y, 0}, spec_.max_range, &self);
-    if (spec_.noise > 0) range = std::clamp(rng_.Gaussian(range, spec_.noise), 0.0, spec_.max_range);
-    scan.ranges.push_back(range);
+    rays.push_back({{origin.x, origin.y, spec_.mount_height}, {dir.x, dir.y, 0}});
   }
+  scan.ranges = world.cast_rays(rays, spec_.max_range, &self);
+  if (spec_.noise > 0)
+    for (double& range : scan.ranges) range = std::clamp(rng_.Gaussian(range, spec_.noise), 0.0, spec_.max_range);
   return scan;
 }
 

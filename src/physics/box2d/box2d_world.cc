@@ -28,6 +28,35 @@ class NearestHit : public b2RayCastCallback {
   float nearest_ = 1;
 };
 
+// The fixtures whose boxes overlap a region, but those of one body; gives up past `limit`.
+class FixturesIn : public b2QueryCallback {
+ public:
+  FixturesIn(const Body* ignore, std::size_t limit) : ignore_(ignore), limit_(limit) {}
+  bool ReportFixture(b2Fixture* fixture) override {
+    if (ignore_ && OwnerOf(fixture->GetBody()) == ignore_) return true;
+    found_.push_back(fixture);
+    return found_.size() <= limit_;
+  }
+  const std::vector<b2Fixture*>& found() const { return found_; }
+  bool too_many() const { return found_.size() > limit_; }
+
+ private:
+  const Body* ignore_;
+  std::size_t limit_;
+  std::vector<b2Fixture*> found_;
+};
+
+// A ray along the ground: from the origin, its length max_range times the horizontal part of
+// its direction. False for a vertical ray, which meets nothing.
+bool FlatRay(const PhysicsWorld::Ray& r, double max_range, b2RayCastInput& input) {
+  if (std::hypot(r.direction.x, r.direction.y) < 1e-9 || max_range <= 0) return false;
+  input.p1.Set(static_cast<float>(r.origin.x), static_cast<float>(r.origin.y));
+  input.p2.Set(static_cast<float>(r.origin.x + r.direction.x * max_range),
+               static_cast<float>(r.origin.y + r.direction.y * max_range));
+  input.maxFraction = 1;
+  return true;
+}
+
 }  // namespace
 
 Pose2D Box2dBody::pose() const {
@@ -94,14 +123,45 @@ void Box2dWorld::BeginContact(b2Contact* contact) {
 // Rays run in the plane: a ray's length along the ground is its length times the horizontal
 // part of its direction; a vertical ray meets nothing (the ground is not a body here).
 double Box2dWorld::cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const {
-  const double flat = std::hypot(direction.x, direction.y);
-  if (flat < 1e-9 || max_range <= 0) return max_range;
-  const b2Vec2 from(static_cast<float>(origin.x), static_cast<float>(origin.y));
-  const b2Vec2 to(static_cast<float>(origin.x + direction.x * max_range),
-                  static_cast<float>(origin.y + direction.y * max_range));
+  b2RayCastInput input;
+  if (!FlatRay({origin, direction}, max_range, input)) return max_range;
   NearestHit hit(ignore);
-  world_.RayCast(&hit, from, to);
+  world_.RayCast(&hit, input.p1, input.p2);
   return hit.nearest() * max_range;
+}
+
+// A sensor's rays usually span a small box with a few things in it: those are found once, and
+// each ray is tested against them alone (the fraction a fixture reports does not depend on the
+// order in which they are tried, so this is what cast_ray answers). Where the box holds many,
+// the rays go through the world's tree one by one.
+std::vector<double> Box2dWorld::cast_rays(const std::vector<Ray>& rays, double max_range, const Body* ignore) const {
+  constexpr std::size_t kFewFixtures = 16;
+  std::vector<b2RayCastInput> inputs(rays.size());
+  std::vector<bool> flat(rays.size());
+  b2AABB box;
+  bool any = false;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    flat[i] = FlatRay(rays[i], max_range, inputs[i]);
+    if (!flat[i]) continue;
+    const b2Vec2 low = b2Min(inputs[i].p1, inputs[i].p2), high = b2Max(inputs[i].p1, inputs[i].p2);
+    box.lowerBound = any ? b2Min(box.lowerBound, low) : low;
+    box.upperBound = any ? b2Max(box.upperBound, high) : high;
+    any = true;
+  }
+  FixturesIn near(ignore, kFewFixtures);
+  if (any) world_.QueryAABB(&near, box);
+  if (near.too_many()) return PhysicsWorld::cast_rays(rays, max_range, ignore);
+  std::vector<double> ranges(rays.size(), max_range);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    if (!flat[i]) continue;
+    float nearest = 1;
+    for (b2Fixture* fixture : near.found()) {
+      b2RayCastOutput output;
+      if (fixture->RayCast(&output, inputs[i], 0)) nearest = std::min(nearest, output.fraction);
+    }
+    ranges[i] = nearest * max_range;
+  }
+  return ranges;
 }
 
 void Box2dWorld::step(double dt) {

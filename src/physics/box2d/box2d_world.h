@@ -75,6 +75,7 @@ class Box2dWorld : public PhysicsWorld, private b2ContactListener {
   Vehicle* add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose) override;
   Body* add_mote(const MoteSpec& spec, const Pose2D& pose) override;
   double cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const override;
+  std::vector<double> cast_rays(const std::vector<Ray>& rays, double max_range, const Body* ignore) const override;
   void step(double dt) override;
   std::size_t awake_body_count() const override;
 

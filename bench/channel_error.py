@@ -17,7 +17,7 @@ the network delivered are compared:
 and the difference of `delivered` (indexed against Yans, in % of Yans's) with its 95 %
 confidence interval. The runs go two at a time (the cores of this machine); nothing is timed.
 
-  bench/channel_error.py [--sanet build/sanet] [--seeds 1-10] [--floor -85] [scenarios...]
+  bench/channel_error.py [--sanet build/sanet] [--seeds 1-10] [--floor -85] [--duration S] [scenarios...]
 """
 import argparse
 import concurrent.futures
@@ -48,14 +48,18 @@ def with_channel(scenario, channel, folder):
     if not re.search(r"^network:", text, re.M):
         return None
     copy = os.path.join(folder, os.path.basename(scenario).replace(".yaml", "-" + channel.split(",")[0] + ".yaml"))
+    text = re.sub(r"^  channel: .*\n", "", text, flags=re.M)  # the scenario's own, if any
     with open(copy, "w") as f:
         f.write(re.sub(r"^network:", "network:\n  channel: {model: %s}" % channel, text, count=1, flags=re.M))
     return copy
 
 
-def run(sanet, scenario, seed, folder):
+def run(sanet, scenario, seed, folder, duration=None):
     out = os.path.join(folder, "seed%d" % seed)
-    subprocess.run([sanet, "run", scenario, "--seed", str(seed), "-o", out, "-q"], check=True)
+    command = [sanet, "run", scenario, "--seed", str(seed), "-o", out, "-q"]
+    if duration:
+        command += ["--duration", str(duration)]
+    subprocess.run(command, check=True)
     with open(os.path.join(out, "summary.json")) as f:
         s = json.load(f)
     n = s["network"]
@@ -86,6 +90,7 @@ def main():
     parser.add_argument("--seeds", default="1-10")
     parser.add_argument("--floor", default=None, help="dBm; default: the scenario's default floor")
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--duration", type=float, help="s simulated per run (default: the scenario's)")
     parser.add_argument("scenarios", nargs="*", default=DEFAULT_SCENARIOS)
     args = parser.parse_args()
     seeds = seeds_of(args.seeds)
@@ -103,7 +108,7 @@ def main():
                     print("%-20s has no network" % name)
                     break
                 folder = copy[:-len(".yaml")] + "-runs"
-                results[channel] = list(pool.map(lambda s: run(args.sanet, copy, s, folder), seeds))
+                results[channel] = list(pool.map(lambda s: run(args.sanet, copy, s, folder, args.duration), seeds))
             if len(results) < 2:
                 continue
             for channel, rows in results.items():

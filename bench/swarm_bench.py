@@ -38,6 +38,7 @@ def without_radio(text):
 
 
 def with_yans(text):
+    text = re.sub(r"^  channel: .*\n", "", text, flags=re.M)  # the scenario's own, if any
     return text.replace("network:\n", "network:\n  channel: {model: yans}\n", 1)
 
 

@@ -135,5 +135,40 @@ TEST(IndexedChannel, AFrameNeverReachesARadioBeyondTheFloorsRange) {
   EXPECT_EQ(c["frames_received"].get<int>(), 5 * 5);
 }
 
+// broadcast_jitter: each broadcast waits up to the jitter before it goes to the radio, so the
+// delays in messages.csv spread over [0, jitter] plus the air time; without it they are equal.
+TEST(BroadcastJitter, SpreadsBroadcastsOverTheJitter) {
+  auto delays = [](double jitter) {
+    sim::RunSpec spec;
+    spec.duration = 20.5;
+    spec.network = net::NetworkSpec{};
+    spec.network->routing = net::Routing::kNone;
+    spec.network->packet_log = false;
+    spec.network->broadcast_jitter = jitter;
+    spec.nodes.push_back(Robot("source", ModelKind::kMote, {0, 0, 0},
+                               UseController("pinger", {{"to", Text("broadcast")}, {"interval", Scalar(1)}})));
+    spec.nodes.push_back(Robot("sink", ModelKind::kMote, {10, 0, 0}));
+    const std::string dir = ::testing::TempDir() + "/sanet-jitter";
+    std::filesystem::remove_all(dir);
+    sim::World world(spec, BuiltinRegistry());
+    world.Run({dir, "", false});
+    std::vector<double> out;
+    std::istringstream csv(ReadFile(dir + "/messages.csv"));
+    std::string line;
+    std::getline(csv, line);
+    while (std::getline(csv, line)) out.push_back(std::stod(line.substr(line.rfind(",", line.rfind(",") - 1) + 1)));
+    return out;
+  };
+  const std::vector<double> steady = delays(0), jittered = delays(0.05);
+  ASSERT_EQ(steady.size(), 20u);
+  ASSERT_EQ(jittered.size(), 20u);
+  const auto [low, high] = std::minmax_element(steady.begin(), steady.end());
+  EXPECT_LT(*high - *low, 1e-6) << "without jitter every broadcast takes the same time";
+  const auto [first, last] = std::minmax_element(jittered.begin(), jittered.end());
+  EXPECT_GE(*first, *low - 1e-9);
+  EXPECT_LE(*last, *low + 0.05 + 1e-6) << "no broadcast waits longer than the jitter";
+  EXPECT_GT(*last - *first, 0.02) << "the waits spread over the jitter";
+}
+
 }  // namespace
 }  // namespace sanet

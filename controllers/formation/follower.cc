@@ -77,12 +77,18 @@ class FormationFollower : public Controller {
       const Vec2 away = Rotate({-1, 0}, pose->theta + nearest_angle) * (k_o_ / std::max(nearest, 0.05));
       const Vec2 towards = distance > 1e-6 ? to_goal * (1 / distance) : Vec2{0, 0};
       const Vec2 f = away + towards;
-      const double error = WrapAngle(pose->theta - std::atan2(f.y, f.x));
+      avoid_heading_ = std::atan2(f.y, f.x);
       if (!avoiding_) node.Log("obstacle at " + std::to_string(nearest) + " m: avoiding");
       avoiding_ = true;
-      if (std::fabs(error) >= t_o_) {
-        node.Drive({0, 0, -turn_gain_ * error});
-      } else if (clear_ahead) {
+    }
+    // Turning away can take the obstacle out of the laser's half circle before the robot faces
+    // theta_oa; the turn is finished all the same, or the goal would turn it back towards the
+    // obstacle, and back again, for ever.
+    if (avoiding_) {
+      const double error = WrapAngle(pose->theta - avoid_heading_);
+      if (std::fabs(error) >= t_o_) return void(node.Drive({0, 0, -turn_gain_ * error}));
+      avoiding_ = nearest < sensing_range_;
+      if (clear_ahead) {
         commit_until_ = node.Now() + commit_time_;  // a short move out of the way
         node.Drive({0.5 * max_speed_, 0, 0});
       } else {
@@ -90,7 +96,6 @@ class FormationFollower : public Controller {
       }
       return;
     }
-    avoiding_ = false;
     if (distance < goal_tolerance_) {  // in place: face the way the leader faces
       node.Drive({0, 0, -turn_gain_ * WrapAngle(pose->theta - leader_->theta)});
       return;
@@ -112,7 +117,8 @@ class FormationFollower : public Controller {
   std::optional<Pose2D> leader_;
   std::uint32_t last_sequence_ = 0;
   double commit_until_ = 0;
-  bool avoiding_ = false;
+  bool avoiding_ = false;  // turning towards theta_oa
+  double avoid_heading_ = 0;
 };
 
 }  // namespace

@@ -111,5 +111,21 @@ TEST(Formation, AnObstacleInAFollowersWayIsAvoided) {
   EXPECT_GT(lowest, 0.4);
 }
 
+// Wherever the crate stands near f2's track, f2 gets past it: turning away from the crate takes
+// it out of the laser's half circle, and a follower that then turned back to its goal would
+// turn between the two for ever (the follower before this test did, at two of these places).
+TEST(Formation, AFollowerGetsPastACrateWhereverItStandsNearItsTrack) {
+  const double th = std::atan2(12, 25);
+  for (double across : {-0.2, -0.1, -0.05, 0.0, 0.05, 0.1, 0.2}) {
+    sim::RunSpec spec = Formation();
+    spec.duration = 90;
+    spec.end_when_logged.clear();
+    const Vec2 crate = ToWorld({0, 0, th}, {12, -1.2021 + across});
+    spec.obstacles.push_back(Box(crate, 0.4, 0.4, 0.5, th));
+    const Watch w = RunWatched(spec);
+    EXPECT_GT(Norm(w.poses[2].back().position() - crate), 5) << "f2 stayed at the crate " << across << " m across";
+  }
+}
+
 }  // namespace
 }  // namespace sanet

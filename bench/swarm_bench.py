@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Swarm scale: the shipped swarms (flocking diffdrive robots on the 2D engine, a one-hop 802.11
-beacon a second each) run as `sanet run` runs them, for a few simulated seconds each:
+"""Swarm scale: wall time, real-time factor and memory of the shipped swarms, with and without their radio.
+
+The shipped swarms (flocking diffdrive robots on the 2D engine, a one-hop 802.11 beacon a
+second each) run as `sanet run` runs them, for a few simulated seconds each:
 
   swarm-1k, swarm-10k        with the radio (sanet's indexed channel)
   ... without radio          the same robots, controllers and physics, with no network and
@@ -8,7 +10,8 @@ beacon a second each) run as `sanet run` runs them, for a few simulated seconds 
                              the radio's share of the cost
   swarm-1k, yans channel     the radio on ns-3's YansWifiChannel (every frame to every radio)
 
-It prints wall time, real-time factor, the profile's stages, the ratio of each case to its
+It prints wall time, real-time factor, the profile's stages ("physics" is physics plus sensing,
+"control" the controllers, "other" the rest: the network), the ratio of each case to its
 baseline, the cost per robot-second, and peak memory per robot (summary.json's peak_memory_mb,
 the process's peak resident set).
 

@@ -40,6 +40,8 @@ class Flock : public Controller {
         max_turn_(p.Number("max_turn", 1.5, 0.01)) {}
 
   void Start(Node& node) override {
+    if (!node.Drive({}))
+      throw std::runtime_error("flock: needs a robot that can drive, and " + node.Name() + " cannot");
     if (!node.GroundTruth() && !node.Odometry())
       throw std::runtime_error("flock: needs ground truth or odometry to know where it is");
     next_beacon_ = node.Now() + beacon_ * node.Random();

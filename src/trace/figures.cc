@@ -39,19 +39,25 @@ void Motes(std::ostringstream& s, const svg::Frame& f, const FigureInput& in, sv
   }
 }
 
-// A track, a dot every `tick` seconds with its time where the label has room, its name at the start.
+// Above this many tracks (a swarm) they are neither named nor their dots timed: the names would
+// cover the paths, and the legend would run off the figure.
+constexpr std::size_t kNamedTracks = 12;
+
+// A track, a dot every `tick` seconds with its time where the label has room, its name at the
+// start (both only for a `named` track).
 void TrackWithTicks(std::ostringstream& s, const svg::Frame& f, const Track& t, const char* color, double tick,
-                    svg::Labels& labels) {
+                    svg::Labels& labels, bool named) {
   s << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\" points=\"";
   for (std::size_t i = 0; i < t.x.size(); ++i) s << f.Point(t.x[i], t.y[i]) << " ";
   s << "\"/>\n";
-  if (!t.x.empty()) labels.Place(s, f.X(t.x.front()) + 6, f.Y(t.y.front()) + 14, t.node + " (start)", 12, color);
+  if (named && !t.x.empty())
+    labels.Place(s, f.X(t.x.front()) + 6, f.Y(t.y.front()) + 14, t.node + " (start)", 12, color);
   double next_tick = tick;
   for (std::size_t i = 0; i < t.x.size(); ++i) {
     if (t.t[i] + 1e-9 < next_tick) continue;
     s << "<circle cx=\"" << Num(f.X(t.x[i])) << "\" cy=\"" << Num(f.Y(t.y[i])) << "\" r=\"3\" fill=\"" << color
       << "\"/>\n";
-    labels.Place(s, f.X(t.x[i]) + 4, f.Y(t.y[i]) + 12, Short(next_tick) + " s", 9, color);
+    if (named) labels.Place(s, f.X(t.x[i]) + 4, f.Y(t.y[i]) + 12, Short(next_tick) + " s", 9, color);
     while (next_tick <= t.t[i] + 1e-9) next_tick += tick;
   }
 }
@@ -65,11 +71,16 @@ std::string MapSvg(const FigureInput& in, double tick) {
   f.Open(s, in.title + ": trajectories");
   Obstacles(s, f, in);
   Motes(s, f, in, labels);
-  for (std::size_t k = 0; k < in.tracks.size(); ++k) TrackWithTicks(s, f, in.tracks[k], kColors[k % 6], tick, labels);
+  const bool named = in.tracks.size() <= kNamedTracks;
+  for (std::size_t k = 0; k < in.tracks.size(); ++k)
+    TrackWithTicks(s, f, in.tracks[k], kColors[k % 6], tick, labels, named);
   f.Axes(s);
   f.ScaleBar(s);
   svg::Legend legend(f);
-  for (std::size_t k = 0; k < in.tracks.size(); ++k) legend.Line(s, kColors[k % 6], in.tracks[k].node);
+  if (named)
+    for (std::size_t k = 0; k < in.tracks.size(); ++k) legend.Line(s, kColors[k % 6], in.tracks[k].node);
+  else
+    legend.Line(s, kColors[0], std::to_string(in.tracks.size()) + " robots");
   legend.Dot(s, "#333333", "every " + Short(tick) + " s");
   if (std::any_of(in.nodes.begin(), in.nodes.end(), [](const FigureNode& n) { return n.mote; }))
     legend.Square(s, kMote, "mote");

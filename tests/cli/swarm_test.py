@@ -5,6 +5,7 @@
   a beacon from all of them: after the first second), over the simulated 802.11 radio;
 - the robots move at 0.2 to 0.5 m/s and stay inside the walled arena;
 - the indexed channel handed each beacon to a few dozen radios, not to all 999 others;
+- its map names no robot but counts them (a thousand names would cover the paths);
 - the same seed gives the same fingerprint."""
 import csv
 import json
@@ -68,6 +69,13 @@ class Swarm(unittest.TestCase):
         self.assertGreater(channel["frames_sent"], 2000)
         self.assertLess(channel["receivers_per_frame"], 80)
         self.assertGreater(channel["frames_received"] / channel["frames_sent"], 6)
+
+    def test_the_map_counts_the_robots_instead_of_naming_them(self):
+        with open(os.path.join(self.out, "map.svg")) as f:
+            svg = f.read()
+        self.assertIn(">1000 robots<", svg)
+        self.assertNotIn("(start)", svg)
+        self.assertNotIn(">r999<", svg)
 
     def test_same_seed_same_fingerprint(self):
         again = run(os.path.join(self.tmp.name, "b"))

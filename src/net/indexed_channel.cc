@@ -46,7 +46,6 @@ void IndexedWifiChannel::JoinNewRadios() {
     ns3::Ptr<ns3::NetDevice> device = GetDevice(i);
     auto phy = ns3::DynamicCast<ns3::YansWifiPhy>(ns3::DynamicCast<ns3::WifiNetDevice>(device)->GetPhy());
     radios_.push_back({phy, phy->GetMobility(), device->GetNode()->GetId()});
-    if (first == 0 && i == 0) max_rx_gain_ = phy->GetRxGain();
     if (phy->GetRxGain() > max_rx_gain_) {
       max_rx_gain_ = phy->GetRxGain();
       ranges_.clear();
@@ -113,7 +112,6 @@ double IndexedWifiChannel::Range(double tx_power_dbm) {
 void IndexedWifiChannel::SendNear(ns3::Ptr<ns3::YansWifiPhy> sender, ns3::Ptr<const ns3::WifiPpdu> ppdu,
                                   double tx_power_dbm) {
   JoinNewRadios();
-  ++counters_.frames;
   const ns3::Ptr<ns3::MobilityModel> from = sender->GetMobility();
   const ns3::Vector at = from->GetPosition();
   near_.clear();

@@ -23,6 +23,7 @@
 #include <ns3/yans-wifi-phy.h>
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <vector>
@@ -36,7 +37,6 @@ class IndexedWifiChannel : public ns3::YansWifiChannel {
   static ns3::TypeId GetTypeId();
 
   struct Counters {
-    std::uint64_t frames = 0;      // frames sent
     std::uint64_t candidates = 0;  // radios the grid offered, over all frames
     std::uint64_t handed = 0;      // receptions scheduled (received power at or over the floor)
   };
@@ -67,8 +67,9 @@ class IndexedWifiChannel : public ns3::YansWifiChannel {
   static void Receive(ns3::Ptr<ns3::YansWifiPhy> phy, ns3::Ptr<const ns3::WifiPpdu> ppdu, double rx_power_dbm);
 
   double floor_ = -101;
-  double top_ = 0;          // highest antenna (m) seen: ranges are computed with both ends there
-  double max_rx_gain_ = 0;  // dB, the largest receiver gain: ranges must reach its radio too
+  double top_ = 0;  // highest antenna (m) seen: ranges are computed with both ends there
+  double max_rx_gain_ = std::numeric_limits<double>::lowest();  // dB, the largest receiver gain: ranges
+                                                                // must reach its radio too
   ns3::Ptr<ns3::PropagationLossModel> loss_;
   ns3::Ptr<ns3::PropagationDelayModel> delay_;
   ns3::Ptr<ns3::MobilityModel> probe_from_, probe_to_;  // positions for computing ranges

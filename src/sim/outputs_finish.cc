@@ -30,7 +30,8 @@ std::string RouteRow(const std::string& node, const std::string& destination, co
   return row;
 }
 
-// With the indexed channel: how many radios a frame was handed to, on average.
+// Frames the radios sent and received whole; with the indexed channel also how many radios a
+// frame was offered and handed to, on average.
 nlohmann::ordered_json ChannelSummary(const net::ChannelCounts& c) {
   nlohmann::ordered_json out = {
       {"model", c.model}, {"frames_sent", c.frames_sent}, {"frames_received", c.frames_received}};

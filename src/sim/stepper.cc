@@ -32,6 +32,7 @@ Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserv
     : world_(world), outputs_(outputs), observers_(observers) {
   world_.SetEvents(this);
   for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
+  moving_.assign(world_.size(), 0);
   if (!observers_.empty()) world_.transport().Watch();
   if (trace::RunTrace* trace = outputs_.trace())
     world_.transport().ObserveFrames(
@@ -129,7 +130,6 @@ void Stepper::PhysicsStep() {
 }
 
 void Stepper::CollectMoving() {
-  moving_.resize(world_.size(), 0);
   for (const std::vector<NodeId>* group : {&vehicles_, &motes_})
     for (NodeId id : *group)
       if (!moving_[id] && world_.model(id).body().awake()) {
@@ -189,6 +189,7 @@ void Stepper::Failed(const std::string& why) {
 // the world's first vehicle).
 void Stepper::Spawned(NodeId node, const std::string& usarsim_class) {
   outputs_.Spawned(Now(), node, usarsim_class, world_.model(node).body().pose());
+  moving_.resize(world_.size(), 0);
   if (!world_.model(node).mobile()) return;
   if (vehicles_.empty()) ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
   vehicles_.push_back(node);

@@ -79,6 +79,7 @@ struct RunArgs {
   std::string file;
   std::optional<std::uint64_t> seed;
   std::optional<double> duration;
+  std::optional<int> threads;
   std::string output;
   bool quiet = false;
   bool no_progress = false;
@@ -95,6 +96,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   scenario::Scenario sc = LoadChecked(args.file, registry);
   if (args.seed) sc.run.seed = *args.seed;
   if (args.duration) sc.run.duration = *args.duration;
+  if (args.threads) sc.run.threads = *args.threads;
   sim::RunOptions options;
   options.output_dir = args.output.empty() ? sc.output_folder : args.output;
   options.scenario_file = args.file;
@@ -162,6 +164,7 @@ struct ServeArgs {
   std::optional<int> wss_port;
   bool quiet = false;
   std::optional<double> duration;
+  std::optional<int> threads;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
   ViewArgs view;
 };
@@ -217,6 +220,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   const bool quiet = a.quiet;
   scenario::Scenario sc = LoadChecked(file, registry);
   if (a.duration) sc.run.duration = *a.duration;
+  if (a.threads) sc.run.threads = *a.threads;
   sc.run.robots_remote = true;
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
   const std::string scheduling = hil::UseRealTimePriority();
@@ -371,6 +375,13 @@ void AddDuration(CLI::App* cmd, std::optional<double>& duration) {
   cmd->add_option("--duration", duration, "Override the scenario's duration (s)")->check(kDurationRange);
 }
 
+void AddThreads(CLI::App* cmd, std::optional<int>& threads) {
+  cmd->add_option("--threads", threads,
+                  "Override the scenario's world.threads: 2 steps the physics on a second thread while ns-3 runs "
+                  "the network (same results as 1)")
+      ->check(CLI::IsMember({1, 2}));
+}
+
 CLI::Option* AddScenario(CLI::App* cmd, std::string& file) {
   return cmd->add_option("scenario", file, "Scenario file (YAML)")->required();
 }
@@ -383,6 +394,7 @@ Command AddRun(CLI::App& app) {
   AddScenario(cmd, a->file);
   cmd->add_option("--seed", a->seed, "Override the scenario's seed (0 to 2^64 - 1)")->check(kSeedText);
   AddDuration(cmd, a->duration);
+  AddThreads(cmd, a->threads);
   cmd->add_option("-o,--output", a->output,
                   "Results folder (default: the scenario's outputs.folder, or results/<name>)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
@@ -435,6 +447,7 @@ Command AddServe(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
   AddDuration(cmd, a->duration);
+  AddThreads(cmd, a->threads);
   cmd->add_option("--tap", a->taps,
                   "ROBOT=NAMESPACE: give the network namespace an interface radio0 with the robot's address on the "
                   "simulated radio, carried by ns-3 (needs root and /dev/net/tun; sanet launch does this for "

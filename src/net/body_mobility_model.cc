@@ -12,15 +12,4 @@ ns3::TypeId BodyMobilityModel::GetTypeId() {
   return tid;
 }
 
-void BodyMobilityModel::Bind(std::function<ns3::Vector()> position, std::function<ns3::Vector()> velocity) {
-  position_ = std::move(position);
-  velocity_ = std::move(velocity);
-}
-
-ns3::Vector BodyMobilityModel::DoGetPosition() const { return position_ ? position_() : ns3::Vector(); }
-
-void BodyMobilityModel::DoSetPosition(const ns3::Vector&) {}
-
-ns3::Vector BodyMobilityModel::DoGetVelocity() const { return velocity_ ? velocity_() : ns3::Vector(); }
-
 }  // namespace sanet::net

@@ -71,6 +71,7 @@ void IndexedWifiChannel::Index(std::uint32_t index) {
 }
 
 void IndexedWifiChannel::Moved(std::uint32_t index) {
+  if (!grid_) return;  // no frame sent yet: the grid is built from the positions of then
   if (index >= radios_.size()) JoinNewRadios();
   if (index < radios_.size()) Index(index);
 }
@@ -111,9 +112,11 @@ double IndexedWifiChannel::Range(double tx_power_dbm) {
 // candidates only, and without the ones under the floor.
 void IndexedWifiChannel::SendNear(ns3::Ptr<ns3::YansWifiPhy> sender, ns3::Ptr<const ns3::WifiPpdu> ppdu,
                                   double tx_power_dbm) {
-  JoinNewRadios();
+  // The sender's position first: reading one publishes the bodies of steps that have ended
+  // (net::PoseFeed), which re-indexes them.
   const ns3::Ptr<ns3::MobilityModel> from = sender->GetMobility();
   const ns3::Vector at = from->GetPosition();
+  JoinNewRadios();
   near_.clear();
   grid_->Near(at.x, at.y, Range(tx_power_dbm), near_);
   for (std::uint32_t index : near_) {

@@ -96,6 +96,8 @@ const Fields<sim::RunSpec>& WorldFields() {
     f.Number(
         "ground_friction", [](RunSpec& s) -> double& { return s.physics.ground_friction; }, "", 0, 10,
         "Coulomb coefficient of the ground and obstacles");
+    f.Whole<int>("threads", Member(&RunSpec::threads), "", 1, 2,
+                 "`2` steps the physics on a second thread while ns-3 runs the network; same results as `1`");
     f.Choice<physics::Solver>(
         "solver", [](RunSpec& s) -> physics::Solver& { return s.physics.solver; },
         {{"exact", physics::Solver::kExact}, {"quick", physics::Solver::kQuick}}, "how ODE solves contacts and joints");

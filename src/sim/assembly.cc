@@ -14,6 +14,10 @@ namespace {
 
 bool g_assembly_exists = false;
 
+// How many physics steps the physics thread may be queued ahead of the network's: enough to carry
+// it through a burst of network events, or the network through a stretch of silence.
+constexpr std::size_t kStepsAhead = 8;
+
 // The controllers' clock in a simulated run: ns-3's.
 class SimulationClock : public agents::HostClock {
  public:
@@ -23,20 +27,10 @@ class SimulationClock : public agents::HostClock {
   }
 };
 
-// An ns-3 node whose mobility model reads the body whenever ns-3 asks.
-ns3::Ptr<ns3::Node> Ns3NodeOn(const physics::Body& body) {
+// An ns-3 node with a mobility model for the run to publish its body's poses to.
+ns3::Ptr<ns3::Node> Ns3Node() {
   auto node = ns3::CreateObject<ns3::Node>();
-  auto mobility = ns3::CreateObject<net::BodyMobilityModel>();
-  mobility->Bind(
-      [&body] {
-        const physics::Vec3 p = body.position3();
-        return ns3::Vector(p.x, p.y, p.z);
-      },
-      [&body] {
-        const Twist2D v = body.velocity();
-        return ns3::Vector(v.vx, v.vy, 0);
-      });
-  node->AggregateObject(mobility);
+  node->AggregateObject(ns3::CreateObject<net::BodyMobilityModel>());
   return node;
 }
 
@@ -48,6 +42,7 @@ Assembly::Assembly(const RunSpec& spec, agents::Registry& registry) : spec_(spec
   g_assembly_exists = true;
   try {
     clock_ = std::make_unique<SimulationClock>();
+    pose_feed_ = std::make_unique<net::PoseFeed>();
     ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(spec.seed % 4294967295u) + 1);
     BuildBodies();
     BuildTransport();
@@ -68,7 +63,8 @@ Assembly::~Assembly() {
 }
 
 void Assembly::BuildBodies() {
-  physics_ = physics::CreatePhysicsWorld(spec_.physics);
+  physics_ = std::make_unique<physics::PipelinedWorld>(physics::CreatePhysicsWorld(spec_.physics), spec_.threads == 2,
+                                                       kStepsAhead);
   for (const Obstacle& o : spec_.obstacles) physics_->add_static_box(o.box);
   for (const NodeSpec& n : spec_.nodes)
     models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose, spec_.seed, "node/" + n.name));
@@ -77,7 +73,12 @@ void Assembly::BuildBodies() {
 // One ns-3 node per body, in node order (ns-3's node ids are sanet's).
 void Assembly::BuildTransport() {
   ns3::NodeContainer nodes;
-  for (const auto& model : models_) nodes.Add(Ns3NodeOn(model->body()));
+  for (NodeId id = 0; id < models_.size(); ++id) {
+    nodes.Add(Ns3Node());
+    mobility_.push_back(ns3::PeekPointer(nodes.Get(id)->GetObject<net::BodyMobilityModel>()));
+    mobility_.back()->Follow(pose_feed_.get());
+    PublishPose(id);
+  }
   std::unique_ptr<net::Transport> inner;
   if (spec_.network) {
     std::vector<std::string> names;
@@ -123,7 +124,10 @@ NodeId Assembly::Spawn(const NodeSpec& node, const std::string& usarsim_class, c
   spec_.nodes.push_back(node);
   models_.push_back(
       std::make_unique<robots::NodeModel>(*physics_, node.model, node.pose, spec_.seed, "node/" + node.name));
-  ns3::Ptr<ns3::Node> ns3_node = Ns3NodeOn(models_.back()->body());
+  ns3::Ptr<ns3::Node> ns3_node = Ns3Node();
+  mobility_.push_back(ns3::PeekPointer(ns3_node->GetObject<net::BodyMobilityModel>()));
+  mobility_.back()->Follow(pose_feed_.get());
+  PublishPose(id);
   if (wireless_) wireless_->AddNode(ns3_node, node.name, node.radio);
   if (local_) local_->AddNode();
   AddNode(id, nullptr);
@@ -158,6 +162,37 @@ void Assembly::Receive(NodeId to, const Message& m) {
   else
     events_->Lost(to, m, "no client drives " + NameOf(to));
 }
+
+void Assembly::PublishPose(NodeId id) {
+  const physics::Body& body = models_.at(id)->body();
+  const physics::Vec3 p = body.position3();
+  const Twist2D v = body.velocity();
+  mobility_.at(id)->Publish(ns3::Vector(p.x, p.y, p.z), ns3::Vector(v.vx, v.vy, 0));
+}
+
+std::vector<Assembly::RadioPose> Assembly::RadioPoses(const std::vector<NodeId>& moved) const {
+  std::vector<RadioPose> poses;
+  poses.reserve(moved.size());
+  for (NodeId id : moved) {
+    const physics::Body& body = models_[id]->body();
+    poses.push_back({id, body.position3(), body.velocity()});
+  }
+  return poses;
+}
+
+void Assembly::PublishPoses(const std::vector<RadioPose>& poses) {
+  moved_scratch_.clear();
+  for (const RadioPose& p : poses) {
+    mobility_.at(p.node)->Publish(ns3::Vector(p.position.x, p.position.y, p.position.z),
+                                  ns3::Vector(p.velocity.vx, p.velocity.vy, 0));
+    moved_scratch_.push_back(p.node);
+  }
+  transport_->Moved(moved_scratch_);
+}
+
+void Assembly::SetPoseCatchUp(std::function<void()> catch_up) { pose_feed_->catch_up = std::move(catch_up); }
+void Assembly::PosesBehind() { pose_feed_->behind = true; }
+void Assembly::PosesCaughtUp() { pose_feed_->behind = false; }
 
 void Assembly::SwitchOff(NodeId id) {
   nodes_.at(id)->SwitchOff();

@@ -1,7 +1,7 @@
 // A run's parts, built from its spec: the physics world and its bodies, one ns-3 node per
-// scenario node whose mobility reads its body, the transport (ns-3's network or the local
-// stand-in), and for every node the simulated node its drivers see and the host of its
-// controller. Nothing here advances time: that is the stepper's job.
+// scenario node whose mobility holds its body's pose at the last step boundary, the transport (ns-3's network or the
+// local stand-in), and for every node the simulated node its drivers see and the host of its controller. Nothing here
+// advances time: that is the stepper's job.
 //
 // ns-3's simulator is process-wide, so only one Assembly may exist at a time (checked).
 #pragma once
@@ -13,12 +13,15 @@
 
 #include "agents/controller_host.h"
 #include "agents/simulated_node.h"
+#include "physics/pipelined_world.h"
 #include "sim/message_ledger.h"
 #include "sim/run_events.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
 
 namespace sanet::net {
+class BodyMobilityModel;
+struct PoseFeed;
 class LocalTransport;
 class WirelessNetwork;
 }  // namespace sanet::net
@@ -48,10 +51,28 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   agents::SimulatedNode& node(NodeId id) { return *nodes_.at(id); }
   agents::ControllerHost& host(NodeId id) { return *hosts_.at(id); }
   robots::NodeModel& model(NodeId id) { return *models_.at(id); }
-  physics::PhysicsWorld& physics() { return *physics_; }
+  // The bodies' world; with `world.threads: 2` its steps run on a thread of their own.
+  physics::PipelinedWorld& physics() { return *physics_; }
   MessageLedger& transport() { return *transport_; }
   // True for a robot that a client of the server drives instead of its scenario controller.
   bool remote(NodeId id) const;
+
+  // The radios read positions published at step boundaries, never the bodies themselves.
+  struct RadioPose {
+    NodeId node;
+    physics::Vec3 position;  // m
+    Twist2D velocity;
+  };
+  // The poses of `moved` bodies now, for PublishPoses (on the physics thread, after its step).
+  std::vector<RadioPose> RadioPoses(const std::vector<NodeId>& moved) const;
+  // The radios learn the poses, and re-index the bodies that moved.
+  void PublishPoses(const std::vector<RadioPose>& poses);
+  // Who publishes steps that have ended: after PosesBehind, the radios call `catch_up` before
+  // they next read a position. It calls PosesCaughtUp first (publishing re-indexes the radios,
+  // which reads positions again).
+  void SetPoseCatchUp(std::function<void()> catch_up);
+  void PosesBehind();
+  void PosesCaughtUp();
 
   void SetEvents(RunEvents* events) { events_ = events; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
@@ -103,8 +124,13 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   agents::ControllerHost::Hooks HostHooks(NodeId id);
 
   RunSpec spec_;
-  std::unique_ptr<physics::PhysicsWorld> physics_;
+  void PublishPose(NodeId id);
+
+  std::unique_ptr<physics::PipelinedWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
+  std::vector<net::BodyMobilityModel*> mobility_;  // per node; ns-3's nodes own them
+  std::unique_ptr<net::PoseFeed> pose_feed_;       // what the mobility models follow
+  std::vector<NodeId> moved_scratch_;
   std::unique_ptr<MessageLedger> transport_;
   net::WirelessNetwork* wireless_ = nullptr;  // the inner transport, when it is ns-3's network
   net::LocalTransport* local_ = nullptr;      // or when it is the local stand-in

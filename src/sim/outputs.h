@@ -27,6 +27,7 @@ struct Profile {
   double sensing = 0;  // odometry integration after each step
   double controllers = 0;
   double recording = 0;
+  double physics_wait = 0;  // wall time the network's thread waited for the physics thread
 };
 
 struct RunResult {

@@ -224,7 +224,8 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
   j["profile_s"] = {{"physics", result.profile.physics},
                     {"sensing", result.profile.sensing},
                     {"controllers", result.profile.controllers},
-                    {"recording", result.profile.recording}};
+                    {"recording", result.profile.recording},
+                    {"physics_wait", result.profile.physics_wait}};
   nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
   for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
     const Pose2D p = final_poses.at(id);

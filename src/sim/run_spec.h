@@ -91,6 +91,9 @@ struct RunSpec {
   double physics_step = 0.005;  // s
   Vec2 world_size{100, 100};    // m, extent of the field around the origin-based area (for plots)
   physics::WorldSettings physics;
+  // 2: the physics step runs on a second thread while ns-3 processes the network events of the
+  // same step (same results as 1).
+  int threads = 1;
   std::vector<Obstacle> obstacles;
   std::vector<NodeSpec> nodes;
   // The wireless network; without one, messages are delivered locally after message_latency.

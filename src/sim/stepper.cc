@@ -31,6 +31,7 @@ class StageTimer {
 Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers)
     : world_(world), outputs_(outputs), observers_(observers) {
   world_.SetEvents(this);
+  world_.SetPoseCatchUp([this] { CatchUp(); });
   for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
   moving_.assign(world_.size(), 0);
   if (!observers_.empty()) world_.transport().Watch();
@@ -39,7 +40,11 @@ Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserv
         [trace](const net::FrameEvent& f) { trace->Frame(f.t, f.node, f.sent, f.peer, f.kind, f.bytes); });
 }
 
-Stepper::~Stepper() { world_.SetEvents(nullptr); }
+Stepper::~Stepper() {
+  world_.physics().Settle();
+  world_.SetPoseCatchUp([] {});
+  world_.SetEvents(nullptr);
+}
 
 double Stepper::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 double Stepper::wall() const { return Since(wall_start_); }
@@ -52,6 +57,9 @@ void Stepper::Run(bool progress) {
   // Events at exactly `duration` still run: the run covers [0, duration].
   ns3::Simulator::Stop(Period(world_.spec().duration) + ns3::NanoSeconds(1));
   ns3::Simulator::Run();
+  world_.physics().Settle();  // a run that stopped between two physics events
+  CatchUp();
+  profile_.physics_wait = world_.physics().waited();
   if (progress) std::fprintf(stderr, "\r%78s\r", "");
   world_.transport().Close();
   outputs_.Sample(Now(), /*final_row=*/true, Poses());
@@ -68,7 +76,7 @@ void Stepper::ScheduleAll() {
     ns3::Simulator::Schedule(Period(e.time), &Stepper::SwitchOff, this, static_cast<NodeId>(e.node));
   ns3::Simulator::ScheduleNow(&Stepper::Record, this);
   // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
-  if (!vehicles_.empty()) ns3::Simulator::Schedule(Period(spec.physics_step), &Stepper::PhysicsStep, this);
+  if (!vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
 }
 
 void Stepper::StartControllers() {
@@ -107,13 +115,39 @@ void Stepper::ControlRound(std::int64_t period_ns) {
   ns3::Simulator::Schedule(ns3::NanoSeconds(period_ns), &Stepper::ControlRound, this, period_ns);
 }
 
-// Only what moves costs anything: bodies asleep before and after the step (robots at rest
-// on the 2D engine, motes) are neither sensed nor re-indexed for the radios.
+// The physics event at t_k ends the step [t_k-1, t_k]: from now on the radios see its bodies
+// (published when they next read a position; at once when observers watch). Then it starts the
+// step [t_k, t_k+1] with the commands given so far. With a physics thread the step runs there,
+// queued behind steps it has not finished, while the network goes on; anything that reads or
+// drives a body waits for every step started (physics::PipelinedWorld), the radios only for the
+// steps that have ended.
 void Stepper::PhysicsStep() {
+  physics_steps_ = launched_;
+  if (due_ != steps_.size()) {
+    due_ = steps_.size();
+    world_.PosesBehind();
+  }
+  if (!observers_.empty() && launched_ > 0) {
+    CatchUp();
+    Notify();
+  }
+  const double dt = world_.spec().physics_step;
+  // No step ends past the run: [0, duration] (events at exactly `duration` still run).
+  if (Period(Now() + dt) > Period(world_.spec().duration)) return;
+  StepOutcome& outcome = steps_.emplace_back();
+  outcome.number = world_.physics().StepAsync([this, dt, &outcome] { Integrate(dt, outcome); });
+  ++launched_;
+  ns3::Simulator::Schedule(Period(dt), &Stepper::PhysicsStep, this);
+}
+
+// Only what moves costs anything: bodies asleep before and after the step (robots at rest
+// on the 2D engine, motes) are neither sensed nor re-indexed for the radios. Runs on the physics
+// thread when there is one: it touches only the bodies, their odometry and `moved_`.
+void Stepper::Integrate(double dt, StepOutcome& outcome) {
   CollectMoving();  // awake before the step
   {
     StageTimer timer(profile_.physics);
-    world_.physics().step(world_.spec().physics_step);
+    world_.physics().step(dt);
   }
   CollectMoving();  // woken during it
   {
@@ -121,12 +155,19 @@ void Stepper::PhysicsStep() {
     for (NodeId id : moved_)
       if (world_.model(id).mobile()) world_.model(id).AfterPhysicsStep();
   }
-  world_.transport().Moved(moved_);
+  outcome.poses = world_.RadioPoses(moved_);
   for (NodeId id : moved_) moving_[id] = 0;
   moved_.clear();
-  ++physics_steps_;
-  Notify();
-  ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
+}
+
+// The radios learn where the bodies were at the end of each step that has ended.
+void Stepper::CatchUp() {
+  world_.PosesCaughtUp();
+  for (; due_ > 0; --due_) {
+    world_.physics().SettleStep(steps_.front().number);
+    world_.PublishPoses(steps_.front().poses);
+    steps_.pop_front();
+  }
 }
 
 void Stepper::CollectMoving() {
@@ -185,13 +226,13 @@ void Stepper::Failed(const std::string& why) {
   ns3::Simulator::Stop();
 }
 
-// A robot joined: it moves with the others from the next physics step (the first one, if it is
-// the world's first vehicle).
+// A robot joined: it moves with the others from the next physics step (one that starts now, if
+// it is the world's first vehicle).
 void Stepper::Spawned(NodeId node, const std::string& usarsim_class) {
   outputs_.Spawned(Now(), node, usarsim_class, world_.model(node).body().pose());
   moving_.resize(world_.size(), 0);
   if (!world_.model(node).mobile()) return;
-  if (vehicles_.empty()) ns3::Simulator::Schedule(Period(world_.spec().physics_step), &Stepper::PhysicsStep, this);
+  if (vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
   vehicles_.push_back(node);
 }
 

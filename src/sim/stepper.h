@@ -1,6 +1,8 @@
 // The one clock of a run: every stage is an event on ns-3's scheduler. At t = 0 the
-// controllers start, then (at their own rates) control steps; every physics step integrates the
-// bodies (stage "physics") and the odometry (stage "sensing"), then the observers see the world;
+// controllers start, then (at their own rates) control steps; every physics event ends the step
+// in flight (the radios and observers see its bodies) and starts the next, which integrates the
+// bodies (stage "physics") and the odometry (stage "sensing"), on a thread of its own in a run
+// with two;
 // every trajectory interval the outputs sample it (stage "recording"); scenario events switch
 // nodes off. The stepper also applies the end conditions and ends the run on a controller's
 // failure, keeping what was recorded.
@@ -8,6 +10,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <vector>
 
@@ -48,6 +51,12 @@ class Stepper : public RunEvents {
   void ControlStep(NodeId node);
   void ControlRound(std::int64_t period_ns);
   void PhysicsStep();
+  struct StepOutcome {
+    std::uint64_t number = 0;                // the physics world's
+    std::vector<Assembly::RadioPose> poses;  // of the bodies that moved, at its end
+  };
+  void Integrate(double dt, StepOutcome& outcome);
+  void CatchUp();
   void Record();
   void Notify();
   void CollectMoving();
@@ -60,7 +69,10 @@ class Stepper : public RunEvents {
   std::vector<StepObserver*> observers_;
   std::vector<NodeId> vehicles_, motes_;
   std::map<std::int64_t, std::vector<NodeId>> control_rounds_;  // period (ns) -> nodes, in node order
-  std::vector<NodeId> moved_;  // scratch: bodies awake before or after the physics step
+  std::deque<StepOutcome> steps_;                               // started, and not yet published to the radios
+  std::size_t due_ = 0;                                         // the first due_ of them have ended
+  std::uint64_t launched_ = 0;
+  std::vector<NodeId> moved_;  // bodies awake before or after the step in flight (physics thread)
   std::vector<char> moving_;   // per node: listed in moved_
   RouteWatch routes_;
   Profile profile_;

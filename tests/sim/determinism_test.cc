@@ -50,5 +50,41 @@ TEST(Determinism, AnotherSeedWithSensorNoiseGivesAnotherFingerprint) {
   EXPECT_NE(a.fingerprint, b.fingerprint);
 }
 
+// With a physics thread (world.threads: 2) the run gives the bytes of a run with one: 3D with
+// the radio, AODV and a robot steering by bearing and IR (help-request); 3D with lasers and
+// broadcasts (formation); 2D with a thousand robots (swarm-1k).
+struct ThreadedCase {
+  const char* scenario;
+  double duration;
+};
+
+class OneThreadOrTwo : public ::testing::TestWithParam<ThreadedCase> {};
+
+TEST_P(OneThreadOrTwo, GiveIdenticalBytes) {
+  sim::RunSpec spec = scenario::LoadScenario(std::string(SANET_SOURCE_DIR "/scenarios/") + GetParam().scenario).run;
+  spec.duration = GetParam().duration;
+  spec.figures = false;
+  spec.threads = 1;
+  const std::string tag = std::string("threads-") + GetParam().scenario;
+  const Outputs one = RunScenario(spec, tag + "-1");
+  spec.threads = 2;
+  const Outputs two = RunScenario(spec, tag + "-2");
+  ASSERT_GT(one.trajectories.size(), 1000u);
+  EXPECT_EQ(one.trajectories, two.trajectories);
+  EXPECT_EQ(one.log, two.log);
+  EXPECT_EQ(one.fingerprint, two.fingerprint);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenarios, OneThreadOrTwo,
+                         ::testing::Values(ThreadedCase{"help-request.yaml", 120}, ThreadedCase{"formation.yaml", 40},
+                                           ThreadedCase{"swarm-1k.yaml", 3}),
+                         [](const auto& info) {
+                           std::string name = info.param.scenario;
+                           name = name.substr(0, name.find('.'));
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
+
 }  // namespace
 }  // namespace sanet

@@ -21,6 +21,13 @@ void InitOdeOnce() {
   std::call_once(once, [] { dInitODE2(0); });
 }
 
+// ODE keeps data per thread for collision detection: a thread that steps or casts rays (the
+// physics thread of a run with two) needs its own.
+void PrepareThread() {
+  thread_local bool prepared = false;
+  if (!prepared) prepared = dAllocateODEDataForThread(dAllocateMaskAll) != 0;
+}
+
 const GeomInfo& InfoOf(dGeomID g) { return *static_cast<const GeomInfo*>(dGeomGetData(g)); }
 
 bool Moving(dBodyID body) { return body && dBodyIsEnabled(body); }
@@ -73,6 +80,10 @@ OdeWorld::OdeWorld(const WorldSettings& settings) : settings_(settings) {
   // from the same seed in every world so that a run never depends on what ran before it.
   dRandSetSeed(0);
   world_ = dWorldCreate();
+  // ODE's default stepping scheduler is shared by every world: one of its own lets worlds step
+  // on different threads at once (a run's physics thread, tests beside it).
+  threading_ = dThreadingAllocateSelfThreadedImplementation();
+  dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_), threading_);
   dWorldSetGravity(world_, 0, 0, -settings.gravity);
   dWorldSetQuickStepNumIterations(world_, settings.solver_iterations);
   dWorldSetERP(world_, 0.2);
@@ -94,6 +105,7 @@ OdeWorld::~OdeWorld() {
   dSpaceDestroy(still_);
   dSpaceDestroy(resting_);
   dWorldDestroy(world_);  // and the world its bodies and joints
+  dThreadingFreeImplementation(threading_);
 }
 
 GeomInfo* OdeWorld::make_info(GeomInfo info) {
@@ -261,6 +273,7 @@ void OdeWorld::CollideWithMotes(dGeomID geom, int self) {
 }
 
 void OdeWorld::step(double dt) {
+  PrepareThread();
   dSpaceCollide(moving_, this, &NearCallback);
   dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(still_), this, &NearCallback);
   if (!motes_.empty())
@@ -316,6 +329,7 @@ void RayCallback(void* data, dGeomID ray, dGeomID other) {
 }  // namespace
 
 double OdeWorld::cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const {
+  PrepareThread();
   if (!ray_) {
     ray_ = dCreateRay(nullptr, max_range);
     dGeomSetData(ray_, const_cast<OdeWorld*>(this)->make_info({Part::kStatic, nullptr, nullptr, 0, 0}));

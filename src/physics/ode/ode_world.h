@@ -116,6 +116,7 @@ class OdeWorld : public PhysicsWorld {
 
   WorldSettings settings_;
   dWorldID world_;
+  dThreadingImplementationID threading_;
   dSpaceID moving_, still_, resting_;
   dJointGroupID contacts_;
   std::vector<std::unique_ptr<GeomInfo>> infos_;

@@ -64,6 +64,23 @@ class Cli(unittest.TestCase):
             self.assertEqual(summary["fingerprint"], json.load(open(os.path.join(b, "summary.json")))["fingerprint"])
             self.assertFalse([n for n in os.listdir(a) if n.endswith(".tmp")])
 
+    def test_two_threads_give_the_results_of_one_and_other_counts_are_refused(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            runs = {}
+            for threads in ("1", "2"):
+                folder = os.path.join(tmp, threads)
+                out = sanet("run", SCENARIO, "-o", folder, "--threads", threads, "--duration", "30", "-q")
+                self.assertEqual(out.returncode, 0, out.stderr)
+                runs[threads] = json.load(open(os.path.join(folder, "summary.json")))
+                with open(os.path.join(folder, "trajectories.csv"), "rb") as f:
+                    runs[threads]["bytes"] = f.read()
+            self.assertEqual(runs["1"]["fingerprint"], runs["2"]["fingerprint"])
+            self.assertEqual(runs["1"]["bytes"], runs["2"]["bytes"])
+            self.assertEqual(runs["1"]["profile_s"]["physics_wait"], 0)
+        bad = sanet("run", SCENARIO, "--threads", "3")
+        self.assertEqual(bad.returncode, 2)
+        self.assertIn("--threads", bad.stderr)
+
     def test_the_readme_scenario_reaches_its_way_point(self):
         with tempfile.TemporaryDirectory() as tmp:
             out = sanet("run", SCENARIO, "-o", tmp, "-q")

@@ -135,7 +135,8 @@ void Stepper::PhysicsStep() {
   // No step ends past the run: [0, duration] (events at exactly `duration` still run).
   if (Period(Now() + dt) > Period(world_.spec().duration)) return;
   StepOutcome& outcome = steps_.emplace_back();
-  outcome.number = world_.physics().StepAsync([this, dt, &outcome] { Integrate(dt, outcome); });
+  outcome.dt = dt;
+  outcome.number = world_.physics().StepAsync([this, &outcome] { Integrate(outcome); });
   ++launched_;
   ns3::Simulator::Schedule(Period(dt), &Stepper::PhysicsStep, this);
 }
@@ -143,11 +144,11 @@ void Stepper::PhysicsStep() {
 // Only what moves costs anything: bodies asleep before and after the step (robots at rest
 // on the 2D engine, motes) are neither sensed nor re-indexed for the radios. Runs on the physics
 // thread when there is one: it touches only the bodies, their odometry and `moved_`.
-void Stepper::Integrate(double dt, StepOutcome& outcome) {
+void Stepper::Integrate(StepOutcome& outcome) {
   CollectMoving();  // awake before the step
   {
     StageTimer timer(profile_.physics);
-    world_.physics().step(dt);
+    world_.physics().step(outcome.dt);
   }
   CollectMoving();  // woken during it
   {

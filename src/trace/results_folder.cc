@@ -36,15 +36,18 @@ void ResultsFolder::WriteWhole(const std::string& name, const std::string& conte
   Listed(name);
 }
 
+// A temporary name starts empty: a run that was killed may have left one behind (trace.sqlite.tmp
+// with its tables, which the next run's trace could not create again).
 std::string ResultsFolder::TempFile(const std::string& name) {
   if (!writes()) throw std::logic_error("no results folder for " + name);
   pending_.push_back(name);
-  return Path(name) + ".tmp";
+  const std::string tmp = Path(name) + ".tmp";
+  fs::remove_all(tmp);
+  return tmp;
 }
 
 std::string ResultsFolder::TempFolder(const std::string& name) {
   const std::string tmp = TempFile(name);
-  fs::remove_all(tmp);
   fs::create_directories(tmp);
   return tmp;
 }

@@ -79,6 +79,18 @@ class Trace(unittest.TestCase):
         routes = self.db.execute("SELECT count(*) FROM routes WHERE node = ? AND next_hop IS NOT NULL", (robot,))
         self.assertGreater(routes.fetchone()[0], 5)
 
+    def test_a_trace_left_half_written_by_a_killed_run_does_not_stop_the_next(self):
+        folder = os.path.join(self.tmp.name, "again")
+        os.makedirs(folder)
+        stale = sqlite3.connect(os.path.join(folder, "trace.sqlite.tmp"))
+        stale.execute("CREATE TABLE info(key TEXT PRIMARY KEY, value TEXT)")
+        stale.commit()
+        stale.close()
+        run(os.path.join(SOURCE, "scenarios", "around-the-wall.yaml"), folder)
+        self.assertFalse(os.path.exists(os.path.join(folder, "trace.sqlite.tmp")))
+        with sqlite3.connect(os.path.join(folder, "trace.sqlite")) as db:
+            self.assertEqual(dict(db.execute("SELECT key, value FROM info"))["format"], "sanet trace 1")
+
     def test_switching_it_off_writes_none_and_keeps_the_fingerprint(self):
         with open(os.path.join(SOURCE, "scenarios", "help-request.yaml")) as f:
             text = f.read().replace("outputs:\n", "outputs:\n  trace: false\n")

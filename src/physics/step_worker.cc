@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <chrono>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -16,23 +17,45 @@ namespace {
 
 thread_local bool t_on_worker = false;
 
-// How long a side spins before it yields (the launcher) or sleeps (the worker): a few physics
-// steps' worth of wall time, so that a run's hand-offs never sleep while both sides are busy.
-constexpr auto kSpin = std::chrono::microseconds(200);
-
-// Spins on `done` until it holds, for kSpin, then yields the processor between checks.
-template <typename Done>
-void SpinUntil(Done done) {
-  const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; !done(); ++i) {
-    if (i < 64 || std::chrono::steady_clock::now() - start < kSpin)
-      SANET_CPU_RELAX();
-    else
-      std::this_thread::yield();
-  }
-}
+// How long a side spins before it sleeps adapts between these: a wait that its spin saw through
+// doubles the next spin, a wait that had to sleep halves it. With a free core for each thread
+// the waits are short and the hand-offs cost no system call; when the partner is not running
+// (fewer free cores than threads, a busy machine) a side soon stops spinning its time away.
+constexpr double kSpinMin = 10e-6, kSpinMax = 200e-6;  // s
 
 }  // namespace
+
+// Both sides wait alike: spin on the atomic for a while, then announce sleep and sleep on the
+// condition variable. The announcing side re-checks under the lock after announcing; the other
+// side changes the atomic before it reads the announcement (both seq_cst), so a wake-up is never
+// lost.
+bool StepWorker::AwaitChange(const std::atomic<std::uint64_t>& counter, std::uint64_t below, std::atomic<bool>& asleep,
+                             bool stop_on_request, double& spin) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto budget = std::chrono::duration<double>(spin);
+  for (int i = 0; counter.load(std::memory_order_acquire) < below; ++i) {
+    if (i < 64 || std::chrono::steady_clock::now() - start < budget) {
+      SANET_CPU_RELAX();
+      continue;
+    }
+    spin = std::max(kSpinMin, spin / 2);
+    std::unique_lock<std::mutex> lock(mutex_);
+    asleep.store(true, std::memory_order_seq_cst);
+    changed_.wait(lock,
+                  [&] { return (stop_on_request && stopping_) || counter.load(std::memory_order_seq_cst) >= below; });
+    asleep.store(false, std::memory_order_relaxed);
+    if (stop_on_request && stopping_) return false;
+    return true;
+  }
+  spin = std::min(kSpinMax, spin * 2);
+  return true;
+}
+
+void StepWorker::Wake(const std::atomic<bool>& asleep) {
+  if (!asleep.load(std::memory_order_seq_cst)) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  changed_.notify_all();
+}
 
 StepWorker::StepWorker(bool threaded, std::size_t depth) : slots_(depth < 1 ? 1 : depth) {
   if (threaded) thread_ = std::thread([this] { Loop(); });
@@ -44,7 +67,7 @@ StepWorker::~StepWorker() {
     std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
   }
-  wake_.notify_one();
+  changed_.notify_all();
   thread_.join();
 }
 
@@ -59,12 +82,7 @@ std::uint64_t StepWorker::Launch(std::function<void()> work) {
   if (number > slots_.size()) WaitFor(number - slots_.size());  // its slot's previous piece
   slots_[(number - 1) % slots_.size()] = std::move(work);
   launched_.store(number, std::memory_order_seq_cst);
-  // The worker announces sleep before it checks launched_ a last time under the lock, so either
-  // it sees this launch or this thread sees it sleeping (both sides use seq_cst).
-  if (sleeping_.load(std::memory_order_seq_cst)) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    wake_.notify_one();
-  }
+  Wake(worker_asleep_);
   return number;
 }
 
@@ -72,33 +90,17 @@ void StepWorker::WaitFor(std::uint64_t number) {
   if (t_on_worker) return;
   if (finished_.load(std::memory_order_acquire) < number) {
     const auto start = std::chrono::steady_clock::now();
-    SpinUntil([&] { return finished_.load(std::memory_order_acquire) >= number; });
+    AwaitChange(finished_, number, launcher_asleep_, false, launcher_spin_);
     waited_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   if (failed_.load(std::memory_order_acquire)) std::rethrow_exception(error_);
 }
 
-// Spins a while for the next launch, then sleeps until it comes; false when stopping.
-bool StepWorker::AwaitLaunch(std::uint64_t seen) {
-  const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; launched_.load(std::memory_order_acquire) == seen; ++i) {
-    if (i < 64 || std::chrono::steady_clock::now() - start < kSpin) {
-      SANET_CPU_RELAX();
-      continue;
-    }
-    std::unique_lock<std::mutex> lock(mutex_);
-    sleeping_.store(true, std::memory_order_seq_cst);
-    wake_.wait(lock, [&] { return stopping_ || launched_.load(std::memory_order_seq_cst) != seen; });
-    sleeping_.store(false, std::memory_order_relaxed);
-    if (stopping_) return false;
-  }
-  return true;
-}
-
 void StepWorker::Loop() {
   t_on_worker = true;
   pthread_setname_np(pthread_self(), "sanet-physics");  // as top and perf show it
-  for (std::uint64_t done = 0; AwaitLaunch(done);) {
+  double spin = kSpinMax;
+  for (std::uint64_t done = 0; AwaitChange(launched_, done + 1, worker_asleep_, true, spin);) {
     std::function<void()>& work = slots_[done % slots_.size()];
     // After a failure the rest is skipped: the launching thread rethrows it at its next wait.
     if (!failed_.load(std::memory_order_relaxed)) try {
@@ -108,7 +110,8 @@ void StepWorker::Loop() {
         failed_.store(true, std::memory_order_release);
       }
     work = nullptr;
-    finished_.store(++done, std::memory_order_release);
+    finished_.store(++done, std::memory_order_seq_cst);
+    Wake(launcher_asleep_);
   }
 }
 

@@ -8,8 +8,9 @@
 // stretch where it has little to do while the worker catches up, and the worker through one
 // where the launching thread is busy. The hand-off has to cost about a microsecond (on the
 // help-request scenario a physics step is about 7 µs of work every 5 ms of simulated time, some
-// 20 µs of wall time): both sides spin on atomics while the other is about to answer, and the
-// worker falls asleep on a condition variable only after it has waited for a while.
+// 20 µs of wall time): both sides spin on atomics while the other is about to answer, and sleep
+// on a condition variable once they have waited a little longer than that, so that a run on a
+// machine without a free core for each thread does not spin its partner's time away.
 #pragma once
 
 #include <atomic>
@@ -46,17 +47,23 @@ class StepWorker {
 
  private:
   void Loop();
-  bool AwaitLaunch(std::uint64_t seen);
+  // Waits until `counter` reaches `below`, spinning for `spin` seconds (which it adapts) and then
+  // announcing sleep in `asleep` and sleeping; false when the worker is to stop (only with
+  // `stop_on_request`).
+  bool AwaitChange(const std::atomic<std::uint64_t>& counter, std::uint64_t below, std::atomic<bool>& asleep,
+                   bool stop_on_request, double& spin);
+  void Wake(const std::atomic<bool>& asleep);
 
   std::vector<std::function<void()>> slots_;  // piece n in slots_[(n - 1) % depth]
   std::exception_ptr error_;                  // written by the worker before failed_
   std::atomic<bool> failed_{false};
   std::atomic<std::uint64_t> launched_{0}, finished_{0};
-  std::atomic<bool> sleeping_{false};
+  std::atomic<bool> worker_asleep_{false}, launcher_asleep_{false};
   bool stopping_ = false;  // guarded by mutex_
   std::mutex mutex_;
-  std::condition_variable wake_;
+  std::condition_variable changed_;
   double waited_ = 0;
+  double launcher_spin_ = 200e-6;  // s, the launcher's current spin before sleeping
   std::thread thread_;
 };
 

@@ -79,7 +79,7 @@ struct RunArgs {
   std::string file;
   std::optional<std::uint64_t> seed;
   std::optional<double> duration;
-  std::optional<int> threads;
+  std::optional<std::string> threads;
   std::string output;
   bool quiet = false;
   bool no_progress = false;
@@ -96,14 +96,15 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   scenario::Scenario sc = LoadChecked(args.file, registry);
   if (args.seed) sc.run.seed = *args.seed;
   if (args.duration) sc.run.duration = *args.duration;
-  if (args.threads) sc.run.threads = *args.threads;
+  if (args.threads) sc.run.threads = std::stoi(*args.threads);
   sim::RunOptions options;
   options.output_dir = args.output.empty() ? sc.output_folder : args.output;
   options.scenario_file = args.file;
   options.progress = !args.quiet && !args.no_progress && isatty(STDERR_FILENO);
   if (!args.quiet)
-    std::printf("sanet: running %s (%zu nodes, %.1f s simulated, seed %llu)\n", sc.run.name.c_str(),
-                sc.run.nodes.size(), sc.run.duration, static_cast<unsigned long long>(sc.run.seed));
+    std::printf("sanet: running %s (%zu nodes, %.1f s simulated, seed %llu%s)\n", sc.run.name.c_str(),
+                sc.run.nodes.size(), sc.run.duration, static_cast<unsigned long long>(sc.run.seed),
+                sc.run.threads == 2 ? ", physics on a second thread" : "");
   sim::World world(sc.run, registry);
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, args.view, !args.quiet);
   const sim::RunResult r = world.Run(options);
@@ -111,6 +112,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   if (!args.quiet) {
     std::printf("  simulated %.1f s in %.2f s wall (%.1fx real time), %llu events\n", r.simulated, r.wall,
                 r.real_time_factor, static_cast<unsigned long long>(r.events));
+    if (!world.ended_by().empty()) std::printf("  ended at %.1f s: %s\n", world.ended_at(), world.ended_by().c_str());
     std::printf("  fingerprint %s\n  results in %s/\n", r.fingerprint.c_str(), options.output_dir.c_str());
   }
   return 0;
@@ -164,7 +166,6 @@ struct ServeArgs {
   std::optional<int> wss_port;
   bool quiet = false;
   std::optional<double> duration;
-  std::optional<int> threads;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
   ViewArgs view;
 };
@@ -220,7 +221,6 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   const bool quiet = a.quiet;
   scenario::Scenario sc = LoadChecked(file, registry);
   if (a.duration) sc.run.duration = *a.duration;
-  if (a.threads) sc.run.threads = *a.threads;
   sc.run.robots_remote = true;
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
   const std::string scheduling = hil::UseRealTimePriority();
@@ -375,11 +375,12 @@ void AddDuration(CLI::App* cmd, std::optional<double>& duration) {
   cmd->add_option("--duration", duration, "Override the scenario's duration (s)")->check(kDurationRange);
 }
 
-void AddThreads(CLI::App* cmd, std::optional<int>& threads) {
+// Read as text so that every wrong value gets the same message ("two not in {1,2}").
+void AddThreads(CLI::App* cmd, std::optional<std::string>& threads) {
   cmd->add_option("--threads", threads,
-                  "Override the scenario's world.threads: 2 steps the physics on a second thread while ns-3 runs "
-                  "the network (same results as 1)")
-      ->check(CLI::IsMember({1, 2}));
+                  "1 or 2, overriding the scenario's world.threads: 2 steps the physics on a second thread while "
+                  "ns-3 runs the network (same results as 1; faster for swarms, docs/swarms.md)")
+      ->check(CLI::IsMember({"1", "2"}));
 }
 
 CLI::Option* AddScenario(CLI::App* cmd, std::string& file) {
@@ -447,7 +448,6 @@ Command AddServe(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
   AddDuration(cmd, a->duration);
-  AddThreads(cmd, a->threads);
   cmd->add_option("--tap", a->taps,
                   "ROBOT=NAMESPACE: give the network namespace an interface radio0 with the robot's address on the "
                   "simulated radio, carried by ns-3 (needs root and /dev/net/tun; sanet launch does this for "

@@ -36,6 +36,8 @@ struct RunResult {
   double real_time_factor = 0;
   std::uint64_t events = 0;
   std::uint64_t physics_steps = 0;
+  std::uint64_t quiet_physics_steps = 0;  // in which no other event ran
+  int threads = 1;
   std::string fingerprint;
   Profile profile;
   std::vector<std::string> files;  // written into the output folder

@@ -218,6 +218,8 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
   j["peak_memory_mb"] = PeakMemoryMb();
   j["events"] = result.events;
   j["physics_steps"] = result.physics_steps;
+  j["quiet_physics_steps"] = result.quiet_physics_steps;
+  j["threads"] = result.threads;
   j["physics_step_s"] = spec_.physics_step;
   j["world_size_m"] = {spec_.world_size.x, spec_.world_size.y};
   j["fingerprint"] = result.fingerprint;

@@ -123,6 +123,10 @@ void Stepper::ControlRound(std::int64_t period_ns) {
 // steps that have ended.
 void Stepper::PhysicsStep() {
   physics_steps_ = launched_;
+  // Steps in which nothing else happened: with two threads, the physics has nothing to overlap there.
+  const std::uint64_t events = ns3::Simulator::GetEventCount();
+  if (launched_ > 0 && events == events_at_last_step_ + 1) ++quiet_physics_steps_;
+  events_at_last_step_ = events;
   if (due_ != steps_.size()) {
     due_ = steps_.size();
     world_.PosesBehind();

@@ -32,6 +32,8 @@ class Stepper : public RunEvents {
   void Run(bool progress);
   const Profile& profile() const { return profile_; }
   std::uint64_t physics_steps() const { return physics_steps_; }
+  // Physics steps in which no other event ran (no network, controller or recording event).
+  std::uint64_t quiet_physics_steps() const { return quiet_physics_steps_; }
   double wall() const;  // s since Run began
   double Now() const;   // s, simulated
 
@@ -78,6 +80,7 @@ class Stepper : public RunEvents {
   RouteWatch routes_;
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
+  std::uint64_t quiet_physics_steps_ = 0, events_at_last_step_ = 0;
   std::chrono::steady_clock::time_point wall_start_, last_progress_;
 };
 

@@ -70,6 +70,8 @@ RunResult World::Run(const RunOptions& options) {
   result.real_time_factor = result.wall > 0 ? result.simulated / result.wall : 0;
   result.events = ns3::Simulator::GetEventCount();
   result.physics_steps = stepper.physics_steps();
+  result.quiet_physics_steps = stepper.quiet_physics_steps();
+  result.threads = spec().threads;
   result.profile = stepper.profile();
   ended_by_ = outputs.ended_by();
   ended_at_ = outputs.ended_at();

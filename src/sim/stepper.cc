@@ -41,7 +41,10 @@ Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserv
 }
 
 Stepper::~Stepper() {
-  world_.physics().Settle();
+  try {
+    world_.physics().Settle();  // no step may still use this stepper
+  } catch (...) {               // a failed step: Run has reported it already
+  }
   world_.SetPoseCatchUp([] {});
   world_.SetEvents(nullptr);
 }

@@ -127,6 +127,9 @@ class PhysicsWorld {
 
   virtual void step(double dt) = 0;
   virtual std::size_t awake_body_count() const = 0;
+  // Returns once no step is under way (a world whose steps may run on another thread waits for
+  // them): for state a step updates outside the engine, such as odometry.
+  virtual void Settle() {}
 };
 
 std::unique_ptr<PhysicsWorld> CreateOdeWorld(const WorldSettings& settings);

@@ -27,7 +27,7 @@ class PipelinedWorld : public PhysicsWorld {
   // already started; returns its number (1, 2, ...).
   std::uint64_t StepAsync(std::function<void()> work) { return worker_.Launch(std::move(work)); }
   // Waits for every step started (a no-op on the steps' own thread).
-  void Settle() { worker_.Wait(); }
+  void Settle() override { worker_.Wait(); }
   // Waits for step `number` (and those before it) only.
   void SettleStep(std::uint64_t number) { worker_.WaitFor(number); }
   bool threaded() const { return worker_.threaded(); }

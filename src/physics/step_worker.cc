@@ -15,7 +15,7 @@
 namespace sanet::physics {
 namespace {
 
-thread_local bool t_on_worker = false;
+thread_local const StepWorker* t_worker = nullptr;  // the worker whose thread this is
 
 // How long a side spins before it sleeps adapts between these: a wait that its spin saw through
 // doubles the next spin, a wait that had to sleep halves it. With a free core for each thread
@@ -87,17 +87,21 @@ std::uint64_t StepWorker::Launch(std::function<void()> work) {
 }
 
 void StepWorker::WaitFor(std::uint64_t number) {
-  if (t_on_worker) return;
+  if (t_worker == this) return;
   if (finished_.load(std::memory_order_acquire) < number) {
     const auto start = std::chrono::steady_clock::now();
     AwaitChange(finished_, number, launcher_asleep_, false, launcher_spin_);
     waited_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
-  if (failed_.load(std::memory_order_acquire)) std::rethrow_exception(error_);
+  // Once: the waits after it (a run tearing down) must not throw again.
+  if (failed_.load(std::memory_order_acquire) && !reported_) {
+    reported_ = true;
+    std::rethrow_exception(error_);
+  }
 }
 
 void StepWorker::Loop() {
-  t_on_worker = true;
+  t_worker = this;
   pthread_setname_np(pthread_self(), "sanet-physics");  // as top and perf show it
   double spin = kSpinMax;
   for (std::uint64_t done = 0; AwaitChange(launched_, done + 1, worker_asleep_, true, spin);) {

@@ -37,7 +37,7 @@ class StepWorker {
   // Queues `work` behind what is queued (waiting first while `depth` pieces are) and returns its
   // number: 1 for the first piece, then 2, 3 ...
   std::uint64_t Launch(std::function<void()> work);
-  // Returns once every launched piece is done, rethrowing what one threw. At once on the
+  // Returns once every launched piece is done, rethrowing (once) what one threw. At once on the
   // worker's own thread (where the work itself may touch what Wait guards).
   void Wait() { WaitFor(launched_.load(std::memory_order_relaxed)); }
   // Returns once piece `number` and those before it are done.
@@ -57,6 +57,7 @@ class StepWorker {
   std::vector<std::function<void()>> slots_;  // piece n in slots_[(n - 1) % depth]
   std::exception_ptr error_;                  // written by the worker before failed_
   std::atomic<bool> failed_{false};
+  bool reported_ = false;  // the launcher has rethrown it
   std::atomic<std::uint64_t> launched_{0}, finished_{0};
   std::atomic<bool> worker_asleep_{false}, launcher_asleep_{false};
   bool stopping_ = false;  // guarded by mutex_

@@ -144,6 +144,7 @@ std::optional<RangeScan> NodeModel::Laser() {
 
 std::optional<Pose2D> NodeModel::Odometry() const {
   if (!odometry_) return std::nullopt;
+  world_.Settle();  // the step under way updates it (AfterPhysicsStep)
   return odometry_->pose();
 }
 

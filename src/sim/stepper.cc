@@ -43,7 +43,7 @@ Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserv
 Stepper::~Stepper() {
   try {
     world_.physics().Settle();  // no step may still use this stepper
-  } catch (...) {               // a failed step: Run has reported it already
+  } catch (...) {               // a failed step, thrown once already (by Run, unwinding now)
   }
   world_.SetPoseCatchUp([] {});
   world_.SetEvents(nullptr);
@@ -150,7 +150,9 @@ void Stepper::PhysicsStep() {
 
 // Only what moves costs anything: bodies asleep before and after the step (robots at rest
 // on the 2D engine, motes) are neither sensed nor re-indexed for the radios. Runs on the physics
-// thread when there is one: it touches only the bodies, their odometry and `moved_`.
+// thread when there is one: it steps the engine, reads vehicles_, motes_ and the models, and
+// writes the bodies, their odometry, moved_, moving_, the physics and sensing times and
+// `outcome`; the network's thread touches none of these without waiting for it.
 void Stepper::Integrate(StepOutcome& outcome) {
   CollectMoving();  // awake before the step
   {
@@ -237,6 +239,7 @@ void Stepper::Failed(const std::string& why) {
 // A robot joined: it moves with the others from the next physics step (one that starts now, if
 // it is the world's first vehicle).
 void Stepper::Spawned(NodeId node, const std::string& usarsim_class) {
+  world_.physics().Settle();  // the physics thread reads the lists grown here
   outputs_.Spawned(Now(), node, usarsim_class, world_.model(node).body().pose());
   moving_.resize(world_.size(), 0);
   if (!world_.model(node).mobile()) return;

@@ -50,6 +50,22 @@ TEST(Determinism, AnotherSeedWithSensorNoiseGivesAnotherFingerprint) {
   EXPECT_NE(a.fingerprint, b.fingerprint);
 }
 
+// A robot that steers by odometry (updated by the physics step) and noisy sensors: the same bytes
+// with the physics on its own thread.
+TEST(Determinism, OdometryReadsGiveTheSameBytesOnTwoThreads) {
+  sim::RunSpec spec = NoisyScenario(7);
+  ParamValue odometry;
+  odometry.rows = {{"odometry"}};
+  spec.nodes[0].controller->params.Set("localization", odometry);
+  spec.nodes[0].model.sensors.odometry_noise = 0.02;
+  const Outputs one = RunScenario(spec, "odometry-1");
+  spec.threads = 2;
+  const Outputs two = RunScenario(spec, "odometry-2");
+  ASSERT_GT(one.trajectories.size(), 1000u);
+  EXPECT_EQ(one.trajectories, two.trajectories);
+  EXPECT_EQ(one.fingerprint, two.fingerprint);
+}
+
 // With a physics thread (world.threads: 2) the run gives the bytes of a run with one: 3D with
 // the radio, AODV and a robot steering by bearing and IR (help-request); 3D with lasers and
 // broadcasts (formation); 2D with a thousand robots (swarm-1k).

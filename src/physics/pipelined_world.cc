@@ -52,15 +52,16 @@ void PipelinedWorld::add_static_box(const StaticBox& box) {
 
 Vehicle* PipelinedWorld::add_omni3(const Omni3Spec& spec, const Pose2D& pose) {
   Settle();
-  auto vehicle = std::make_unique<GatedVehicle>(*this, *engine_->add_omni3(spec, pose));
-  Vehicle* handle = vehicle.get();
-  bodies_.push_back(std::move(vehicle));
-  return handle;
+  return Gate(engine_->add_omni3(spec, pose));
 }
 
 Vehicle* PipelinedWorld::add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose) {
   Settle();
-  auto vehicle = std::make_unique<GatedVehicle>(*this, *engine_->add_diffdrive(spec, pose));
+  return Gate(engine_->add_diffdrive(spec, pose));
+}
+
+Vehicle* PipelinedWorld::Gate(Vehicle* engine_vehicle) {
+  auto vehicle = std::make_unique<GatedVehicle>(*this, *engine_vehicle);
   Vehicle* handle = vehicle.get();
   bodies_.push_back(std::move(vehicle));
   return handle;

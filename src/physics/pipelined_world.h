@@ -30,7 +30,6 @@ class PipelinedWorld : public PhysicsWorld {
   void Settle() override { worker_.Wait(); }
   // Waits for step `number` (and those before it) only.
   void SettleStep(std::uint64_t number) { worker_.WaitFor(number); }
-  bool threaded() const { return worker_.threaded(); }
   double waited() const { return worker_.waited(); }  // s the caller spent waiting in Settle
 
   void add_static_box(const StaticBox& box) override;
@@ -47,6 +46,7 @@ class PipelinedWorld : public PhysicsWorld {
   class GatedVehicle;
   void SettleConst() const { const_cast<StepWorker&>(worker_).Wait(); }
   const Body* Inner(const Body* body) const;
+  Vehicle* Gate(Vehicle* engine_vehicle);  // the gated vehicle handed out for the engine's
 
   std::unique_ptr<PhysicsWorld> engine_;
   std::vector<std::unique_ptr<Body>> bodies_;

@@ -163,28 +163,29 @@ void Assembly::Receive(NodeId to, const Message& m) {
     events_->Lost(to, m, "no client drives " + NameOf(to));
 }
 
-void Assembly::PublishPose(NodeId id) {
+Assembly::RadioPose Assembly::PoseOf(NodeId id) const {
   const physics::Body& body = models_.at(id)->body();
-  const physics::Vec3 p = body.position3();
-  const Twist2D v = body.velocity();
-  mobility_.at(id)->Publish(ns3::Vector(p.x, p.y, p.z), ns3::Vector(v.vx, v.vy, 0));
+  return {id, body.position3(), body.velocity()};
 }
+
+void Assembly::Publish(const RadioPose& p) {
+  mobility_.at(p.node)->Publish(ns3::Vector(p.position.x, p.position.y, p.position.z),
+                                ns3::Vector(p.velocity.vx, p.velocity.vy, 0));
+}
+
+void Assembly::PublishPose(NodeId id) { Publish(PoseOf(id)); }
 
 std::vector<Assembly::RadioPose> Assembly::RadioPoses(const std::vector<NodeId>& moved) const {
   std::vector<RadioPose> poses;
   poses.reserve(moved.size());
-  for (NodeId id : moved) {
-    const physics::Body& body = models_[id]->body();
-    poses.push_back({id, body.position3(), body.velocity()});
-  }
+  for (NodeId id : moved) poses.push_back(PoseOf(id));
   return poses;
 }
 
 void Assembly::PublishPoses(const std::vector<RadioPose>& poses) {
   moved_scratch_.clear();
   for (const RadioPose& p : poses) {
-    mobility_.at(p.node)->Publish(ns3::Vector(p.position.x, p.position.y, p.position.z),
-                                  ns3::Vector(p.velocity.vx, p.velocity.vy, 0));
+    Publish(p);
     moved_scratch_.push_back(p.node);
   }
   transport_->Moved(moved_scratch_);

@@ -122,10 +122,11 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void AddNode(NodeId id, std::unique_ptr<Controller> controller);
   void Receive(NodeId to, const Message& message);
   agents::ControllerHost::Hooks HostHooks(NodeId id);
+  RadioPose PoseOf(NodeId id) const;
+  void Publish(const RadioPose& pose);  // to the node's mobility model only
+  void PublishPose(NodeId id);          // its body's pose now
 
   RunSpec spec_;
-  void PublishPose(NodeId id);
-
   std::unique_ptr<physics::PipelinedWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
   std::vector<net::BodyMobilityModel*> mobility_;  // per node; ns-3's nodes own them

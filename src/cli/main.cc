@@ -77,6 +77,7 @@ std::unique_ptr<view::LiveView> StartLiveView(sim::World& world, const ViewArgs&
 
 struct RunArgs {
   std::string file;
+  std::vector<std::string> sets;
   std::optional<std::uint64_t> seed;
   std::optional<double> duration;
   std::optional<std::string> threads;
@@ -86,14 +87,15 @@ struct RunArgs {
   ViewArgs view;
 };
 
-scenario::Scenario LoadChecked(const std::string& file, agents::Registry& registry) {
-  scenario::Scenario sc = scenario::LoadScenario(file);
+scenario::Scenario LoadChecked(const std::string& file, const std::vector<std::string>& sets,
+                               agents::Registry& registry) {
+  scenario::Scenario sc = scenario::LoadScenario(file, sets);
   scenario::CheckControllers(sc, registry);
   return sc;
 }
 
 int Run(const RunArgs& args, agents::Registry& registry) {
-  scenario::Scenario sc = LoadChecked(args.file, registry);
+  scenario::Scenario sc = LoadChecked(args.file, args.sets, registry);
   if (args.seed) sc.run.seed = *args.seed;
   if (args.duration) sc.run.duration = *args.duration;
   if (args.threads) sc.run.threads = std::stoi(*args.threads);
@@ -141,7 +143,7 @@ std::vector<std::uint64_t> ParseSeeds(const std::string& text) {
 
 int Sweep(const std::string& file, const std::string& seeds_text, const std::string& output, bool quiet,
           agents::Registry& registry) {
-  const scenario::Scenario sc = LoadChecked(file, registry);
+  const scenario::Scenario sc = LoadChecked(file, {}, registry);
   const std::vector<std::uint64_t> seeds = ParseSeeds(seeds_text);
   const std::string dir = output.empty() ? sc.output_folder + "-sweep" : output;
   const sim::SweepResult r = sim::RunSweep(sc.run, seeds, dir, file, registry, [&](const sim::SweepRun& run) {
@@ -161,6 +163,7 @@ int Sweep(const std::string& file, const std::string& seeds_text, const std::str
 }
 
 struct ServeArgs {
+  std::vector<std::string> sets;
   std::string file, bind = "127.0.0.1", output, port_file, wss_port_file;
   int port = 3000;
   std::optional<int> wss_port;
@@ -219,7 +222,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   const std::string &file = a.file, &bind = a.bind, &port_file = a.port_file, &output = a.output;
   const int port = a.port;
   const bool quiet = a.quiet;
-  scenario::Scenario sc = LoadChecked(file, registry);
+  scenario::Scenario sc = LoadChecked(file, a.sets, registry);
   if (a.duration) sc.run.duration = *a.duration;
   sc.run.robots_remote = true;
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
@@ -270,7 +273,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
 
 int Agent(const std::string& file, const std::string& robot, const std::string& server, std::optional<int> udp_base,
           const std::string& udp_subnet, bool shared_clock, agents::Registry& registry) {
-  const scenario::Scenario sc = LoadChecked(file, registry);
+  const scenario::Scenario sc = LoadChecked(file, {}, registry);
   const auto colon = server.rfind(':');
   if (colon == std::string::npos) throw CLI::ValidationError("--server", "expected HOST:PORT, not '" + server + "'");
   hil::AgentSettings settings;
@@ -289,13 +292,14 @@ int Agent(const std::string& file, const std::string& robot, const std::string& 
 
 struct LaunchArgs {
   std::string file, output, exec_robot;
+  std::vector<std::string> sets;
   std::optional<int> udp_base;
   std::optional<double> duration;
   std::vector<std::string> command;
 };
 
 int Launch(const LaunchArgs& a, agents::Registry& registry) {
-  const scenario::Scenario sc = LoadChecked(a.file, registry);
+  const scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
   if (!a.command.empty() && a.exec_robot.empty())
     throw CLI::ValidationError("--exec", "a command after -- runs in a robot's namespace: name it with --exec ROBOT");
   if (!a.exec_robot.empty() && a.command.empty())
@@ -313,6 +317,8 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
         "--udp-base", std::to_string(udp_base) + " is network.port, which the simulated network serves itself");
   hil::LaunchSettings settings;
   settings.scenario_file = a.file;
+  settings.sets = a.sets;
+  settings.effective_scenario = scenario::EffectiveScenarioYaml(sc);
   settings.output = a.output.empty() ? sc.output_folder : a.output;
   settings.udp_base = udp_base;
   settings.duration = a.duration;
@@ -325,8 +331,8 @@ std::string Count(std::size_t n, const std::string& thing) {
   return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
 }
 
-int Validate(const std::string& file, bool print, agents::Registry& registry) {
-  const scenario::Scenario sc = LoadChecked(file, registry);
+int Validate(const std::string& file, const std::vector<std::string>& sets, bool print, agents::Registry& registry) {
+  const scenario::Scenario sc = LoadChecked(file, sets, registry);
   if (print) {
     std::fputs(scenario::EffectiveScenarioYaml(sc).c_str(), stdout);
     return 0;
@@ -387,12 +393,21 @@ CLI::Option* AddScenario(CLI::App* cmd, std::string& file) {
   return cmd->add_option("scenario", file, "Scenario file (YAML)")->required();
 }
 
+void AddSet(CLI::App* cmd, std::vector<std::string>& sets) {
+  cmd->add_option("--set", sets,
+                  "PATH=VALUE: change one value of the scenario, checked like the file (repeatable), e.g. "
+                  "--set network.tx_power=25 --set nodes.robot.controller.params.speed=0.5; a list item by its "
+                  "name, a grid by its grid name (docs/scenario.md)")
+      ->allow_extra_args(false);
+}
+
 Command AddRun(CLI::App& app) {
   auto a = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run",
                                      "Run a scenario and write its results folder (trajectories.csv, "
                                      "log.csv, messages.csv, transitions.csv, metrics.csv, summary.json)");
   AddScenario(cmd, a->file);
+  AddSet(cmd, a->sets);
   cmd->add_option("--seed", a->seed, "Override the scenario's seed (0 to 2^64 - 1)")->check(kSeedText);
   AddDuration(cmd, a->duration);
   AddThreads(cmd, a->threads);
@@ -406,15 +421,17 @@ Command AddRun(CLI::App& app) {
 
 Command AddValidate(CLI::App& app) {
   auto file = std::make_shared<std::string>();
+  auto sets = std::make_shared<std::vector<std::string>>();
   auto print = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("validate",
                                      "Check a scenario without running it: structure, types, ranges, "
                                      "models, controllers and their parameters");
   AddScenario(cmd, *file);
+  AddSet(cmd, *sets);
   cmd->add_flag("--print", *print,
                 "Print the effective scenario: every default filled in, grids as their nodes (it loads and runs "
                 "to the same fingerprint)");
-  return {cmd, [file, print](agents::Registry& r) { return Validate(*file, *print, r); }};
+  return {cmd, [file, sets, print](agents::Registry& r) { return Validate(*file, *sets, *print, r); }};
 }
 
 Command AddSweep(CLI::App& app) {
@@ -440,6 +457,7 @@ Command AddServe(CLI::App& app) {
                                      "Serve a scenario's world in real time over the robot protocol "
                                      "(USARSim-compatible; docs/protocol.md): clients drive its robots");
   AddScenario(cmd, a->file);
+  AddSet(cmd, a->sets);
   cmd->add_option("--bind", a->bind, "Address to listen on (loopback by default)")->capture_default_str();
   cmd->add_option("--port", a->port, "TCP port (0: any free port)")->check(CLI::Range(0, 65535))->capture_default_str();
   cmd->add_option(
@@ -493,6 +511,7 @@ Command AddLaunch(CLI::App& app) {
                                      "Start a server and one agent process per robot on this machine, run "
                                      "the scenario in real time, stop them all (also on Ctrl-C)");
   AddScenario(cmd, a->file);
+  AddSet(cmd, a->sets);
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   AddDuration(cmd, a->duration);
   cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")

@@ -1,5 +1,6 @@
 #include "scenario/effective_scenario.h"
 
+#include "core/fingerprint.h"
 #include "scenario/declarations.h"
 
 namespace sanet::scenario {
@@ -61,9 +62,7 @@ YAML::Node Events(const sim::RunSpec& run) {
   return events;
 }
 
-}  // namespace
-
-std::string EffectiveScenarioYaml(const Scenario& sc) {
+std::string EffectiveBody(const Scenario& sc) {
   const sim::RunSpec& run = sc.run;
   YAML::Node root;
   root["name"] = run.name;
@@ -82,8 +81,23 @@ std::string EffectiveScenarioYaml(const Scenario& sc) {
   root["nodes"] = nodes;
   YAML::Emitter out;
   out << root;
-  return std::string("# The effective scenario of ") + sc.file + ": every default of the format filled in.\n" +
-         out.c_str() + "\n";
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace
+
+std::string EffectiveScenarioYaml(const Scenario& sc) {
+  std::string head = "# The effective scenario of " + sc.file;
+  for (const Override& o : sc.overrides) head += " --set " + o.text;
+  for (char& c : head)
+    if (c == '\n' || c == '\r') c = ' ';  // one comment line, whatever the values hold
+  return head + ": every default of the format filled in.\n" + EffectiveBody(sc);
+}
+
+std::string ScenarioFingerprint(const Scenario& sc) {
+  Fingerprint f;
+  f.Add(EffectiveBody(sc));
+  return f.Hex();
 }
 
 }  // namespace sanet::scenario

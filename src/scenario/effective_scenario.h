@@ -12,4 +12,8 @@ namespace sanet::scenario {
 
 std::string EffectiveScenarioYaml(const Scenario& scenario);
 
+// A hash of the effective scenario (16 hex digits): two scenarios with the same fingerprint
+// describe the same run, whatever their files looked like and whatever --set gave.
+std::string ScenarioFingerprint(const Scenario& scenario);
+
 }  // namespace sanet::scenario

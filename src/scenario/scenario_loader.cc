@@ -320,12 +320,9 @@ void ReadSpawn(const Field& spawn, const fs::path& dir, sim::RunSpec& run) {
   run.spawn = s;
 }
 
-}  // namespace
-
-Scenario LoadScenario(const std::string& path) {
-  const Field root = ParseYamlFile(path);
-  Scenario sc;
-  sc.file = path;
+// The whole scenario from its (overridden) tree.
+void Read(const Field& root, Scenario& sc) {
+  const std::string& path = sc.file;
   sim::RunSpec& run = sc.run;
   TopLevelFields().Read(root, sc);
   if (!root.Get("name")) run.name = fs::path(path).stem().string();
@@ -346,10 +343,9 @@ Scenario LoadScenario(const std::string& path) {
     (interval ? *interval : root)
         .Fail("must be at least world.physics_step (" + std::to_string(run.physics_step) + " s)");
   }
-  return sc;
 }
 
-void CheckControllers(const Scenario& scenario, agents::Registry& registry) {
+void CheckEachController(const Scenario& scenario, agents::Registry& registry) {
   for (std::size_t i = 0; i < scenario.run.nodes.size(); ++i) {
     const auto& node = scenario.run.nodes[i];
     if (!node.controller) continue;
@@ -372,6 +368,30 @@ void CheckControllers(const Scenario& scenario, agents::Registry& registry) {
     } catch (const std::exception& e) {
       throw ScenarioError(scenario.file, line, field, std::string("cannot be created: ") + e.what());
     }
+  }
+}
+
+}  // namespace
+
+Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {
+  Scenario sc;
+  sc.file = path;
+  for (const std::string& text : overrides) sc.overrides.push_back(ParseOverride(text));
+  const Field root = ParseYamlFile(path);
+  ApplyOverrides(root.node(), sc.overrides);
+  try {
+    Read(root, sc);
+  } catch (const ScenarioError& e) {
+    throw Attributed(e, sc.overrides);
+  }
+  return sc;
+}
+
+void CheckControllers(const Scenario& scenario, agents::Registry& registry) {
+  try {
+    CheckEachController(scenario, registry);
+  } catch (const ScenarioError& e) {
+    throw Attributed(e, scenario.overrides);
   }
 }
 

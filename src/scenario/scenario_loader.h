@@ -6,6 +6,7 @@
 #include <string>
 
 #include "agents/controller_registry.h"
+#include "scenario/overrides.h"
 #include "scenario/yaml_reader.h"
 #include "sim/run_spec.h"
 
@@ -18,10 +19,12 @@ struct Scenario {
   std::vector<int> controller_lines;           // per node: line of its controller (0 if none)
   std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"
   std::optional<bool> trace;                   // outputs.trace as given (run.trace is the effective one)
+  std::vector<Override> overrides;             // --set, in the order given
 };
 
-// Reads and checks the file (structure, types, ranges, names). Does not look at controllers.
-Scenario LoadScenario(const std::string& path);
+// Reads and checks the file with `overrides` (--set) applied (structure, types, ranges, names).
+// Does not look at controllers. An error in a value set on the command line names the option.
+Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // Checks that every node's controller exists (loading libraries) and accepts its parameters.
 void CheckControllers(const Scenario& scenario, agents::Registry& registry);

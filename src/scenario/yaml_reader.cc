@@ -27,8 +27,8 @@ std::string FormatLimit(double x) {
 }  // namespace
 
 ScenarioError::ScenarioError(const std::string& file, int line, const std::string& field, const std::string& message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + (field.empty() ? "" : "'" + field + "': ") +
-                         message),
+    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : "") + ": " +
+                         (field.empty() ? "" : "'" + field + "': ") + message),
       file_(file),
       line_(line),
       field_(field),

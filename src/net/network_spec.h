@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "net/ns3_attributes.h"
+
 namespace sanet::net {
 
 enum class WifiStandard { k80211b, k80211g, k80211a };
@@ -54,6 +56,8 @@ struct NetworkSpec {
   bool pcap = false;          // a pcap file per node (802.11 frames)
   bool flow_monitor = false;  // ns-3 FlowMonitor statistics (XML)
   bool packet_log = true;     // a CSV of packet events per node
+
+  Ns3Attributes ns3;  // ns-3 attribute defaults (network.ns3), checked when read
 };
 
 // Radio settings a node may override.

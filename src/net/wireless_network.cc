@@ -68,6 +68,7 @@ double FrequencyHz(WifiStandard standard) {
 WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes,
                                  std::vector<std::string> names, const std::vector<NodeRadio>& radios)
     : spec_(spec),
+      ns3_defaults_(spec.ns3),
       nodes_(nodes),
       book_(nodes.GetN()),
       names_(names),

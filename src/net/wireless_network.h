@@ -23,6 +23,7 @@
 #include "net/indexed_channel.h"
 #include "net/message_header.h"
 #include "net/network_spec.h"
+#include "net/ns3_attributes.h"
 #include "net/packet_trace.h"
 #include "net/routing_view.h"
 #include "net/tap_port.h"
@@ -76,6 +77,7 @@ class WirelessNetwork : public Transport {
   void OpenPcap(NodeId id);
 
   NetworkSpec spec_;
+  Ns3Defaults ns3_defaults_;  // before every helper and object: network.ns3 in effect while they live
   // Kept for nodes that join later: they are installed exactly as the first ones.
   ns3::WifiHelper wifi_;
   RadioPhyHelper phy_;

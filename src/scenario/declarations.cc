@@ -155,6 +155,29 @@ YAML::Node PrintChannel(const net::NetworkSpec& n) {
   return out;
 }
 
+// `ns3: {"ns3::aodv::RoutingProtocol::ActiveRouteTimeout": 10s, ...}`, checked against ns-3's
+// attribute lists; each error is on the attribute's own line.
+void ReadNs3(const Field& f, net::NetworkSpec& n) {
+  if (!f.IsMap()) f.Fail("must be a mapping of ns-3 attribute names to values");
+  for (const auto& entry : f.node()) {
+    const std::string name = entry.first.Scalar();
+    const Field value = *f.Get(name);
+    if (!value.IsScalar()) value.Fail("must be a single value as ns-3 writes it (e.g. 10s, 3, true)");
+    for (const auto& [seen, ignored] : n.ns3)
+      if (seen == name) value.Fail("given twice");
+    const std::string why = net::CheckNs3Attribute(name, value.node().Scalar());
+    if (!why.empty()) value.Fail(why);
+    n.ns3.emplace_back(name, value.node().Scalar());
+  }
+}
+
+YAML::Node PrintNs3(const net::NetworkSpec& n) {
+  if (n.ns3.empty()) return YAML::Node();
+  YAML::Node out(YAML::NodeType::Map);
+  for (const auto& [name, value] : n.ns3) out[name] = value;
+  return out;
+}
+
 void ReadRadio(const Field& radio, net::NetworkSpec& n) {
   const std::string text = radio.Text();
   if (text == "802.15.4" || text == "lr-wpan" || text == "lrwpan")
@@ -233,6 +256,9 @@ const Fields<net::NetworkSpec>& NetworkFields() {
     f.Flag("pcap", Member(&NetworkSpec::pcap), "write `pcap/<node>.pcap`");
     f.Flag("flow_monitor", Member(&NetworkSpec::flow_monitor), "write `flowmon.xml`");
     f.Flag("packet_log", Member(&NetworkSpec::packet_log), "write `packets/<node>.csv`");
+    f.Custom({"ns3", "mapping", "", "none", "ns-3 attribute names to values, see [ns-3 attributes](#ns-3-attributes)",
+              "defaults of ns-3's own attributes (routing, MAC, PHY, channel)"},
+             ReadNs3, PrintNs3);
     return f;
   }();
   return fields;

@@ -1,0 +1,182 @@
+#include "net/ns3_attributes.h"
+
+#include <ns3/core-module.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace sanet::net {
+namespace {
+
+// Attributes that the scenario's own keys set on the objects (a default would be overwritten).
+const std::map<std::string, std::string>& SetBySanet() {
+  static const std::map<std::string, std::string> keys = {
+      {"ns3::WifiPhy::TxPowerStart", "network.tx_power (or a node's radio.tx_power)"},
+      {"ns3::WifiPhy::TxPowerEnd", "network.tx_power (or a node's radio.tx_power)"},
+      {"ns3::ConstantRateWifiManager::DataMode", "network.data_rate"},
+      {"ns3::ConstantRateWifiManager::ControlMode", "network.data_rate (broadcasts go at the lowest rate)"},
+      {"ns3::ConstantRateWifiManager::NonUnicastMode", "network.data_rate (broadcasts go at the lowest rate)"},
+      {"ns3::LogDistancePropagationLossModel::Exponent", "network.propagation.exponent"},
+      {"ns3::LogDistancePropagationLossModel::ReferenceDistance", "network.propagation.reference_distance"},
+      {"ns3::LogDistancePropagationLossModel::ReferenceLoss", "network.propagation.reference_loss"},
+      {"ns3::FriisPropagationLossModel::Frequency", "network.radio"},
+      {"ns3::TwoRayGroundPropagationLossModel::Frequency", "network.radio"},
+      {"ns3::TwoRayGroundPropagationLossModel::HeightAboveZ", "network.propagation.antenna_height"},
+      {"ns3::RangePropagationLossModel::MaxRange", "network.propagation.max_range"},
+      {"ns3::RandomPropagationDelayModel::Variable", "network.random_delay_max"},
+      {"ns3::ThresholdPreambleDetectionModel::MinimumRssi", "network.rx_threshold"},
+      {"ns3::aodv::RoutingProtocol::EnableHello", "network.aodv_hello"},
+  };
+  return keys;
+}
+
+std::size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      const bool same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// Up to three of `candidates` closest to `wanted`, as "did you mean A, B or C?".
+std::string Closest(const std::string& wanted, const std::vector<std::string>& candidates) {
+  std::vector<std::pair<std::size_t, std::string>> ranked;
+  for (const std::string& c : candidates) ranked.emplace_back(EditDistance(wanted, c), c);
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> close;
+  for (std::size_t i = 0; i < ranked.size() && close.size() < 3; ++i)
+    if (ranked[i].first <= std::max<std::size_t>(3, wanted.size() / 2)) close.push_back(ranked[i].second);
+  std::string out;
+  for (std::size_t i = 0; i < close.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == close.size() ? " or " : ", ") + close[i];
+  return out.empty() ? "" : " (did you mean " + out + "?)";
+}
+
+std::vector<std::string> TypeNames() {
+  std::vector<std::string> names;
+  for (std::uint16_t i = 0; i < ns3::TypeId::GetRegisteredN(); ++i)
+    names.push_back(ns3::TypeId::GetRegistered(i).GetName());
+  return names;
+}
+
+// The attribute `name` of `tid` itself (not of a parent: ns-3 sets defaults on the type that
+// declares the attribute), or -1.
+int OwnAttribute(ns3::TypeId tid, const std::string& name) {
+  for (std::size_t j = 0; j < tid.GetAttributeN(); ++j)
+    if (tid.GetAttribute(j).name == name) return static_cast<int>(j);
+  return -1;
+}
+
+// The type and index of a named attribute; throws std::invalid_argument saying what is wrong.
+std::pair<ns3::TypeId, int> Find(const std::string& full) {
+  const auto sep = full.rfind("::");
+  if (sep == std::string::npos || sep == 0)
+    throw std::invalid_argument("'" + full + "' is not an ns-3 attribute name (TYPE::ATTRIBUTE, e.g. " +
+                                "ns3::aodv::RoutingProtocol::ActiveRouteTimeout)");
+  const std::string type = full.substr(0, sep), name = full.substr(sep + 2);
+  ns3::TypeId tid;
+  if (!ns3::TypeId::LookupByNameFailSafe(type, &tid))
+    throw std::invalid_argument("ns-3 has no type '" + type + "'" + Closest(type, TypeNames()));
+  const int own = OwnAttribute(tid, name);
+  if (own >= 0) return {tid, own};
+  for (ns3::TypeId parent = tid.GetParent(); parent != tid && parent.GetName() != "ns3::ObjectBase";
+       tid = parent, parent = parent.GetParent())
+    if (OwnAttribute(parent, name) >= 0)
+      throw std::invalid_argument("'" + name + "' is an attribute of " + parent.GetName() + ": name it " +
+                                  parent.GetName() + "::" + name);
+  std::vector<std::string> names;
+  ns3::TypeId::LookupByNameFailSafe(type, &tid);
+  for (std::size_t j = 0; j < tid.GetAttributeN(); ++j) names.push_back(tid.GetAttribute(j).name);
+  throw std::invalid_argument(type + " has no attribute '" + name + "'" + Closest(name, names));
+}
+
+// ns-3 aborts the process on some values it cannot parse (a Time of "ten", an unknown type in
+// a random variable): a child process tries first. Returns ns-3's complaint, or "" if it took it.
+std::string TryValue(const ns3::AttributeChecker& checker, const std::string& value) {
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) return "";
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::dup2(pipe_fds[1], STDERR_FILENO);
+    ::dup2(pipe_fds[1], STDOUT_FILENO);
+    ::_exit(checker.CreateValidValue(ns3::StringValue(value)) ? 0 : 1);
+  }
+  ::close(pipe_fds[1]);
+  std::string said;
+  char buffer[512];
+  for (ssize_t n; (n = ::read(pipe_fds[0], buffer, sizeof buffer)) > 0;) said.append(buffer, n);
+  ::close(pipe_fds[0]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  const auto msg = said.find("msg=\"");
+  if (msg != std::string::npos) return said.substr(msg + 5, said.find('"', msg + 5) - msg - 5);
+  return "not taken";
+}
+
+std::string ValueType(const ns3::AttributeChecker& checker) {
+  if (checker.GetValueTypeName() == "ns3::TimeValue") return "a time such as 10s, 500ms or 2min";
+  const std::string underlying = checker.GetUnderlyingTypeInformation();
+  return underlying.empty() ? checker.GetValueTypeName() : underlying;
+}
+
+std::string DefaultOf(const ns3::TypeId::AttributeInformation& info) {
+  if (const auto* time = dynamic_cast<const ns3::TimeValue*>(PeekPointer(info.originalInitialValue))) {
+    std::ostringstream s;
+    s << time->Get().GetSeconds() << "s";
+    return s.str();
+  }
+  return info.originalInitialValue->SerializeToString(info.checker);
+}
+
+}  // namespace
+
+std::string CheckNs3Attribute(const std::string& full, const std::string& value) {
+  if (auto key = SetBySanet().find(full); key != SetBySanet().end())
+    return "sanet sets this attribute itself: use " + key->second;
+  try {
+    const auto [tid, index] = Find(full);
+    const ns3::TypeId::AttributeInformation info = tid.GetAttribute(index);
+    if (!(info.flags & ns3::TypeId::ATTR_CONSTRUCT))
+      return full + " cannot be set before an object is made (ns-3 does not take it as a default)";
+    if (const std::string why = TryValue(*info.checker, value); !why.empty())
+      return "'" + value + "' is not a valid value for " + full + " (" +
+             (why.find(value) != std::string::npos ? "ns-3: " + why + "; " : "") + "expects " +
+             ValueType(*info.checker) + ", default " + DefaultOf(info) + "; " + info.help + ")";
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Ns3Defaults::Ns3Defaults(const Ns3Attributes& attributes) {
+  for (const auto& [full, value] : attributes) {
+    const std::string why = CheckNs3Attribute(full, value);
+    if (!why.empty()) throw std::invalid_argument("network.ns3: " + why);
+    const auto [tid, index] = Find(full);
+    const ns3::TypeId::AttributeInformation info = tid.GetAttribute(index);
+    earlier_.emplace_back(full, info.initialValue->SerializeToString(info.checker));
+    ns3::Config::SetDefault(full, ns3::StringValue(value));
+  }
+}
+
+Ns3Defaults::~Ns3Defaults() {
+  for (auto it = earlier_.rbegin(); it != earlier_.rend(); ++it)
+    ns3::Config::SetDefaultFailSafe(it->first, ns3::StringValue(it->second));
+}
+
+}  // namespace sanet::net

@@ -16,6 +16,7 @@
 #include "agents/controller_registry.h"
 #include "builtin.h"
 #include "core/atomic_file.h"
+#include "core/version.h"
 #include "hil/agent.h"
 #include "hil/launch.h"
 #include "hil/namespaces.h"
@@ -30,6 +31,7 @@
 #include "scenario/scenario_loader.h"
 #include "sim/sweep.h"
 #include "sim/world.h"
+#include "trace/earlier_run.h"
 #include "view/live_view.h"
 #include "view/viewer_server.h"
 
@@ -84,8 +86,33 @@ struct RunArgs {
   std::string output;
   bool quiet = false;
   bool no_progress = false;
+  bool force = false;
   ViewArgs view;
 };
+
+// The command line as given, for provenance.json.
+std::vector<std::string> g_command;
+
+sim::Provenance ProvenanceOf(const scenario::Scenario& sc) {
+  return {scenario::EffectiveScenarioYaml(sc), scenario::ScenarioFingerprint(sc), g_command};
+}
+
+// Before anything is built: the folder must be free for the run (trace/earlier_run.h).
+void ClaimFolder(const std::string& dir, bool force) {
+  try {
+    trace::ClearEarlierRun(dir, force);
+  } catch (const trace::FolderRefused& e) {
+    throw CLI::ValidationError("--output", e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw CLI::ValidationError("--output", "cannot use " + dir + ": " + e.code().message());
+  }
+}
+
+void AddForce(CLI::App* cmd, bool& force) {
+  cmd->add_flag("--force", force,
+                "Write into a results folder that holds files no sanet run wrote (they are left there; an earlier "
+                "run's files are always replaced)");
+}
 
 scenario::Scenario LoadChecked(const std::string& file, const std::vector<std::string>& sets,
                                agents::Registry& registry) {
@@ -103,6 +130,9 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   options.output_dir = args.output.empty() ? sc.output_folder : args.output;
   options.scenario_file = args.file;
   options.progress = !args.quiet && !args.no_progress && isatty(STDERR_FILENO);
+  options.force = args.force;
+  options.provenance = ProvenanceOf(sc);
+  ClaimFolder(options.output_dir, args.force);
   if (!args.quiet)
     std::printf("sanet: running %s (%zu nodes, %.1f s simulated, seed %llu%s)\n", sc.run.name.c_str(),
                 sc.run.nodes.size(), sc.run.duration, static_cast<unsigned long long>(sc.run.seed),
@@ -167,7 +197,7 @@ struct ServeArgs {
   std::string file, bind = "127.0.0.1", output, port_file, wss_port_file;
   int port = 3000;
   std::optional<int> wss_port;
-  bool quiet = false;
+  bool quiet = false, force = false;
   std::optional<double> duration;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
   ViewArgs view;
@@ -225,6 +255,8 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   scenario::Scenario sc = LoadChecked(file, a.sets, registry);
   if (a.duration) sc.run.duration = *a.duration;
   sc.run.robots_remote = true;
+  const std::string results = output.empty() ? sc.output_folder : output;
+  ClaimFolder(results, a.force);
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
   const std::string scheduling = hil::UseRealTimePriority();
   sim::World world(sc.run, registry);
@@ -249,8 +281,10 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
               sc.run.duration);
   std::fflush(stdout);
   sim::RunOptions options;
-  options.output_dir = output.empty() ? sc.output_folder : output;
+  options.output_dir = results;
   options.scenario_file = file;
+  options.force = a.force;
+  options.provenance = ProvenanceOf(sc);
   options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
     j["real_time_lag"] = server.LagSummary();
     j["real_time_lag"]["scheduling"] = scheduling;
@@ -296,6 +330,7 @@ struct LaunchArgs {
   std::optional<int> udp_base;
   std::optional<double> duration;
   std::vector<std::string> command;
+  bool force = false;
 };
 
 int Launch(const LaunchArgs& a, agents::Registry& registry) {
@@ -320,6 +355,8 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
   settings.sets = a.sets;
   settings.effective_scenario = scenario::EffectiveScenarioYaml(sc);
   settings.output = a.output.empty() ? sc.output_folder : a.output;
+  settings.force = a.force;
+  ClaimFolder(settings.output, a.force);
   settings.udp_base = udp_base;
   settings.duration = a.duration;
   settings.exec_robot = a.exec_robot;
@@ -415,6 +452,7 @@ Command AddRun(CLI::App& app) {
                   "Results folder (default: the scenario's outputs.folder, or results/<name>)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
   cmd->add_flag("--no-progress", a->no_progress, "Do not show progress (shown only on a terminal)");
+  AddForce(cmd, a->force);
   AddViewOptions(cmd, a->view);
   return {cmd, [a](agents::Registry& r) { return Run(*a, r); }};
 }
@@ -465,6 +503,7 @@ Command AddServe(CLI::App& app) {
       "Once listening, write the port number to this file (for programs that start the server with --port 0)");
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
+  AddForce(cmd, a->force);
   AddDuration(cmd, a->duration);
   cmd->add_option("--tap", a->taps,
                   "ROBOT=NAMESPACE: give the network namespace an interface radio0 with the robot's address on the "
@@ -520,6 +559,7 @@ Command AddLaunch(CLI::App& app) {
                   "Run the program given after -- beside the agents, in this robot's network namespace (with "
                   "loop.namespaces or loop.network: simulated); it is stopped when the run ends");
   cmd->add_option("command", a->command, "The program and its arguments for --exec, after --");
+  AddForce(cmd, a->force);
   return {cmd, [a](agents::Registry& r) { return Launch(*a, r); }};
 }
 
@@ -599,11 +639,12 @@ int Perform(const Command& command, agents::Registry& registry) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  g_command.assign(argv, argv + argc);
   CLI::App app{
       "sanet: integrated simulator for sensor/actuator networks and networked robots.\n"
       "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "sanet 0.1.0");
+  app.set_version_flag("--version", std::string("sanet ") + SanetVersion() + " (" + SanetCommit() + ")");
   const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddServe(app),
                                          AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app)};
   try {

@@ -141,6 +141,7 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
                                      bind,    "-o",    settings.output,        "-q",     "--port-file", port_file};
     if (settings.duration) args.insert(args.end(), {"--duration", std::to_string(*settings.duration)});
     for (const std::string& set : settings.sets) args.insert(args.end(), {"--set", set});
+    if (settings.force) args.push_back("--force");
     for (const std::string& tap : taps) args.insert(args.end(), {"--tap", tap});
     Exec(self, args);
   }

@@ -17,6 +17,7 @@ struct LaunchSettings {
   // The effective scenario (after --set): the agents read it, so that they run what the server runs.
   std::string effective_scenario;
   std::string output;  // the results folder
+  bool force = false;  // the server writes beside files no sanet run wrote
   int udp_base = 47000;
   std::optional<double> duration;  // overrides the scenario's
   // A program to run beside the agents, in `exec_robot`'s network namespace when there is one

@@ -352,7 +352,10 @@ const Fields<sim::LoopSpec>& LoopFields() {
           if (!s.namespaces) v.Fail("shapes the links between namespaces: set loop.namespaces: true");
           NetemFields().Read(v, s.shaping);
         },
-        [](const LoopSpec& s) { return s.namespaces ? NetemFields().Print(s.shaping) : YAML::Node(); });
+        [](const LoopSpec& s) {
+          const bool shaped = s.namespaces && s.network != sim::LoopNetwork::kSimulated;
+          return shaped ? NetemFields().Print(s.shaping) : YAML::Node();
+        });
     f.Whole<std::uint16_t>("udp_port", Member(&LoopSpec::udp_port), "", 1024, 60000,
                            "loopback: node i uses this + i; namespaces: every node uses it");
     return f;

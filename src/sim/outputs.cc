@@ -28,9 +28,9 @@ bool Unmoved(const Pose2D& p, const Pose2D& last) {
 
 }  // namespace
 
-Outputs::Outputs(const RunSpec& spec, const std::string& dir)
+Outputs::Outputs(const RunSpec& spec, const std::string& dir, bool force)
     : spec_(spec),
-      folder_(dir),
+      folder_(dir, force),
       trajectories_(folder_.Csv("trajectories.csv", "time,node,x,y,theta")),
       log_(folder_.Csv("log.csv", "time,node,text")),
       messages_(folder_.Csv("messages.csv", "time_sent,from,to,delivery,bytes,time_received,delay,hops")),

@@ -49,9 +49,19 @@ struct PoseReader {
   std::vector<NodeId> vehicles;  // the nodes that move by themselves
 };
 
+// Where a run came from: written first into its results folder (provenance.json, scenario.yaml),
+// so that every folder says what made it.
+struct Provenance {
+  std::string effective_scenario;  // the scenario after --set and defaults, as YAML
+  std::string scenario_fingerprint;
+  std::vector<std::string> command;  // the command line
+};
+
 class Outputs {
  public:
-  Outputs(const RunSpec& spec, const std::string& dir);
+  // Clears what an earlier run left in `dir` first (refusing foreign files unless `force`).
+  Outputs(const RunSpec& spec, const std::string& dir, bool force = false);
+  void Begin(const Provenance& provenance);
   trace::ResultsFolder& folder() { return folder_; }
   // The run's trace, when the scenario asks for one and the results are written.
   trace::RunTrace* trace() { return trace_.get(); }
@@ -97,6 +107,7 @@ class Outputs {
 
   const RunSpec& spec_;
   trace::ResultsFolder folder_;
+  std::string scenario_fingerprint_;  // with a provenance
   trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;
   trace::CsvSink* min_distance_ = nullptr;
   std::vector<std::pair<double, double>> min_distances_;  // (time, smallest distance between robots)

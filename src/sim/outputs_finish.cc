@@ -208,6 +208,7 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
                                         const std::vector<Pose2D>& final_poses) const {
   nlohmann::ordered_json j;
   j["scenario"] = scenario_file;
+  if (!scenario_fingerprint_.empty()) j["scenario_fingerprint"] = scenario_fingerprint_;
   j["name"] = spec_.name;
   j["status"] = failure_.empty() ? "completed" : "failed: " + failure_;
   j["seed"] = spec_.seed;

@@ -60,7 +60,8 @@ void World::Stop() { ns3::Simulator::Stop(); }
 RunResult World::Run(const RunOptions& options) {
   if (ran_) throw WorldError("a World runs once");
   ran_ = true;
-  Outputs outputs(spec(), options.output_dir);
+  Outputs outputs(spec(), options.output_dir, options.force);
+  if (options.provenance) outputs.Begin(*options.provenance);
   Stepper stepper(parts_, outputs, observers_);
   stepper.Run(options.progress);
 

@@ -5,12 +5,15 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
+#include "trace/earlier_run.h"
 
 namespace sanet::trace {
 namespace fs = std::filesystem;
 
-ResultsFolder::ResultsFolder(std::string dir) : dir_(std::move(dir)) {
-  if (writes()) fs::create_directories(dir_);
+ResultsFolder::ResultsFolder(std::string dir, bool force) : dir_(std::move(dir)) {
+  if (!writes()) return;
+  ClearEarlierRun(dir_, force);
+  fs::create_directories(dir_);
 }
 
 void ResultsFolder::Listed(const std::string& name) {

@@ -17,7 +17,8 @@ namespace sanet::trace {
 
 class ResultsFolder {
  public:
-  explicit ResultsFolder(std::string dir);
+  // Clears what an earlier run left in `dir` (trace/earlier_run.h).
+  explicit ResultsFolder(std::string dir, bool force = false);
   bool writes() const { return !dir_.empty(); }
   const std::string& dir() const { return dir_; }
 

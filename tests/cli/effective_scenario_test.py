@@ -93,6 +93,23 @@ class EffectiveScenario(unittest.TestCase):
             with self.subTest(name):
                 self.check(os.path.join(SOURCE, "scenarios", name + ".yaml"), duration)
 
+    def test_every_shipped_scenario_prints_to_one_that_loads(self):
+        for name in sorted(os.listdir(os.path.join(SOURCE, "scenarios"))):
+            with self.subTest(name):
+                printed = run(["validate", "--print", os.path.join(SOURCE, "scenarios", name)])
+                effective = os.path.join(self.tmp.name, "effective.yaml")
+                with open(effective, "w") as f:
+                    f.write(printed)
+                self.assertIn("valid:", run(["validate", effective]))
+
+    def test_a_simulated_loop_prints_to_one_that_loads(self):
+        # `sanet launch` hands its agents the effective scenario: it must load as the file did.
+        path = os.path.join(self.tmp.name, "simulated.yaml")
+        with open(path, "w") as f:
+            f.write("duration: 5\nnetwork: {routing: aodv}\nloop: {network: simulated}\n"
+                    "nodes:\n  - {name: a, model: omni3, pose: [0, 0, 0], controller: {name: constant_velocity}}\n")
+        self.check(path, 5)
+
     def test_every_kind_of_section_round_trips(self):
         path = os.path.join(self.tmp.name, "everything.yaml")
         with open(path, "w") as f:

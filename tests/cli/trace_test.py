@@ -82,6 +82,8 @@ class Trace(unittest.TestCase):
     def test_a_trace_left_half_written_by_a_killed_run_does_not_stop_the_next(self):
         folder = os.path.join(self.tmp.name, "again")
         os.makedirs(folder)
+        with open(os.path.join(folder, "provenance.json"), "w") as f:  # what a run writes first
+            f.write("{}")
         stale = sqlite3.connect(os.path.join(folder, "trace.sqlite.tmp"))
         stale.execute("CREATE TABLE info(key TEXT PRIMARY KEY, value TEXT)")
         stale.commit()

@@ -1,0 +1,66 @@
+#include "trace/earlier_run.h"
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+namespace sanet::trace {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool EndsWith(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The names (first path component) an earlier run in `dir` says it wrote; empty if none did.
+std::set<std::string> EarlierRunFiles(const fs::path& dir) {
+  std::set<std::string> names;
+  const bool started = fs::exists(dir / "provenance.json");
+  if (std::ifstream in(dir / "summary.json"); in) {
+    try {
+      const auto summary = nlohmann::json::parse(in);
+      for (const auto& f : summary.at("files")) {
+        const std::string name = f.get<std::string>();
+        names.insert(name.substr(0, name.find('/')));
+      }
+      names.insert("summary.json");
+    } catch (const std::exception&) {
+      // Not a summary of ours: its files are nobody's we know.
+    }
+  }
+  if (started || !names.empty()) names.insert({"provenance.json", "scenario.yaml"});
+  return names;
+}
+
+}  // namespace
+
+void ClearEarlierRun(const std::string& dir, bool force) {
+  const fs::path path(dir);
+  if (fs::exists(path) && !fs::is_directory(path))
+    throw FolderRefused("the results folder " + dir + " is a file: give another folder with -o");
+  if (!fs::exists(path)) return;
+  const std::set<std::string> ours = EarlierRunFiles(path);
+  const bool earlier_run = !ours.empty();
+  std::vector<fs::path> remove;
+  std::vector<std::string> foreign;
+  for (const auto& entry : fs::directory_iterator(path)) {
+    const std::string name = entry.path().filename().string();
+    // A stopped run's temporary files end in .tmp (and a run leaves nothing else half-written).
+    if (ours.count(name) || (earlier_run && EndsWith(name, ".tmp")))
+      remove.push_back(entry.path());
+    else
+      foreign.push_back(name);
+  }
+  if (!foreign.empty() && !force) {
+    std::string some;
+    for (std::size_t i = 0; i < foreign.size() && i < 3; ++i) some += (i ? ", " : "") + foreign[i];
+    if (foreign.size() > 3) some += " and " + std::to_string(foreign.size() - 3) + " more";
+    throw FolderRefused("the results folder " + dir + " holds files that no sanet run wrote (" + some +
+                        "): give another folder with -o, or --force to write beside them");
+  }
+  for (const fs::path& p : remove) fs::remove_all(p);
+}
+
+}  // namespace sanet::trace

@@ -1,0 +1,22 @@
+// Before a run writes into a results folder, the files of an earlier sanet run there go, so
+// that old and new results never mix; a folder that holds anything else is refused (unless
+// forced), so that a mistyped -o never deletes someone's files.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace sanet::trace {
+
+class FolderRefused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Makes `dir` ready for a new run: removes what an earlier run wrote there, if it exists (the
+// files its summary.json lists, its provenance.json and scenario.yaml, and the temporary files
+// of a run that was stopped). Anything else in it is refused with FolderRefused naming a few
+// of them; with `force` it is left where it is.
+void ClearEarlierRun(const std::string& dir, bool force);
+
+}  // namespace sanet::trace

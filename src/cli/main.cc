@@ -25,12 +25,13 @@
 #include "hil/remote_node.h"
 #include "hil/sim_server.h"
 #include "hil/wss_server.h"
+#include "options.h"
 #include "robots/node_model.h"
 #include "scenario/catalogue.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
-#include "sim/sweep.h"
 #include "sim/world.h"
+#include "study_commands.h"
 #include "trace/earlier_run.h"
 #include "view/live_view.h"
 #include "view/viewer_server.h"
@@ -39,8 +40,7 @@ namespace {
 
 using namespace sanet;
 
-constexpr int kExitScenarioError = 2;
-constexpr int kExitRunFailed = 1;
+using namespace sanet::cli;
 
 // --view: the live view of a run (docs/viewer.md).
 struct ViewArgs {
@@ -108,12 +108,6 @@ void ClaimFolder(const std::string& dir, bool force) {
   }
 }
 
-void AddForce(CLI::App* cmd, bool& force) {
-  cmd->add_flag("--force", force,
-                "Write into a results folder that holds files no sanet run wrote (they are left there; an earlier "
-                "run's files are always replaced)");
-}
-
 scenario::Scenario LoadChecked(const std::string& file, const std::vector<std::string>& sets,
                                agents::Registry& registry) {
   scenario::Scenario sc = scenario::LoadScenario(file, sets);
@@ -147,48 +141,6 @@ int Run(const RunArgs& args, agents::Registry& registry) {
     if (!world.ended_by().empty()) std::printf("  ended at %.1f s: %s\n", world.ended_at(), world.ended_by().c_str());
     std::printf("  fingerprint %s\n  results in %s/\n", r.fingerprint.c_str(), options.output_dir.c_str());
   }
-  return 0;
-}
-
-// "1-10" or "1,4,7" or a mix ("1-3,8").
-std::vector<std::uint64_t> ParseSeeds(const std::string& text) {
-  std::vector<std::uint64_t> seeds;
-  std::stringstream parts(text);
-  for (std::string part; std::getline(parts, part, ',');) {
-    const auto dash = part.find('-');
-    try {
-      std::size_t used = 0;
-      const std::uint64_t first = std::stoull(part.substr(0, dash), &used);
-      if (used != (dash == std::string::npos ? part.size() : dash)) throw std::invalid_argument(part);
-      const std::uint64_t last = dash == std::string::npos ? first : std::stoull(part.substr(dash + 1), &used);
-      if (dash != std::string::npos && used != part.size() - dash - 1) throw std::invalid_argument(part);
-      if (last < first || last - first > 100000) throw std::invalid_argument(part);
-      for (std::uint64_t s = first; s <= last; ++s) seeds.push_back(s);
-    } catch (const std::exception&) {
-      throw CLI::ValidationError("--seeds", "'" + part + "' is not a seed or a range like 1-10");
-    }
-  }
-  return seeds;
-}
-
-int Sweep(const std::string& file, const std::string& seeds_text, const std::string& output, bool quiet,
-          agents::Registry& registry) {
-  const scenario::Scenario sc = LoadChecked(file, {}, registry);
-  const std::vector<std::uint64_t> seeds = ParseSeeds(seeds_text);
-  const std::string dir = output.empty() ? sc.output_folder + "-sweep" : output;
-  const sim::SweepResult r = sim::RunSweep(sc.run, seeds, dir, file, registry, [&](const sim::SweepRun& run) {
-    if (!quiet)
-      std::printf("  seed %llu: %s, ended by %s at %.1f s (%.1f s wall)\n", (unsigned long long)run.seed,
-                  run.status.c_str(), run.ended_by.c_str(), run.ended_at, run.wall);
-    std::fflush(stdout);
-  });
-  if (!quiet)
-    std::printf(
-        "%d of %zu runs met the end condition; end time %.1f s +/- %.1f s (95 %% confidence)\n"
-        "results in %s/ (sweep.csv, sweep.json, seed-*/)\n",
-        r.ended_by_condition, r.runs.size(), r.mean, r.ci95, dir.c_str());
-  for (const auto& run : r.runs)
-    if (run.status != "completed") return kExitRunFailed;
   return 0;
 }
 
@@ -391,53 +343,6 @@ int List(agents::Registry& registry, bool markdown) {
   return 0;
 }
 
-// The ranges a scenario's duration and seed have in a file hold on the command line too.
-const CLI::Validator kDurationRange(
-    [](std::string& text) {
-      const double d = std::strtod(text.c_str(), nullptr);
-      return d > 0 && d <= 1e9 ? std::string() : "must be greater than 0 and at most 1e9 s, not " + text;
-    },
-    "(0, 1e9] s");
-const CLI::Validator kSeedText(
-    [](std::string& text) {
-      const bool digits =
-          !text.empty() && text.size() <= 20 && text.find_first_not_of("0123456789") == std::string::npos;
-      return digits && (text.size() < 20 || text <= "18446744073709551615")
-                 ? std::string()
-                 : "must be a whole number from 0 to 18446744073709551615, not " + text;
-    },
-    "0..2^64-1");
-
-// One subcommand: its options live as long as the program, its action runs when it was chosen.
-struct Command {
-  CLI::App* app;
-  std::function<int(agents::Registry&)> action;
-};
-
-void AddDuration(CLI::App* cmd, std::optional<double>& duration) {
-  cmd->add_option("--duration", duration, "Override the scenario's duration (s)")->check(kDurationRange);
-}
-
-// Read as text so that every wrong value gets the same message ("two not in {1,2}").
-void AddThreads(CLI::App* cmd, std::optional<std::string>& threads) {
-  cmd->add_option("--threads", threads,
-                  "1 or 2, overriding the scenario's world.threads: 2 steps the physics on a second thread while "
-                  "ns-3 runs the network (same results as 1; faster for swarms, docs/swarms.md)")
-      ->check(CLI::IsMember({"1", "2"}));
-}
-
-CLI::Option* AddScenario(CLI::App* cmd, std::string& file) {
-  return cmd->add_option("scenario", file, "Scenario file (YAML)")->required();
-}
-
-void AddSet(CLI::App* cmd, std::vector<std::string>& sets) {
-  cmd->add_option("--set", sets,
-                  "PATH=VALUE: change one value of the scenario, checked like the file (repeatable), e.g. "
-                  "--set network.tx_power=25 --set nodes.robot.controller.params.speed=0.5; a list item by its "
-                  "name, a grid by its grid name (docs/scenario.md)")
-      ->allow_extra_args(false);
-}
-
 Command AddRun(CLI::App& app) {
   auto a = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run",
@@ -470,23 +375,6 @@ Command AddValidate(CLI::App& app) {
                 "Print the effective scenario: every default filled in, grids as their nodes (it loads and runs "
                 "to the same fingerprint)");
   return {cmd, [file, sets, print](agents::Registry& r) { return Validate(*file, *sets, *print, r); }};
-}
-
-Command AddSweep(CLI::App& app) {
-  struct Args {
-    std::string file, seeds = "1-10", output;
-    bool quiet = false;
-  };
-  auto a = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("sweep",
-                                     "Run a scenario once per seed (replications) and summarise when the "
-                                     "runs met their end condition (mean, 95% confidence)");
-  AddScenario(cmd, a->file);
-  cmd->add_option("--seeds", a->seeds, "Seeds: a list and/or ranges, e.g. 1-10 or 1,5,9")->capture_default_str();
-  cmd->add_option("-o,--output", a->output,
-                  "Folder for the runs and sweep.csv/sweep.json (default: results/<name>-sweep)");
-  cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
-  return {cmd, [a](agents::Registry& r) { return Sweep(a->file, a->seeds, a->output, a->quiet, r); }};
 }
 
 Command AddServe(CLI::App& app) {

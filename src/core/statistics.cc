@@ -38,4 +38,29 @@ nlohmann::ordered_json Quartiles(std::vector<double> samples) {
   return j;
 }
 
+double StudentT95(int dof) {
+  static const double table[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                 2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                 2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+  if (dof < 1) return 0;
+  if (dof <= 30) return table[dof - 1];
+  const double z = 1.959964;  // beyond the table, the first Cornish-Fisher term (within 0.001 at 31)
+  return z + (z * z * z + z) / (4.0 * dof);
+}
+
+MeanCi MeanWithCi(const std::vector<double>& samples) {
+  MeanCi m;
+  m.count = static_cast<int>(samples.size());
+  if (samples.empty()) return m;
+  double sum = 0;
+  for (double v : samples) sum += v;
+  m.mean = sum / m.count;
+  if (m.count < 2) return m;
+  double squares = 0;
+  for (double v : samples) squares += (v - m.mean) * (v - m.mean);
+  const double sd = std::sqrt(squares / (m.count - 1));
+  m.half_width = StudentT95(m.count - 1) * sd / std::sqrt(static_cast<double>(m.count));
+  return m;
+}
+
 }  // namespace sanet

@@ -1,0 +1,35 @@
+// What the subcommands share: the Command record, and options that mean the same on each.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "agents/controller_registry.h"
+
+namespace sanet::cli {
+
+constexpr int kExitScenarioError = 2;
+constexpr int kExitRunFailed = 1;
+constexpr int kExitInterrupted = 130;
+
+// One subcommand: its options live as long as the program, its action runs when it was chosen.
+struct Command {
+  CLI::App* app;
+  std::function<int(agents::Registry&)> action;
+};
+
+// The ranges a scenario's duration and seed have in a file hold on the command line too.
+extern const CLI::Validator kDurationRange;
+extern const CLI::Validator kSeedText;
+
+CLI::Option* AddScenario(CLI::App* cmd, std::string& file);
+void AddSet(CLI::App* cmd, std::vector<std::string>& sets);
+void AddDuration(CLI::App* cmd, std::optional<double>& duration);
+// Read as text so that every wrong value gets the same message ("two not in {1,2}").
+void AddThreads(CLI::App* cmd, std::optional<std::string>& threads);
+void AddForce(CLI::App* cmd, bool& force);
+
+}  // namespace sanet::cli

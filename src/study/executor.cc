@@ -1,0 +1,119 @@
+#include "study/executor.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace sanet::study {
+namespace {
+
+double SteadyNow() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// In the child: output to the log, die with the parent, become `sanet args...`.
+[[noreturn]] void BecomeRun(const RunJob& job) {
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  const int log = ::open(job.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (log >= 0) {
+    ::dup2(log, STDOUT_FILENO);
+    ::dup2(log, STDERR_FILENO);
+  }
+  std::vector<std::string> args = {"sanet"};
+  args.insert(args.end(), job.args.begin(), job.args.end());
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  ::execv("/proc/self/exe", argv.data());
+  std::perror("sanet sweep: cannot start a run");
+  ::_exit(127);
+}
+
+}  // namespace
+
+std::string UtcNow() {
+  const auto now = std::chrono::system_clock::now();
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
+  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm utc{};
+  ::gmtime_r(&seconds, &utc);
+  char text[40];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &utc);
+  char out[48];
+  std::snprintf(out, sizeof out, "%s.%03dZ", text, static_cast<int>(ms));
+  return out;
+}
+
+std::string HostName() {
+  std::array<char, 256> name{};
+  if (::gethostname(name.data(), name.size() - 1) != 0) return "unknown";
+  return name.data();
+}
+
+std::string Tail(const std::string& path, std::size_t bytes) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return "";
+  const std::streamoff size = in.tellg();
+  in.seekg(size > static_cast<std::streamoff>(bytes) ? size - static_cast<std::streamoff>(bytes) : 0);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  return text;
+}
+
+LocalExecutor::LocalExecutor(int jobs, int rank) : jobs_(jobs), rank_(rank) {}
+
+LocalExecutor::~LocalExecutor() {
+  StopAll();
+  for (auto& [pid, child] : running_) ::waitpid(pid, nullptr, 0);
+}
+
+void LocalExecutor::Start(const RunJob& job) {
+  std::filesystem::create_directories(std::filesystem::path(job.log).parent_path());
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error("cannot start a run: fork failed");
+  if (pid == 0) BecomeRun(job);
+  running_[pid] = {job, UtcNow(), SteadyNow()};
+}
+
+std::vector<JobEnd> LocalExecutor::Poll() {
+  std::vector<JobEnd> ended;
+  for (auto it = running_.begin(); it != running_.end();) {
+    int status = 0;
+    if (::waitpid(it->first, &status, WNOHANG) != it->first) {
+      ++it;
+      continue;
+    }
+    const Child& c = it->second;
+    JobEnd end{c.job.name, WIFEXITED(status) && WEXITSTATUS(status) == 0,
+               false,      "",
+               HostName(), c.started_utc,
+               UtcNow(),   SteadyNow() - c.started,
+               rank_};
+    // Stopped by a signal (ours, Ctrl-C, a kill): not the run's fault; it runs again next time.
+    // (130 and 143: a run that handled SIGINT or SIGTERM and stopped.)
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 0;
+    end.interrupted = stopping_ || WIFSIGNALED(status) || code == 130 || code == 143;
+    if (!end.completed) end.error = Tail(c.job.log);
+    ended.push_back(end);
+    it = running_.erase(it);
+  }
+  return ended;
+}
+
+void LocalExecutor::StopAll() {
+  stopping_ = true;
+  for (auto& [pid, child] : running_) ::kill(pid, SIGTERM);
+}
+
+}  // namespace sanet::study

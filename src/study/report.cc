@@ -1,0 +1,205 @@
+#include "study/report.h"
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "core/atomic_file.h"
+
+namespace sanet::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Rows of a query, as text.
+std::vector<std::vector<std::string>> Query(sqlite3* db, const std::string& sql) {
+  sqlite3_stmt* stmt = nullptr;
+  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) != SQLITE_OK)
+    throw ReportError(std::string("study database: ") + sqlite3_errmsg(db));
+  std::vector<std::vector<std::string>> rows;
+  while (sqlite3_step(stmt) == SQLITE_ROW) {
+    rows.emplace_back();
+    for (int c = 0; c < sqlite3_column_count(stmt); ++c) {
+      const unsigned char* t = sqlite3_column_text(stmt, c);
+      rows.back().push_back(t ? reinterpret_cast<const char*>(t) : "");
+    }
+  }
+  sqlite3_finalize(stmt);
+  return rows;
+}
+
+bool IsNumber(const std::string& s) {
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return !s.empty() && *end == '\0';
+}
+
+std::size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The values of `by` in order: numerically when every one is a number, else as first seen.
+std::vector<std::string> Ordered(std::vector<std::string> values) {
+  const bool numbers = std::all_of(values.begin(), values.end(), IsNumber);
+  std::vector<std::string> unique;
+  for (const std::string& v : values)
+    if (std::find(unique.begin(), unique.end(), v) == unique.end()) unique.push_back(v);
+  if (numbers)
+    std::sort(unique.begin(), unique.end(), [](const auto& a, const auto& b) { return std::stod(a) < std::stod(b); });
+  return unique;
+}
+
+std::string Label(const StudyRun& run, const std::vector<std::string>& parameters, const std::string& by) {
+  std::string label;
+  for (const std::string& p : parameters)
+    if (p != by) label += (label.empty() ? "" : ", ") + p + "=" + run.values.at(p);
+  return label;
+}
+
+std::string CsvField(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string Format(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+}  // namespace
+
+StudyReader::StudyReader(const std::string& where) {
+  const std::string path = fs::is_directory(where) ? (fs::path(where) / "study.sqlite").string() : where;
+  if (!fs::exists(path)) throw ReportError(where + " is not a study: no " + path + " (sanet sweep makes one)");
+  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+    sqlite3_close(db_);
+    throw ReportError("cannot open " + path);
+  }
+  sqlite3_busy_timeout(db_, 10000);  // the sweep may be writing
+  try {
+    for (const auto& row : Query(db_, "SELECT value FROM study WHERE key = 'parameters'")) {
+      std::stringstream lines(row[0]);
+      for (std::string p; std::getline(lines, p);) parameters_.push_back(p);
+    }
+    for (const auto& row : Query(db_, "SELECT id, name, seed, status FROM runs ORDER BY id"))
+      runs_.push_back({std::stol(row[0]), row[1], row[3], std::stoull(row[2]), {}});
+    std::map<long, StudyRun*> by_id;
+    for (StudyRun& r : runs_) by_id[r.id] = &r;
+    for (const auto& row : Query(db_, "SELECT run, name, value FROM parameters"))
+      by_id.at(std::stol(row[0]))->values[row[1]] = row[2];
+  } catch (const std::exception& e) {
+    sqlite3_close(db_);
+    throw ReportError(path + " is not a study database sanet can read (" + e.what() + ")");
+  }
+}
+
+StudyReader::~StudyReader() { sqlite3_close(db_); }
+
+std::vector<std::pair<std::string, int>> StudyReader::Metrics() const {
+  std::vector<std::pair<std::string, int>> metrics;
+  for (const auto& row : Query(db_, "SELECT name, count(*) FROM scalars GROUP BY name ORDER BY name"))
+    metrics.emplace_back(row[0], std::stoi(row[1]));
+  return metrics;
+}
+
+std::map<long, double> StudyReader::Values(const std::string& metric) const {
+  std::string quoted;
+  for (char c : metric) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+  std::map<long, double> values;
+  for (const auto& row : Query(db_,
+                               "SELECT s.run, s.value FROM scalars s JOIN runs r ON r.id = s.run "
+                               "WHERE r.status = 'completed' AND s.name = '" +
+                                   quoted + "'"))
+    if (!row[1].empty()) values[std::stol(row[0])] = std::stod(row[1]);
+  if (!values.empty()) return values;
+  std::vector<std::pair<std::size_t, std::string>> close;
+  for (const auto& [name, count] : Metrics()) close.emplace_back(EditDistance(metric, name), name);
+  std::sort(close.begin(), close.end());
+  std::string hint;
+  for (std::size_t i = 0; i < close.size() && i < 3; ++i) hint += (i ? ", " : "") + close[i].second;
+  throw ReportError(
+      "no completed run has a metric '" + metric + "'" +
+      (hint.empty() ? " (no run has completed yet)" : " (closest: " + hint + "; all: sanet report --list)"));
+}
+
+std::vector<Series> Summarise(const StudyReader& study, const std::string& metric, const std::string& by) {
+  const auto& ps = study.parameters();
+  if (!by.empty() && std::find(ps.begin(), ps.end(), by) == ps.end())
+    throw ReportError("the study does not vary '" + by + "'" + (ps.empty() ? "" : " (it varies " + ps.front() + ")"));
+  const std::map<long, double> values = study.Values(metric);
+  std::vector<std::string> xs, labels;
+  for (const StudyRun& r : study.runs()) {
+    xs.push_back(by.empty() ? "all" : r.values.at(by));
+    labels.push_back(Label(r, ps, by));
+  }
+  std::vector<Series> series;
+  for (const std::string& label : Ordered(labels)) {
+    Series s{label, {}};
+    for (const std::string& x : Ordered(xs)) {
+      std::vector<double> samples;
+      for (std::size_t i = 0; i < study.runs().size(); ++i)
+        if (xs[i] == x && labels[i] == label && values.count(study.runs()[i].id))
+          samples.push_back(values.at(study.runs()[i].id));
+      if (!samples.empty()) s.points.push_back({x, MeanWithCi(samples), Quantile(samples, 0.5)});
+    }
+    series.push_back(s);
+  }
+  return series;
+}
+
+std::string FormatTable(const std::string& metric, const std::string& by, const std::vector<Series>& series) {
+  std::ostringstream out;
+  char line[256];
+  for (const Series& s : series) {
+    out << metric << (by.empty() ? "" : " by " + by) << (s.label.empty() ? "" : " (" + s.label + ")") << ":\n";
+    std::snprintf(line, sizeof line, "  %-14s %5s %12s %12s %25s\n", by.empty() ? "" : "value", "runs", "mean",
+                  "median", "95% confidence interval");
+    out << line;
+    for (const Point& p : s.points) {
+      const std::string interval = p.stats.count > 1 ? "[" + Format(p.stats.mean - p.stats.half_width) + ", " +
+                                                           Format(p.stats.mean + p.stats.half_width) + "]"
+                                                     : "(one run)";
+      std::snprintf(line, sizeof line, "  %-14s %5d %12s %12s %25s\n", p.x.c_str(), p.stats.count,
+                    Format(p.stats.mean).c_str(), Format(p.median).c_str(), interval.c_str());
+      out << line;
+    }
+  }
+  return out.str();
+}
+
+void WriteCsv(const StudyReader& study, const std::vector<std::string>& metrics, const std::string& path) {
+  std::vector<std::map<long, double>> columns;
+  for (const std::string& m : metrics) columns.push_back(study.Values(m));
+  std::string csv = "run,seed,status";
+  for (const std::string& p : study.parameters()) csv += "," + CsvField(p);
+  for (const std::string& m : metrics) csv += "," + CsvField(m);
+  csv += "\n";
+  for (const StudyRun& r : study.runs()) {
+    csv += CsvField(r.name) + "," + std::to_string(r.seed) + "," + r.status;
+    for (const std::string& p : study.parameters()) csv += "," + CsvField(r.values.at(p));
+    for (const auto& column : columns) csv += "," + (column.count(r.id) ? Format(column.at(r.id)) : "");
+    csv += "\n";
+  }
+  WriteFileAtomically(path, csv);
+}
+
+}  // namespace sanet::study

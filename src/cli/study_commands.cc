@@ -83,9 +83,18 @@ study::SweepSettings Settings(const SweepArgs& a, const scenario::Scenario& base
   return s;
 }
 
-void PrintEnd(const study::SweepTally& t, const std::string& folder) {
+void PrintEnd(const study::SweepTally& t, const std::string& folder, bool has_end_condition) {
   std::printf("%d of %d runs done: %d completed, %d failed (%d run now)\n", t.completed + t.failed, t.total,
               t.completed, t.failed, t.ran_now);
+  if (has_end_condition && t.completed > 0) {
+    const std::vector<double> times = study::StudyReader(folder).EndConditionTimes();
+    const MeanCi end = MeanWithCi(times);
+    std::printf("the end condition was met in %zu of %d completed runs", times.size(), t.completed);
+    if (end.count > 1)
+      std::printf(", at %.1f s on average (95%% confidence interval %.1f to %.1f s)", end.mean,
+                  end.mean - end.half_width, end.mean + end.half_width);
+    std::printf("\n");
+  }
   if (t.interrupted) std::printf("interrupted: the same command runs the %d left\n", t.total - t.completed - t.failed);
   std::printf("results in %s/ (study.sqlite, runs/, logs/); summarise with: sanet report %s\n", folder.c_str(),
               folder.c_str());
@@ -112,12 +121,69 @@ int Sweep(const SweepArgs& a, agents::Registry& registry) {
         s, runs, *executor, [] { return g_stop != 0; }, progress.Events());
   }
   executor.reset();  // under MPI: the workers are told to finish
-  if (!a.quiet) PrintEnd(tally, s.folder);
+  if (!a.quiet) PrintEnd(tally, s.folder, !base.run.end_when_logged.empty());
   if (tally.interrupted) return kExitInterrupted;
   return tally.failed > 0 ? kExitRunFailed : 0;
 }
 
+struct ReportArgs {
+  std::string study, by, plot, csv;
+  std::vector<std::string> metrics;
+  bool list = false;
+};
+
+int List(const study::StudyReader& study) {
+  std::printf("parameters:%s\n", study.parameters().empty() ? " (none: seeds only)" : "");
+  for (const std::string& p : study.parameters()) std::printf("  %s\n", p.c_str());
+  std::printf("runs: %zu\nmetrics (runs that have each):\n", study.runs().size());
+  for (const auto& [name, count] : study.Metrics()) std::printf("  %-60s %d\n", name.c_str(), count);
+  return 0;
+}
+
+int Report(const ReportArgs& a) {
+  try {
+    const study::StudyReader study(a.study);
+    if (a.list || (a.metrics.empty() && a.csv.empty())) return List(study);
+    const std::string by = a.by.empty() && !study.parameters().empty() ? study.parameters().front() : a.by;
+    for (const std::string& metric : a.metrics) {
+      const std::vector<study::Series> series = study::Summarise(study, metric, by);
+      std::fputs(study::FormatTable(metric, by, series).c_str(), stdout);
+      if (!a.plot.empty()) study::Plot(metric, by, series, a.plot);
+    }
+    if (!a.plot.empty()) std::printf("plot in %s\n", a.plot.c_str());
+    if (!a.csv.empty()) {
+      std::vector<std::string> metrics = a.metrics;
+      if (metrics.empty())
+        for (const auto& [name, count] : study.Metrics()) metrics.push_back(name);
+      study::WriteCsv(study, metrics, a.csv);
+      std::printf("runs in %s\n", a.csv.c_str());
+    }
+  } catch (const study::ReportError& e) {
+    throw CLI::ValidationError(e.what());
+  }
+  return 0;
+}
+
 }  // namespace
+
+Command AddReport(CLI::App& app) {
+  auto a = std::make_shared<ReportArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "report",
+      "Summarise a study (sanet sweep): a metric against a varied parameter with mean and 95% confidence "
+      "interval per value, as a table, a plot (SVG/PNG) and CSV (docs/studies.md)");
+  cmd->add_option("study", a->study, "The study's folder (or its study.sqlite)")->required();
+  cmd->add_option("-m,--metric", a->metrics,
+                  "A number of the runs' summary.json by dotted name, e.g. network.route_discoveries.time_s.median "
+                  "(repeatable; --list shows them)");
+  cmd->add_option("--by", a->by, "The varied parameter on the x axis (default: the first one varied)");
+  cmd->add_option("--plot", a->plot, "Plot the (last) metric into this .svg or .png file");
+  cmd->add_option("--csv", a->csv,
+                  "Write one row per run (parameters, seed, status and the metrics, or every metric without -m) "
+                  "for pandas or a spreadsheet");
+  cmd->add_flag("--list", a->list, "List the study's parameters and metrics");
+  return {cmd, [a](agents::Registry&) { return Report(*a); }};
+}
 
 Command AddSweep(CLI::App& app) {
   auto a = std::make_shared<SweepArgs>();

@@ -141,6 +141,15 @@ std::map<long, double> StudyReader::Values(const std::string& metric) const {
       (hint.empty() ? " (no run has completed yet)" : " (closest: " + hint + "; all: sanet report --list)"));
 }
 
+std::vector<double> StudyReader::EndConditionTimes() const {
+  std::vector<double> times;
+  for (const auto& row : Query(db_,
+                               "SELECT ended_at_s FROM runs WHERE status = 'completed' AND ended_by != "
+                               "'duration' ORDER BY id"))
+    times.push_back(std::stod(row[0]));
+  return times;
+}
+
 std::vector<Series> Summarise(const StudyReader& study, const std::string& metric, const std::string& by) {
   const auto& ps = study.parameters();
   if (!by.empty() && std::find(ps.begin(), ps.end(), by) == ps.end())

@@ -41,6 +41,8 @@ class StudyReader {
   std::vector<std::pair<std::string, int>> Metrics() const;
   // run id -> value, for the completed runs that have it. Unknown names: ReportError with the closest.
   std::map<long, double> Values(const std::string& metric) const;
+  // When the completed runs met the scenario's end condition (not its duration).
+  std::vector<double> EndConditionTimes() const;
 
  private:
   sqlite3* db_ = nullptr;

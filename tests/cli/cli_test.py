@@ -3,6 +3,7 @@
 import csv
 import json
 import os
+import sqlite3
 import subprocess
 import sys
 import tempfile
@@ -104,13 +105,15 @@ class Cli(unittest.TestCase):
 
     def test_sweep_runs_each_seed_and_summarises_the_end_times(self):
         with tempfile.TemporaryDirectory() as tmp:
-            out = sanet("sweep", SCENARIO, "--seeds", "1-2,5", "-o", tmp, "-q")
+            out = sanet("sweep", SCENARIO, "--seeds", "1-2,5", "-o", tmp)
             self.assertEqual(out.returncode, 0, out.stderr)
-            sweep = json.load(open(os.path.join(tmp, "sweep.json")))
-            self.assertEqual(sweep["runs"], 3)
-            self.assertEqual(sweep["ended_by_condition"], 3)
-            self.assertEqual([r["seed"] for r in sweep["per_seed"]], [1, 2, 5])
-            self.assertTrue(os.path.exists(os.path.join(tmp, "seed-5", "trajectories.csv")))
+            self.assertIn("3 of 3 runs done: 3 completed, 0 failed", out.stdout)
+            self.assertIn("the end condition was met in 3 of 3 completed runs, at ", out.stdout)
+            with sqlite3.connect(os.path.join(tmp, "study.sqlite")) as db:
+                runs = list(db.execute("SELECT seed, ended_by FROM runs ORDER BY id"))
+            self.assertEqual([r[0] for r in runs], [1, 2, 5])
+            self.assertTrue(all(r[1] != "duration" for r in runs), runs)
+            self.assertTrue(os.path.exists(os.path.join(tmp, "runs", "seed=5", "trajectories.csv")))
         bad = sanet("sweep", SCENARIO, "--seeds", "3-x")
         self.assertEqual(bad.returncode, 2)
         self.assertIn("'3-x' is not a seed", bad.stderr)

@@ -9,8 +9,8 @@ at the target's last hop, where two hidden neighbours' ARP retries collide at th
 same instant, once a second (docs/network.md#the-indexed-channel). With ns-3's Yans channel the
 same seed arrives; seeds 11-30 arrive on both channels."""
 import csv
-import json
 import os
+import sqlite3
 import subprocess
 import sys
 import tempfile
@@ -21,14 +21,16 @@ with tempfile.TemporaryDirectory() as tmp:
                           "--seeds", "1-10", "-o", tmp], capture_output=True, text=True, timeout=580)
     print(out.stdout, out.stderr)
     assert out.returncode == 0, out.returncode
-    sweep = json.load(open(os.path.join(tmp, "sweep.json")))
-    assert sweep["runs"] == 10, sweep["runs"]
-    assert sweep["ended_by_condition"] >= 9, "the robot arrived in fewer than nine runs"
-    for run in sweep["per_seed"]:
-        if run["ended_by"] == "'arrived' logged by robot":
+    with sqlite3.connect(os.path.join(tmp, "study.sqlite")) as db:
+        runs = list(db.execute("SELECT seed, status, ended_by, ended_at_s, folder FROM runs ORDER BY seed"))
+    assert len(runs) == 10 and all(r[1] == "completed" for r in runs), runs
+    arrived = [r for r in runs if r[2] == "'arrived' logged by robot"]
+    assert len(arrived) >= 9, "the robot arrived in fewer than nine runs"
+    for seed, _, ended_by, _, folder in runs:
+        if ended_by == "'arrived' logged by robot":
             continue
-        with open(os.path.join(tmp, "seed-%d" % run["seed"], "transitions.csv")) as f:
+        with open(os.path.join(tmp, folder, "transitions.csv")) as f:
             gave_up = [r for r in csv.DictReader(f) if r["node"] == "robot" and r["why"].startswith("gave up")]
-        assert gave_up, ("a run that did not arrive must be one where the robot gave up", run)
-    end = sweep["end_time_s"]
-    print(f"arrival: mean {end['mean']:.1f} s, 95% CI [{end['ci95'][0]:.1f}, {end['ci95'][1]:.1f}] s")
+        assert gave_up, ("a run that did not arrive must be one where the robot gave up", seed)
+    times = [r[3] for r in arrived]
+    print(f"arrival: mean {sum(times) / len(times):.1f} s over {len(times)} runs")

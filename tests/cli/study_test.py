@@ -1,0 +1,211 @@
+#!/usr/bin/env python3
+"""Studies: `sanet sweep` over a grid of values and seeds into one database, resumed after a
+kill without redoing finished runs, the same rows under MPI, and `sanet report`."""
+import csv
+import os
+import shutil
+import signal
+import sqlite3
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+import xml.dom.minidom
+
+SANET = sys.argv.pop(1)
+SOURCE = sys.argv.pop(1)
+SCENARIO = os.path.join(SOURCE, "scenarios", "sensor-network.yaml")
+GRID = ["--vary", "network.tx_power=28,33", "--vary", "nodes.reporter.controller.params.size=32,256",
+        "--seeds", "1-2"]
+
+
+def sanet(*args, **kwargs):
+    return subprocess.run([SANET, *args], capture_output=True, text=True, timeout=600, **kwargs)
+
+
+def rows(folder, sql):
+    with sqlite3.connect(os.path.join(folder, "study.sqlite")) as db:
+        return list(db.execute(sql))
+
+
+class Sweep(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.study = os.path.join(self.tmp.name, "study")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def sweep(self, *extra, study=None):
+        out = sanet("sweep", SCENARIO, *GRID, "--duration", "20", "-o", study or self.study, *extra)
+        self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
+        return out
+
+    def test_a_grid_gives_every_run_once_and_again_nothing(self):
+        first = self.sweep("--jobs", "2")
+        self.assertIn("8 of 8 runs done: 8 completed, 0 failed (8 run now)", first.stdout)
+        runs = rows(self.study, "SELECT r.seed, p1.number, p2.number, r.status, r.fingerprint FROM runs r "
+                                "JOIN parameters p1 ON p1.run = r.id AND p1.name = 'network.tx_power' "
+                                "JOIN parameters p2 ON p2.run = r.id AND p2.name = "
+                                "'nodes.reporter.controller.params.size' ORDER BY r.id")
+        self.assertEqual([r[:3] for r in runs], [(s, p, z) for p in (28, 33) for z in (32, 256) for s in (1, 2)])
+        self.assertTrue(all(r[3] == "completed" for r in runs))
+        self.assertEqual(len({r[4] for r in runs}), 8, "every run differs")
+        # Each run's folder holds its effective scenario with its values.
+        with open(os.path.join(self.study, "runs", "tx_power=33,size=256,seed=2", "scenario.yaml")) as f:
+            effective = f.read()
+        self.assertIn("tx_power: 33", effective)
+        self.assertIn("size: 256", effective)
+        self.assertIn("seed: 2", effective)
+        # Every number of every summary is in the database.
+        received = rows(self.study, "SELECT count(*) FROM scalars WHERE name = 'network.packets.received'")
+        self.assertEqual(received[0][0], 8)
+        finished = rows(self.study, "SELECT name, finished_utc FROM runs ORDER BY name")
+        again = self.sweep("--jobs", "2")
+        self.assertIn("(0 run now)", again.stdout)
+        self.assertEqual(rows(self.study, "SELECT name, finished_utc FROM runs ORDER BY name"), finished)
+
+    def test_killed_half_way_it_completes_without_redoing_finished_runs(self):
+        for how in (signal.SIGKILL, signal.SIGINT):
+            with self.subTest(signal=how.name):
+                study = os.path.join(self.tmp.name, how.name)
+                command = [SANET, "sweep", SCENARIO, *GRID, "--duration", "60", "--jobs", "1", "-o", study, "-q"]
+                process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                database = os.path.join(study, "study.sqlite")
+                deadline = time.time() + 120
+                while time.time() < deadline:
+                    time.sleep(0.2)
+                    if os.path.exists(database):
+                        done = rows(study, "SELECT count(*) FROM runs WHERE status = 'completed'")[0][0]
+                        if done >= 3:
+                            break
+                process.send_signal(how)
+                process.wait(timeout=60)
+                self.assertNotEqual(process.returncode, 0)
+                time.sleep(0.5)  # the runs it started die with it (and do not go on writing)
+                before = dict(rows(study, "SELECT name, finished_utc FROM runs WHERE status = 'completed'"))
+                self.assertGreaterEqual(len(before), 3)
+                self.assertLess(len(before), 8)
+                out = sanet("sweep", SCENARIO, *GRID, "--duration", "60", "--jobs", "2", "-o", study)
+                self.assertEqual(out.returncode, 0, out.stderr)
+                self.assertIn(f"({8 - len(before)} run now)", out.stdout)
+                after = dict(rows(study, "SELECT name, finished_utc FROM runs WHERE status = 'completed'"))
+                self.assertEqual(len(after), 8)
+                for name, stamp in before.items():
+                    self.assertEqual(after[name], stamp, f"{name} was run again")
+                leftovers = [f for f in os.listdir(os.path.join(study, "runs")) if not f.startswith("tx_power=")]
+                self.assertEqual(leftovers, [])
+
+    @unittest.skipUnless(shutil.which("mpirun"), "no mpirun (./setup installs openmpi-bin)")
+    def test_mpi_gives_the_same_rows_as_local_jobs(self):
+        local = os.path.join(self.tmp.name, "local")
+        self.sweep("--jobs", "2", study=local)
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        out = subprocess.run(["mpirun", "-n", "2", "--oversubscribe", SANET, "sweep", SCENARIO, *GRID, "--duration",
+                              "20", "--jobs", "1", "-o", self.study], capture_output=True, text=True, timeout=600,
+                             env=env)
+        self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
+        self.assertIn("on 2 MPI ranks", out.stdout)
+        query = "SELECT name, seed, status, fingerprint, scenario_fingerprint FROM runs ORDER BY name"
+        self.assertEqual(rows(self.study, query), rows(local, query))
+        self.assertEqual({r[0] for r in rows(self.study, "SELECT rank FROM runs")}, {0, 1}, "both ranks ran")
+        scalars = "SELECT r.name, s.name, s.value FROM scalars s JOIN runs r ON r.id = s.run " \
+                  "WHERE s.name LIKE 'network.%' ORDER BY 1, 2"
+        self.assertEqual(rows(self.study, scalars), rows(local, scalars))
+
+    def test_mistakes_are_named(self):
+        out = sanet("sweep", SCENARIO, "--vary", "network.tx_power=28,loud", "-o", self.study)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("--vary network.tx_power: 'network.tx_power': the value 'loud': must be a number", out.stderr)
+        out = sanet("sweep", SCENARIO, "--vary", "network.tx_power", "-o", self.study)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("expected PATH=V1,V2", out.stderr)
+        out = sanet("sweep", SCENARIO, "--seeds", "3-x", "-o", self.study)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("'3-x' is not a seed", out.stderr)
+        os.makedirs(self.study)
+        open(os.path.join(self.study, "notes.txt"), "w").close()
+        out = sanet("sweep", SCENARIO, "--seeds", "1", "-o", self.study)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("notes.txt", out.stderr)
+
+    def test_a_failing_run_is_recorded_with_its_error_and_not_redone(self):
+        os.makedirs(os.path.join(self.study, "runs"))
+        open(os.path.join(self.study, "runs", "seed=2"), "w").close()  # where seed 2's folder should be
+        out = sanet("sweep", SCENARIO, "--seeds", "1-3", "--duration", "5", "-o", self.study)
+        self.assertEqual(out.returncode, 1)
+        self.assertIn("3 of 3 runs done: 2 completed, 1 failed", out.stdout)
+        status, error = rows(self.study, "SELECT status, error FROM runs WHERE seed = 2")[0]
+        self.assertEqual(status, "failed")
+        self.assertIn("is a file", error)
+        again = sanet("sweep", SCENARIO, "--seeds", "1-3", "--duration", "5", "-o", self.study)
+        self.assertIn("(0 run now)", again.stdout)
+        os.unlink(os.path.join(self.study, "runs", "seed=2"))
+        retried = sanet("sweep", SCENARIO, "--seeds", "1-3", "--duration", "5", "-o", self.study, "--retry-failed")
+        self.assertEqual(retried.returncode, 0, retried.stderr)
+        self.assertIn("3 completed, 0 failed (1 run now)", retried.stdout)
+
+
+class Report(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.study = os.path.join(cls.tmp.name, "study")
+        out = sanet("sweep", SCENARIO, *GRID, "--duration", "20", "-o", cls.study, "--tables", "routes,messages")
+        assert out.returncode == 0, out.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_a_metric_against_a_parameter_with_intervals(self):
+        out = sanet("report", self.study, "-m", "network.packets.received")
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertIn("network.packets.received by network.tx_power (nodes.reporter.controller.params.size=32)",
+                      out.stdout)
+        values = rows(self.study, "SELECT p.number, s.value FROM scalars s JOIN parameters p ON p.run = s.run "
+                                  "AND p.name = 'network.tx_power' JOIN parameters q ON q.run = s.run AND "
+                                  "q.name = 'nodes.reporter.controller.params.size' AND q.number = 32 "
+                                  "WHERE s.name = 'network.packets.received'")
+        mean_28 = sum(v for p, v in values if p == 28) / 2
+        line = [l for l in out.stdout.splitlines() if l.split()[:2] == ["28", "2"]][0]
+        self.assertAlmostEqual(float(line.split()[2]), mean_28, places=3)
+
+    def test_plots_and_csv(self):
+        svg = os.path.join(self.tmp.name, "plot.svg")
+        png = os.path.join(self.tmp.name, "plot.png")
+        table = os.path.join(self.tmp.name, "runs.csv")
+        for plot in (svg, png):
+            out = sanet("report", self.study, "-m", "message_delay_s.median", "--plot", plot, "--csv", table)
+            self.assertEqual(out.returncode, 0, out.stderr)
+        document = xml.dom.minidom.parse(svg)
+        self.assertGreater(len(document.getElementsByTagName("polyline")) +
+                           len(document.getElementsByTagName("path")), 4)
+        with open(png, "rb") as f:
+            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+        with open(table) as f:
+            runs = list(csv.DictReader(f))
+        self.assertEqual(len(runs), 8)
+        self.assertEqual(set(runs[0]), {"run", "seed", "status", "network.tx_power",
+                                        "nodes.reporter.controller.params.size", "message_delay_s.median"})
+
+    def test_per_event_tables_carry_their_run(self):
+        routes = rows(self.study, "SELECT count(DISTINCT run), count(*) FROM routes")
+        self.assertEqual(routes[0][0], 8)
+        self.assertGreater(routes[0][1], 8)
+
+    def test_mistakes_are_named(self):
+        out = sanet("report", self.study, "-m", "network.packets.recieved")
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("closest: network.packets.received", out.stderr)
+        out = sanet("report", self.study, "-m", "events", "--by", "network.txpower")
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("does not vary 'network.txpower'", out.stderr)
+        out = sanet("report", os.path.join(self.study, "runs"))
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("is not a study", out.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

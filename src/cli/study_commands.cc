@@ -121,7 +121,7 @@ int Sweep(const SweepArgs& a, agents::Registry& registry) {
         s, runs, *executor, [] { return g_stop != 0; }, progress.Events());
   }
   executor.reset();  // under MPI: the workers are told to finish
-  if (!a.quiet) PrintEnd(tally, s.folder, !base.run.end_when_logged.empty());
+  if (!a.quiet) PrintEnd(tally, s.folder, base.run.HasEndCondition());
   if (tally.interrupted) return kExitInterrupted;
   return tally.failed > 0 ? kExitRunFailed : 0;
 }

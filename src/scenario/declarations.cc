@@ -363,22 +363,31 @@ const Fields<sim::LoopSpec>& LoopFields() {
   return fields;
 }
 
+// An end condition's list of texts (a single text is a list of one).
+void EndTexts(Fields<sim::RunSpec>& f, const char* key, std::vector<std::string> sim::RunSpec::*member,
+              const std::string& what) {
+  f.Custom(
+      {key, "text or list of texts", "", "none", "", "counts when " + what},
+      [member](const Field& v, sim::RunSpec& s) {
+        if (v.IsScalar()) return (s.*member).push_back(v.Text());
+        for (const Field& item : v.Items()) (s.*member).push_back(item.Text());
+      },
+      [member](const sim::RunSpec& s) {
+        YAML::Node items(YAML::NodeType::Sequence);
+        for (const std::string& item : s.*member) items.push_back(item);
+        return (s.*member).empty() ? YAML::Node() : items;
+      });
+}
+
 const Fields<sim::RunSpec>& EndFields() {
   using sim::RunSpec;
   static const Fields<RunSpec> fields = [] {
     Fields<RunSpec> f;
-    f.Custom(
-        {"when_logged", "text or list of texts", "", "none", "",
-         "the run ends when a controller logs exactly one of these lines"},
-        [](const Field& v, RunSpec& s) {
-          if (v.IsScalar()) return s.end_when_logged.push_back(v.Text());
-          for (const Field& line : v.Items()) s.end_when_logged.push_back(line.Text());
-        },
-        [](const RunSpec& s) {
-          YAML::Node lines(YAML::NodeType::Sequence);
-          for (const std::string& line : s.end_when_logged) lines.push_back(line);
-          return s.end_when_logged.empty() ? YAML::Node() : lines;
-        });
+    EndTexts(f, "when_logged", &RunSpec::end_when_logged, "a controller logs exactly one of these lines");
+    EndTexts(f, "when_transition", &RunSpec::end_when_transition, "a node enters one of these states");
+    EndTexts(f, "when_metric", &RunSpec::end_when_metric, "a node reports one of these metrics");
+    f.Whole<int>("count", Member(&RunSpec::end_count), "", 1, 1000000,
+                 "the run ends when this many of those have happened, over all nodes");
     f.Number("grace", Member(&RunSpec::end_grace), "s", 0, 1e6,
              "the run goes on this long after, for messages in flight");
     return f;

@@ -72,7 +72,7 @@ std::string EffectiveBody(const Scenario& sc) {
   if (run.network) root["network"] = NetworkFields().Print(*run.network);
   root["messages"] = MessagesFields().Print(run);
   if (!run.events.empty()) root["events"] = Events(run);
-  if (!run.end_when_logged.empty()) root["end"] = EndFields().Print(run);
+  if (run.HasEndCondition()) root["end"] = EndFields().Print(run);
   root["loop"] = LoopFields().Print(run.loop);
   if (run.spawn) root["spawn"] = Spawn(*run.spawn, run.network.has_value());
   root["outputs"] = OutputsFields().Print(sc);

@@ -281,8 +281,8 @@ void ReadLoop(const Field& loop, sim::RunSpec& run) {
 }
 
 void ReadEnd(const Field& end, sim::RunSpec& run) {
-  end.Require("when_logged");
   EndFields().Read(end, run);
+  if (!run.HasEndCondition()) end.Fail("give when_logged, when_transition or when_metric");
 }
 
 void ReadOutputs(const Field& outputs, Scenario& sc) { OutputsFields().Read(outputs, sc); }

@@ -108,8 +108,13 @@ struct RunSpec {
   bool robots_remote = false;
   LoopSpec loop;
   std::optional<SpawnSpec> spawn;  // clients may add robots with INIT (server only)
-  // The run ends early when a controller logs one of these lines.
-  std::vector<std::string> end_when_logged;
+  // The run ends early when, over all nodes, `end_count` of these have happened: a controller logs
+  // one of the lines, a node enters one of the states, a node reports one of the metrics.
+  std::vector<std::string> end_when_logged, end_when_transition, end_when_metric;
+  int end_count = 1;
+  bool HasEndCondition() const {
+    return !end_when_logged.empty() || !end_when_transition.empty() || !end_when_metric.empty();
+  }
   double end_grace = 0;           // s the run goes on after the end condition, for messages in flight
   bool figures = false;           // draw map.svg and packets.svg (and min_distance.svg)
   bool trace = false;             // write trace.sqlite (trace/run_trace.h)

@@ -216,18 +216,28 @@ void Stepper::SwitchOff(NodeId node) {
 
 void Stepper::Log(NodeId node, const std::string& text) {
   outputs_.Log(Now(), node, text);
-  for (const std::string& end : world_.spec().end_when_logged)
-    if (text == end && outputs_.ended_by().empty()) {
-      outputs_.Ended("'" + end + "' logged by " + world_.NameOf(node), Now());
-      ns3::Simulator::Stop(Period(world_.spec().end_grace));  // let the last messages arrive
-    }
+  CountTowardsEnd(world_.spec().end_when_logged, text, "'" + text + "' logged by " + world_.NameOf(node));
 }
 
 void Stepper::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
   outputs_.Transition(Now(), node, from, to, why);
+  CountTowardsEnd(world_.spec().end_when_transition, to, world_.NameOf(node) + " entered '" + to + "'");
 }
 
-void Stepper::Metric(NodeId node, const std::string& name, double value) { outputs_.Metric(Now(), node, name, value); }
+void Stepper::Metric(NodeId node, const std::string& name, double value) {
+  outputs_.Metric(Now(), node, name, value);
+  CountTowardsEnd(world_.spec().end_when_metric, name, world_.NameOf(node) + " reported '" + name + "'");
+}
+
+// One of the end condition's events; the run ends at the count-th (a grace period later).
+void Stepper::CountTowardsEnd(const std::vector<std::string>& watched, const std::string& what,
+                              const std::string& said) {
+  if (std::find(watched.begin(), watched.end(), what) == watched.end() || !outputs_.ended_by().empty()) return;
+  const int count = world_.spec().end_count;
+  if (++end_events_ < count) return;
+  outputs_.Ended(count == 1 ? said : said + " (" + std::to_string(count) + " in all)", Now());
+  ns3::Simulator::Stop(Period(world_.spec().end_grace));  // let the last messages arrive
+}
 
 void Stepper::Delivered(NodeId to, const Message& message) { outputs_.Delivered(to, message); }
 

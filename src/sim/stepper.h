@@ -65,6 +65,7 @@ class Stepper : public RunEvents {
   void CollectMoving();
   void ShowProgress();
   void SwitchOff(NodeId node);
+  void CountTowardsEnd(const std::vector<std::string>& watched, const std::string& what, const std::string& said);
   PoseReader Poses() const;
 
   Assembly& world_;
@@ -81,6 +82,7 @@ class Stepper : public RunEvents {
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   std::uint64_t quiet_physics_steps_ = 0, events_at_last_step_ = 0;
+  int end_events_ = 0;  // of the end condition, so far
   std::chrono::steady_clock::time_point wall_start_, last_progress_;
 };
 

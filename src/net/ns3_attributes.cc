@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/closest_names.h"
+
 namespace sanet::net {
 namespace {
 
@@ -35,34 +37,10 @@ const std::map<std::string, std::string>& SetBySanet() {
   return keys;
 }
 
-std::size_t EditDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      const bool same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
-// Up to three of `candidates` closest to `wanted`, as "did you mean A, B or C?".
+// " (did you mean A, B or C?)", or "" when nothing is close.
 std::string Closest(const std::string& wanted, const std::vector<std::string>& candidates) {
-  std::vector<std::pair<std::size_t, std::string>> ranked;
-  for (const std::string& c : candidates) ranked.emplace_back(EditDistance(wanted, c), c);
-  std::sort(ranked.begin(), ranked.end());
-  std::vector<std::string> close;
-  for (std::size_t i = 0; i < ranked.size() && close.size() < 3; ++i)
-    if (ranked[i].first <= std::max<std::size_t>(3, wanted.size() / 2)) close.push_back(ranked[i].second);
-  std::string out;
-  for (std::size_t i = 0; i < close.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == close.size() ? " or " : ", ") + close[i];
-  return out.empty() ? "" : " (did you mean " + out + "?)";
+  const std::vector<std::string> close = ClosestNames(wanted, candidates);
+  return close.empty() ? "" : " (did you mean " + OrList(close) + "?)";
 }
 
 std::vector<std::string> TypeNames() {

@@ -33,7 +33,12 @@ std::string Clean(const std::string& text) {
   return out.empty() ? "_" : out;
 }
 
-std::string LastKey(const std::string& path) { return path.substr(path.rfind('.') + 1); }
+// The last key of a path; of an ns-3 attribute name, the attribute ("NodeTraversalTime").
+std::string LastKey(const std::string& path) {
+  const std::string key = path.substr(path.rfind('.') + 1);
+  const auto colons = key.rfind("::");
+  return colons == std::string::npos ? key : key.substr(colons + 2);
+}
 
 // Short names for the parameters: the last key of each path, or the whole path where two share it.
 std::vector<std::string> ShortNames(const std::vector<Parameter>& parameters) {

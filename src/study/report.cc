@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/closest_names.h"
 
 namespace sanet::study {
 namespace {
@@ -37,21 +38,6 @@ bool IsNumber(const std::string& s) {
   char* end = nullptr;
   std::strtod(s.c_str(), &end);
   return !s.empty() && *end == '\0';
-}
-
-std::size_t EditDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
 }
 
 // The values of `by` in order: numerically when every one is a number, else as first seen.
@@ -131,14 +117,13 @@ std::map<long, double> StudyReader::Values(const std::string& metric) const {
                                    quoted + "'"))
     if (!row[1].empty()) values[std::stol(row[0])] = std::stod(row[1]);
   if (!values.empty()) return values;
-  std::vector<std::pair<std::size_t, std::string>> close;
-  for (const auto& [name, count] : Metrics()) close.emplace_back(EditDistance(metric, name), name);
-  std::sort(close.begin(), close.end());
-  std::string hint;
-  for (std::size_t i = 0; i < close.size() && i < 3; ++i) hint += (i ? ", " : "") + close[i].second;
-  throw ReportError(
-      "no completed run has a metric '" + metric + "'" +
-      (hint.empty() ? " (no run has completed yet)" : " (closest: " + hint + "; all: sanet report --list)"));
+  std::vector<std::string> names;
+  for (const auto& [name, count] : Metrics()) names.push_back(name);
+  if (names.empty()) throw ReportError("no run of this study has completed yet");
+  const std::vector<std::string> close = ClosestNames(metric, names);
+  throw ReportError("no completed run has a metric '" + metric + "'" +
+                    (close.empty() ? "" : " (did you mean " + OrList(close) + "?)") +
+                    "; sanet report --list lists them");
 }
 
 std::vector<double> StudyReader::EndConditionTimes() const {

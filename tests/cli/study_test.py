@@ -198,7 +198,7 @@ class Report(unittest.TestCase):
     def test_mistakes_are_named(self):
         out = sanet("report", self.study, "-m", "network.packets.recieved")
         self.assertEqual(out.returncode, 2)
-        self.assertIn("closest: network.packets.received", out.stderr)
+        self.assertIn("did you mean network.packets.received", out.stderr)
         out = sanet("report", self.study, "-m", "events", "--by", "network.txpower")
         self.assertEqual(out.returncode, 2)
         self.assertIn("does not vary 'network.txpower'", out.stderr)

@@ -44,8 +44,8 @@ std::vector<double> TimesOf(const std::string& path, int column, const std::stri
 }
 
 TEST(EndCondition, TheCountthStateEnteredEndsTheRun) {
-  const Ended e = RunWith("help-request.yaml", {"end.when_transition=find_next_hop", "end.count=3", "end.grace=0"},
-                          "transition");
+  const Ended e =
+      RunWith("help-request.yaml", {"end.when_transition=find_next_hop", "end.count=3", "end.grace=0"}, "transition");
   const auto entered = TimesOf(e.dir + "/transitions.csv", 3, "find_next_hop");
   ASSERT_GE(entered.size(), 3u);
   EXPECT_EQ(e.at, entered[2]);

@@ -50,17 +50,16 @@ std::vector<std::string> ParseTables(const std::string& text) {
   return tables;
 }
 
-// A study's folder holds study.sqlite, runs/ and logs/; anything else means it is not one.
+// A study's folder is one that holds study.sqlite (with whatever its user put beside it, such as
+// plots) or nothing yet; a folder with other files and no study is someone else's.
 void CheckStudyFolder(const std::string& dir, bool force) {
   if (!fs::exists(dir)) return;
   if (!fs::is_directory(dir)) throw CLI::ValidationError("--output", dir + " is a file, not a folder");
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    if (name == "study.sqlite" || name == "study.sqlite-journal" || name == "runs" || name == "logs") continue;
-    if (!force)
-      throw CLI::ValidationError(
-          "--output", dir + " holds " + name + ", which is not a study's: give another folder with -o, or --force");
-  }
+  if (fs::exists(fs::path(dir) / "study.sqlite") || force) return;
+  for (const auto& entry : fs::directory_iterator(dir))
+    throw CLI::ValidationError("--output", dir + " holds " + entry.path().filename().string() +
+                                               " and no study (study.sqlite): give another folder with -o, or "
+                                               "--force to start a study there");
 }
 
 study::SweepSettings Settings(const SweepArgs& a, const scenario::Scenario& base) {

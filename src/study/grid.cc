@@ -33,19 +33,12 @@ std::string Clean(const std::string& text) {
   return out.empty() ? "_" : out;
 }
 
-// The last key of a path; of an ns-3 attribute name, the attribute ("NodeTraversalTime").
-std::string LastKey(const std::string& path) {
-  const std::string key = path.substr(path.rfind('.') + 1);
-  const auto colons = key.rfind("::");
-  return colons == std::string::npos ? key : key.substr(colons + 2);
-}
-
 // Short names for the parameters: the last key of each path, or the whole path where two share it.
 std::vector<std::string> ShortNames(const std::vector<Parameter>& parameters) {
   std::map<std::string, int> uses;
-  for (const Parameter& p : parameters) ++uses[LastKey(p.path)];
+  for (const Parameter& p : parameters) ++uses[ShortName(p.path)];
   std::vector<std::string> names;
-  for (const Parameter& p : parameters) names.push_back(Clean(uses[LastKey(p.path)] > 1 ? p.path : LastKey(p.path)));
+  for (const Parameter& p : parameters) names.push_back(Clean(uses[ShortName(p.path)] > 1 ? p.path : ShortName(p.path)));
   return names;
 }
 
@@ -57,6 +50,12 @@ std::string Hash8(const RunPoint& run) {
 }
 
 }  // namespace
+
+std::string ShortName(const std::string& path) {
+  const std::string key = path.substr(path.rfind('.') + 1);
+  const auto colons = key.rfind("::");
+  return colons == std::string::npos ? key : key.substr(colons + 2);
+}
 
 Parameter ParseVary(const std::string& text) {
   const auto equals = text.find('=');

@@ -23,6 +23,8 @@ struct Parameter {
 
 // "path=v1,v2,v3"; commas inside [] or {} belong to a value ("size=[1,2],[3,4]").
 Parameter ParseVary(const std::string& text);
+// The last key of a path; of an ns-3 attribute name, the attribute ("NodeTraversalTime").
+std::string ShortName(const std::string& path);
 // "1-10", "1,4,7", "1-3,8".
 std::vector<std::uint64_t> ParseSeeds(const std::string& text);
 

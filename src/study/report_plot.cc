@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 
+#include "study/grid.h"
 #include "study/report.h"
 
 namespace sanet::study {
@@ -114,7 +116,7 @@ void Plot(const std::string& metric, const std::string& by, const std::vector<Se
       plmtex("b", 1.5, (1.0 + i - f.x0) / (f.x1 - f.x0), 0.5, categories[i].c_str());
   }
   pllab(by.empty() ? "" : by.c_str(), metric.c_str(),
-        ("mean and 95% confidence interval" + std::string(by.empty() ? "" : " against " + by)).c_str());
+        ("mean and 95% confidence interval" + std::string(by.empty() ? "" : " against " + ShortName(by))).c_str());
   for (std::size_t i = 0; i < series.size(); ++i)
     DrawSeries(series[i], kFirstSeries + static_cast<int>(i % 6), numeric, categories);
   if (series.size() > 1) Legend(series);

@@ -190,6 +190,18 @@ class Report(unittest.TestCase):
         self.assertEqual(set(runs[0]), {"run", "seed", "status", "network.tx_power",
                                         "nodes.reporter.controller.params.size", "message_delay_s.median"})
 
+    def test_the_python_example_of_the_docs_reads_the_same_numbers(self):
+        example = os.path.join(SOURCE, "examples", "study_in_python.py")
+        out = subprocess.run([sys.executable, example, self.study, "network.packets.received"], capture_output=True,
+                             text=True, timeout=60)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        for power in (28, 33):
+            values = [v for (v,) in rows(self.study, "SELECT s.value FROM scalars s JOIN parameters p ON p.run = s.run "
+                                                     "WHERE p.name = 'network.tx_power' AND p.number = %d AND "
+                                                     "s.name = 'network.packets.received'" % power)]
+            line = [l for l in out.stdout.splitlines() if l.split()[:1] == [str(power)]][0]
+            self.assertAlmostEqual(float(line.split("mean")[1].split()[0]), sum(values) / len(values), places=2)
+
     def test_per_event_tables_carry_their_run(self):
         routes = rows(self.study, "SELECT count(DISTINCT run), count(*) FROM routes")
         self.assertEqual(routes[0][0], 8)

@@ -89,7 +89,8 @@ with tempfile.TemporaryDirectory() as tmp:
 
 # An agent's robot and a mote that lives only in the server talk through the robot's own ns-3
 # node: the agent's SEND crosses the simulated network to the mote, the mote's messages reach
-# the agent as MSG lines; messages.csv holds both directions.
+# the agent as MSG lines; messages.csv holds both directions. The robot's message size comes from
+# --set: the agent runs the effective scenario, not the file.
 WITH_MOTE = """duration: 8
 network: {routing: aodv}
 nodes:
@@ -107,8 +108,8 @@ with tempfile.TemporaryDirectory() as tmp:
     path = os.path.join(tmp, "mote.yaml")
     with open(path, "w") as f:
         f.write(WITH_MOTE)
-    out = subprocess.run([sanet, "launch", path, "-o", os.path.join(tmp, "out")], capture_output=True, text=True,
-                         timeout=60)
+    out = subprocess.run([sanet, "launch", path, "-o", os.path.join(tmp, "out"), "--set",
+                          "nodes.r1.controller.params.size=9"], capture_output=True, text=True, timeout=60)
     print(out.stdout, out.stderr)
     assert out.returncode == 0, out.returncode
     import csv
@@ -117,5 +118,5 @@ with tempfile.TemporaryDirectory() as tmp:
     to_robot = [r for r in rows if r["from"] == "m1" and r["to"] == "r1" and r["time_received"]]
     to_mote = [r for r in rows if r["from"] == "r1" and r["to"] == "m1"]
     assert len(to_robot) >= 10 and len(to_mote) >= 10, (len(to_robot), len(to_mote))
-    assert all(r["bytes"] == "6" and float(r["delay"]) > 0 and r["hops"] == "1" for r in to_mote), to_mote[:3]
+    assert all(r["bytes"] == "9" and float(r["delay"]) > 0 and r["hops"] == "1" for r in to_mote), to_mote[:3]
     print("agent <-> mote:", len(to_robot), "and", len(to_mote), "messages")

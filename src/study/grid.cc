@@ -38,7 +38,8 @@ std::vector<std::string> ShortNames(const std::vector<Parameter>& parameters) {
   std::map<std::string, int> uses;
   for (const Parameter& p : parameters) ++uses[ShortName(p.path)];
   std::vector<std::string> names;
-  for (const Parameter& p : parameters) names.push_back(Clean(uses[ShortName(p.path)] > 1 ? p.path : ShortName(p.path)));
+  for (const Parameter& p : parameters)
+    names.push_back(Clean(uses[ShortName(p.path)] > 1 ? p.path : ShortName(p.path)));
   return names;
 }
 

@@ -131,11 +131,12 @@ class Sweep(unittest.TestCase):
         self.assertIn("notes.txt", out.stderr)
 
     def test_a_failing_run_is_recorded_with_its_error_and_not_redone(self):
-        os.makedirs(os.path.join(self.study, "runs"))
+        first = sanet("sweep", SCENARIO, "--seeds", "1", "--duration", "5", "-o", self.study)
+        self.assertEqual(first.returncode, 0, first.stderr)
         open(os.path.join(self.study, "runs", "seed=2"), "w").close()  # where seed 2's folder should be
         out = sanet("sweep", SCENARIO, "--seeds", "1-3", "--duration", "5", "-o", self.study)
-        self.assertEqual(out.returncode, 1)
-        self.assertIn("3 of 3 runs done: 2 completed, 1 failed", out.stdout)
+        self.assertEqual(out.returncode, 1, out.stderr)
+        self.assertIn("3 of 3 runs done: 2 completed, 1 failed (2 run now)", out.stdout)
         status, error = rows(self.study, "SELECT status, error FROM runs WHERE seed = 2")[0]
         self.assertEqual(status, "failed")
         self.assertIn("is a file", error)

@@ -63,6 +63,7 @@ Parameter ParseVary(const std::string& text) {
   if (equals == std::string::npos || equals == 0)
     throw GridError("--vary " + text + ": expected PATH=V1,V2,..., e.g. --vary network.tx_power=16,20,25");
   Parameter p{text.substr(0, equals), SplitValues(text.substr(equals + 1))};
+  if (p.path == "seed") throw GridError("--vary seed=...: give the seeds with --seeds (e.g. --seeds 1-10)");
   std::set<std::string> seen;
   for (const std::string& v : p.values) {
     if (v.empty()) throw GridError("--vary " + text + ": an empty value (two commas, or one at an end)");

@@ -132,8 +132,15 @@ class Params {
 
   // Throws for the first key that no getter has read: an unknown parameter.
   void CheckAllUsed() const {
-    for (const auto& [key, value] : values_)
-      if (!used_.count(key)) throw ParamError(key, value.line, "unknown parameter '" + key + "'");
+    for (const auto& [key, value] : values_) {
+      if (used_.count(key)) continue;
+      std::string known;
+      for (const ParamRead& r : reads_) known += (known.empty() ? "" : ", ") + r.key;
+      throw ParamError(
+          key, value.line,
+          "unknown parameter '" + key + "'" +
+              (known.empty() ? " (this controller takes none)" : " (this controller reads: " + known + ")"));
+    }
   }
 
  private:

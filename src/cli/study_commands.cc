@@ -10,6 +10,7 @@
 #include "study/executor.h"
 #include "study/progress.h"
 #include "study/report.h"
+#include "study/study_db.h"
 #include "study/study_mpi.h"
 #include "study/sweep.h"
 
@@ -82,9 +83,14 @@ study::SweepSettings Settings(const SweepArgs& a, const scenario::Scenario& base
   return s;
 }
 
+std::string Count(std::size_t n, const char* thing) { return std::to_string(n) + " " + thing + (n == 1 ? "" : "s"); }
+
 void PrintEnd(const study::SweepTally& t, const std::string& folder, bool has_end_condition) {
-  std::printf("%d of %d runs done: %d completed, %d failed (%d run now)\n", t.completed + t.failed, t.total,
-              t.completed, t.failed, t.ran_now);
+  if (t.stale > 0)
+    std::printf("%s of an earlier version of the scenario (another file or --duration) ran again\n",
+                Count(t.stale, "finished run").c_str());
+  std::printf("%d of %s done: %d completed, %d failed (%d run by this command)\n", t.completed + t.failed,
+              Count(t.total, "run").c_str(), t.completed, t.failed, t.ran_now);
   if (has_end_condition && t.completed > 0) {
     const std::vector<double> times = study::StudyReader(folder).EndConditionTimes();
     const MeanCi end = MeanWithCi(times);
@@ -109,15 +115,19 @@ int Sweep(const SweepArgs& a, agents::Registry& registry) {
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, [](int) { g_stop = 1; });
   std::unique_ptr<study::Executor> executor = study::MakeExecutor(jobs);
   if (!a.quiet)
-    std::printf("sanet: sweep of %s: %zu runs (%zu combinations x %zu seeds), %s; study in %s/\n",
-                base.run.name.c_str(), runs.size(), runs.size() / s.seeds.size(), s.seeds.size(),
-                study::Describe(*executor).c_str(), s.folder.c_str());
+    std::printf("sanet: sweep of %s: %s (%s x %s), %s; study in %s/\n", base.run.name.c_str(),
+                Count(runs.size(), "run").c_str(), Count(runs.size() / s.seeds.size(), "combination").c_str(),
+                Count(s.seeds.size(), "seed").c_str(), study::Describe(*executor).c_str(), s.folder.c_str());
   std::fflush(stdout);
   study::SweepTally tally;
   {
     study::Progress progress(a.quiet);
-    tally = study::RunSweep(
-        s, runs, *executor, [] { return g_stop != 0; }, progress.Events());
+    try {
+      tally = study::RunSweep(
+          s, runs, *executor, [] { return g_stop != 0; }, progress.Events());
+    } catch (const study::OtherStudy& e) {
+      throw CLI::ValidationError("--output", e.what());
+    }
   }
   executor.reset();  // under MPI: the workers are told to finish
   if (!a.quiet) PrintEnd(tally, s.folder, base.run.HasEndCondition());
@@ -131,6 +141,13 @@ struct ReportArgs {
   bool list = false;
 };
 
+// With several metrics, each gets its own plot: plot.svg -> plot-<metric>.svg.
+std::string PlotFile(const std::string& plot, const std::string& metric, std::size_t metrics) {
+  if (metrics == 1) return plot;
+  const fs::path p(plot);
+  return (p.parent_path() / (p.stem().string() + "-" + metric + p.extension().string())).string();
+}
+
 int List(const study::StudyReader& study) {
   std::printf("parameters:%s\n", study.parameters().empty() ? " (none: seeds only)" : "");
   for (const std::string& p : study.parameters()) std::printf("  %s\n", p.c_str());
@@ -143,13 +160,16 @@ int Report(const ReportArgs& a) {
   try {
     const study::StudyReader study(a.study);
     if (a.list || (a.metrics.empty() && a.csv.empty())) return List(study);
+    if (!a.plot.empty()) study::CheckPlotName(a.plot);
     const std::string by = a.by.empty() && !study.parameters().empty() ? study.parameters().front() : a.by;
     for (const std::string& metric : a.metrics) {
       const std::vector<study::Series> series = study::Summarise(study, metric, by);
-      std::fputs(study::FormatTable(metric, by, series).c_str(), stdout);
-      if (!a.plot.empty()) study::Plot(metric, by, series, a.plot);
+      std::fputs(study::FormatTable(metric, study.Parameter(by), series).c_str(), stdout);
+      if (a.plot.empty()) continue;
+      const std::string file = PlotFile(a.plot, metric, a.metrics.size());
+      study::Plot(metric, study.Parameter(by), series, file);
+      std::printf("plot in %s\n", file.c_str());
     }
-    if (!a.plot.empty()) std::printf("plot in %s\n", a.plot.c_str());
     if (!a.csv.empty()) {
       std::vector<std::string> metrics = a.metrics;
       if (metrics.empty())
@@ -176,7 +196,8 @@ Command AddReport(CLI::App& app) {
                   "A number of the runs' summary.json by dotted name, e.g. network.route_discoveries.time_s.median "
                   "(repeatable; --list shows them)");
   cmd->add_option("--by", a->by, "The varied parameter on the x axis (default: the first one varied)");
-  cmd->add_option("--plot", a->plot, "Plot the (last) metric into this .svg or .png file");
+  cmd->add_option("--plot", a->plot,
+                  "Plot the metric into this .svg or .png file (with several -m, one file each: NAME-METRIC.svg)");
   cmd->add_option("--csv", a->csv,
                   "Write one row per run (parameters, seed, status and the metrics, or every metric without -m) "
                   "for pandas or a spreadsheet");

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -106,6 +107,12 @@ std::string TryValue(const ns3::AttributeChecker& checker, const std::string& va
   return "not taken";
 }
 
+// What sanet takes as an ns-3 time: not negative (no timer is), with a unit.
+const std::regex& TimeWithUnit() {
+  static const std::regex time(R"(\+?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?(y|d|h|min|s|ms|us|ns|ps|fs))");
+  return time;
+}
+
 std::string ValueType(const ns3::AttributeChecker& checker) {
   if (checker.GetValueTypeName() == "ns3::TimeValue") return "a time such as 10s, 500ms or 2min";
   const std::string underlying = checker.GetUnderlyingTypeInformation();
@@ -131,6 +138,9 @@ std::string CheckNs3Attribute(const std::string& full, const std::string& value)
     const ns3::TypeId::AttributeInformation info = tid.GetAttribute(index);
     if (!(info.flags & ns3::TypeId::ATTR_CONSTRUCT))
       return full + " cannot be set before an object is made (ns-3 does not take it as a default)";
+    if (info.checker->GetValueTypeName() == "ns3::TimeValue" && !std::regex_match(value, TimeWithUnit()))
+      return "'" + value + "' is not a time for " + full + ": give a number of 0 or more with its unit, e.g. 10s, " +
+             "500ms, 2min (ns-3 would read a bare number as seconds; default " + DefaultOf(info) + ")";
     if (const std::string why = TryValue(*info.checker, value); !why.empty())
       return "'" + value + "' is not a valid value for " + full + " (" +
              (why.find(value) != std::string::npos ? "ns-3: " + why + "; " : "") + "expects " +

@@ -57,13 +57,18 @@ YAML::Node ParseValue(const Override& o) {
 
 void Apply(YAML::Node node, Override& o) {
   const std::vector<std::string> keys = Split(o.path);
-  std::string field;
+  std::string field, created;  // created: the first mapping made on the way, which errors then concern
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::string& key = keys[i];
     if (key.empty()) Refuse(o, field, "the path has an empty key (two dots, or a dot at an end)");
     const bool last = i + 1 == keys.size();
     if (node.IsSequence()) {
       const long index = FindItem(node, key);
+      if (index < 0 && IsIndex(key))
+        Refuse(o, field,
+               node.size() == 0 ? "has no items"
+                                : "has " + std::to_string(node.size()) + " items, 0 to " +
+                                      std::to_string(node.size() - 1) + ": no item " + key);
       if (index < 0) Refuse(o, field, "has no item named '" + key + "' (items: " + Names(node) + ")");
       field += "[" + std::to_string(index) + "]";
       if (last) {
@@ -78,11 +83,19 @@ void Apply(YAML::Node node, Override& o) {
     if (last) {
       node[key] = ParseValue(o);
     } else {
-      if (!node[key] || node[key].IsNull()) node[key] = YAML::Node(YAML::NodeType::Map);
+      if (!node[key] || node[key].IsNull()) {
+        if (IsIndex(keys[i + 1]))
+          Refuse(o, field,
+                 "is not in the scenario: --set changes the items of a list that is there (or give the "
+                 "whole list: --set " +
+                     field + "=[...])");
+        node[key] = YAML::Node(YAML::NodeType::Map);
+        if (created.empty()) created = field;
+      }
       node.reset(node[key]);
     }
   }
-  o.field = field;
+  o.field = created.empty() ? field : created;
 }
 
 bool Under(const std::string& field, const std::string& prefix) {

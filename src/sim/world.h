@@ -21,11 +21,11 @@ namespace sanet::sim {
 using agents::MakeController;
 
 struct RunOptions {
-  std::string output_dir;                // "" writes nothing (tests, benchmarks)
-  std::string scenario_file;             // recorded in the summary
-  bool progress = false;                 // print simulated time, real-time factor and ETA to stderr
-  bool force = false;                    // write beside files that no sanet run wrote (trace/earlier_run.h)
-  std::optional<Provenance> provenance;  // written first into the folder
+  std::string output_dir;     // "" writes nothing (tests, benchmarks)
+  std::string scenario_file;  // recorded in the summary
+  bool progress = false;      // print simulated time, real-time factor and ETA to stderr
+  bool force = false;         // write beside files that no sanet run wrote (trace/earlier_run.h)
+  std::optional<Provenance> provenance = std::nullopt;  // written first into the folder
   // Adds fields of its own to summary.json and files of its own to the results folder (the
   // server adds its lag and the agents' reports), once the run has ended.
   std::function<void(nlohmann::ordered_json& summary, trace::ResultsFolder& folder)> add_results = nullptr;

@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.h"
 #include "core/closest_names.h"
+#include "study/grid.h"
 
 namespace sanet::study {
 namespace {
@@ -120,7 +121,9 @@ std::map<long, double> StudyReader::Values(const std::string& metric) const {
   std::vector<std::string> names;
   for (const auto& [name, count] : Metrics()) names.push_back(name);
   if (names.empty()) throw ReportError("no run of this study has completed yet");
-  const std::vector<std::string> close = ClosestNames(metric, names);
+  std::vector<std::string> close = ClosestNames(metric, names);
+  for (const std::string& name : names)  // a part of a name: "delay" for message_delay_s.median
+    if (close.size() < 3 && name.find(metric) != std::string::npos) close.push_back(name);
   throw ReportError("no completed run has a metric '" + metric + "'" +
                     (close.empty() ? "" : " (did you mean " + OrList(close) + "?)") +
                     "; sanet report --list lists them");
@@ -135,10 +138,22 @@ std::vector<double> StudyReader::EndConditionTimes() const {
   return times;
 }
 
-std::vector<Series> Summarise(const StudyReader& study, const std::string& metric, const std::string& by) {
+std::string StudyReader::Parameter(const std::string& name) const {
+  const auto& ps = parameters_;
+  if (name.empty() || std::find(ps.begin(), ps.end(), name) != ps.end()) return name;
+  std::vector<std::string> matches;
+  for (const std::string& p : ps)
+    if (ShortName(p) == name) matches.push_back(p);
+  if (matches.size() == 1) return matches.front();
+  std::string varied;
+  for (const std::string& p : ps) varied += (varied.empty() ? "" : ", ") + p;
+  throw ReportError("the study does not vary '" + name + "'" +
+                    (ps.empty() ? " (it varies only the seed)" : " (it varies " + varied + ")"));
+}
+
+std::vector<Series> Summarise(const StudyReader& study, const std::string& metric, const std::string& by_name) {
   const auto& ps = study.parameters();
-  if (!by.empty() && std::find(ps.begin(), ps.end(), by) == ps.end())
-    throw ReportError("the study does not vary '" + by + "'" + (ps.empty() ? "" : " (it varies " + ps.front() + ")"));
+  const std::string by = study.Parameter(by_name);
   const std::map<long, double> values = study.Values(metric);
   std::vector<std::string> xs, labels;
   for (const StudyRun& r : study.runs()) {

@@ -41,6 +41,8 @@ class StudyReader {
   std::vector<std::pair<std::string, int>> Metrics() const;
   // run id -> value, for the completed runs that have it. Unknown names: ReportError with the closest.
   std::map<long, double> Values(const std::string& metric) const;
+  // A varied parameter by its path or its short name ("NodeTraversalTime"); "" stays "".
+  std::string Parameter(const std::string& name) const;
   // When the completed runs met the scenario's end condition (not its duration).
   std::vector<double> EndConditionTimes() const;
 
@@ -69,6 +71,8 @@ std::vector<Series> Summarise(const StudyReader& study, const std::string& metri
 std::string FormatTable(const std::string& metric, const std::string& by, const std::vector<Series>& series);
 // Per run: name, seed, status, parameters, then each metric. Written whole.
 void WriteCsv(const StudyReader& study, const std::vector<std::string>& metrics, const std::string& path);
+// A plot's file name must end in .svg or .png (ReportError otherwise).
+void CheckPlotName(const std::string& path);
 // Mean with its interval against the parameter, a line per series; .svg or .png by the name.
 void Plot(const std::string& metric, const std::string& by, const std::vector<Series>& series, const std::string& path);
 

@@ -94,10 +94,15 @@ void Legend(const std::vector<Series>& series) {
 
 }  // namespace
 
-void Plot(const std::string& metric, const std::string& by, const std::vector<Series>& series,
-          const std::string& path) {
+void CheckPlotName(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext != ".svg" && ext != ".png") throw ReportError("--plot: give a file ending in .svg or .png, not " + path);
+}
+
+void Plot(const std::string& metric, const std::string& by, const std::vector<Series>& series,
+          const std::string& path) {
+  CheckPlotName(path);
+  const std::string ext = std::filesystem::path(path).extension().string();
   const bool numeric = NumericAxis(series);
   const std::vector<std::string> categories = Categories(series);
   if (categories.empty()) throw ReportError("nothing to plot: no completed run has " + metric);

@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 
@@ -88,6 +89,13 @@ std::string JoinLines(const std::vector<std::string>& items) {
   return out;
 }
 
+// A list kept a line per item, as one line: "a=1 b=2", or "none".
+std::string OneLine(std::string lines) {
+  while (!lines.empty() && lines.back() == '\n') lines.pop_back();
+  std::replace(lines.begin(), lines.end(), '\n', ' ');
+  return lines.empty() ? "none" : lines;
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, double>> Numbers(const nlohmann::json& j) {
@@ -143,8 +151,8 @@ void StudyDb::Describe(const StudyInfo& info) {
   if (!Get("scenario").empty()) {
     for (const auto& [key, value] : identity)
       if (Get(key) != value)
-        throw StudyDbError(path_ + " holds a study with other " + key + " (" + Get(key) + " instead of " + value +
-                           "): give this study another folder with -o");
+        throw OtherStudy(path_ + " holds a study with other " + key + " (" + OneLine(Get(key)) + ", not " +
+                         OneLine(value) + "): give this study another folder with -o");
     return;
   }
   Statement put(db_, "INSERT OR REPLACE INTO study(key, value) VALUES (?, ?)");
@@ -202,6 +210,12 @@ long StudyDb::RunId(const std::string& name) const {
 
 std::string StudyDb::Status(const std::string& name) const {
   Statement s(db_, "SELECT status FROM runs WHERE name = ?");
+  s.Bind(1, name);
+  return s.Step() ? s.Text(0) : "";
+}
+
+std::string StudyDb::ScenarioFingerprintOf(const std::string& name) const {
+  Statement s(db_, "SELECT scenario_fingerprint FROM runs WHERE name = ?");
   s.Bind(1, name);
   return s.Step() ? s.Text(0) : "";
 }

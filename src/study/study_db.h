@@ -24,6 +24,12 @@ class StudyDbError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The folder holds another study (another scenario file, other --set values or varied paths).
+class OtherStudy : public StudyDbError {
+ public:
+  using StudyDbError::StudyDbError;
+};
+
 struct StudyInfo {
   std::string scenario;                 // the file
   std::vector<std::string> sets;        // --set common to every run
@@ -55,6 +61,8 @@ class StudyDb {
   // Adds the runs not there yet, as pending. Runs are matched by name.
   void Plan(const std::vector<RunPoint>& runs);
   std::string Status(const std::string& name) const;  // "" when not planned
+  // The fingerprint of the effective scenario a finished run ran ("" before it ends).
+  std::string ScenarioFingerprintOf(const std::string& name) const;
   void Started(const std::string& name, const std::string& started_utc);
   void Pending(const std::string& name);  // interrupted: to run again
   // The run's outcome and, when it completed, its summary's numbers and the tables asked for

@@ -1,6 +1,8 @@
 #include "study/sweep.h"
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -77,6 +79,16 @@ bool RecordFromFolder(StudyDb& db, const PreparedRun& run, const std::string& fo
   return true;
 }
 
+// The shortest decimal that reads back as `v` ("300", not "300.000000").
+std::string Shortest(double v) {
+  char text[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
+  return text;
+}
+
 RunJob JobFor(const SweepSettings& s, const PreparedRun& run) {
   RunJob job;
   job.name = run.point.name;
@@ -86,7 +98,7 @@ RunJob JobFor(const SweepSettings& s, const PreparedRun& run) {
   job.args = {"run", fs::absolute(s.scenario).string()};
   for (const std::string& set : AllSets(s, run.point)) job.args.insert(job.args.end(), {"--set", set});
   job.args.insert(job.args.end(), {"--seed", std::to_string(run.point.seed)});
-  if (s.duration) job.args.insert(job.args.end(), {"--duration", std::to_string(*s.duration)});
+  if (s.duration) job.args.insert(job.args.end(), {"--duration", Shortest(*s.duration)});
   if (s.threads) job.args.insert(job.args.end(), {"--threads", *s.threads});
   job.args.insert(job.args.end(), {"-o", job.folder, "-q", "--no-progress"});
   return job;
@@ -99,7 +111,12 @@ std::deque<const PreparedRun*> ToDo(StudyDb& db, const SweepSettings& s, const s
   for (const PreparedRun& run : runs) {
     const std::string status = db.Status(run.point.name);
     const std::string folder = (fs::path(s.folder) / "runs" / run.point.name).string();
-    if (status == "completed" || (status == "failed" && !s.retry_failed)) {
+    const bool finished = status == "completed" || status == "failed";
+    if (finished && db.ScenarioFingerprintOf(run.point.name) != run.scenario_fingerprint &&
+        !db.ScenarioFingerprintOf(run.point.name).empty()) {
+      ++tally.stale;  // the scenario (its file, or --duration) changed since: its results are not this one's
+      queue.push_back(&run);
+    } else if (status == "completed" || (status == "failed" && !s.retry_failed)) {
       ++(status == "completed" ? tally.completed : tally.failed);
     } else if (RecordFromFolder(db, run, folder)) {
       ++tally.completed;
@@ -161,8 +178,10 @@ SweepTally RunSweep(const SweepSettings& s, const std::vector<PreparedRun>& runs
       executor.StopAll();
     }
     for (; !queue.empty() && executor.Free() > 0; queue.pop_front()) {
-      db.Started(queue.front()->point.name, UtcNow());
-      executor.Start(JobFor(s, *queue.front()));
+      const RunJob job = JobFor(s, *queue.front());
+      fs::remove_all(job.folder);  // the study's own: whatever a stopped run left there goes
+      db.Started(job.name, UtcNow());
+      executor.Start(job);
     }
     for (const JobEnd& end : executor.Poll()) {
       if (end.interrupted) {

@@ -43,6 +43,7 @@ std::vector<PreparedRun> Prepare(const SweepSettings& settings, agents::Registry
 
 struct SweepTally {
   int total = 0, completed = 0, failed = 0, ran_now = 0;
+  int stale = 0;  // finished runs of an earlier version of the scenario, run again
   bool interrupted = false;
 };
 

@@ -34,6 +34,14 @@ std::set<std::string> EarlierRunFiles(const fs::path& dir) {
   return names;
 }
 
+// A folder a stopped run was filling (packets/ with its NODE.csv.tmp files): temporary files only.
+bool OnlyTemporaryFiles(const fs::path& dir) {
+  if (!fs::is_directory(dir)) return false;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (!entry.is_directory() && !EndsWith(entry.path().filename().string(), ".tmp")) return false;
+  return true;
+}
+
 }  // namespace
 
 void ClearEarlierRun(const std::string& dir, bool force) {
@@ -48,7 +56,7 @@ void ClearEarlierRun(const std::string& dir, bool force) {
   for (const auto& entry : fs::directory_iterator(path)) {
     const std::string name = entry.path().filename().string();
     // A stopped run's temporary files end in .tmp (and a run leaves nothing else half-written).
-    if (ours.count(name) || (earlier_run && EndsWith(name, ".tmp")))
+    if (ours.count(name) || (earlier_run && (EndsWith(name, ".tmp") || OnlyTemporaryFiles(entry.path()))))
       remove.push_back(entry.path());
     else
       foreign.push_back(name);

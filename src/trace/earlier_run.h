@@ -15,8 +15,8 @@ class FolderRefused : public std::runtime_error {
 
 // Makes `dir` ready for a new run: removes what an earlier run wrote there, if it exists (the
 // files its summary.json lists, its provenance.json and scenario.yaml, and the temporary files
-// of a run that was stopped). Anything else in it is refused with FolderRefused naming a few
-// of them; with `force` it is left where it is.
+// and folders of temporary files of a run that was stopped). Anything else in it is refused with FolderRefused naming a
+// few of them; with `force` it is left where it is.
 void ClearEarlierRun(const std::string& dir, bool force);
 
 }  // namespace sanet::trace

@@ -44,7 +44,7 @@ class Sweep(unittest.TestCase):
 
     def test_a_grid_gives_every_run_once_and_again_nothing(self):
         first = self.sweep("--jobs", "2")
-        self.assertIn("8 of 8 runs done: 8 completed, 0 failed (8 run now)", first.stdout)
+        self.assertIn("8 of 8 runs done: 8 completed, 0 failed (8 run by this command)", first.stdout)
         runs = rows(self.study, "SELECT r.seed, p1.number, p2.number, r.status, r.fingerprint FROM runs r "
                                 "JOIN parameters p1 ON p1.run = r.id AND p1.name = 'network.tx_power' "
                                 "JOIN parameters p2 ON p2.run = r.id AND p2.name = "
@@ -63,7 +63,7 @@ class Sweep(unittest.TestCase):
         self.assertEqual(received[0][0], 8)
         finished = rows(self.study, "SELECT name, finished_utc FROM runs ORDER BY name")
         again = self.sweep("--jobs", "2")
-        self.assertIn("(0 run now)", again.stdout)
+        self.assertIn("(0 run by this command)", again.stdout)
         self.assertEqual(rows(self.study, "SELECT name, finished_utc FROM runs ORDER BY name"), finished)
 
     def test_killed_half_way_it_completes_without_redoing_finished_runs(self):
@@ -89,7 +89,7 @@ class Sweep(unittest.TestCase):
                 self.assertLess(len(before), 8)
                 out = sanet("sweep", SCENARIO, *GRID, "--duration", "60", "--jobs", "2", "-o", study)
                 self.assertEqual(out.returncode, 0, out.stderr)
-                self.assertIn(f"({8 - len(before)} run now)", out.stdout)
+                self.assertIn(f"({8 - len(before)} run by this command)", out.stdout)
                 after = dict(rows(study, "SELECT name, finished_utc FROM runs WHERE status = 'completed'"))
                 self.assertEqual(len(after), 8)
                 for name, stamp in before.items():
@@ -131,21 +131,47 @@ class Sweep(unittest.TestCase):
         self.assertIn("notes.txt", out.stderr)
 
     def test_a_failing_run_is_recorded_with_its_error_and_not_redone(self):
-        first = sanet("sweep", SCENARIO, "--seeds", "1", "--duration", "5", "-o", self.study)
-        self.assertEqual(first.returncode, 0, first.stderr)
-        open(os.path.join(self.study, "runs", "seed=2"), "w").close()  # where seed 2's folder should be
-        out = sanet("sweep", SCENARIO, "--seeds", "1-3", "--duration", "5", "-o", self.study)
+        scenario = os.path.join(self.tmp.name, "pinger.yaml")
+        with open(scenario, "w") as f:  # a pinger whose target does not exist fails when it starts
+            f.write("duration: 5\nnodes:\n  - {name: a, model: mote, pose: [0, 0, 0], "
+                    "controller: {name: pinger, params: {to: b, start: 1}}}\n  - {name: b, model: mote, pose: [5, 0, 0]}\n")
+        command = ["sweep", scenario, "--vary", "nodes.a.controller.params.to=b,nobody", "--seeds", "1-2", "-o",
+                   self.study]
+        out = sanet(*command)
         self.assertEqual(out.returncode, 1, out.stderr)
-        self.assertIn("3 of 3 runs done: 2 completed, 1 failed (2 run now)", out.stdout)
-        status, error = rows(self.study, "SELECT status, error FROM runs WHERE seed = 2")[0]
-        self.assertEqual(status, "failed")
-        self.assertIn("is a file", error)
-        again = sanet("sweep", SCENARIO, "--seeds", "1-3", "--duration", "5", "-o", self.study)
-        self.assertIn("(0 run now)", again.stdout)
-        os.unlink(os.path.join(self.study, "runs", "seed=2"))
-        retried = sanet("sweep", SCENARIO, "--seeds", "1-3", "--duration", "5", "-o", self.study, "--retry-failed")
-        self.assertEqual(retried.returncode, 0, retried.stderr)
-        self.assertIn("3 completed, 0 failed (1 run now)", retried.stdout)
+        self.assertIn("4 of 4 runs done: 2 completed, 2 failed (4 run by this command)", out.stdout)
+        failed = rows(self.study, "SELECT name, error FROM runs WHERE status = 'failed'")
+        self.assertEqual(sorted(f[0] for f in failed), ["to=nobody,seed=1", "to=nobody,seed=2"])
+        self.assertIn("pinger: no node named 'nobody'", failed[0][1])
+        again = sanet(*command)
+        self.assertIn("(0 run by this command)", again.stdout)
+        retried = sanet(*command, "--retry-failed")
+        self.assertIn("2 completed, 2 failed (2 run by this command)", retried.stdout)
+
+    def test_a_changed_scenario_runs_its_finished_runs_again(self):
+        self.sweep("--jobs", "2")
+        out = sanet("sweep", SCENARIO, *GRID, "--duration", "10", "-o", self.study)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertIn("8 finished runs of an earlier version of the scenario", out.stdout)
+        self.assertIn("(8 run by this command)", out.stdout)
+        self.assertEqual(rows(self.study, "SELECT DISTINCT simulated_s FROM runs"), [(10.0,)])
+        other = sanet("sweep", SCENARIO, *GRID, "--set", "network.data_rate=2", "-o", self.study)
+        self.assertEqual(other.returncode, 2)
+        self.assertIn("holds a study with other sets (none, not network.data_rate=2)", other.stderr)
+
+    def test_a_run_stopped_half_way_leaves_nothing_in_the_way(self):
+        # What a killed run leaves: its provenance, temporary files, a folder of them.
+        folder = os.path.join(self.tmp.name, "run")
+        self.assertEqual(sanet("run", SCENARIO, "--duration", "5", "-q", "-o", folder).returncode, 0)
+        for name in os.listdir(folder):
+            path = os.path.join(folder, name)
+            if name not in ("provenance.json", "scenario.yaml"):
+                shutil.rmtree(path) if os.path.isdir(path) else os.unlink(path)
+        os.makedirs(os.path.join(folder, "packets"))
+        open(os.path.join(folder, "packets", "m0.csv.tmp"), "w").close()
+        open(os.path.join(folder, "log.csv.tmp"), "w").close()
+        run = sanet("run", SCENARIO, "--duration", "5", "-q", "-o", folder)
+        self.assertEqual(run.returncode, 0, run.stderr)
 
 
 class Report(unittest.TestCase):
@@ -198,10 +224,15 @@ class Report(unittest.TestCase):
         self.assertEqual(out.returncode, 0, out.stderr)
         for power in (28, 33):
             values = [v for (v,) in rows(self.study, "SELECT s.value FROM scalars s JOIN parameters p ON p.run = s.run "
-                                                     "WHERE p.name = 'network.tx_power' AND p.number = %d AND "
+                                                     "JOIN parameters q ON q.run = s.run WHERE p.name = "
+                                                     "'network.tx_power' AND p.number = %d AND q.number = 256 AND "
                                                      "s.name = 'network.packets.received'" % power)]
-            line = [l for l in out.stdout.splitlines() if l.split()[:1] == [str(power)]][0]
+            line = [l for l in out.stdout.splitlines() if l.split()[:1] == [str(power)] and l.endswith("=256")][0]
             self.assertAlmostEqual(float(line.split("mean")[1].split()[0]), sum(values) / len(values), places=2)
+        wrong = subprocess.run([sys.executable, example, self.study, "network.packets.recieved"], capture_output=True,
+                               text=True, timeout=60)
+        self.assertNotEqual(wrong.returncode, 0)
+        self.assertIn("no run has a metric", wrong.stderr)
 
     def test_per_event_tables_carry_their_run(self):
         routes = rows(self.study, "SELECT count(DISTINCT run), count(*) FROM routes")

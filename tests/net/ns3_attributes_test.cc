@@ -34,9 +34,17 @@ TEST(Ns3Attributes, MistakesAreExplained) {
   EXPECT_TRUE(Says(net::CheckNs3Attribute("ns3::aodv::RoutingProtocol::RreqRetries", "many"), "not a valid value"));
 }
 
+// ns-3 aborts the process when a pointer attribute names a type it does not know.
 TEST(Ns3Attributes, AValueThatMakesNs3AbortIsRefusedWithoutAbortingUs) {
-  const std::string why = net::CheckNs3Attribute("ns3::aodv::RoutingProtocol::ActiveRouteTimeout", "ten");
-  EXPECT_TRUE(Says(why, "Can't Parse Time ten")) << why;
+  const std::string why = net::CheckNs3Attribute("ns3::aodv::RoutingProtocol::UniformRv", "ns3::NoSuchVariable");
+  EXPECT_TRUE(Says(why, "not a valid value")) << why;
+}
+
+TEST(Ns3Attributes, ATimeNeedsAUnitAndCannotBeNegative) {
+  const std::string name = "ns3::aodv::RoutingProtocol::NodeTraversalTime";
+  for (const char* bad : {"ten", "-5ms", "20", "5 parsecs"})
+    EXPECT_TRUE(Says(net::CheckNs3Attribute(name, bad), "give a number of 0 or more with its unit")) << bad;
+  for (const char* good : {"20ms", "1.5s", "2min", "+3us", "1e-2s"}) EXPECT_EQ(net::CheckNs3Attribute(name, good), "");
 }
 
 TEST(Ns3Attributes, AMisspeltAttributeInAFileIsRefusedOnItsLine) {

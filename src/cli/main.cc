@@ -30,6 +30,7 @@
 #include "scenario/catalogue.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
+#include "sim/interruption.h"
 #include "sim/world.h"
 #include "study_commands.h"
 #include "trace/earlier_run.h"
@@ -133,8 +134,14 @@ int Run(const RunArgs& args, agents::Registry& registry) {
                 sc.run.threads == 2 ? ", physics on a second thread" : "");
   sim::World world(sc.run, registry);
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, args.view, !args.quiet);
+  sim::InstallStopHandlers();
   const sim::RunResult r = world.Run(options);
   if (live) live->Finish();
+  if (world.interrupted()) {
+    std::fprintf(stderr, "sanet: %s at %.1f s simulated; the results so far are in %s/ (status: interrupted)\n",
+                 world.ended_by().c_str(), world.ended_at(), options.output_dir.c_str());
+    return 128 + sim::InterruptSignal();
+  }
   if (!args.quiet) {
     std::printf("  simulated %.1f s in %.2f s wall (%.1fx real time), %llu events\n", r.simulated, r.wall,
                 r.real_time_factor, static_cast<unsigned long long>(r.events));
@@ -227,8 +234,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, a.view);
   WritePortFile(port_file, server.port(), "--port-file");
   server.Start();
-  std::signal(SIGINT, [](int) { hil::RequestStop(); });
-  std::signal(SIGTERM, [](int) { hil::RequestStop(); });
+  sim::InstallStopHandlers();
   std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), bind.c_str(), server.port(),
               sc.run.duration);
   std::fflush(stdout);
@@ -253,6 +259,11 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
         "  results in %s/\n",
         r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
         static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), options.output_dir.c_str());
+  }
+  if (world.interrupted()) {
+    std::fprintf(stderr, "sanet: %s at %.1f s; the results so far are in %s/ (status: interrupted)\n",
+                 world.ended_by().c_str(), world.ended_at(), options.output_dir.c_str());
+    return 128 + sim::InterruptSignal();
   }
   return 0;
 }

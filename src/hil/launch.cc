@@ -1,5 +1,6 @@
 #include "hil/launch.h"
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,7 +22,11 @@ namespace {
 
 volatile std::sig_atomic_t g_interrupted = 0;
 
+// In a child of the launcher: becomes `program`, and dies with the launcher even if the launcher
+// is killed outright (SIGKILL), so that no server, agent or program is ever left behind.
 [[noreturn]] void Exec(const std::string& program, const std::vector<std::string>& args) {
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() == 1) std::_Exit(127);  // the launcher is already gone
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);

@@ -29,11 +29,7 @@ double WallNow() { return std::chrono::duration<double>(std::chrono::steady_cloc
 // (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
 std::vector<double> ToUsarsim(const Pose2D& p) { return {p.x, -p.y, -p.theta}; }
 
-volatile std::sig_atomic_t g_stop = 0;
-
 }  // namespace
-
-void RequestStop() { g_stop = 1; }
 
 SimServer::SimServer(sim::World& world, ServerSettings settings)
     : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
@@ -71,11 +67,6 @@ nlohmann::ordered_json SimServer::LagSummary() const {
 }
 
 void SimServer::Poll() {
-  if (g_stop) {
-    world_.parts().Log(0, "stopped by a signal");
-    world_.Stop();
-    return;
-  }
   const double now = world_.Now();
   // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
   if (wall_start_ < 0) wall_start_ = WallNow() - now;

@@ -33,9 +33,6 @@ struct ServerSettings {
   double stall_timeout = 2.0;         // s a client may leave its lines unread before it is dropped
 };
 
-// Asks a running server to end its run as if its duration were over (safe in a signal handler).
-void RequestStop();
-
 class SimServer : public sim::StepObserver {
  public:
   SimServer(sim::World& world, ServerSettings settings);  // listens; throws std::runtime_error

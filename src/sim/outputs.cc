@@ -115,6 +115,13 @@ void Outputs::Ended(const std::string& by, double at) {
   ended_at_ = at;
 }
 
+void Outputs::Interrupted(const std::string& by, double at) {
+  if (interrupted_) return;
+  interrupted_ = true;
+  ended_by_ = by;
+  ended_at_ = at;
+}
+
 void Outputs::Failed(const std::string& why) {
   if (failure_.empty()) failure_ = why;
 }

@@ -79,6 +79,9 @@ class Outputs {
   // A robot a client added at time `t`, standing at `pose`: its first trajectory row.
   void Spawned(double t, NodeId node, const std::string& usarsim_class, const Pose2D& pose);
   void Ended(const std::string& by, double at);
+  // Stopped from outside at `at` (a signal): the summary says "interrupted".
+  void Interrupted(const std::string& by, double at);
+  bool interrupted() const { return interrupted_; }
   void Failed(const std::string& why);  // the first failure is kept
   const std::string& failure() const { return failure_; }
   const std::string& ended_by() const { return ended_by_; }
@@ -125,6 +128,7 @@ class Outputs {
   std::map<NodeId, std::string> spawned_as_;  // robots that clients added, with their classes
   std::unique_ptr<trace::RunTrace> trace_;
   std::string ended_by_, failure_;
+  bool interrupted_ = false;
   double ended_at_ = 0;
 };
 

@@ -210,7 +210,7 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
   j["scenario"] = scenario_file;
   if (!scenario_fingerprint_.empty()) j["scenario_fingerprint"] = scenario_fingerprint_;
   j["name"] = spec_.name;
-  j["status"] = failure_.empty() ? "completed" : "failed: " + failure_;
+  j["status"] = !failure_.empty() ? "failed: " + failure_ : interrupted_ ? "interrupted" : "completed";
   j["seed"] = spec_.seed;
   j["duration_s"] = spec_.duration;
   j["simulated_s"] = result.simulated;

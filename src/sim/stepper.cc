@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/interruption.h"
+
 namespace sanet::sim {
 namespace {
 
@@ -124,7 +126,17 @@ void Stepper::ControlRound(std::int64_t period_ns) {
 // queued behind steps it has not finished, while the network goes on; anything that reads or
 // drives a body waits for every step started (physics::PipelinedWorld), the radios only for the
 // steps that have ended.
+// A signal asked the run to stop: it ends now, its results written as they stand.
+bool Stepper::StopIfInterrupted() {
+  const int signal = InterruptSignal();
+  if (signal == 0 || outputs_.interrupted()) return false;
+  outputs_.Interrupted(std::string("interrupted by ") + SignalName(signal), Now());
+  ns3::Simulator::Stop();
+  return true;
+}
+
 void Stepper::PhysicsStep() {
+  if (StopIfInterrupted()) return;
   physics_steps_ = launched_;
   // Steps in which nothing else happened: with two threads, the physics has nothing to overlap there.
   const std::uint64_t events = ns3::Simulator::GetEventCount();
@@ -196,6 +208,7 @@ void Stepper::Notify() {
 }
 
 void Stepper::Record() {
+  if (StopIfInterrupted()) return;
   {
     StageTimer timer(profile_.recording);
     outputs_.Sample(Now(), false, Poses());

@@ -65,6 +65,7 @@ class Stepper : public RunEvents {
   void CollectMoving();
   void ShowProgress();
   void SwitchOff(NodeId node);
+  bool StopIfInterrupted();
   void CountTowardsEnd(const std::vector<std::string>& watched, const std::string& what, const std::string& said);
   PoseReader Poses() const;
 

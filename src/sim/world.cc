@@ -75,6 +75,7 @@ RunResult World::Run(const RunOptions& options) {
   result.threads = spec().threads;
   result.profile = stepper.profile();
   ended_by_ = outputs.ended_by();
+  interrupted_ = outputs.interrupted();
   ended_at_ = outputs.ended_at();
   std::vector<Pose2D> final_poses;
   for (NodeId id = 0; id < parts_.size(); ++id) final_poses.push_back(parts_.model(id).body().pose());

@@ -45,6 +45,8 @@ class World {
   // Runs for the spec's duration and writes the results (once per World). Throws WorldError
   // after writing them when a controller failed.
   RunResult Run(const RunOptions& options);
+  // The run was stopped by a signal (sim/interruption.h) and its results say so.
+  bool interrupted() const { return interrupted_; }
 
   const RunSpec& spec() const { return parts_.spec(); }
   Assembly& parts() { return parts_; }
@@ -74,7 +76,7 @@ class World {
   std::vector<std::unique_ptr<StepObserver>> owned_observers_;
   class Repeater;
   std::vector<std::unique_ptr<Repeater>> repeaters_;
-  bool ran_ = false;
+  bool ran_ = false, interrupted_ = false;
   std::string ended_by_;
   double ended_at_ = 0;
 };

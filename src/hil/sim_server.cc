@@ -15,6 +15,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/json_text.h"
 #include "core/statistics.h"
 #include "hil/message_lines.h"
 #include "hil/sockets.h"
@@ -447,7 +448,7 @@ void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
     const auto it = agent_stats_.find(world_.NameOf(id));
     if (it == agent_stats_.end()) continue;
     std::string row = trace::CsvField(world_.NameOf(id));
-    for (const StatsKey& k : kStatsKeys) row += "," + (*it)[k.name].dump();
+    for (const StatsKey& k : kStatsKeys) row += "," + JsonText((*it)[k.name]);
     table.Row(row);
   }
 }

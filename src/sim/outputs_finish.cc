@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/json_text.h"
 #include "core/statistics.h"
 #include "sim/outputs.h"
 #include "trace/png_export.h"
@@ -155,7 +156,7 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
   for (const auto& [key, value] : extra.items()) summary[key] = value;
   folder_.Listed("summary.json");
   summary["files"] = folder_.files();
-  folder_.WriteWhole("summary.json", summary.dump(2) + "\n");
+  folder_.WriteWhole("summary.json", JsonText(summary, 2) + "\n");
   result.files = folder_.files();
 }
 

@@ -5,6 +5,7 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
+#include "core/json_text.h"
 #include "core/version.h"
 #include "sim/outputs.h"
 
@@ -40,7 +41,7 @@ void Outputs::Begin(const Provenance& p) {
   j["scenario_fingerprint"] = p.scenario_fingerprint;
   j["scenario"] = "scenario.yaml";
   folder_.WriteWhole("scenario.yaml", p.effective_scenario);
-  folder_.WriteWhole("provenance.json", j.dump(2) + "\n");
+  folder_.WriteWhole("provenance.json", JsonText(j, 2) + "\n");
 }
 
 }  // namespace sanet::sim

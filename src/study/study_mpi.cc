@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "core/json_text.h"
+
 namespace sanet::study {
 namespace {
 
@@ -131,7 +133,7 @@ class MpiExecutor : public Executor {
       if (free_[r] > 0) {
         --free_[r];
         remote_[job.name] = job;
-        Send(JobJson(job).dump(), r, kJob);
+        Send(JsonText(JobJson(job)), r, kJob);
         return;
       }
   }
@@ -196,7 +198,7 @@ void SendBack(const JobEnd& end, const fs::path& dir) {
   auto [index, bytes] = Pack(dir / "results");
   const std::string log = ReadWhole(dir / "output.txt");
   const nlohmann::json header = {{"end", EndJson(end)}, {"files", index}, {"log_size", log.size()}};
-  Send(header.dump(), 0, kEnded);
+  Send(JsonText(header), 0, kEnded);
   Send(bytes + log, 0, kFiles);
   fs::remove_all(dir);
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/json_text.h"
 #include "view/page_routes.h"
 
 namespace sanet::view {
@@ -15,7 +16,7 @@ double Rounded(double v) { return std::round(v * 1e4) / 1e4; }  // 0.1 mm: enoug
 }  // namespace
 
 LiveView::LiveView(const sim::RunSpec& spec, LiveSettings settings)
-    : settings_(std::move(settings)), run_json_(RunJson(spec).dump()), server_(std::make_unique<httplib::Server>()) {
+    : settings_(std::move(settings)), run_json_(JsonText(RunJson(spec))), server_(std::make_unique<httplib::Server>()) {
   CheckLibraries(settings_.javascript);
   AddPageRoutes(*server_, settings_.javascript);
   server_->Get("/api/run",
@@ -89,7 +90,7 @@ void LiveView::AfterStep(const sim::WorldSnapshot& snapshot) {
   for (NodeId a = 0; a < neighbours.size(); ++a)
     for (NodeId b : neighbours[a])
       if (a < b) frame["links"].push_back({a, b});
-  std::string text = frame.dump();
+  std::string text = JsonText(frame);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     frame_.swap(text);

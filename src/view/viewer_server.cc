@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/json_text.h"
 #include "view/page_routes.h"
 #include "view/trace_reader.h"
 
@@ -20,7 +21,7 @@ double Number(const httplib::Request& request, const char* key, double fallback)
 }
 
 void Json(httplib::Response& response, const nlohmann::json& body) {
-  response.set_content(body.dump(), "application/json");
+  response.set_content(JsonText(body), "application/json");
 }
 
 void AddRoutes(httplib::Server& server, const TraceReader& trace, const std::string& javascript) {

@@ -195,7 +195,9 @@ void Assembly::SetPoseCatchUp(std::function<void()> catch_up) { pose_feed_->catc
 void Assembly::PosesBehind() { pose_feed_->behind = true; }
 void Assembly::PosesCaughtUp() { pose_feed_->behind = false; }
 
+// A node switched off again stays off: ns-3 aborts when a radio that is off is switched off.
 void Assembly::SwitchOff(NodeId id) {
+  if (nodes_.at(id)->switched_off()) return;
   nodes_.at(id)->SwitchOff();
   hosts_.at(id)->SwitchOff();
   Log(id, "switched off");

@@ -30,6 +30,20 @@ class Inputs(unittest.TestCase):
             with open(os.path.join(out, "summary.json")) as f:
                 self.assertEqual(json.load(f)["status"], "completed")
 
+    def test_a_node_switched_off_twice_stays_off(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "off.yaml")
+            with open(path, "w") as f:  # ns-3 aborted on the second switch-off of a radio
+                f.write("duration: 5\nnetwork: {}\nnodes:\n"
+                        "  - {name: a, model: mote, pose: [0, 0, 0], controller: {name: pinger, params: {to: b}}}\n"
+                        "  - {name: b, model: mote, pose: [5, 0, 0]}\nevents:\n"
+                        "  - {time: 1, node: b, action: switch_off}\n  - {time: 2, node: b, action: switch_off}\n")
+            out = os.path.join(tmp, "out")
+            run = subprocess.run([SANET, "run", path, "-q", "-o", out], capture_output=True, text=True, timeout=60)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            with open(os.path.join(out, "log.csv")) as f:
+                self.assertEqual(f.read().count("switched off"), 1)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -237,7 +237,14 @@ void OdeWorld::WakeMote(int index) {
 std::int64_t OdeWorld::CellOf(double x, double y) {
   const auto cx = static_cast<std::int64_t>(std::floor(x / kMoteCell));
   const auto cy = static_cast<std::int64_t>(std::floor(y / kMoteCell));
-  return (cx << 32) ^ (cy & 0xFFFFFFFF);
+  return CellKey(cx, cy);
+}
+
+// Two cell coordinates in one key (the bits of cx above those of cy; shifted as unsigned, since
+// shifting a negative value is undefined).
+std::int64_t OdeWorld::CellKey(std::int64_t cx, std::int64_t cy) {
+  return static_cast<std::int64_t>((static_cast<std::uint64_t>(cx) << 32) ^
+                                   (static_cast<std::uint64_t>(cy) & 0xFFFFFFFFu));
 }
 
 void OdeWorld::PlaceInGrid(int mote) {
@@ -265,7 +272,7 @@ void OdeWorld::CollideWithMotes(dGeomID geom, int self) {
   const auto y1 = static_cast<std::int64_t>(std::floor((box[3] + m) / kMoteCell));
   for (auto cx = x0; cx <= x1; ++cx)
     for (auto cy = y0; cy <= y1; ++cy) {
-      auto it = mote_grid_.find((cx << 32) ^ (cy & 0xFFFFFFFF));
+      auto it = mote_grid_.find(CellKey(cx, cy));
       if (it == mote_grid_.end()) continue;
       for (int other : it->second)
         if (other != self && !mote_done_[other]) Collide(geom, mote_geoms_[other]);

@@ -111,6 +111,7 @@ class OdeWorld : public PhysicsWorld {
   void Collide(dGeomID a, dGeomID b);
   void WakeMote(int index);
   static std::int64_t CellOf(double x, double y);
+  static std::int64_t CellKey(std::int64_t cx, std::int64_t cy);
   void PlaceInGrid(int mote);
   void CollideWithMotes(dGeomID geom, int self);
 

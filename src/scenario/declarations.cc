@@ -81,6 +81,7 @@ const Fields<sim::RunSpec>& WorldFields() {
         [](const Field& v, RunSpec& s) {
           s.world_size = ReadPoint(v);
           if (s.world_size.x <= 0 || s.world_size.y <= 0) v.Fail("both sides must be greater than 0");
+          if (s.world_size.x > kFarthest || s.world_size.y > kFarthest) v.Fail("both sides must be at most 1e6 m");
         },
         [](const RunSpec& s) {
           return Numbers({s.world_size.x, s.world_size.y});
@@ -89,7 +90,8 @@ const Fields<sim::RunSpec>& WorldFields() {
         "physics", [](RunSpec& s) -> physics::Engine& { return s.physics.engine; },
         {{"3d", physics::Engine::k3d}, {"2d", physics::Engine::k2d}},
         "the physics engine: `3d` (ODE: wheels, casters, contacts) or `2d` (Box2D, seen from above: for swarms)");
-    f.Number("physics_step", Member(&RunSpec::physics_step), "s", 0, 0.1, "length of each physics step", true);
+    // Below 0.1 ms a run of any length takes hours; the engines are not built for it either.
+    f.Number("physics_step", Member(&RunSpec::physics_step), "s", 1e-4, 0.1, "length of each physics step");
     f.Number(
         "gravity", [](RunSpec& s) -> double& { return s.physics.gravity; }, "m/s²", 0, 100,
         "magnitude, pointing along −z");
@@ -446,8 +448,8 @@ const Fields<Scenario>& OutputsFields() {
         "figures", [](Scenario& s) -> bool& { return s.run.figures; },
         "draw `map.svg`, `packets.svg`, `trajectory-3d.svg` (and PNG copies); see [figures](#figures)");
     f.Number(
-        "figure_tick", [](Scenario& s) -> double& { return s.run.figure_tick; }, "s", 0, 1e9,
-        "between time marks on trajectories", true);
+        "figure_tick", [](Scenario& s) -> double& { return s.run.figure_tick; }, "s", 0.1, 1e9,
+        "between time marks on trajectories");
     f.Flag(
         "min_distance", [](Scenario& s) -> bool& { return s.run.min_distance; },
         "record the smallest distance between robots (`min_distance.csv`)");

@@ -11,6 +11,10 @@
 
 namespace sanet::scenario {
 
+// The farthest a node may stand from the origin, and the largest world side (m): beyond, the
+// physics engines lose the precision they need (ODE asserts on some).
+constexpr double kFarthest = 1e6;
+
 const Fields<sim::RunSpec>& WorldFields();
 const Fields<net::NetworkSpec>& NetworkFields();
 const Fields<net::NetworkSpec>& PropagationFields();

@@ -204,6 +204,12 @@ constexpr long long kMaxNodes = 100000;
 constexpr std::size_t kMaxTracedNodes = 200;  // beyond, a trace is written only when asked for  // far beyond, memory
                                               // for the specs alone runs out before the run starts
 
+// Positions beyond 1e6 m lose the precision the engines need (ODE asserts on some).
+void CheckPlace(const Field& where, Vec2 p) {
+  if (std::fabs(p.x) > kFarthest || std::fabs(p.y) > kFarthest)
+    where.Fail("lies more than 1e6 m from the origin, where the physics loses its precision");
+}
+
 void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& list) {
   n.ExpectKeys(GridItemFields().Keys());
   GridSettings g;
@@ -214,6 +220,8 @@ void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& l
     n.Require("grid").Fail("a grid of " + std::to_string(static_cast<long long>(rows) * cols) +
                            " nodes; a scenario holds at most " + std::to_string(kMaxNodes));
   const double heading = g.heading;
+  CheckPlace(n.Require("grid"), origin);
+  CheckPlace(n.Require("grid"), {origin.x + (cols - 1) * spacing.x, origin.y + (rows - 1) * spacing.y});
   const std::string& prefix = g.name;
   const NodeTemplate t = ReadNodeTemplate(n, dir, has_network);
   for (int r = 0; r < rows; ++r)
@@ -238,6 +246,7 @@ void ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
     n.ExpectKeys(NodeFields().Keys());
     const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
     const auto pose = n.Require("pose").Numbers(3);
+    CheckPlace(n.Require("pose"), {pose[0], pose[1]});
     list.Add(n.Require("name"),
              {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
              t.controller_line);

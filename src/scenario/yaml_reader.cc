@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -140,13 +142,39 @@ std::vector<double> Field::Numbers(std::size_t count) const {
   return out;
 }
 
+namespace {
+
+// Aliases let a few lines stand for billions of values (a "billion laughs"): the values are
+// counted as the reader will meet them, aliases expanded, and a file beyond the limit is refused
+// before anything walks it.
+constexpr std::size_t kMaxValues = 1000000;
+
+void CountValues(const YAML::Node& node, std::size_t& count, const std::string& path) {
+  if (++count > kMaxValues)
+    throw ScenarioError(path, node.Mark().line + 1, "",
+                        "the file stands for more than 1,000,000 values once its aliases (*name) are expanded");
+  if (node.IsSequence() || node.IsMap())
+    for (const auto& item : node) {
+      if (node.IsMap())
+        CountValues(item.second, count, path);
+      else
+        CountValues(item, count, path);
+    }
+}
+
+}  // namespace
+
 Field ParseYamlFile(const std::string& path) {
   auto file = std::make_shared<const std::string>(path);
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw ScenarioError(path, 0, "", "is a folder, not a scenario file");
   std::ifstream in(path);
-  if (!in) throw ScenarioError(path, 0, "", "cannot open the file");
+  if (!in) throw ScenarioError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
   try {
     YAML::Node root = YAML::Load(in);
     if (!root.IsMap()) throw ScenarioError(path, 1, "", "a scenario must be a mapping of keys to values");
+    std::size_t count = 0;
+    CountValues(root, count, path);
     return Field(root, "", file);
   } catch (const YAML::Exception& e) {
     throw ScenarioError(path, e.mark.line + 1, "", "YAML syntax error: " + e.msg);

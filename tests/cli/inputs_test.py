@@ -44,6 +44,39 @@ class Inputs(unittest.TestCase):
             with open(os.path.join(out, "log.csv")) as f:
                 self.assertEqual(f.read().count("switched off"), 1)
 
+    def test_values_that_would_hang_or_exhaust_the_run_are_refused(self):
+        scenario = os.path.join(SOURCE, "scenarios", "sensor-network.yaml")
+        for setting, says in [("world.physics_step=1e-9", "must be between 0.0001 and 0.1"),
+                              ("outputs.figure_tick=1e-9", "must be between 0.1 and"),
+                              ("nodes.reporter.pose=[1e300, 0, 0]", "more than 1e6 m from the origin"),
+                              ("nodes.m.grid.spacing=5e5", "more than 1e6 m from the origin"),
+                              ("world.size=[1e300, 1]", "at most 1e6 m")]:
+            with self.subTest(setting):
+                out = subprocess.run([SANET, "validate", scenario, "--set", setting], capture_output=True, text=True,
+                                     timeout=30)
+                self.assertEqual(out.returncode, 2, out.stdout)
+                self.assertIn(says, out.stderr)
+
+    def test_a_folder_a_long_name_and_an_alias_bomb_are_clear_errors(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = subprocess.run([SANET, "validate", tmp], capture_output=True, text=True, timeout=30)
+            self.assertEqual(out.returncode, 2)
+            self.assertIn("is a folder, not a scenario file", out.stderr)
+            out = subprocess.run([SANET, "validate", os.path.join(tmp, "x" * 300 + ".yaml")], capture_output=True,
+                                 text=True, timeout=30)
+            self.assertEqual(out.returncode, 2)
+            self.assertIn("File name too long", out.stderr)
+            bomb = os.path.join(tmp, "bomb.yaml")
+            levels = ["        l0: &l0 [1, 1, 1, 1, 1, 1, 1, 1, 1]"]
+            for i in range(1, 9):
+                levels.append("        l%d: &l%d [%s]" % (i, i, ", ".join(["*l%d" % (i - 1)] * 9)))
+            with open(bomb, "w") as f:  # 9^9 values from 9 lines
+                f.write("duration: 1\nnodes:\n  - name: a\n    model: omni3\n    pose: [0, 0, 0]\n"
+                        "    controller:\n      name: waypoint\n      params:\n" + "\n".join(levels) + "\n")
+            out = subprocess.run([SANET, "validate", bomb], capture_output=True, text=True, timeout=30)
+            self.assertEqual(out.returncode, 2)
+            self.assertIn("more than 1,000,000 values once its aliases", out.stderr)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

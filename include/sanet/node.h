@@ -71,7 +71,8 @@ class Node {
 
   // Actuators. Drive takes a body velocity in the robot frame (vx forward, vy left, omega
   // counter-clockwise); a differential drive ignores vy. Both return false on a node that
-  // cannot move.
+  // cannot move, and refuse a command that holds a NaN or an infinity (false, the node's log
+  // says why, the motors keep the last command they took).
   virtual bool Drive(const Twist2D& velocity) = 0;
   virtual bool SetWheelSpeeds(const std::vector<double>& rad_per_s) = 0;
   // True for a holonomic drive (omni3), which honours vy.

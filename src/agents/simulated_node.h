@@ -52,9 +52,9 @@ class SimulatedNode : public Node {
   std::optional<Pose2D> GroundTruth() override { return model_.GroundTruth(); }
   std::optional<BearingReading> Bearing(NodeId target) override;
 
-  // A switched-off node does not move, whoever asks.
-  bool Drive(const Twist2D& velocity) override { return !off_ && model_.Drive(velocity); }
-  bool SetWheelSpeeds(const std::vector<double>& w) override { return !off_ && model_.SetWheelSpeeds(w); }
+  // A switched-off node does not move, whoever asks; a command that is not a number is refused.
+  bool Drive(const Twist2D& velocity) override;
+  bool SetWheelSpeeds(const std::vector<double>& w) override;
   bool Holonomic() const override { return model_.holonomic(); }
 
   // A switched-off node's radio is off: it sends nothing.

@@ -331,9 +331,14 @@ void SimServer::Send(Client& c, const ProtocolMessage& m) {
     Drop(c, "not reading (more than " + std::to_string(settings_.max_backlog) + " bytes waiting)");
 }
 
+// An ERR line carries no braces, whatever it quotes (a client's own text, a field's name):
+// braces would end its {Message ...} field early for a client's parser.
 void SimServer::Error(Client& c, const std::string& why) {
+  std::string text = why;
+  std::replace_if(
+      text.begin(), text.end(), [](char ch) { return ch == '{' || ch == '}'; }, '\'');
   ProtocolMessage error{"ERR"};
-  error.Add("Message", why);
+  error.Add("Message", text);
   Send(c, error);
 }
 

@@ -106,8 +106,12 @@ NodeModel::NodeModel(physics::PhysicsWorld& world, const ModelSpec& spec, const 
   if (spec.sensors.bearing) bearing_.emplace(*spec.sensors.bearing, RandomStream(seed, stream_prefix + "/bearing"));
 }
 
+bool Finite(const std::vector<double>& values) {
+  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
 bool NodeModel::Drive(const Twist2D& velocity) {
-  if (!vehicle_) return false;
+  if (!vehicle_ || !Finite({velocity.vx, velocity.vy, velocity.omega})) return false;
   Twist2D v = velocity;
   if (!kinematics_->holonomic()) v.vy = 0;
   const double speed = std::hypot(v.vx, v.vy);
@@ -120,11 +124,8 @@ bool NodeModel::Drive(const Twist2D& velocity) {
 }
 
 bool NodeModel::SetWheelSpeeds(const std::vector<double>& rad_per_s) {
-  if (!vehicle_ || rad_per_s.size() != vehicle_->wheel_count()) return false;
-  for (std::size_t i = 0; i < rad_per_s.size(); ++i) {
-    const double w = std::isfinite(rad_per_s[i]) ? rad_per_s[i] : 0.0;
-    vehicle_->set_wheel_speed(i, w);
-  }
+  if (!vehicle_ || rad_per_s.size() != vehicle_->wheel_count() || !Finite(rad_per_s)) return false;
+  for (std::size_t i = 0; i < rad_per_s.size(); ++i) vehicle_->set_wheel_speed(i, rad_per_s[i]);
   return true;
 }
 

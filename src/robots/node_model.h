@@ -48,6 +48,9 @@ RangeSensorSpec DefaultLaser(const ModelSpec& model);
 // The radius of the circle about the pose's point that holds the whole body, seen from above.
 double FootprintRadius(const ModelSpec& model);
 
+// No NaN and no infinity among `values`: a command the motors can take.
+bool Finite(const std::vector<double>& values);
+
 class NodeModel {
  public:
   // `seed` and `stream_prefix` give each sensor its own random stream.

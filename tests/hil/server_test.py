@@ -100,6 +100,10 @@ class Server(unittest.TestCase):
         self.send(bf, "INIT {Name r1}")
         self.send(bf, "FLY {Up 1}")
         self.assertIn("unknown command FLY", self.read_until(bf, "ERR"))
+        self.send(bf, "DRIVE {Left nan} {Right 1}")  # refused; the motors keep their last command
+        refused = self.read_until(bf, "ERR")
+        self.assertIn("needs numbers for both 'Left' and 'Right'", refused)
+        self.assertEqual((refused.count("{"), refused.count("}")), (1, 1), "no braces inside the message")
         bf.write(b"X" * 100000)  # a line without end, far past the limit
         bf.flush()
         self.assertIn("longer than", self.read_until(bf, "ERR"))

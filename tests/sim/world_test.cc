@@ -5,6 +5,7 @@
 #include <ns3/node.h>
 #include <ns3/simulator.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -102,6 +103,33 @@ TEST(World, AFailingControllerEndsTheRunButKeepsItsResults) {
   EXPECT_NE(summary.find("failed: controller of r failed: sensor exploded"), std::string::npos) << summary;
   EXPECT_NE(ReadFile(dir + "/trajectories.csv").find("0.000,r,"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir + "/trajectories.csv.tmp"));
+}
+
+// Drives forward, then asks for a NaN velocity and infinite wheel speeds; records the answers.
+class NotANumber : public Controller {
+ public:
+  std::vector<bool>* answers;
+  explicit NotANumber(std::vector<bool>* a) : answers(a) {}
+  void ControlStep(Node& node) override {
+    if (node.Now() < 0.05) return answers->push_back(node.Drive({0.3, 0, 0}));
+    if (answers->size() == 1) answers->push_back(node.Drive({std::nan(""), 0, 0}));
+    if (answers->size() == 2) answers->push_back(node.SetWheelSpeeds({HUGE_VAL, 1, 1}));
+  }
+};
+
+TEST(World, ANonFiniteCommandIsRefusedLoggedAndTheMotorsKeepTheLastOne) {
+  std::vector<bool> answers;
+  agents::Registry registry;
+  registry.Add({"nan", "", [&answers](const Params&) { return std::make_unique<NotANumber>(&answers); }});
+  const std::string dir = ::testing::TempDir() + "/sanet-nan-drive";
+  std::filesystem::remove_all(dir);
+  sim::World world(Spec(2, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("nan", {}))}), registry);
+  world.Run({dir, "test", false});
+  EXPECT_EQ(answers, (std::vector<bool>{true, false, false}));
+  const std::string log = ReadFile(dir + "/log.csv");
+  EXPECT_NE(log.find("drive refused: a velocity that is not a finite number"), std::string::npos) << log;
+  EXPECT_NE(log.find("wheel speeds refused"), std::string::npos) << log;
+  EXPECT_GT(world.parts().model(0).body().pose().x, 0.3);  // still driving at 0.3 m/s after 2 s
 }
 
 TEST(World, OnlyOneWorldAtATime) {

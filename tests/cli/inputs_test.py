@@ -44,6 +44,15 @@ class Inputs(unittest.TestCase):
             with open(os.path.join(out, "log.csv")) as f:
                 self.assertEqual(f.read().count("switched off"), 1)
 
+    def test_more_nodes_than_can_be_addressed_or_held_are_refused(self):
+        swarm = os.path.join(SOURCE, "scenarios", "swarm-1k.yaml")
+        for rows, says in [(300, "a network has room for 65534 nodes"), (1000, "a scenario holds at most 100000")]:
+            with self.subTest(rows=rows):
+                out = subprocess.run([SANET, "validate", swarm, "--set", "nodes.r.grid.rows=%d" % rows, "--set",
+                                      "nodes.r.grid.cols=%d" % rows], capture_output=True, text=True, timeout=60)
+                self.assertEqual(out.returncode, 2, out.stdout)
+                self.assertIn(says, out.stderr)
+
     def test_values_that_would_hang_or_exhaust_the_run_are_refused(self):
         scenario = os.path.join(SOURCE, "scenarios", "sensor-network.yaml")
         for setting, says in [("world.physics_step=1e-9", "must be between 0.0001 and 0.1"),

@@ -2,7 +2,6 @@
 // so a reader never sees half a file and a crash never leaves a truncated result.
 #pragma once
 
-#include <cstdio>
 #include <string>
 #include <string_view>
 
@@ -16,13 +15,13 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   void Write(std::string_view text);
-  void Commit();  // flush, close and rename into place; throws on failure
+  void Commit();  // rename into place; throws on failure
   const std::string& path() const { return path_; }
 
  private:
   std::string path_;
   std::string temp_path_;
-  std::FILE* file_ = nullptr;
+  bool committed_ = false;
 };
 
 // Writes `content` to `path` whole.

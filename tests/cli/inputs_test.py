@@ -86,6 +86,23 @@ class Inputs(unittest.TestCase):
             self.assertEqual(out.returncode, 2)
             self.assertIn("more than 1,000,000 values once its aliases", out.stderr)
 
+    def test_a_file_per_node_needs_no_descriptor_per_node(self):
+        import resource
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "many.yaml")
+            with open(path, "w") as f:  # 600 motes, each with its packets/NODE.csv
+                f.write("duration: 1\nnetwork: {routing: none, packet_log: true}\nworld: {size: [1000, 1000]}\n"
+                        "nodes:\n  - grid: {name: m, rows: 20, cols: 30, spacing: 30}\n    model: mote\n")
+            out = os.path.join(tmp, "out")
+
+            def few_descriptors():
+                resource.setrlimit(resource.RLIMIT_NOFILE, (128, 128))
+
+            run = subprocess.run([SANET, "run", path, "-q", "-o", out], capture_output=True, text=True, timeout=120,
+                                 preexec_fn=few_descriptors)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertEqual(len(os.listdir(os.path.join(out, "packets"))), 600)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -123,7 +123,16 @@ bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
   return tcp_ >= 0;
 }
 
+// A datagram from a peer is stamped with this agent's clock when it is read; one that comes
+// before the agent has its clock (a peer that started sooner) waits, and is stamped when it has.
 void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
+  if (ClockKnown()) {
+    for (Message& m : early_) {
+      m.time_received = ClockNow();
+      deliver(m);
+    }
+    early_.clear();
+  }
   char buffer[65536];
   while (true) {
     const ssize_t n = ::recv(udp_, buffer, sizeof buffer, 0);
@@ -138,10 +147,14 @@ void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
     m.time_sent = r.F64();
     if (!r.ok() || m.from >= spec_.nodes.size()) continue;
     m.delivery = kind == kUnicast ? Delivery::kUnicast : Delivery::kBroadcast;
-    m.time_received = ClockNow();
     m.hops = 1;
     m.payload.assign(datagram.begin() + 18, datagram.end());
     ++datagrams_.received;
+    if (!ClockKnown()) {
+      early_.push_back(m);
+      continue;
+    }
+    m.time_received = ClockNow();
     deliver(m);
   }
 }
@@ -149,6 +162,7 @@ void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
 // Lines from the server: sensors, status, messages from its nodes, errors.
 void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver) {
   if (auto t = m.Number("Time")) {
+    heard_time_ = true;
     server_time_ = *t;
     server_time_at_ = std::chrono::steady_clock::now();
   }

@@ -98,6 +98,9 @@ class RemoteNode : public Node {
   double server_time_ = 0;
   std::optional<double> clock_origin_;
   std::chrono::steady_clock::time_point server_time_at_;
+  bool heard_time_ = false;     // a server line gave the time
+  std::vector<Message> early_;  // peers' datagrams that came before this agent had a clock
+  bool ClockKnown() const { return clock_origin_ || (heard_time_ && !settings_.shared_clock); }
   std::optional<Pose2D> truth_, odometry_;
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;

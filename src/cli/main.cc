@@ -91,11 +91,8 @@ struct RunArgs {
   ViewArgs view;
 };
 
-// The command line as given, for provenance.json.
-std::vector<std::string> g_command;
-
 sim::Provenance ProvenanceOf(const scenario::Scenario& sc) {
-  return {scenario::EffectiveScenarioYaml(sc), scenario::ScenarioFingerprint(sc), g_command};
+  return {scenario::EffectiveScenarioYaml(sc), scenario::ScenarioFingerprint(sc), CommandLine()};
 }
 
 // Before anything is built: the folder must be free for the run (trace/earlier_run.h).
@@ -327,10 +324,6 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
   return hil::Launch(sc.run, settings);
 }
 
-std::string Count(std::size_t n, const std::string& thing) {
-  return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
-}
-
 int Validate(const std::string& file, const std::vector<std::string>& sets, bool print, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, sets, registry);
   if (print) {
@@ -538,7 +531,7 @@ int Perform(const Command& command, agents::Registry& registry) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  g_command.assign(argv, argv + argc);
+  RememberCommandLine(argc, argv);
   CLI::App app{
       "sanet: integrated simulator for sensor/actuator networks and networked robots.\n"
       "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};

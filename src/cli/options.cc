@@ -47,4 +47,15 @@ void AddSet(CLI::App* cmd, std::vector<std::string>& sets) {
       ->allow_extra_args(false);
 }
 
+std::string Count(std::size_t n, const std::string& thing) {
+  return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+
+namespace {
+std::vector<std::string> g_command;
+}  // namespace
+
+void RememberCommandLine(int argc, char** argv) { g_command.assign(argv, argv + argc); }
+const std::vector<std::string>& CommandLine() { return g_command; }
+
 }  // namespace sanet::cli

@@ -25,6 +25,13 @@ struct Command {
 extern const CLI::Validator kDurationRange;
 extern const CLI::Validator kSeedText;
 
+// "1 run", "3 runs".
+std::string Count(std::size_t n, const std::string& thing);
+
+// The command line as given (main records it), for provenance.json and the study database.
+void RememberCommandLine(int argc, char** argv);
+const std::vector<std::string>& CommandLine();
+
 CLI::Option* AddScenario(CLI::App* cmd, std::string& file);
 void AddSet(CLI::App* cmd, std::vector<std::string>& sets);
 void AddDuration(CLI::App* cmd, std::optional<double>& duration);

@@ -30,13 +30,6 @@ struct SweepArgs {
 
 volatile std::sig_atomic_t g_stop = 0;
 
-std::string CommandLine() {
-  std::string line;
-  std::ifstream in("/proc/self/cmdline");
-  for (std::string arg; std::getline(in, arg, '\0');) line += (line.empty() ? "" : " ") + arg;
-  return line;
-}
-
 std::vector<std::string> ParseTables(const std::string& text) {
   std::vector<std::string> tables;
   std::stringstream parts(text);
@@ -79,11 +72,9 @@ study::SweepSettings Settings(const SweepArgs& a, const scenario::Scenario& base
   s.folder = a.output.empty() ? base.output_folder + "-sweep" : a.output;
   s.tables = ParseTables(a.tables);
   s.retry_failed = a.retry_failed;
-  s.command = CommandLine();
+  for (const std::string& arg : CommandLine()) s.command += (s.command.empty() ? "" : " ") + arg;
   return s;
 }
-
-std::string Count(std::size_t n, const char* thing) { return std::to_string(n) + " " + thing + (n == 1 ? "" : "s"); }
 
 void PrintEnd(const study::SweepTally& t, const std::string& folder, bool has_end_condition) {
   if (t.stale > 0)

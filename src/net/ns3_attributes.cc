@@ -71,13 +71,13 @@ std::pair<ns3::TypeId, int> Find(const std::string& full) {
     throw std::invalid_argument("ns-3 has no type '" + type + "'" + Closest(type, TypeNames()));
   const int own = OwnAttribute(tid, name);
   if (own >= 0) return {tid, own};
-  for (ns3::TypeId parent = tid.GetParent(); parent != tid && parent.GetName() != "ns3::ObjectBase";
-       tid = parent, parent = parent.GetParent())
+  // The root is its own parent.
+  for (ns3::TypeId child = tid, parent = tid.GetParent(); parent != child && parent.GetName() != "ns3::ObjectBase";
+       child = parent, parent = parent.GetParent())
     if (OwnAttribute(parent, name) >= 0)
       throw std::invalid_argument("'" + name + "' is an attribute of " + parent.GetName() + ": name it " +
                                   parent.GetName() + "::" + name);
   std::vector<std::string> names;
-  ns3::TypeId::LookupByNameFailSafe(type, &tid);
   for (std::size_t j = 0; j < tid.GetAttributeN(); ++j) names.push_back(tid.GetAttribute(j).name);
   throw std::invalid_argument(type + " has no attribute '" + name + "'" + Closest(name, names));
 }
@@ -152,19 +152,31 @@ std::string CheckNs3Attribute(const std::string& full, const std::string& value)
 }
 
 Ns3Defaults::Ns3Defaults(const Ns3Attributes& attributes) {
-  for (const auto& [full, value] : attributes) {
-    const std::string why = CheckNs3Attribute(full, value);
-    if (!why.empty()) throw std::invalid_argument("network.ns3: " + why);
-    const auto [tid, index] = Find(full);
-    const ns3::TypeId::AttributeInformation info = tid.GetAttribute(index);
-    earlier_.emplace_back(full, info.initialValue->SerializeToString(info.checker));
-    ns3::Config::SetDefault(full, ns3::StringValue(value));
+  try {
+    Apply(attributes);
+  } catch (...) {
+    Restore();  // those set before the one refused
+    throw;
   }
 }
 
-Ns3Defaults::~Ns3Defaults() {
+void Ns3Defaults::Apply(const Ns3Attributes& attributes) {
+  for (const auto& [full, value] : attributes) {
+    const auto [tid, index] = Find(full);  // throws for a name ns-3 does not know
+    const ns3::TypeId::AttributeInformation info = tid.GetAttribute(index);
+    const std::string earlier = info.initialValue->SerializeToString(info.checker);
+    if (!ns3::Config::SetDefaultFailSafe(full, ns3::StringValue(value)))
+      throw std::invalid_argument("network.ns3: ns-3 does not take '" + value + "' for " + full);
+    earlier_.emplace_back(full, earlier);
+  }
+}
+
+Ns3Defaults::~Ns3Defaults() { Restore(); }
+
+void Ns3Defaults::Restore() {
   for (auto it = earlier_.rbegin(); it != earlier_.rend(); ++it)
     ns3::Config::SetDefaultFailSafe(it->first, ns3::StringValue(it->second));
+  earlier_.clear();
 }
 
 }  // namespace sanet::net

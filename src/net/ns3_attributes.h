@@ -15,8 +15,9 @@ using Ns3Attributes = std::vector<std::pair<std::string, std::string>>;  // name
 // valid names where a name is wrong, and the scenario key to use where sanet sets it itself.
 std::string CheckNs3Attribute(const std::string& name, const std::string& value);
 
-// Makes `attributes` (each checked) the defaults of their types; puts the earlier ones back
-// when it ends, so that the next run in the process starts from ns-3's own.
+// Makes `attributes` the defaults of their types; puts the earlier ones back when it ends, so that
+// the next run in the process starts from ns-3's own. The values must have passed
+// CheckNs3Attribute (the scenario loader checks them): the one ns-3 aborts on is not tried here.
 class Ns3Defaults {
  public:
   explicit Ns3Defaults(const Ns3Attributes& attributes);
@@ -25,6 +26,8 @@ class Ns3Defaults {
   Ns3Defaults& operator=(const Ns3Defaults&) = delete;
 
  private:
+  void Apply(const Ns3Attributes& attributes);
+  void Restore();
   Ns3Attributes earlier_;  // the values they had, to restore in reverse order
 };
 

@@ -1,33 +1,12 @@
 // Outputs::Begin: what made a run, written before anything else into its folder.
-#include <unistd.h>
-
-#include <array>
-#include <ctime>
 #include <nlohmann/json.hpp>
 
+#include "core/host_time.h"
 #include "core/json_text.h"
 #include "core/version.h"
 #include "sim/outputs.h"
 
 namespace sanet::sim {
-namespace {
-
-std::string HostName() {
-  std::array<char, 256> name{};
-  if (::gethostname(name.data(), name.size() - 1) != 0) return "unknown";
-  return name.data();
-}
-
-std::string UtcNow() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  ::gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
-
-}  // namespace
 
 void Outputs::Begin(const Provenance& p) {
   scenario_fingerprint_ = p.scenario_fingerprint;

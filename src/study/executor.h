@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/host_time.h"
+
 namespace sanet::study {
 
 struct RunJob {
@@ -61,9 +63,6 @@ class LocalExecutor : public Executor {
   std::map<pid_t, Child> running_;
 };
 
-// "2026-11-24T10:25:40.123Z"
-std::string UtcNow();
-std::string HostName();
 // The last lines of a text file (a failed run's output, for the database).
 std::string Tail(const std::string& path, std::size_t bytes = 800);
 

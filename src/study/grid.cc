@@ -52,6 +52,13 @@ std::string Hash8(const RunPoint& run) {
 
 }  // namespace
 
+std::optional<double> NumberIn(const std::string& text) {
+  char* end = nullptr;
+  const double d = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0') return std::nullopt;
+  return d;
+}
+
 std::string ShortName(const std::string& path) {
   const std::string key = path.substr(path.rfind('.') + 1);
   const auto colons = key.rfind("::");

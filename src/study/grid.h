@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -23,6 +24,9 @@ struct Parameter {
 
 // "path=v1,v2,v3"; commas inside [] or {} belong to a value ("size=[1,2],[3,4]").
 Parameter ParseVary(const std::string& text);
+// The number a value's whole text is ("25", "0.5", "1e3"), or nothing ("20ms", "[1, 2]", "").
+std::optional<double> NumberIn(const std::string& text);
+
 // The last key of a path; of an ns-3 attribute name, the attribute ("NodeTraversalTime").
 std::string ShortName(const std::string& path);
 // "1-10", "1,4,7", "1-3,8".

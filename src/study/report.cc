@@ -12,6 +12,7 @@
 #include "core/atomic_file.h"
 #include "core/closest_names.h"
 #include "study/grid.h"
+#include "trace/csv_sink.h"
 
 namespace sanet::study {
 namespace {
@@ -35,15 +36,10 @@ std::vector<std::vector<std::string>> Query(sqlite3* db, const std::string& sql)
   return rows;
 }
 
-bool IsNumber(const std::string& s) {
-  char* end = nullptr;
-  std::strtod(s.c_str(), &end);
-  return !s.empty() && *end == '\0';
-}
-
 // The values of `by` in order: numerically when every one is a number, else as first seen.
 std::vector<std::string> Ordered(std::vector<std::string> values) {
-  const bool numbers = std::all_of(values.begin(), values.end(), IsNumber);
+  const bool numbers =
+      std::all_of(values.begin(), values.end(), [](const std::string& v) { return NumberIn(v).has_value(); });
   std::vector<std::string> unique;
   for (const std::string& v : values)
     if (std::find(unique.begin(), unique.end(), v) == unique.end()) unique.push_back(v);
@@ -57,13 +53,6 @@ std::string Label(const StudyRun& run, const std::vector<std::string>& parameter
   for (const std::string& p : parameters)
     if (p != by) label += (label.empty() ? "" : ", ") + p + "=" + run.values.at(p);
   return label;
-}
-
-std::string CsvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 std::string Format(double v) {
@@ -199,12 +188,12 @@ void WriteCsv(const StudyReader& study, const std::vector<std::string>& metrics,
   std::vector<std::map<long, double>> columns;
   for (const std::string& m : metrics) columns.push_back(study.Values(m));
   std::string csv = "run,seed,status";
-  for (const std::string& p : study.parameters()) csv += "," + CsvField(p);
-  for (const std::string& m : metrics) csv += "," + CsvField(m);
+  for (const std::string& p : study.parameters()) csv += "," + trace::CsvField(p);
+  for (const std::string& m : metrics) csv += "," + trace::CsvField(m);
   csv += "\n";
   for (const StudyRun& r : study.runs()) {
-    csv += CsvField(r.name) + "," + std::to_string(r.seed) + "," + r.status;
-    for (const std::string& p : study.parameters()) csv += "," + CsvField(r.values.at(p));
+    csv += trace::CsvField(r.name) + "," + std::to_string(r.seed) + "," + r.status;
+    for (const std::string& p : study.parameters()) csv += "," + trace::CsvField(r.values.at(p));
     for (const auto& column : columns) csv += "," + (column.count(r.id) ? Format(column.at(r.id)) : "");
     csv += "\n";
   }

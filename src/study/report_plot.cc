@@ -20,11 +20,8 @@ constexpr int kPalette[][3] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44},
 
 bool NumericAxis(const std::vector<Series>& series) {
   for (const Series& s : series)
-    for (const Point& p : s.points) {
-      char* end = nullptr;
-      std::strtod(p.x.c_str(), &end);
-      if (p.x.empty() || *end != '\0') return false;
-    }
+    for (const Point& p : s.points)
+      if (!NumberIn(p.x)) return false;
   return true;
 }
 

@@ -40,10 +40,9 @@ class Statement {
   }
   // A value as its type reads: a number where the whole text is one.
   Statement& BindValue(int i, const std::string& text) {
-    char* end = nullptr;
-    const double d = std::strtod(text.c_str(), &end);
     if (text.empty()) return BindNull(i);
-    return end && *end == '\0' ? Bind(i, d) : Bind(i, text);
+    const std::optional<double> number = NumberIn(text);
+    return number ? Bind(i, *number) : Bind(i, text);
   }
   bool Step() {
     const int rc = sqlite3_step(stmt_);
@@ -189,10 +188,8 @@ void StudyDb::Plan(const std::vector<RunPoint>& runs) {
     const long id = static_cast<long>(sqlite3_last_insert_rowid(db_));
     for (const auto& [path, text] : r.values) {
       value.Bind(1, id).Bind(2, path).Bind(3, text);
-      char* end = nullptr;
-      const double d = std::strtod(text.c_str(), &end);
-      if (*end == '\0')
-        value.Bind(4, d);
+      if (const std::optional<double> number = NumberIn(text))
+        value.Bind(4, *number);
       else
         value.BindNull(4);
       value.Run();

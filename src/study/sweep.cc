@@ -1,8 +1,6 @@
 #include "study/sweep.h"
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +8,7 @@
 #include <thread>
 
 #include "scenario/effective_scenario.h"
+#include "scenario/fields.h"
 #include "scenario/scenario_loader.h"
 #include "study/study_db.h"
 
@@ -79,16 +78,6 @@ bool RecordFromFolder(StudyDb& db, const PreparedRun& run, const std::string& fo
   return true;
 }
 
-// The shortest decimal that reads back as `v` ("300", not "300.000000").
-std::string Shortest(double v) {
-  char text[32];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, v);
-    if (std::strtod(text, nullptr) == v) break;
-  }
-  return text;
-}
-
 RunJob JobFor(const SweepSettings& s, const PreparedRun& run) {
   RunJob job;
   job.name = run.point.name;
@@ -98,7 +87,7 @@ RunJob JobFor(const SweepSettings& s, const PreparedRun& run) {
   job.args = {"run", fs::absolute(s.scenario).string()};
   for (const std::string& set : AllSets(s, run.point)) job.args.insert(job.args.end(), {"--set", set});
   job.args.insert(job.args.end(), {"--seed", std::to_string(run.point.seed)});
-  if (s.duration) job.args.insert(job.args.end(), {"--duration", Shortest(*s.duration)});
+  if (s.duration) job.args.insert(job.args.end(), {"--duration", scenario::ShortNumber(*s.duration)});
   if (s.threads) job.args.insert(job.args.end(), {"--threads", *s.threads});
   job.args.insert(job.args.end(), {"-o", job.folder, "-q", "--no-progress"});
   return job;
@@ -112,8 +101,8 @@ std::deque<const PreparedRun*> ToDo(StudyDb& db, const SweepSettings& s, const s
     const std::string status = db.Status(run.point.name);
     const std::string folder = (fs::path(s.folder) / "runs" / run.point.name).string();
     const bool finished = status == "completed" || status == "failed";
-    if (finished && db.ScenarioFingerprintOf(run.point.name) != run.scenario_fingerprint &&
-        !db.ScenarioFingerprintOf(run.point.name).empty()) {
+    const std::string ran = finished ? db.ScenarioFingerprintOf(run.point.name) : "";
+    if (!ran.empty() && ran != run.scenario_fingerprint) {
       ++tally.stale;  // the scenario (its file, or --duration) changed since: its results are not this one's
       queue.push_back(&run);
     } else if (status == "completed" || (status == "failed" && !s.retry_failed)) {
@@ -189,8 +178,9 @@ SweepTally RunSweep(const SweepSettings& s, const std::vector<PreparedRun>& runs
         continue;
       }
       const std::string folder = (fs::path(s.folder) / "runs" / end.name).string();
-      const RunOutcome outcome = OutcomeOf(end, ReadSummary(folder));
-      db.Finished(end.name, outcome, ReadSummary(folder).value_or(nlohmann::json::object()), folder);
+      const std::optional<nlohmann::json> summary = ReadSummary(folder);
+      const RunOutcome outcome = OutcomeOf(end, summary);
+      db.Finished(end.name, outcome, summary.value_or(nlohmann::json::object()), folder);
       ++(outcome.status == "completed" ? tally.completed : tally.failed);
       ++tally.ran_now;
       events.ended(end.name, outcome.status, end.wall_s);

@@ -153,6 +153,7 @@ struct ServeArgs {
   std::string file, bind = "127.0.0.1", output, port_file, wss_port_file;
   int port = 3000;
   std::optional<int> wss_port;
+  std::optional<int> max_clients;
   bool quiet = false, force = false;
   std::optional<double> duration;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
@@ -219,6 +220,12 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   hil::ServerSettings settings;
   settings.bind = bind;
   settings.port = static_cast<std::uint16_t>(port);
+  settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
+  try {
+    hil::RaiseDescriptorLimit(settings.max_clients);
+  } catch (const std::runtime_error& e) {
+    throw CLI::ValidationError("--max-clients", e.what());
+  }
   std::unique_ptr<hil::SimServer> listening;
   try {
     listening = std::make_unique<hil::SimServer>(world, settings);
@@ -394,6 +401,10 @@ Command AddServe(CLI::App& app) {
       "--port-file", a->port_file,
       "Once listening, write the port number to this file (for programs that start the server with --port 0)");
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
+  cmd->add_option("--max-clients", a->max_clients,
+                  "Connections served at once (default: twice the scenario's robots, at least 64); one more is "
+                  "answered ERR and closed")
+      ->check(CLI::Range(1, 10000));
   cmd->add_flag("-q,--quiet", a->quiet, "Print only the listening line and errors");
   AddForce(cmd, a->force);
   AddDuration(cmd, a->duration);

@@ -137,23 +137,40 @@ std::string FormatLine(const ProtocolMessage& m) {
   return line + "\r\n";
 }
 
+void LineReader::Append(std::string_view bytes) {
+  if (start_ > 0 && start_ * 2 >= buffer_.size()) {  // most of it taken: drop that part once
+    buffer_.erase(0, start_);
+    start_ = 0;
+  }
+  buffer_.append(bytes);
+}
+
 std::optional<std::string> LineReader::Next(bool* too_long) {
   *too_long = false;
-  const std::size_t end = buffer_.find_first_of("\r\n");
+  if (partner_ && start_ < buffer_.size()) {
+    if (buffer_[start_] == partner_) ++start_;
+    partner_ = 0;
+  }
+  const std::size_t end = buffer_.find_first_of("\r\n", start_ + scanned_);
   if (end == std::string::npos) {
-    if (buffer_.size() > max_line_) *too_long = true;
+    scanned_ = Pending();
+    if (scanned_ > max_line_) *too_long = true;
     return std::nullopt;
   }
-  if (end > max_line_) {
+  if (end - start_ > max_line_) {
     *too_long = true;
     return std::nullopt;
   }
-  std::string line = buffer_.substr(0, end);
-  std::size_t skip = end + 1;
+  std::string line = buffer_.substr(start_, end - start_);
+  std::size_t next = end + 1;
   // CR LF and LF CR count as one line end.
-  if (skip < buffer_.size() && (buffer_[skip] == '\r' || buffer_[skip] == '\n') && buffer_[skip] != buffer_[end])
-    ++skip;
-  buffer_.erase(0, skip);
+  if (next < buffer_.size() && (buffer_[next] == '\r' || buffer_[next] == '\n') && buffer_[next] != buffer_[end])
+    ++next;
+  else if (next == buffer_.size())
+    partner_ = buffer_[end] == '\r' ? '\n' : '\r';
+  start_ = next;
+  scanned_ = 0;
+  if (start_ == buffer_.size()) buffer_.clear(), start_ = 0;
   return line;
 }
 

@@ -37,17 +37,24 @@ std::string FormatLine(const ProtocolMessage& message);
 std::string FormatNumber(double value);   // 4 decimals: metres, radians, seconds
 std::string FormatPrecise(double value);  // 6 decimals
 
-// Splits a byte stream into lines; refuses lines longer than a limit.
+// Splits a byte stream into lines; refuses lines longer than a limit. Linear in the bytes it is
+// given: lines are taken from a moving start and the buffer is compacted only when most of it
+// has been taken, and a partial line is never scanned twice.
 class LineReader {
  public:
   explicit LineReader(std::size_t max_line) : max_line_(max_line) {}
-  void Append(std::string_view bytes) { buffer_.append(bytes); }
+  void Append(std::string_view bytes);
   // The next complete line, if any. Sets `too_long` when the pending line exceeds the limit.
   std::optional<std::string> Next(bool* too_long);
+  // Bytes appended and not yet taken as lines.
+  std::size_t Pending() const { return buffer_.size() - start_; }
 
  private:
   std::size_t max_line_;
   std::string buffer_;
+  std::size_t start_ = 0;    // where the next line begins
+  std::size_t scanned_ = 0;  // bytes from start_ known to hold no line end
+  char partner_ = 0;         // the other half of a CR LF (LF CR) whose first half ended the data
 };
 
 }  // namespace sanet::hil

@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -19,6 +21,7 @@
 #include "core/statistics.h"
 #include "hil/message_lines.h"
 #include "hil/sockets.h"
+#include "hil/tcp_window.h"
 #include "sim/spawning.h"
 
 namespace sanet::hil {
@@ -30,17 +33,52 @@ double WallNow() { return std::chrono::duration<double>(std::chrono::steady_cloc
 // (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
 std::vector<double> ToUsarsim(const Pose2D& p) { return {p.x, -p.y, -p.theta}; }
 
+// A client whose advertised window is this close to the widest it has advertised has read what
+// reached it, give or take the last lines (a laser scan line is about 1.5 KB).
+constexpr std::uint32_t kWindowSlack = 4 * 1024;
+constexpr int kSendBuffer = 16 * 1024;  // bytes the server's kernel holds for one client
+std::string ShortSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
+constexpr double kClosingLinger = 1.0;  // s a connection the server ends has to read its ERR and hang up
+
 }  // namespace
+
+void RaiseDescriptorLimit(std::size_t max_clients) {
+  const rlim_t needed = 2 * static_cast<rlim_t>(max_clients) + 64;  // clients, refused ones, results, ns-3
+  rlimit limit{};
+  ::getrlimit(RLIMIT_NOFILE, &limit);
+  if (limit.rlim_cur >= needed) return;
+  if (limit.rlim_max != RLIM_INFINITY && limit.rlim_max < needed)
+    throw std::runtime_error("a cap of " + std::to_string(max_clients) + " connections needs " +
+                             std::to_string(needed) + " file descriptors; this process may open at most " +
+                             std::to_string(limit.rlim_max) + " (ulimit -Hn)");
+  limit.rlim_cur = needed;
+  ::setrlimit(RLIMIT_NOFILE, &limit);
+}
+
+
+std::size_t DefaultMaxClients(const sim::RunSpec& spec) {
+  const auto robots = std::count_if(spec.nodes.begin(), spec.nodes.end(),
+                                    [](const sim::NodeSpec& n) { return n.model.kind != robots::ModelKind::kMote; });
+  return std::max<std::size_t>(64, 2 * static_cast<std::size_t>(robots));
+}
 
 SimServer::SimServer(sim::World& world, ServerSettings settings)
     : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
   world_.parts().SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
-  listener_ = ListenTcp(settings_.bind, settings_.port, 16, &port_);
+  if (settings_.max_clients == 0) throw std::runtime_error("the connection cap must be at least 1");
+  RaiseDescriptorLimit(settings_.max_clients);
+  listener_ = ListenTcp(settings_.bind, settings_.port, static_cast<int>(settings_.max_clients), &port_);
 }
 
 SimServer::~SimServer() {
   world_.parts().SetRemoteInbox(nullptr);
   for (auto& c : clients_) ::close(c->fd);
+  for (const Closing& r : closing_) ::close(r.fd);
   if (listener_ >= 0) ::close(listener_);
 }
 
@@ -72,24 +110,30 @@ void SimServer::Poll() {
   // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
   if (wall_start_ < 0) wall_start_ = WallNow() - now;
   Accept();
-  for (std::size_t i = 0; i < clients_.size(); ++i) {
-    Client& c = *clients_[i];
-    if (c.fd >= 0) Read(c);
+  TakeLinesInTurn();
+  for (auto& client : clients_) {
+    Client& c = *client;
     if (c.fd >= 0 && c.robot) SendSensors(c, now);
     if (c.fd >= 0) Flush(c);
   }
   clients_.erase(std::remove_if(clients_.begin(), clients_.end(), [](const auto& c) { return c->fd < 0; }),
                  clients_.end());
+  CloseLingering();
 }
 
 void SimServer::Accept() {
-  while (true) {
+  // Bounded, so that a storm of connections cannot hold the poll; the rest wait in the backlog.
+  for (std::size_t accepted = 0; accepted < settings_.max_clients; ++accepted) {
     const int fd = AcceptClient(listener_);
     if (fd < 0) return;
-    const int buffer = 64 * 1024;  // a client that stops reading is noticed within seconds
-    ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &buffer, sizeof buffer);
-    clients_.push_back(
-        std::make_unique<Client>(Client{fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow()}));
+    if (clients_.size() >= settings_.max_clients) {
+      Refuse(fd);
+      continue;
+    }
+    // A small kernel buffer: what a client leaves unread piles up where the server can see it.
+    ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
+    clients_.push_back(std::make_unique<Client>(
+        Client{fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow(), 0, 0, false}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
@@ -99,32 +143,93 @@ void SimServer::Accept() {
   }
 }
 
-void SimServer::Read(Client& c) {
-  char buffer[8192];
+void SimServer::Refuse(int fd) {
+  const std::string n = std::to_string(settings_.max_clients);
+  const std::string line = FormatLine(ProtocolMessage{"ERR"}.Add(
+      "Message", "connection refused: the server already has " + n + " connections (its cap, --max-clients " + n + ")"));
+  ::send(fd, line.data(), line.size(), MSG_NOSIGNAL);
+  Linger(fd);
+}
+
+// The server stops writing and waits (briefly) for the client to hang up before it closes: closing
+// on bytes the client has sent and the server has not read would reset the connection, and the
+// client could lose the ERR that says why.
+void SimServer::Linger(int fd) {
+  ::shutdown(fd, SHUT_WR);
+  if (closing_.size() >= settings_.max_clients) {
+    ::close(fd);
+    return;
+  }
+  closing_.push_back({fd, WallNow() + kClosingLinger});
+}
+
+// What the client still sends is read and thrown away, one turn's bytes per poll at most: one that
+// keeps sending is closed at its deadline all the same.
+void SimServer::CloseLingering() {
+  const double now = WallNow();
+  read_buffer_.resize(settings_.bytes_per_turn);
+  for (Closing& r : closing_) {
+    const ssize_t n = ::recv(r.fd, read_buffer_.data(), read_buffer_.size(), 0);
+    const bool hung_up = n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK);
+    if (hung_up || now > r.close_by) ::close(r.fd), r.fd = -1;
+  }
+  closing_.erase(std::remove_if(closing_.begin(), closing_.end(), [](const Closing& r) { return r.fd < 0; }),
+                 closing_.end());
+}
+
+// Clients take turns, each at most `lines_per_turn` lines and `bytes_per_turn` bytes a turn, for
+// as long as the poll's budget lasts; the next poll begins where this one stopped. A client that
+// floods the server waits for its own next turn, and its bytes wait in its socket (TCP slows it
+// down), so every other client's lines are taken within a few polls however many flood.
+void SimServer::TakeLinesInTurn() {
+  const double deadline = WallNow() + settings_.poll_budget;
+  std::size_t idle = 0;  // clients in a row that had nothing more
+  for (std::size_t k = 0; !clients_.empty() && idle < clients_.size(); ++k) {
+    if (k > 0 && WallNow() > deadline) break;
+    next_turn_ %= clients_.size();
+    Client& c = *clients_[next_turn_++];
+    const bool more = c.fd >= 0 && TakeLines(c);
+    idle = more ? 0 : idle + 1;
+  }
+}
+
+bool SimServer::TakeLines(Client& c) {
   std::string gone;  // why the connection ended, once the lines it brought are handled
-  while (true) {
-    const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
+  bool full_read = false;
+  if (c.reader.Pending() <= settings_.max_line) {  // never more than a line and a turn's bytes held
+    std::vector<char>& buffer = read_buffer_;
+    buffer.resize(settings_.bytes_per_turn);
+    const ssize_t n = ::recv(c.fd, buffer.data(), buffer.size(), 0);
     if (n == 0) gone = "disconnected";
     if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) gone = std::strerror(errno);
-    if (n <= 0) break;
-    c.reader.Append(std::string_view(buffer, n));
+    if (n > 0) c.reader.Append(std::string_view(buffer.data(), static_cast<std::size_t>(n)));
+    full_read = n == static_cast<ssize_t>(buffer.size());
   }
   bool too_long = false;
-  while (auto line = c.reader.Next(&too_long)) {
+  std::size_t taken = 0;
+  for (; taken < settings_.lines_per_turn; ++taken) {
+    const auto line = c.reader.Next(&too_long);
+    if (!line) break;
     if (line->find_first_not_of(" \t") == std::string::npos) continue;
     std::string error;
     if (auto m = ParseLine(*line, &error))
       Handle(c, *m);
     else
       Error(c, "malformed line: " + error);
-    if (c.fd < 0) return;
+    if (c.fd < 0) return false;
   }
   if (too_long) {
     Error(c, "line longer than " + std::to_string(settings_.max_line) + " bytes: closing");
     Flush(c);
     Drop(c, "line too long");
+    return false;
   }
-  if (!gone.empty()) Drop(c, gone);
+  if (!gone.empty()) {
+    if (c.reader.Pending() > 0 && taken == settings_.lines_per_turn) return true;  // its last lines first
+    Drop(c, gone);
+    return false;
+  }
+  return full_read || taken == settings_.lines_per_turn;
 }
 
 void SimServer::Handle(Client& c, const ProtocolMessage& m) {
@@ -343,24 +448,38 @@ void SimServer::Error(Client& c, const std::string& why) {
 }
 
 void SimServer::Flush(Client& c) {
-  const double now = WallNow();
   while (c.fd >= 0 && !c.out.empty()) {
     const ssize_t n = ::send(c.fd, c.out.data(), c.out.size(), MSG_NOSIGNAL);
     if (n < 0) {
       if (errno != EAGAIN && errno != EWOULDBLOCK) Drop(c, std::strerror(errno));
       break;
     }
-    c.out.erase(0, n);
-    c.last_progress = now;
+    c.out.erase(0, static_cast<std::size_t>(n));
   }
-  if (c.out.empty()) c.last_progress = now;
-  if (c.fd >= 0 && now - c.last_progress > settings_.stall_timeout)
-    Drop(c, "not reading for " + std::to_string(settings_.stall_timeout) + " s");
+  if (c.fd >= 0) RecordProgress(c, WallNow());
+}
+
+// A client keeps up when nothing waits for it here and its receive window is (nearly) as wide as
+// it has ever been or has just widened: it has read what reached it, or some of it. One that
+// has not kept up for `stall_timeout` is dropped. TCP gives no earlier sign: until its window narrows, a client that stopped reading
+// looks like one that reads (the window narrows as soon as long lines such as laser scans
+// arrive unread, only after tens of kilobytes of short ones).
+void SimServer::RecordProgress(Client& c, double now) {
+  const auto window = PeerReceiveWindow(c.fd);
+  bool reads = true;  // without the window's word, a client that takes every byte reads
+  if (window) {
+    reads = *window + kWindowSlack >= c.widest_window || *window > c.last_window;
+    c.widest_window = std::max(c.widest_window, *window);
+    c.last_window = *window;
+  }
+  if (c.out.empty() && reads) c.last_caught_up = now;
+  if (now - c.last_caught_up > settings_.stall_timeout)
+    Drop(c, "not reading for " + ShortSeconds(settings_.stall_timeout) + " s");
 }
 
 void SimServer::Drop(Client& c, const std::string& why) {
   if (c.fd < 0) return;
-  ::close(c.fd);
+  Linger(c.fd);
   c.fd = -1;
   if (c.robot) {
     NodeOf(c).Drive({});  // a robot without its client stops

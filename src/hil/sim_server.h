@@ -6,7 +6,8 @@
 // controller's transitions and metrics. Everything a client does goes through its robot's
 // simulated node, as an in-process controller's calls do, so the run's rules (switch-off) hold.
 // It is polled on the simulation clock and watches the world as an observer; no client can
-// block it (non-blocking sockets, bounded buffers, line length limit).
+// block it: sockets are non-blocking, every client's lines are taken in turns of bounded size
+// within a time budget per poll, buffers are bounded, and connections are capped.
 #pragma once
 
 #include <cstdint>
@@ -31,7 +32,18 @@ struct ServerSettings {
   std::size_t max_line = 4096;        // bytes; a longer line closes the connection
   std::size_t max_backlog = 1 << 20;  // bytes waiting for a client that does not read: then it is dropped
   double stall_timeout = 2.0;         // s a client may leave its lines unread before it is dropped
+  std::size_t max_clients = 64;       // connections at once; more are told ERR and closed
+  std::size_t lines_per_turn = 32;    // lines taken from one client before the next has its turn
+  std::size_t bytes_per_turn = 16384; // bytes read from one client per turn
+  double poll_budget = 0.0015;        // s of line handling per poll; the rest waits for the next poll
 };
+
+// The default connection cap: twice the robots, and never fewer than 64.
+std::size_t DefaultMaxClients(const sim::RunSpec& spec);
+
+// Each connection (and each refused one while it lingers) holds a file descriptor: raises the
+// soft limit to what `max_clients` needs; throws std::runtime_error when the hard limit is lower.
+void RaiseDescriptorLimit(std::size_t max_clients);
 
 class SimServer : public sim::StepObserver {
  public:
@@ -55,12 +67,22 @@ class SimServer : public sim::StepObserver {
     std::string out;
     std::optional<NodeId> robot;
     double next_sensors = 0, next_status = 0;
-    double last_progress = 0;  // wall clock (s) when it last took bytes, or had none waiting
+    double last_caught_up = 0;  // wall clock (s) when it last had nothing of ours left unread
+    std::uint32_t widest_window = 0;  // the largest receive window it has advertised (bytes)
+    std::uint32_t last_window = 0;    // the window at the last poll
     bool told_off = false;     // told once that its robot is switched off
+  };
+  struct Closing {  // a connection the server ends: told why, then closed once it hangs up
+    int fd;
+    double close_by;  // wall clock (s)
   };
   void Poll();
   void Accept();
-  void Read(Client& c);
+  void Refuse(int fd);
+  void Linger(int fd);  void CloseLingering();
+  void TakeLinesInTurn();
+  bool TakeLines(Client& c);  // one turn; true if it has more
+  void RecordProgress(Client& c, double now);
   void Handle(Client& c, const ProtocolMessage& m);
   void Init(Client& c, const ProtocolMessage& m);
   void Claim(Client& c, NodeId robot, const std::string* usarsim_class);
@@ -83,6 +105,9 @@ class SimServer : public sim::StepObserver {
   int listener_ = -1;
   std::uint16_t port_ = 0;
   std::vector<std::unique_ptr<Client>> clients_;
+  std::size_t next_turn_ = 0;  // the client whose turn comes first in the next poll
+  std::vector<Closing> closing_;
+  std::vector<char> read_buffer_;  // one turn's bytes
   std::vector<bool> claimed_;
   std::vector<double> lags_;  // s, per physics step
   nlohmann::ordered_json agent_stats_ = nlohmann::ordered_json::object();

@@ -106,6 +106,29 @@ TEST(Protocol, LineReaderSplitsEveryLineEndAndLimitsLength) {
   EXPECT_TRUE(too_long);
 }
 
+// Lines arrive in pieces of any size, in any number: each comes out whole, once, in order, and
+// the reader holds no more than what is not yet taken.
+TEST(Protocol, LineReaderJoinsPiecesAndKeepsOnlyWhatIsPending) {
+  LineReader r(64);
+  std::string stream;
+  for (int i = 0; i < 5000; ++i) stream += "DRIVE {Left " + std::to_string(i) + "} {Right 0}\r\n";
+  bool too_long = false;
+  int next = 0;
+  for (std::size_t at = 0; at < stream.size(); at += 7) {  // 7-byte pieces split lines and CR LF
+    r.Append(std::string_view(stream).substr(at, 7));
+    while (auto line = r.Next(&too_long))
+      ASSERT_EQ(*line, "DRIVE {Left " + std::to_string(next++) + "} {Right 0}");
+    ASSERT_FALSE(too_long);
+    ASSERT_LT(r.Pending(), 64u);
+  }
+  EXPECT_EQ(next, 5000);
+  r.Append("half a li");
+  EXPECT_FALSE(r.Next(&too_long));
+  r.Append("ne\n");
+  EXPECT_EQ(r.Next(&too_long).value_or(""), "half a line");
+  EXPECT_EQ(r.Pending(), 0u);
+}
+
 // A message handed to a client as a MSG line reads back as the same message on the agent's side.
 TEST(MessageLines, MsgLineRoundTripsThroughTheProtocol) {
   Message m;

@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""The simulation server against clients that flood it, crowd it or stop reading (docs/protocol.md,
+Safety): the others keep their replies and sensor lines on time, the server keeps its deadlines,
+its memory and its signals, every connection is greeted or refused, and a client that stops
+reading loses its robot within the documented 2 s (plus the time its lines take to show)."""
+import csv
+import json
+import os
+import resource
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import unittest
+
+SANET = sys.argv.pop(1)
+sys.path.insert(0, os.path.dirname(__file__))
+from protocol_client import Client, field, serve  # noqa: E402
+
+SCENARIO = """duration: 30
+nodes:
+  - {name: r1, model: diffdrive, pose: [0, 0, 0]}
+  - {name: r2, model: diffdrive, pose: [0, 3, 0]}
+  - {name: r3, model: diffdrive, pose: [0, -3, 0]}
+"""
+
+
+class Flooder(threading.Thread):
+    """Sends short lines as fast as the server takes them (and reads its ERR replies, so that it
+    is not dropped for not reading) until stopped."""
+
+    def __init__(self, port, line):
+        super().__init__(daemon=True)
+        self.sock = socket.create_connection(("127.0.0.1", port))
+        self.blob = line * 20000
+        self.sent = 0
+        self.running = True
+        threading.Thread(target=self.drain, daemon=True).start()
+
+    def drain(self):
+        try:
+            while self.sock.recv(1 << 16):
+                pass
+        except OSError:
+            pass
+
+    def run(self):
+        try:
+            while self.running:
+                self.sent += self.sock.send(self.blob)
+        except OSError:
+            pass
+
+
+def peak_memory_mb(pid):
+    for line in open(f"/proc/{pid}/status"):
+        if line.startswith("VmHWM:"):
+            return int(line.split()[1]) / 1024
+    raise AssertionError("no VmHWM")
+
+
+class HostileClients(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        if self.server.poll() is None:
+            self.server.kill()
+        self.server.wait()
+        self.tmp.cleanup()
+
+    def test_floods_delay_no_other_client_and_no_deadline(self):
+        self.server, port, out = serve(SANET, SCENARIO, self.tmp.name)
+        good = Client(port)
+        good.send("INIT {Name r1}")
+        good.sensor("GroundTruth")
+        flooders = [Flooder(port, line) for line in (b"GETGEO\r\n", b"x\r\n", b"GETSTARTPOSES\r\n", b"{\r\n")]
+        for f in flooders:
+            f.start()
+        replies, sensor_times = [], []
+        end = time.time() + 8
+        while time.time() < end:
+            asked = time.time()
+            good.send("GETGEO")
+            for line in good.lines():
+                if line.startswith("SEN") and field(line, "Type") == "GroundTruth":
+                    sensor_times.append(time.time())
+                if line.startswith("GEO"):
+                    replies.append(time.time() - asked)
+                    break
+            time.sleep(0.02)
+        flooded = sum(f.sent for f in flooders)
+        memory = peak_memory_mb(self.server.pid)
+        self.server.send_signal(signal.SIGTERM)  # stops while the flood goes on
+        self.server.wait(timeout=10)
+        for f in flooders:
+            f.running = False
+        replies.sort()
+        gaps = sorted(b - a for a, b in zip(sensor_times, sensor_times[1:]))
+        print(f"flooded {flooded / 1e6:.0f} MB; GETGEO replies p50 {replies[len(replies) // 2] * 1e3:.1f} ms, "
+              f"p99 {replies[int(0.99 * (len(replies) - 1))] * 1e3:.1f} ms; widest sensor gap {gaps[-1]:.3f} s; "
+              f"peak memory {memory:.0f} MB")
+        self.assertGreater(flooded, 10e6, "the flooders sent much more than the server could answer")
+        self.assertLess(replies[int(0.99 * (len(replies) - 1))], 0.1, "documented: replies within 0.1 s")
+        self.assertLess(gaps[-1], 0.35, "GroundTruth comes every 0.1 s; none is held back long")
+        self.assertLess(memory, 300, "the flood's bytes wait in the flooders' sockets, not in the server")
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        self.assertEqual(summary["status"], "interrupted")
+        lag = summary["real_time_lag"]
+        print("lag", lag)
+        self.assertLess(lag["p99_s"], lag["deadline_s"], "the step loop keeps its deadlines")
+
+    def test_200_clients_at_once_are_each_greeted_or_refused(self):
+        self.server, port, out = serve(SANET, SCENARIO, self.tmp.name, "--max-clients", "100")
+        sockets = [socket.socket() for _ in range(200)]
+        for s in sockets:
+            s.setblocking(False)
+            s.connect_ex(("127.0.0.1", port))
+        greeted, refused = [], []
+        for s in sockets:
+            s.setblocking(True)
+            s.settimeout(10)
+            first = s.makefile("rb").readline().decode()
+            (greeted if first.startswith("NFO") else refused).append((s, first))
+        self.assertEqual(len(greeted), 100)
+        self.assertEqual(len(refused), 100)
+        for s, line in refused:
+            self.assertTrue(line.startswith("ERR"), line)
+            self.assertIn("--max-clients 100", line)
+            self.assertEqual(s.recv(100), b"", "a refused connection is closed")
+        for s, _ in greeted + refused:
+            s.close()
+        time.sleep(0.2)
+        again = Client(port)  # the slots are free again
+        again.send("INIT {Name r2}")
+        self.assertIsNotNone(again.sensor("GroundTruth"))
+
+    def test_a_cap_beyond_the_descriptor_limit_is_refused_up_front(self):
+        path = os.path.join(self.tmp.name, "s.yaml")
+        open(path, "w").write(SCENARIO)
+        limit = lambda: resource.setrlimit(resource.RLIMIT_NOFILE, (256, 256))  # noqa: E731
+        self.server = subprocess.Popen([SANET, "serve", path, "--port", "0", "--max-clients", "1000"],
+                                       preexec_fn=limit, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        _, err = self.server.communicate(timeout=30)
+        self.assertEqual(self.server.returncode, 2, err)
+        self.assertIn("--max-clients", err)
+        self.assertIn("at most 256 (ulimit -Hn)", err)
+
+    def test_a_client_that_stops_reading_loses_its_robot_and_a_slow_one_does_not(self):
+        self.server, port, out = serve(SANET, SCENARIO, self.tmp.name, "--duration", "9")
+        stopping, slow = Client(port), Client(port)
+        stopping.send("INIT {Name r2}")
+        slow.send("INIT {Name r3}")
+        stopped_at = float(field(stopping.sensor("GroundTruth"), "Time"))  # and reads no more
+        slow.sock.settimeout(0.05)
+        while self.server.poll() is None:
+            time.sleep(0.5)  # reads twice a second, everything that came
+            try:
+                while slow.sock.recv(1 << 16):
+                    pass
+            except (socket.timeout, BlockingIOError, OSError):
+                pass
+        log = list(csv.DictReader(open(os.path.join(out, "log.csv"))))
+        gone = [row for row in log if "gone" in row["text"]]
+        self.assertEqual([row["node"] for row in gone if "not reading" in row["text"]], ["r2"], gone)
+        dropped_after = float(gone[0]["time"]) - stopped_at
+        print(f"r2 dropped {dropped_after:.2f} s after its client stopped reading")
+        self.assertLess(dropped_after, 3.5, "2 s once its window shows it, which a laser scan does within 1 s")
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

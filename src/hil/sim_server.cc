@@ -60,7 +60,6 @@ void RaiseDescriptorLimit(std::size_t max_clients) {
   ::setrlimit(RLIMIT_NOFILE, &limit);
 }
 
-
 std::size_t DefaultMaxClients(const sim::RunSpec& spec) {
   const auto robots = std::count_if(spec.nodes.begin(), spec.nodes.end(),
                                     [](const sim::NodeSpec& n) { return n.model.kind != robots::ModelKind::kMote; });
@@ -145,8 +144,9 @@ void SimServer::Accept() {
 
 void SimServer::Refuse(int fd) {
   const std::string n = std::to_string(settings_.max_clients);
-  const std::string line = FormatLine(ProtocolMessage{"ERR"}.Add(
-      "Message", "connection refused: the server already has " + n + " connections (its cap, --max-clients " + n + ")"));
+  const std::string line =
+      FormatLine(ProtocolMessage{"ERR"}.Add("Message", "connection refused: the server already has " + n +
+                                                           " connections (its cap, --max-clients " + n + ")"));
   ::send(fd, line.data(), line.size(), MSG_NOSIGNAL);
   Linger(fd);
 }
@@ -461,9 +461,9 @@ void SimServer::Flush(Client& c) {
 
 // A client keeps up when nothing waits for it here and its receive window is (nearly) as wide as
 // it has ever been or has just widened: it has read what reached it, or some of it. One that
-// has not kept up for `stall_timeout` is dropped. TCP gives no earlier sign: until its window narrows, a client that stopped reading
-// looks like one that reads (the window narrows as soon as long lines such as laser scans
-// arrive unread, only after tens of kilobytes of short ones).
+// has not kept up for `stall_timeout` is dropped. TCP gives no earlier sign: until its window narrows, a client that
+// stopped reading looks like one that reads (the window narrows as soon as long lines such as laser scans arrive
+// unread, only after tens of kilobytes of short ones).
 void SimServer::RecordProgress(Client& c, double now) {
   const auto window = PeerReceiveWindow(c.fd);
   bool reads = true;  // without the window's word, a client that takes every byte reads

@@ -24,18 +24,18 @@
 namespace sanet::hil {
 
 struct ServerSettings {
-  std::string bind = "127.0.0.1";     // loopback unless told otherwise
-  std::uint16_t port = 3000;          // 0: any free port
-  double sensor_period = 0.1;         // s between SEN lines per sensor
-  double status_period = 0.2;         // s between STA lines
-  double poll_period = 0.005;         // s between socket polls
-  std::size_t max_line = 4096;        // bytes; a longer line closes the connection
-  std::size_t max_backlog = 1 << 20;  // bytes waiting for a client that does not read: then it is dropped
-  double stall_timeout = 2.0;         // s a client may leave its lines unread before it is dropped
-  std::size_t max_clients = 64;       // connections at once; more are told ERR and closed
-  std::size_t lines_per_turn = 32;    // lines taken from one client before the next has its turn
-  std::size_t bytes_per_turn = 16384; // bytes read from one client per turn
-  double poll_budget = 0.0015;        // s of line handling per poll; the rest waits for the next poll
+  std::string bind = "127.0.0.1";      // loopback unless told otherwise
+  std::uint16_t port = 3000;           // 0: any free port
+  double sensor_period = 0.1;          // s between SEN lines per sensor
+  double status_period = 0.2;          // s between STA lines
+  double poll_period = 0.005;          // s between socket polls
+  std::size_t max_line = 4096;         // bytes; a longer line closes the connection
+  std::size_t max_backlog = 1 << 20;   // bytes waiting for a client that does not read: then it is dropped
+  double stall_timeout = 2.0;          // s a client may leave its lines unread before it is dropped
+  std::size_t max_clients = 64;        // connections at once; more are told ERR and closed
+  std::size_t lines_per_turn = 32;     // lines taken from one client before the next has its turn
+  std::size_t bytes_per_turn = 16384;  // bytes read from one client per turn
+  double poll_budget = 0.0015;         // s of line handling per poll; the rest waits for the next poll
 };
 
 // The default connection cap: twice the robots, and never fewer than 64.
@@ -67,10 +67,10 @@ class SimServer : public sim::StepObserver {
     std::string out;
     std::optional<NodeId> robot;
     double next_sensors = 0, next_status = 0;
-    double last_caught_up = 0;  // wall clock (s) when it last had nothing of ours left unread
+    double last_caught_up = 0;        // wall clock (s) when it last had nothing of ours left unread
     std::uint32_t widest_window = 0;  // the largest receive window it has advertised (bytes)
     std::uint32_t last_window = 0;    // the window at the last poll
-    bool told_off = false;     // told once that its robot is switched off
+    bool told_off = false;            // told once that its robot is switched off
   };
   struct Closing {  // a connection the server ends: told why, then closed once it hangs up
     int fd;
@@ -79,7 +79,8 @@ class SimServer : public sim::StepObserver {
   void Poll();
   void Accept();
   void Refuse(int fd);
-  void Linger(int fd);  void CloseLingering();
+  void Linger(int fd);
+  void CloseLingering();
   void TakeLinesInTurn();
   bool TakeLines(Client& c);  // one turn; true if it has more
   void RecordProgress(Client& c, double now);

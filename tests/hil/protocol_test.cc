@@ -116,8 +116,7 @@ TEST(Protocol, LineReaderJoinsPiecesAndKeepsOnlyWhatIsPending) {
   int next = 0;
   for (std::size_t at = 0; at < stream.size(); at += 7) {  // 7-byte pieces split lines and CR LF
     r.Append(std::string_view(stream).substr(at, 7));
-    while (auto line = r.Next(&too_long))
-      ASSERT_EQ(*line, "DRIVE {Left " + std::to_string(next++) + "} {Right 0}");
+    while (auto line = r.Next(&too_long)) ASSERT_EQ(*line, "DRIVE {Left " + std::to_string(next++) + "} {Right 0}");
     ASSERT_FALSE(too_long);
     ASSERT_LT(r.Pending(), 64u);
   }

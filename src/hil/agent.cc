@@ -42,6 +42,7 @@ ProtocolMessage Stats(const StepGrid& grid, const RemoteNode& node, std::uint64_
   m.Add("LatenessP99", FormatPrecise(late.p99)).Add("LatenessMax", FormatPrecise(late.max));
   const RemoteNode::Datagrams& d = node.datagrams();
   m.Add("DatagramsSent", std::to_string(d.sent)).Add("DatagramsReceived", std::to_string(d.received));
+  m.Add("DatagramsRejected", std::to_string(d.rejected));
   m.Add("SendErrors", std::to_string(d.send_errors));
   return m;
 }

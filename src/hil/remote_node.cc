@@ -23,8 +23,8 @@
 namespace sanet::hil {
 namespace {
 
-constexpr std::uint8_t kUdpMagic = 0x53;  // 'S'
-constexpr std::uint8_t kUnicast = 1, kBroadcast = 2;
+constexpr std::uint8_t kUnicast = AgentDatagram::kUnicast, kBroadcast = AgentDatagram::kBroadcast;
+constexpr std::size_t kMostHeldEarly = 1024;  // datagrams kept until the agent has its clock and key
 
 // USARSim frame (y right, yaw clockwise) back to sanet's.
 Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
@@ -36,7 +36,8 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
       id_(robot),
       settings_(std::move(settings)),
       random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
-      server_time_at_(std::chrono::steady_clock::now()) {
+      server_time_at_(std::chrono::steady_clock::now()),
+      replays_(spec.nodes.size()) {
   const sockaddr_in server = Ipv4Endpoint(settings_.server_host, settings_.server_port);
   for (int attempt = 0; attempt < 100; ++attempt) {  // the server may still be starting
     tcp_ = ::socket(AF_INET, SOCK_STREAM, 0);
@@ -123,40 +124,53 @@ bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
   return tcp_ >= 0;
 }
 
-// A datagram from a peer is stamped with this agent's clock when it is read; one that comes
-// before the agent has its clock (a peer that started sooner) waits, and is stamped when it has.
+// A datagram from a peer is checked and stamped with this agent's clock when it is read; one
+// that comes before the agent has its clock and the run's key (a peer that started sooner) waits.
 void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
-  if (ClockKnown()) {
-    for (Message& m : early_) {
-      m.time_received = ClockNow();
-      deliver(m);
-    }
+  const bool ready = ClockKnown() && key_;
+  if (ready) {
+    for (const Bytes& d : early_) TakeDatagram(d, deliver);
     early_.clear();
   }
-  char buffer[65536];
+  std::uint8_t buffer[65536];
   while (true) {
     const ssize_t n = ::recv(udp_, buffer, sizeof buffer, 0);
     if (n <= 0) break;
-    const Bytes datagram(buffer, buffer + n);
-    Reader r(datagram);
-    if (r.U8() != kUdpMagic) continue;
-    Message m;
-    m.from = r.U32();
-    m.to = r.U32();
-    const std::uint8_t kind = r.U8();
-    m.time_sent = r.F64();
-    if (!r.ok() || m.from >= spec_.nodes.size()) continue;
-    m.delivery = kind == kUnicast ? Delivery::kUnicast : Delivery::kBroadcast;
-    m.hops = 1;
-    m.payload.assign(datagram.begin() + 18, datagram.end());
-    ++datagrams_.received;
-    if (!ClockKnown()) {
-      early_.push_back(m);
-      continue;
-    }
-    m.time_received = ClockNow();
-    deliver(m);
+    Bytes datagram(buffer, buffer + n);
+    if (ready)
+      TakeDatagram(datagram, deliver);
+    else if (early_.size() < kMostHeldEarly)
+      early_.push_back(std::move(datagram));
+    else
+      Reject("more than " + std::to_string(kMostHeldEarly) + " datagrams before the agent had its clock");
   }
+}
+
+void RemoteNode::TakeDatagram(const Bytes& datagram, const std::function<void(const Message&)>& deliver) {
+  std::string why;
+  const auto d = OpenDatagram(datagram.data(), datagram.size(), *key_, &why);
+  if (!d) return Reject(why);
+  if (d->from >= spec_.nodes.size() || d->from == id_) return Reject("from no other node of the scenario");
+  if (d->kind == kUnicast ? d->to != id_ : d->to != AgentDatagram::kToAll) return Reject("not for this robot");
+  if (!replays_[d->from].Take(d->sequence))
+    return Reject("sequence number " + std::to_string(d->sequence) + " of " + NameOf(d->from) + " seen before");
+  Message m;
+  m.from = d->from;
+  m.to = id_;
+  m.delivery = d->kind == kUnicast ? Delivery::kUnicast : Delivery::kBroadcast;
+  m.time_sent = d->time_sent;
+  m.time_received = ClockNow();
+  m.hops = 1;
+  m.payload = d->payload;
+  ++datagrams_.received;
+  deliver(m);
+}
+
+// The first rejection is said on stderr; all are counted (STATS, agents.csv).
+void RemoteNode::Reject(const std::string& why) {
+  if (datagrams_.rejected++ == 0)
+    std::fprintf(stderr, "sanet agent %s: rejected a datagram: %s (further ones are only counted)\n", Name().c_str(),
+                 why.c_str());
 }
 
 // Lines from the server: sensors, status, messages from its nodes, errors.
@@ -185,6 +199,8 @@ void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const M
       throw std::runtime_error("server sent a bad MSG line: " + error);
   }
   if (m.type == "SEN") TakeSensor(m);
+  if (m.type == "KEY")
+    if (const std::string* hex = m.Get("Datagrams")) key_ = DatagramKey::FromHex(*hex);
 }
 
 void RemoteNode::TakeSensor(const ProtocolMessage& m) {
@@ -252,9 +268,18 @@ bool RemoteNode::SetWheelSpeeds(const std::vector<double>& w) {
 }
 
 void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
-  Bytes datagram =
-      Writer().U8(kUdpMagic).U32(id_).U32(kind == kUnicast ? to : kBroadcast).U8(kind).F64(ClockNow()).bytes();
-  datagram.insert(datagram.end(), payload.begin(), payload.end());
+  if (!key_) {  // a server that gave no key: the peers would reject what this agent sends
+    ++datagrams_.send_errors;
+    return;
+  }
+  AgentDatagram d;
+  d.from = id_;
+  d.to = kind == kUnicast ? to : AgentDatagram::kToAll;
+  d.kind = static_cast<AgentDatagram::Kind>(kind);
+  d.sequence = next_sequence_++;
+  d.time_sent = ClockNow();
+  d.payload = payload;
+  const Bytes datagram = SealDatagram(d, *key_);
   const sockaddr_in peer = Ipv4Endpoint(HostOf(to), PortOf(to));
   const ssize_t n =
       ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/random_stream.h"
+#include "hil/agent_datagram.h"
 #include "hil/protocol.h"
 #include "net/empty_view.h"
 #include "sanet/node.h"
@@ -45,9 +46,10 @@ class RemoteNode : public Node {
   double ClockNow() const;
   std::uint64_t messages_sent() const { return messages_sent_; }
   // The robot's own packets between agents (UDP datagrams): sent, refused by the sender's
-  // stack (sendto failed), and received whole from a known node.
+  // stack (sendto failed) or not sent for want of the run's key, received whole from a known
+  // node with a valid MAC, and rejected (malformed, forged, replayed, or not for this robot).
   struct Datagrams {
-    std::uint64_t sent = 0, send_errors = 0, received = 0;
+    std::uint64_t sent = 0, send_errors = 0, received = 0, rejected = 0;
   };
   const Datagrams& datagrams() const { return datagrams_; }
   // A robot whose controller runs as an agent: reached over UDP, not through the server.
@@ -83,6 +85,8 @@ class RemoteNode : public Node {
   void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
   void TakeSensor(const ProtocolMessage& m);
   void ReadUdp(const std::function<void(const Message&)>& deliver);
+  void TakeDatagram(const Bytes& datagram, const std::function<void(const Message&)>& deliver);
+  void Reject(const std::string& why);
   void SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload);
   void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
   std::string HostOf(NodeId node) const;
@@ -98,9 +102,12 @@ class RemoteNode : public Node {
   double server_time_ = 0;
   std::optional<double> clock_origin_;
   std::chrono::steady_clock::time_point server_time_at_;
-  bool heard_time_ = false;     // a server line gave the time
-  std::vector<Message> early_;  // peers' datagrams that came before this agent had a clock
+  bool heard_time_ = false;   // a server line gave the time
+  std::vector<Bytes> early_;  // peers' datagrams that came before this agent had its clock and key
   bool ClockKnown() const { return clock_origin_ || (heard_time_ && !settings_.shared_clock); }
+  std::optional<DatagramKey> key_;     // the run's, from the server's KEY line
+  std::uint64_t next_sequence_ = 1;    // of this agent's datagrams
+  std::vector<ReplayWindow> replays_;  // per sender
   std::optional<Pose2D> truth_, odometry_;
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;

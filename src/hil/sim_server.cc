@@ -19,6 +19,7 @@
 
 #include "core/json_text.h"
 #include "core/statistics.h"
+#include "hil/agent_datagram.h"
 #include "hil/message_lines.h"
 #include "hil/sockets.h"
 #include "hil/tcp_window.h"
@@ -313,6 +314,8 @@ void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
   claimed_[id] = true;
   c.robot = id;
   c.next_sensors = c.next_status = world_.Now();
+  // sanet extension: the run's key for the datagrams agents send each other (hil/agent_datagram.h).
+  Send(c, ProtocolMessage{"KEY"}.Add("Datagrams", datagram_key_.Hex()));
   world_.parts().Log(id, "client " + c.peer + " drives this robot");
 }
 
@@ -541,6 +544,7 @@ constexpr StatsKey kStatsKeys[] = {{"Steps", "steps", true},
                                    {"Received", "messages_received", true},
                                    {"DatagramsSent", "datagrams_sent", true},
                                    {"DatagramsReceived", "datagrams_received", true},
+                                   {"DatagramsRejected", "datagrams_rejected", true},
                                    {"SendErrors", "send_errors", true},
                                    {"LatenessP50", "lateness_p50_s", false},
                                    {"LatenessP99", "lateness_p99_s", false},

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/agent_datagram.h"
 #include "hil/protocol.h"
 #include "sim/world.h"
 #include "trace/results_folder.h"
@@ -110,7 +111,8 @@ class SimServer : public sim::StepObserver {
   std::vector<Closing> closing_;
   std::vector<char> read_buffer_;  // one turn's bytes
   std::vector<bool> claimed_;
-  std::vector<double> lags_;  // s, per physics step
+  const DatagramKey datagram_key_ = DatagramKey::Random();  // new for every run
+  std::vector<double> lags_;                                // s, per physics step
   nlohmann::ordered_json agent_stats_ = nlohmann::ordered_json::object();
   double wall_start_ = -1;
 };

@@ -3,12 +3,34 @@
 shortened to 25 s: the robots keep their distances and the followers hear the leader."""
 import json
 import os
+import socket
+import struct
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 
 sanet, source = sys.argv[1], sys.argv[2]
+
+
+def forge(port, count):
+    """Another process on the machine speaks for the leader to f1 (node 1, port base + 1): a pose
+    with the highest sequence number, in the datagram's layout but without the run's key, and in
+    the layout of sanet before datagrams were authenticated."""
+    time.sleep(4)
+    s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    payload = struct.pack("<Bdddd", 1, 9.0, 9.0, 0.0, 1.0)
+    for i in range(count):
+        header = struct.pack("<BBIIBQd", 0x53, 2, 0, 1, 1, 2**64 - 1 - i, 1.0)
+        s.sendto(header + payload + os.urandom(32), ("127.0.0.1", port))
+        s.sendto(struct.pack("<BIIBd", 0x53, 0, 1, 1, 1.0) + struct.pack("<I", 2**32 - 1) + payload, ("127.0.0.1", port))
+        time.sleep(0.02)
+
+
 with tempfile.TemporaryDirectory() as tmp:
+    forger = threading.Thread(target=forge, args=(47501, 150), daemon=True)
+    forger.start()
     out = subprocess.run([sanet, "launch", os.path.join(source, "scenarios", "formation-hil.yaml"), "--duration", "25",
                           "-o", tmp, "--udp-base", "47500"], capture_output=True, text=True, timeout=120)
     print(out.stdout, out.stderr)
@@ -49,6 +71,10 @@ with tempfile.TemporaryDirectory() as tmp:
     assert int(table["leader"]["datagrams_sent"]) == leader_stats["messages_sent"], table["leader"]
     assert int(table["f1"]["datagrams_sent"]) == agents["f1"]["messages_sent"] > 240, table["f1"]
     assert int(table["f3"]["datagrams_received"]) > 240 and table["f3"]["send_errors"] == "0", table["f3"]
+    # The forged datagrams were all rejected (and the real leader still heard: pose_missed above).
+    assert int(table["f1"]["datagrams_rejected"]) == 300, table["f1"]
+    assert table["f2"]["datagrams_rejected"] == table["f3"]["datagrams_rejected"] == "0"
+    assert "f1: rejected a datagram" in out.stderr, out.stderr
     assert "agents.csv" in summary["files"]
     print("lag:", summary["real_time_lag"])
 

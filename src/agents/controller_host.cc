@@ -1,12 +1,21 @@
 #include "agents/controller_host.h"
 
+#include "core/exception_text.h"
+
 namespace sanet::agents {
 
 std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, Registry& registry) {
   if (!spec.library.empty()) registry.LoadLibrary(spec.library);
   const ControllerInfo* info = registry.Find(spec.name);
   if (!info) throw RegistryError("unknown controller '" + spec.name + "'");
-  std::unique_ptr<Controller> controller = info->create(spec.params);
+  std::unique_ptr<Controller> controller;
+  try {
+    controller = info->create(spec.params);
+  } catch (const RegistryError&) {
+    throw;
+  } catch (...) {
+    throw RegistryError("controller '" + spec.name + "' could not be made: " + CurrentExceptionText());
+  }
   spec.params.CheckAllUsed();
   return controller;
 }
@@ -21,15 +30,17 @@ ControllerHost::ControllerHost(Node& node, std::unique_ptr<Controller> controlle
       clock_(clock),
       hooks_(std::move(hooks)) {}
 
-// Runs one call into the controller; what it throws ends its run, reported once.
+// Runs one call into the controller; whatever it throws (a std::exception or anything else) ends
+// its run, reported once.
 template <typename Call>
 void ControllerHost::Guard(const char* where, Call call) {
   if (!running()) return;
   try {
     call();
-  } catch (const std::exception& e) {
+  } catch (...) {
     failed_ = true;
-    if (hooks_.failed) hooks_.failed("controller of " + node_.Name() + " failed" + where + ": " + e.what());
+    if (hooks_.failed)
+      hooks_.failed("controller of " + node_.Name() + " failed" + where + ": " + CurrentExceptionText());
   }
 }
 

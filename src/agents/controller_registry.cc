@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include "core/exception_text.h"
 #include "sanet/plugin.h"
 
 namespace sanet::agents {
@@ -44,9 +45,9 @@ std::vector<std::string> Registry::LoadLibrary(const std::string& path) {
   const auto before = controllers_;
   try {
     registrar(*this);
-  } catch (const std::exception& e) {
+  } catch (...) {
     controllers_ = before;
-    throw RegistryError(path + ": " + e.what());
+    throw RegistryError(path + ": " + CurrentExceptionText());
   }
   std::vector<std::string> added;
   for (const auto& [name, info] : controllers_)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "support/test_world.h"
@@ -103,6 +104,38 @@ TEST(World, AFailingControllerEndsTheRunButKeepsItsResults) {
   EXPECT_NE(summary.find("failed: controller of r failed: sensor exploded"), std::string::npos) << summary;
   EXPECT_NE(ReadFile(dir + "/trajectories.csv").find("0.000,r,"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir + "/trajectories.csv.tmp"));
+}
+
+struct PluginOwnError {};  // not a std::exception
+
+// A plugin may throw anything: an int, a string, its own type. The run ends all the same, its
+// results kept and the cause named.
+TEST(World, AControllerThrowingAnythingEndsTheRunNamingWhatItThrew) {
+  const std::vector<std::pair<std::function<void()>, std::string>> throws = {
+      {[] { throw 42; }, "an exception of type int"},
+      {[] { throw std::string("out of cheese"); }, "out of cheese"},
+      {[] { throw PluginOwnError{}; }, "an exception of type sanet::(anonymous namespace)::PluginOwnError"}};
+  for (const auto& [thrower, named] : throws) {
+    struct Throws : Controller {
+      std::function<void()> what;
+      void ControlStep(Node& node) override {
+        if (node.Now() > 0.2) what();
+      }
+    };
+    agents::Registry registry;
+    registry.Add({"throws", "", [&, thrower = thrower](const Params&) {
+                    auto c = std::make_unique<Throws>();
+                    c->what = thrower;
+                    return c;
+                  }});
+    const std::string dir = ::testing::TempDir() + "/sanet-throws-anything";
+    std::filesystem::remove_all(dir);
+    sim::World world(Spec(10, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("throws", {}))}), registry);
+    EXPECT_THROW(world.Run({dir, "test", false}), sim::WorldError);
+    const std::string summary = ReadFile(dir + "/summary.json");
+    EXPECT_NE(summary.find("failed: controller of r failed: " + named), std::string::npos) << summary;
+    EXPECT_NE(ReadFile(dir + "/trajectories.csv").find("0.000,r,"), std::string::npos);
+  }
 }
 
 // Drives forward, then asks for a NaN velocity and infinite wheel speeds; records the answers.

@@ -88,6 +88,7 @@ struct RunArgs {
   bool quiet = false;
   bool no_progress = false;
   bool force = false;
+  bool isolate_controllers = false;
   ViewArgs view;
 };
 
@@ -118,6 +119,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   if (args.seed) sc.run.seed = *args.seed;
   if (args.duration) sc.run.duration = *args.duration;
   if (args.threads) sc.run.threads = std::stoi(*args.threads);
+  sc.run.isolate_controllers = args.isolate_controllers;
   sim::RunOptions options;
   options.output_dir = args.output.empty() ? sc.output_folder : args.output;
   options.scenario_file = args.file;
@@ -368,6 +370,9 @@ Command AddRun(CLI::App& app) {
                   "Results folder (default: the scenario's outputs.folder, or results/<name>)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
   cmd->add_flag("--no-progress", a->no_progress, "Do not show progress (shown only on a terminal)");
+  cmd->add_flag("--isolate-controllers", a->isolate_controllers,
+                "Run each controller in a child process of its own: a plugin that crashes ends the run with its "
+                "results kept, not the process (same results; every node call crosses a socket)");
   AddForce(cmd, a->force);
   AddViewOptions(cmd, a->view);
   return {cmd, [a](agents::Registry& r) { return Run(*a, r); }};

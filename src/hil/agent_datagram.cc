@@ -59,6 +59,10 @@ Bytes SealDatagram(const AgentDatagram& d, const DatagramKey& key) {
   Bytes bytes =
       Writer().U8(kMagic).U8(kVersion).U32(d.from).U32(d.to).U8(d.kind).U64(d.sequence).F64(d.time_sent).bytes();
   bytes.insert(bytes.end(), d.payload.begin(), d.payload.end());
+  return WithMac(std::move(bytes), key);
+}
+
+Bytes WithMac(Bytes bytes, const DatagramKey& key) {
   const auto mac = Mac(key, bytes.data(), bytes.size());
   bytes.insert(bytes.end(), mac.begin(), mac.end());
   return bytes;

@@ -40,6 +40,8 @@ struct AgentDatagram {
 constexpr std::size_t kDatagramHeader = 27, kDatagramMac = 32;
 
 Bytes SealDatagram(const AgentDatagram& datagram, const DatagramKey& key);
+// `bytes` followed by their MAC under `key` (SealDatagram's last step).
+Bytes WithMac(Bytes bytes, const DatagramKey& key);
 // The datagram if it is well formed and its MAC holds; otherwise nothing, and why.
 std::optional<AgentDatagram> OpenDatagram(const std::uint8_t* data, std::size_t size, const DatagramKey& key,
                                           std::string* why);

@@ -156,7 +156,7 @@ void RemoteNode::TakeDatagram(const Bytes& datagram, const std::function<void(co
     return Reject("sequence number " + std::to_string(d->sequence) + " of " + NameOf(d->from) + " seen before");
   Message m;
   m.from = d->from;
-  m.to = id_;
+  m.to = d->kind == kUnicast ? id_ : sanet::kBroadcast;
   m.delivery = d->kind == kUnicast ? Delivery::kUnicast : Delivery::kBroadcast;
   m.time_sent = d->time_sent;
   m.time_received = ClockNow();

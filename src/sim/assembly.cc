@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "agents/isolated_controller.h"
 #include "net/body_mobility_model.h"
 #include "net/local_transport.h"
 #include "net/wireless_network.h"
@@ -103,7 +104,12 @@ bool Assembly::remote(NodeId id) const {
 void Assembly::BuildNodes(agents::Registry& registry) {
   for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
     const NodeSpec& n = spec_.nodes[id];
-    AddNode(id, n.controller && !remote(id) ? agents::MakeController(*n.controller, registry) : nullptr);
+    if (!n.controller || remote(id)) {
+      AddNode(id, nullptr);
+      continue;
+    }
+    AddNode(id, spec_.isolate_controllers ? agents::MakeIsolatedController(*n.controller, registry)
+                                          : agents::MakeController(*n.controller, registry));
   }
 }
 

@@ -106,6 +106,9 @@ struct RunSpec {
   // Robots are driven by clients of the simulation server: their scenario controllers do not run
   // here (motes' controllers still do).
   bool robots_remote = false;
+  // Each controller runs in a child process of its own (agents/isolated_controller.h): a crash
+  // in a plugin ends the run with its results instead of the process. Results are the same.
+  bool isolate_controllers = false;
   LoopSpec loop;
   std::optional<SpawnSpec> spawn;  // clients may add robots with INIT (server only)
   // The run ends early when, over all nodes, `end_count` of these have happened: a controller logs

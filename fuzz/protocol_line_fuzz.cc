@@ -1,0 +1,39 @@
+// Any bytes as a client's stream to the simulation server: split into lines, parsed, and read as
+// the messages the server and the agents take apart (numbers, MSG, RECV). None may crash, hang
+// or trip a sanitizer; a line that parses must format and parse again to the same message.
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "hil/message_lines.h"
+#include "hil/protocol.h"
+
+using sanet::hil::ProtocolMessage;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  sanet::hil::LineReader reader(4096);
+  // Fed in two pieces, as TCP may split it anywhere.
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  const std::size_t half = size / 2;
+  bool too_long = false;
+  for (const std::string_view piece : {bytes.substr(0, half), bytes.substr(half)}) {
+    reader.Append(piece);
+    while (auto line = reader.Next(&too_long)) {
+      std::string error;
+      const auto m = sanet::hil::ParseLine(*line, &error);
+      if (!m) continue;
+      for (const auto& [key, value] : m->fields) {
+        m->Number(key);
+        m->Numbers(key);
+      }
+      sanet::hil::ParseMsgLine(*m, sanet::NodeId{0}, 1, &error);
+      sanet::hil::ParseRecvLine(*m, sanet::NodeId{0}, 1, &error);
+      const std::string again = sanet::hil::FormatLine(*m);
+      const auto reparsed = sanet::hil::ParseLine(again.substr(0, again.size() - 2), &error);
+      if (!reparsed || reparsed->type != m->type || reparsed->fields != m->fields) std::abort();
+    }
+    if (too_long) break;
+  }
+  return 0;
+}

@@ -1,0 +1,50 @@
+// A controller library for the tests of --isolate-controllers: `crash_after` drives forward and
+// then ends its process the way a broken plugin would (`how`: segfault, abort or exit) after
+// `after` seconds; `wander` drives with the node's random numbers, logs, reports a metric and
+// reads its sensors, so that a run with and without isolation can be compared byte for byte.
+#include <csignal>
+#include <cstdlib>
+#include <string>
+
+#include "sanet/plugin.h"
+
+namespace {
+
+class CrashAfter : public sanet::Controller {
+ public:
+  explicit CrashAfter(const sanet::Params& p) : after_(p.Number("after", 1.0)), how_(p.Text("how", "segfault")) {}
+  void ControlStep(sanet::Node& node) override {
+    node.Drive({0.2, 0, 0});
+    if (node.Now() < after_) return;
+    if (how_ == "abort") std::abort();
+    if (how_ == "exit") std::exit(3);
+    std::raise(SIGSEGV);
+  }
+
+ private:
+  double after_;
+  std::string how_;
+};
+
+class Wander : public sanet::Controller {
+ public:
+  void Start(sanet::Node& node) override { node.Log("wandering from " + node.Name()); }
+  void ControlStep(sanet::Node& node) override {
+    node.Drive({0.3 * node.Random(), 0, node.Random() - 0.5});
+    if (const auto pose = node.GroundTruth()) node.Metric("x", pose->x);
+    if (const auto scan = node.Laser()) node.Metric("nearest", scan->ranges.empty() ? 0 : scan->ranges[0]);
+    node.Broadcast({static_cast<std::uint8_t>(node.Id())});
+  }
+  void OnMessage(sanet::Node& node, const sanet::Message& m) override {
+    node.Transition("listening", "heard " + node.NameOf(m.from), "a broadcast");
+  }
+};
+
+}  // namespace
+
+SANET_CONTROLLER_PLUGIN(registry) {
+  registry.Add({"crash_after", "drives, then crashes its process",
+                [](const sanet::Params& p) { return std::make_unique<CrashAfter>(p); }});
+  registry.Add({"wander", "drives at random, logs, reports and broadcasts",
+                [](const sanet::Params&) { return std::make_unique<Wander>(); }});
+}

@@ -11,8 +11,8 @@ std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, Registry&
   std::unique_ptr<Controller> controller;
   try {
     controller = info->create(spec.params);
-  } catch (const RegistryError&) {
-    throw;
+  } catch (const std::exception&) {
+    throw;  // ParamError and the like: the loader names the field
   } catch (...) {
     throw RegistryError("controller '" + spec.name + "' could not be made: " + CurrentExceptionText());
   }

@@ -44,7 +44,9 @@ std::vector<RouteEntry> RoutingView::RoutingTable() const {
     case Routing::kAodv: {
       const auto& entries = AodvTableOf(node_).*Get(AodvEntries());
       for (const auto& [address, e] : entries) {
-        const double left = e.GetLifeTime().GetSeconds();
+        // Not GetSeconds(): an expired route's lifetime is negative, and ns-3's int64x64 conversion
+        // shifts a negative value left (undefined behaviour, which UBSan reports).
+        const double left = static_cast<double>(e.GetLifeTime().GetNanoSeconds()) / 1e9;
         add(address, e.GetNextHop(), e.GetHop(), e.GetFlag() == ns3::aodv::VALID && left > 0, left);
       }
       break;

@@ -101,7 +101,10 @@ class Sweep(unittest.TestCase):
     def test_mpi_gives_the_same_rows_as_local_jobs(self):
         local = os.path.join(self.tmp.name, "local")
         self.sweep("--jobs", "2", study=local)
-        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        # Under AddressSanitizer (the sanitize build): OpenMPI unloads its components before
+        # LeakSanitizer looks, so what they keep cannot even be named; leaks are not checked here.
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   ASAN_OPTIONS=os.environ.get("ASAN_OPTIONS", "") + ":detect_leaks=0")
         out = subprocess.run(["mpirun", "-n", "2", "--oversubscribe", SANET, "sweep", SCENARIO, *GRID, "--duration",
                               "20", "--jobs", "1", "-o", self.study], capture_output=True, text=True, timeout=600,
                              env=env)

@@ -15,8 +15,8 @@ SOURCE = sys.argv.pop(1)
 SCENARIO = os.path.join(SOURCE, "scenarios", "around-the-wall.yaml")
 
 
-def sanet(*args):
-    return subprocess.run([SANET, *args], capture_output=True, text=True, timeout=300)
+def sanet(*args, **options):
+    return subprocess.run([SANET, *args], capture_output=True, text=True, timeout=300, **options)
 
 
 class Cli(unittest.TestCase):
@@ -48,21 +48,27 @@ class Cli(unittest.TestCase):
             self.assertIn(word, out)
 
     def test_run_writes_results_that_are_byte_identical_for_the_same_seed(self):
+        """Two processes, one in another locale, time zone and working folder, write the same
+        bytes; another seed writes others (so the comparison can fail)."""
         with tempfile.TemporaryDirectory() as tmp:
             a, b, c = (os.path.join(tmp, x) for x in "abc")
-            for folder, seed in ((a, "3"), (b, "3")):
-                out = sanet("run", SCENARIO, "-o", folder, "--seed", seed, "--duration", "30", "-q")
+            elsewhere = dict(os.environ, LC_ALL="C.UTF-8", LANG="de_DE.UTF-8", TZ="Asia/Kathmandu")
+            for folder, seed, options in ((a, "3", {}), (b, "3", {"env": elsewhere, "cwd": tmp}), (c, "4", {})):
+                out = sanet("run", SCENARIO, "-o", folder, "--seed", seed, "--duration", "30", "-q", **options)
                 self.assertEqual(out.returncode, 0, out.stderr)
                 self.assertEqual(out.stdout, "")
-            for name in ("trajectories.csv", "log.csv", "messages.csv"):
+            results = sorted(n for n in os.listdir(a) if n.endswith(".csv"))
+            self.assertGreaterEqual(len(results), 4, results)
+            for name in results:
                 with open(os.path.join(a, name), "rb") as fa, open(os.path.join(b, name), "rb") as fb:
                     self.assertEqual(fa.read(), fb.read(), name)
-            summary = json.load(open(os.path.join(a, "summary.json")))
+            summary, same, other = (json.load(open(os.path.join(d, "summary.json"))) for d in (a, b, c))
             for key in ("duration_s", "wall_time_s", "real_time_factor", "events", "seed", "fingerprint"):
                 self.assertIn(key, summary)
             self.assertEqual(summary["seed"], 3)
             self.assertEqual(summary["status"], "completed")
-            self.assertEqual(summary["fingerprint"], json.load(open(os.path.join(b, "summary.json")))["fingerprint"])
+            self.assertEqual(summary["fingerprint"], same["fingerprint"])
+            self.assertNotEqual(summary["fingerprint"], other["fingerprint"], "another seed, another run")
             self.assertFalse([n for n in os.listdir(a) if n.endswith(".tmp")])
 
     def test_two_threads_give_the_results_of_one_and_other_counts_are_refused(self):

@@ -47,9 +47,13 @@ std::optional<ReceivedReport> ParseRecvLine(const ProtocolMessage& line, const s
                                             std::string* error) {
   const std::string* delivery = line.Get("Delivery");
   const auto kind = delivery ? ParseDelivery(*delivery) : std::nullopt;
-  const auto sent = line.Number("TimeSent"), received = line.Number("TimeReceived"), bytes = line.Number("Bytes");
-  if (!from || !kind || !sent || !received || !bytes || *bytes < 0) {
-    *error = "RECV needs {From node} {Delivery unicast|broadcast|flood} {TimeSent} {TimeReceived} {Bytes n}";
+  const auto sent = line.Number("TimeSent"), received = line.Number("TimeReceived");
+  const auto bytes = line.Count("Bytes", kMostDatagramBytes);
+  const auto hops = line.Count("Hops", kMostHops);
+  if (!from || !kind || !sent || !received || !bytes || (line.Get("Hops") && !hops)) {
+    *error = "RECV needs {From node} {Delivery unicast|broadcast|flood} {TimeSent} {TimeReceived} {Bytes n} (n up to " +
+             std::to_string(kMostDatagramBytes) + "), and may give {Hops h} (h up to " + std::to_string(kMostHops) +
+             ")";
     return std::nullopt;
   }
   ReceivedReport r;
@@ -57,7 +61,7 @@ std::optional<ReceivedReport> ParseRecvLine(const ProtocolMessage& line, const s
   r.message.from = *from, r.message.to = delivery_kind == Delivery::kUnicast ? to : kBroadcast;
   r.message.delivery = delivery_kind;
   r.message.time_sent = *sent, r.message.time_received = *received;
-  if (auto hops = line.Number("Hops")) r.message.hops = static_cast<int>(*hops);
+  if (hops) r.message.hops = static_cast<int>(*hops);
   r.bytes = static_cast<std::size_t>(*bytes);
   r.message.payload.assign(r.bytes, 0);  // its size is what the results keep
   return r;
@@ -77,17 +81,21 @@ std::optional<Message> ParseMsgLine(const ProtocolMessage& line, const std::opti
   const std::string* delivery = line.Get("Delivery");
   const std::string* data = line.Get("Data");
   const auto sent = line.Number("TimeSent"), received = line.Number("TimeReceived");
+  const auto hops = line.Count("Hops", kMostHops);
   Message m;
   std::optional<Bytes> payload = data ? FromHex(*data) : std::nullopt;
   std::optional<Delivery> kind = delivery ? ParseDelivery(*delivery) : std::nullopt;
-  if (!from || !kind || !payload || !sent || !received) {
-    *error = "MSG needs {From node} {Delivery unicast|broadcast|flood} {TimeSent} {TimeReceived} {Data hex}";
+  if (!from || !kind || !payload || !sent || !received || (line.Get("Hops") && !hops)) {
+    *error =
+        "MSG needs {From node} {Delivery unicast|broadcast|flood} {TimeSent} {TimeReceived} {Data hex}, and may "
+        "give {Hops h} (h up to " +
+        std::to_string(kMostHops) + ")";
     return std::nullopt;
   }
   m.from = *from, m.to = *kind == Delivery::kUnicast ? to : kBroadcast, m.delivery = *kind,
   m.payload = std::move(*payload);
   m.time_sent = *sent, m.time_received = *received;
-  if (auto hops = line.Number("Hops")) m.hops = static_cast<int>(*hops);
+  if (hops) m.hops = static_cast<int>(*hops);
   return m;
 }
 

@@ -12,6 +12,7 @@
 //   RECV {From f1} {Delivery unicast} {TimeSent 12.000100} {TimeReceived 12.001300} {Bytes 41} {Hops 1}
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -20,6 +21,9 @@
 #include "sanet/message.h"
 
 namespace sanet::hil {
+
+// The largest RECV {Bytes n} (a UDP datagram's payload) and {Hops h} a line may give.
+constexpr std::uint64_t kMostDatagramBytes = 65507, kMostHops = 1000;
 
 std::string ToHex(const Bytes& bytes);
 std::optional<Bytes> FromHex(const std::string& text);  // nullopt unless pairs of hex digits

@@ -67,6 +67,14 @@ std::optional<double> ProtocolMessage::Number(std::string_view key) const {
   return v ? ToNumber(*v) : std::nullopt;
 }
 
+std::optional<std::uint64_t> ProtocolMessage::Count(std::string_view key, std::uint64_t most) const {
+  const auto n = Number(key);
+  // Compared as doubles before any conversion: a double beyond the integer's range converts to
+  // nothing defined.
+  if (!n || *n < 0 || *n > static_cast<double>(most) || *n != std::floor(*n)) return std::nullopt;
+  return static_cast<std::uint64_t>(*n);
+}
+
 std::optional<std::vector<double>> ProtocolMessage::Numbers(std::string_view key) const {
   const std::string* v = Get(key);
   if (!v) return std::nullopt;

@@ -4,6 +4,7 @@
 // accept CR LF, LF CR, LF or CR). docs/protocol.md lists every message.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,8 @@ struct ProtocolMessage {
   // First field whose key matches (case-insensitive).
   const std::string* Get(std::string_view key) const;
   std::optional<double> Number(std::string_view key) const;
+  // A whole number from 0 to `most`; nothing for a fraction, a negative or a larger number.
+  std::optional<std::uint64_t> Count(std::string_view key, std::uint64_t most) const;
   // Comma- or space-separated numbers.
   std::optional<std::vector<double>> Numbers(std::string_view key) const;
 };

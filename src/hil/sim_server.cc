@@ -556,12 +556,16 @@ constexpr StatsKey kStatsKeys[] = {{"Steps", "steps", true},
 void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
   nlohmann::ordered_json stats = nlohmann::ordered_json::object();
   for (const StatsKey& k : kStatsKeys) {
-    const auto value = m.Number(k.key);
-    if (!value) return Error(c, std::string("STATS needs a number {") + k.key + " ...}");
-    if (k.count)
-      stats[k.name] = static_cast<std::uint64_t>(*value);
-    else
+    constexpr std::uint64_t kMostCount = std::uint64_t{1} << 53;  // whole numbers a double holds exactly
+    if (k.count) {
+      const auto count = m.Count(k.key, kMostCount);
+      if (!count) return Error(c, std::string("STATS needs a whole number from 0 to 2^53 '") + k.key + " ...'");
+      stats[k.name] = *count;
+    } else {
+      const auto value = m.Number(k.key);
+      if (!value) return Error(c, std::string("STATS needs a number '") + k.key + " ...'");
       stats[k.name] = *value;
+    }
   }
   agent_stats_[world_.NameOf(*c.robot)] = stats;
 }

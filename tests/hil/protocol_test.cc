@@ -158,3 +158,35 @@ TEST(MessageLines, MsgLineRoundTripsThroughTheProtocol) {
 
 }  // namespace
 }  // namespace sanet::hil
+
+namespace sanet::hil {
+namespace {
+
+// Counts a client gives are whole numbers in range, never converted out of range (the fuzzer
+// found RECV {Bytes 3.9e98}, which also asked the server for that many bytes).
+TEST(MessageLines, RecvAndMsgRefuseCountsOutOfRange) {
+  std::string error;
+  const auto recv = [&](const std::string& tail) {
+    const auto m = ParseLine("RECV {From f1} {Delivery unicast} {TimeSent 1} {TimeReceived 2} " + tail, &error);
+    return ParseRecvLine(*m, NodeId{1}, 2, &error);
+  };
+  ASSERT_TRUE(recv("{Bytes 41} {Hops 1}")) << error;
+  EXPECT_EQ(recv("{Bytes 41}")->bytes, 41u);
+  for (const char* bad : {"{Bytes 3.9e98}", "{Bytes 65508}", "{Bytes -1}", "{Bytes 2.5}", "{Bytes 4} {Hops 1e12}",
+                          "{Bytes 4} {Hops -3}"}) {
+    EXPECT_FALSE(recv(bad)) << bad;
+    EXPECT_NE(error.find("up to 65507"), std::string::npos) << error;
+  }
+  const auto msg =
+      ParseLine("MSG {From m3} {Delivery unicast} {TimeSent 1} {TimeReceived 2} {Hops 1e300} {Data 00}", &error);
+  EXPECT_FALSE(ParseMsgLine(*msg, NodeId{3}, 1, &error));
+  ProtocolMessage counts{"STATS"};
+  counts.Add("Steps", "12").Add("Big", "1e30").Add("Part", "0.5");
+  EXPECT_EQ(counts.Count("Steps", 100).value_or(0), 12u);
+  EXPECT_FALSE(counts.Count("Steps", 10));
+  EXPECT_FALSE(counts.Count("Big", std::uint64_t{1} << 53));
+  EXPECT_FALSE(counts.Count("Part", 10));
+}
+
+}  // namespace
+}  // namespace sanet::hil

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "support/test_world.h"
@@ -136,6 +137,29 @@ TEST(World, AControllerThrowingAnythingEndsTheRunNamingWhatItThrew) {
     EXPECT_NE(summary.find("failed: controller of r failed: " + named), std::string::npos) << summary;
     EXPECT_NE(ReadFile(dir + "/trajectories.csv").find("0.000,r,"), std::string::npos);
   }
+}
+
+// A controller's text may be any bytes: a log line, a state name, a reason, a metric's name that
+// are not UTF-8 cost the run nothing, and summary.json stays valid JSON (nlohmann's parser
+// refuses invalid UTF-8, so parsing it is the check).
+TEST(World, TextThatIsNotUtf8LeavesAValidSummary) {
+  struct Babble : Controller {
+    void ControlStep(Node& node) override {
+      node.Log("caf\xe9 \xff\xfe log");
+      node.Transition("idle", "st\xc3\x28te", "because \xa0\xa1");
+      node.Metric("m\xe9tric", 1.5);
+    }
+  };
+  agents::Registry registry;
+  registry.Add({"babble", "", [](const Params&) { return std::make_unique<Babble>(); }});
+  const std::string dir = ::testing::TempDir() + "/sanet-not-utf8";
+  std::filesystem::remove_all(dir);
+  sim::World world(Spec(1, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("babble", {}))}), registry);
+  world.Run({dir, "test", false});
+  const auto summary = nlohmann::json::parse(ReadFile(dir + "/summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_TRUE(summary["metrics"]["r"].contains("m\xef\xbf\xbdtric")) << summary["metrics"].dump();
+  EXPECT_NE(ReadFile(dir + "/log.csv").find("caf\xe9 \xff\xfe log"), std::string::npos) << "the CSV keeps the bytes";
 }
 
 // Drives forward, then asks for a NaN velocity and infinite wheel speeds; records the answers.

@@ -117,13 +117,14 @@ std::optional<ProtocolMessage> ParseLine(std::string_view line, std::string* err
       continue;
     }
     if (line[i] != '{') {
-      *error = "expected '{' at column " + std::to_string(i + 1);
+      *error = "expected an opening brace at column " + std::to_string(i + 1);
       return std::nullopt;
     }
     const std::size_t close = line.find('}', i);
     const std::size_t nested = line.find('{', i + 1);
     if (close == std::string_view::npos || (nested != std::string_view::npos && nested < close)) {
-      *error = "unbalanced '{' at column " + std::to_string(i + 1);
+      *error = "the brace opened at column " + std::to_string(i + 1) +
+               " is not closed before another opens or the line ends";
       return std::nullopt;
     }
     const std::string_view inside = Trim(line.substr(i + 1, close - i - 1));

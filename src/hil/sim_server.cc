@@ -132,8 +132,8 @@ void SimServer::Accept() {
     }
     // A small kernel buffer: what a client leaves unread piles up where the server can see it.
     ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
-    clients_.push_back(std::make_unique<Client>(
-        Client{fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow(), 0, 0, false}));
+    clients_.push_back(std::make_unique<Client>(Client{
+        fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow(), 0, 0, false, false, WallNow()}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
@@ -211,6 +211,7 @@ bool SimServer::TakeLines(Client& c) {
   for (; taken < settings_.lines_per_turn; ++taken) {
     const auto line = c.reader.Next(&too_long);
     if (!line) break;
+    c.last_heard = WallNow();
     if (line->find_first_not_of(" \t") == std::string::npos) continue;
     std::string error;
     if (auto m = ParseLine(*line, &error))
@@ -440,13 +441,27 @@ void SimServer::Send(Client& c, const ProtocolMessage& m) {
 }
 
 // An ERR line carries no braces, whatever it quotes (a client's own text, a field's name):
-// braces would end its {Message ...} field early for a client's parser.
+// braces would end its {Message ...} field early for a client's parser. A field's name in braces
+// becomes quoted ('Left'), a field with its value parenthesised ((ClassName c)), a lone brace '.
+std::string WithoutBraces(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const std::size_t close = text[i] == '{' ? text.find_first_of("{}", i + 1) : std::string::npos;
+    if (close != std::string::npos && text[close] == '}') {
+      const std::string inside = text.substr(i + 1, close - i - 1);
+      const bool one_word = inside.find(' ') == std::string::npos;
+      out += one_word ? "'" + inside + "'" : "(" + inside + ")";
+      i = close;
+    } else {
+      out += text[i] == '{' || text[i] == '}' ? '\'' : text[i];
+    }
+  }
+  return out;
+}
+
 void SimServer::Error(Client& c, const std::string& why) {
-  std::string text = why;
-  std::replace_if(
-      text.begin(), text.end(), [](char ch) { return ch == '{' || ch == '}'; }, '\'');
   ProtocolMessage error{"ERR"};
-  error.Add("Message", text);
+  error.Add("Message", WithoutBraces(why));
   Send(c, error);
 }
 
@@ -478,6 +493,9 @@ void SimServer::RecordProgress(Client& c, double now) {
   if (c.out.empty() && reads) c.last_caught_up = now;
   if (now - c.last_caught_up > settings_.stall_timeout)
     Drop(c, "not reading for " + ShortSeconds(settings_.stall_timeout) + " s");
+  // An agent reads and writes in one loop: silence tells that it stopped, whatever TCP shows.
+  else if (c.agent && now - c.last_heard > settings_.stall_timeout)
+    Drop(c, "an agent silent for " + ShortSeconds(settings_.stall_timeout) + " s");
 }
 
 void SimServer::Drop(Client& c, const std::string& why) {
@@ -568,6 +586,7 @@ void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
     }
   }
   agent_stats_[world_.NameOf(*c.robot)] = stats;
+  c.agent = true;
 }
 
 // agents.csv: one row per agent, its last STATS, in node order.

@@ -39,6 +39,10 @@ struct ServerSettings {
   double poll_budget = 0.0015;         // s of line handling per poll; the rest waits for the next poll
 };
 
+// `text` for an ERR line: a field in braces written 'Name' (one word) or (Name value), lone
+// braces as '.
+std::string WithoutBraces(const std::string& text);
+
 // The default connection cap: twice the robots, and never fewer than 64.
 std::size_t DefaultMaxClients(const sim::RunSpec& spec);
 
@@ -72,6 +76,8 @@ class SimServer : public sim::StepObserver {
     std::uint32_t widest_window = 0;  // the largest receive window it has advertised (bytes)
     std::uint32_t last_window = 0;    // the window at the last poll
     bool told_off = false;            // told once that its robot is switched off
+    bool agent = false;               // it has sent STATS: a sanet agent, which speaks five times a second
+    double last_heard = 0;            // wall clock (s) of its last line
   };
   struct Closing {  // a connection the server ends: told why, then closed once it hangs up
     int fd;

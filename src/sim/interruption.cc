@@ -11,7 +11,12 @@ namespace {
 volatile std::sig_atomic_t g_signal = 0;
 
 void OnSignal(int signal) {
-  if (g_signal != 0) ::_exit(128 + signal);  // the second: now
+  if (g_signal != 0) {  // the second: now (write and _exit are safe in a signal handler)
+    static const char said[] =
+        "sanet: second signal: stopped at once; results not written (only whole files and .tmp files are left)\n";
+    [[maybe_unused]] const auto ignored = ::write(STDERR_FILENO, said, sizeof said - 1);
+    ::_exit(128 + signal);
+  }
   g_signal = signal;
 }
 

@@ -256,6 +256,7 @@ void Stepper::Delivered(NodeId to, const Message& message) { outputs_.Delivered(
 
 void Stepper::Failed(const std::string& why) {
   outputs_.Failed(why);
+  outputs_.Ended("controller failure", ns3::Simulator::Now().GetSeconds());
   ns3::Simulator::Stop();
 }
 

@@ -76,15 +76,17 @@ class Stops(unittest.TestCase):
 
     def test_two_signals_end_at_once_without_half_written_files(self):
         out = os.path.join(self.tmp.name, "twice")
-        process = subprocess.Popen([SANET, "run", LONG, "-q", "-o", out], stderr=subprocess.DEVNULL)
+        process = subprocess.Popen([SANET, "run", LONG, "-q", "-o", out], stderr=subprocess.PIPE, text=True)
         time.sleep(1.5)
         process.send_signal(signal.SIGINT)
         process.send_signal(signal.SIGINT)
-        process.wait(timeout=60)
+        _, said = process.communicate(timeout=60)
         self.assertEqual(process.returncode, 130)
         for name in os.listdir(out):  # what is there under its own name is whole
             if name == "summary.json":
                 self.assertEqual(summary(out)["status"], "interrupted")
+        if "summary.json" not in os.listdir(out):  # the second came before the results: it says so
+            self.assertIn("second signal: stopped at once; results not written", said)
 
     def test_serve_stopped_by_a_signal_says_interrupted(self):
         out = os.path.join(self.tmp.name, "serve")

@@ -151,9 +151,15 @@ class HostileClients(unittest.TestCase):
 
     def test_a_client_that_stops_reading_loses_its_robot_and_a_slow_one_does_not(self):
         self.server, port, out = serve(SANET, SCENARIO, self.tmp.name, "--duration", "9")
-        stopping, slow = Client(port), Client(port)
+        stopping, slow, agent = Client(port), Client(port), Client(port)
         stopping.send("INIT {Name r2}")
         slow.send("INIT {Name r3}")
+        agent.send("INIT {Name r1}")  # reports like an agent, then falls silent (and still reads)
+        agent.send("STATS {Steps 1} {Missed 0} {Rate 10} {Sent 0} {Received 0} {DatagramsSent 0} "
+                   "{DatagramsReceived 0} {DatagramsRejected 0} {SendErrors 0} {LatenessP50 0} {LatenessP99 0} "
+                   "{LatenessMax 0}")
+        silent_from = float(field(agent.sensor("GroundTruth"), "Time"))
+        threading.Thread(target=lambda: [None for _ in agent.lines()], daemon=True).start()
         stopped_at = float(field(stopping.sensor("GroundTruth"), "Time"))  # and reads no more
         slow.sock.settimeout(0.05)
         while self.server.poll() is None:
@@ -165,10 +171,14 @@ class HostileClients(unittest.TestCase):
                 pass
         log = list(csv.DictReader(open(os.path.join(out, "log.csv"))))
         gone = [row for row in log if "gone" in row["text"]]
-        self.assertEqual([row["node"] for row in gone if "not reading" in row["text"]], ["r2"], gone)
-        dropped_after = float(gone[0]["time"]) - stopped_at
+        not_reading = [row for row in gone if "not reading" in row["text"]]
+        self.assertEqual([row["node"] for row in not_reading], ["r2"], gone)
+        dropped_after = float(not_reading[0]["time"]) - stopped_at
         print(f"r2 dropped {dropped_after:.2f} s after its client stopped reading")
         self.assertLess(dropped_after, 3.5, "2 s once its window shows it, which a laser scan does within 1 s")
+        silent = [row for row in gone if "an agent silent for 2 s" in row["text"]]
+        self.assertEqual([row["node"] for row in silent], ["r1"], gone)
+        self.assertLess(float(silent[0]["time"]) - silent_from, 2.6)
 
 
 if __name__ == "__main__":

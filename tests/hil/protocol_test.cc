@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "hil/message_lines.h"
+#include "hil/sim_server.h"
 
 namespace sanet::hil {
 namespace {
@@ -161,6 +162,15 @@ TEST(MessageLines, MsgLineRoundTripsThroughTheProtocol) {
 
 namespace sanet::hil {
 namespace {
+
+// ERR text never holds a brace, and still reads: a field's name quoted, a field with its value in
+// parentheses, lone braces as quotes.
+TEST(MessageLines, ErrTextHasNoBraces) {
+  EXPECT_EQ(WithoutBraces("DRIVE needs {Left} and {Right}"), "DRIVE needs 'Left' and 'Right'");
+  EXPECT_EQ(WithoutBraces("INIT {ClassName c} {Name x} adds one"), "INIT (ClassName c) (Name x) adds one");
+  EXPECT_EQ(WithoutBraces("unclosed {a {b} }{ }").find_first_of("{}"), std::string::npos);
+  EXPECT_EQ(WithoutBraces("a lone { here"), "a lone ' here");
+}
 
 // Counts a client gives are whole numbers in range, never converted out of range (the fuzzer
 // found RECV {Bytes 3.9e98}, which also asked the server for that many bytes).

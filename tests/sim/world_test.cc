@@ -103,6 +103,7 @@ TEST(World, AFailingControllerEndsTheRunButKeepsItsResults) {
   }
   const std::string summary = ReadFile(dir + "/summary.json");
   EXPECT_NE(summary.find("failed: controller of r failed: sensor exploded"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"ended_by\": \"controller failure\""), std::string::npos) << summary;
   EXPECT_NE(ReadFile(dir + "/trajectories.csv").find("0.000,r,"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir + "/trajectories.csv.tmp"));
 }

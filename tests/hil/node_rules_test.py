@@ -112,8 +112,8 @@ class NodeRules(unittest.TestCase):
     def test_bad_lines_get_errors_that_say_what_is_wrong(self):
         errors = "\n".join(self.messages["errors"])
         for expected in ["no node named 'nobody'", "expected hex bytes", "expected unicast, broadcast or flood",
-                         "SEND to one node needs 'To node'", "that is this robot", "TRANSITION needs",
-                         "STATS needs a number 'Steps", "RECV needs 'From node'"]:
+                         "SEND to one node needs (To node)", "that is this robot", "TRANSITION needs",
+                         "STATS needs a whole number from 0 to 2^53 'Steps", "RECV needs (From node)"]:
             self.assertIn(expected, errors)
         for line in self.messages["errors"]:  # a client's parser sees one field: no braces inside it
             self.assertEqual((line.count("{"), line.count("}")), (1, 1), line)

@@ -128,8 +128,9 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   options.provenance = ProvenanceOf(sc);
   ClaimFolder(options.output_dir, args.force);
   if (!args.quiet)
-    std::printf("sanet: running %s (%zu nodes, %.1f s simulated, seed %llu%s)\n", sc.run.name.c_str(),
-                sc.run.nodes.size(), sc.run.duration, static_cast<unsigned long long>(sc.run.seed),
+    std::printf("sanet: running %s (%zu node%s, %.1f s simulated, seed %llu%s)\n", sc.run.name.c_str(),
+                sc.run.nodes.size(), sc.run.nodes.size() == 1 ? "" : "s", sc.run.duration,
+                static_cast<unsigned long long>(sc.run.seed),
                 sc.run.threads == 2 ? ", physics on a second thread" : "");
   sim::World world(sc.run, registry);
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, args.view, !args.quiet);

@@ -185,8 +185,8 @@ void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
 void WritePortFile(const std::string& path, std::uint16_t port, const char* option) {
   try {
     if (!path.empty()) WriteFileAtomically(path, std::to_string(port) + "\n");
-  } catch (const std::runtime_error&) {
-    throw CLI::ValidationError(option, "cannot write " + path + " (does its folder exist?)");
+  } catch (const std::runtime_error& e) {
+    throw CLI::ValidationError(option, e.what());  // names the file and the system's reason
   }
 }
 

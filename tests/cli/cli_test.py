@@ -148,6 +148,14 @@ class Cli(unittest.TestCase):
         self.assertIn("/no/such/file.yaml", out.stderr)
         self.assertIn("cannot open", out.stderr)
 
+    def test_a_port_file_that_cannot_be_written_says_why(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            for where, why in ((tmp, "Is a directory"), (os.path.join(tmp, "no", "p"), "No such file or directory")):
+                out = sanet("serve", SCENARIO, "--port", "0", "--port-file", where, "-q", "-o", os.path.join(tmp, "o"))
+                self.assertEqual(out.returncode, 2, out.stderr)
+                self.assertIn("--port-file: cannot write", out.stderr)
+                self.assertIn(why, out.stderr)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -278,31 +278,28 @@ class IsolatedController : public Controller {
     ::kill(child_, SIGKILL);
     ::waitpid(child_, nullptr, 0);
   }
-  void Start(Node& node) override { Run(node, Writer().U8(kStart)); }
-  void ControlStep(Node& node) override { Run(node, Writer().U8(kStep)); }
+  void Start(Node& node) override { Run(node, Request(node, kStart)); }
+  void ControlStep(Node& node) override { Run(node, Request(node, kStep)); }
   void OnMessage(Node& node, const Message& m) override {
-    Writer request;
-    request.U8(kMessage);
+    Writer request = Request(node, kMessage);
     WriteMessage(request, m);
     Run(node, request);
   }
 
  private:
-  // Sends the call (with the node's identity, which the child needs for its first call), then
-  // answers the child's node calls until the call is done.
-  void Run(Node& node, Writer request) {
-    if (!introduced_) {
-      Writer with_identity;
-      with_identity.U8(request.bytes()[0]).U32(node.Id()).Text(node.Name());
-      with_identity.U32(static_cast<std::uint32_t>(node.NodeCount())).Bool(node.Holonomic());
-      Bytes rest(request.bytes().begin() + 1, request.bytes().end());
-      Bytes whole = with_identity.bytes();
-      whole.insert(whole.end(), rest.begin(), rest.end());
-      SendPacketOrCrash(whole);
-      introduced_ = true;
-    } else {
-      SendPacketOrCrash(request.bytes());
-    }
+  // The call, and with the first one the node's identity, which the child's node needs.
+  Writer Request(Node& node, Call call) {
+    Writer request;
+    request.U8(call);
+    if (introduced_) return request;
+    introduced_ = true;
+    request.U32(node.Id()).Text(node.Name()).U32(static_cast<std::uint32_t>(node.NodeCount())).Bool(node.Holonomic());
+    return request;
+  }
+
+  // Sends the call, then answers the child's node calls until the call is done.
+  void Run(Node& node, const Writer& request) {
+    SendPacketOrCrash(request.bytes());
     while (true) {
       auto packet = ReceivePacket(fd_);
       if (!packet) throw std::runtime_error(Crash());
@@ -317,8 +314,11 @@ class IsolatedController : public Controller {
   }
 
   void SendPacketOrCrash(const Bytes& bytes) {
-    if (::send(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(bytes.size()))
+    try {
+      SendPacket(fd_, bytes);
+    } catch (const std::runtime_error&) {
       throw std::runtime_error(Crash());
+    }
   }
 
   // Why the child is gone, once it is.

@@ -5,8 +5,10 @@
 #include <openssl/hmac.h>
 #include <openssl/rand.h>
 
+#include <algorithm>
 #include <stdexcept>
 
+#include "hil/message_lines.h"
 #include "sanet/codec.h"
 
 namespace sanet::hil {
@@ -31,27 +33,13 @@ DatagramKey DatagramKey::Random() {
   return key;
 }
 
-std::string DatagramKey::Hex() const {
-  static const char* digits = "0123456789abcdef";
-  std::string hex;
-  for (std::uint8_t b : bytes_) hex += {digits[b >> 4], digits[b & 15]};
-  return hex;
-}
+std::string DatagramKey::Hex() const { return ToHex(Bytes(bytes_.begin(), bytes_.end())); }
 
 std::optional<DatagramKey> DatagramKey::FromHex(const std::string& hex) {
-  const auto nibble = [](char c) -> int {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-  };
+  const std::optional<Bytes> bytes = hil::FromHex(hex);
   DatagramKey key;
-  if (hex.size() != 2 * key.bytes_.size()) return std::nullopt;
-  for (std::size_t i = 0; i < key.bytes_.size(); ++i) {
-    const int high = nibble(hex[2 * i]), low = nibble(hex[2 * i + 1]);
-    if (high < 0 || low < 0) return std::nullopt;
-    key.bytes_[i] = static_cast<std::uint8_t>(high << 4 | low);
-  }
+  if (!bytes || bytes->size() != key.bytes_.size()) return std::nullopt;
+  std::copy(bytes->begin(), bytes->end(), key.bytes_.begin());
   return key;
 }
 

@@ -211,7 +211,6 @@ bool SimServer::TakeLines(Client& c) {
   for (; taken < settings_.lines_per_turn; ++taken) {
     const auto line = c.reader.Next(&too_long);
     if (!line) break;
-    c.last_heard = WallNow();
     if (line->find_first_not_of(" \t") == std::string::npos) continue;
     std::string error;
     if (auto m = ParseLine(*line, &error))
@@ -220,6 +219,7 @@ bool SimServer::TakeLines(Client& c) {
       Error(c, "malformed line: " + error);
     if (c.fd < 0) return false;
   }
+  if (taken > 0) c.last_heard = WallNow();  // once a turn, not for every line
   if (too_long) {
     Error(c, "line longer than " + std::to_string(settings_.max_line) + " bytes: closing");
     Flush(c);

@@ -29,6 +29,14 @@ def rows(folder, sql):
         return list(db.execute(sql))
 
 
+def completed_runs(folder):
+    """Runs completed so far; 0 while the sweep has created the file but not yet its tables."""
+    try:
+        return rows(folder, "SELECT count(*) FROM runs WHERE status = 'completed'")[0][0]
+    except sqlite3.OperationalError:
+        return 0
+
+
 class Sweep(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
@@ -76,10 +84,8 @@ class Sweep(unittest.TestCase):
                 deadline = time.time() + 120
                 while time.time() < deadline:
                     time.sleep(0.2)
-                    if os.path.exists(database):
-                        done = rows(study, "SELECT count(*) FROM runs WHERE status = 'completed'")[0][0]
-                        if done >= 3:
-                            break
+                    if os.path.exists(database) and completed_runs(study) >= 3:
+                        break
                 process.send_signal(how)
                 process.wait(timeout=60)
                 self.assertNotEqual(process.returncode, 0)

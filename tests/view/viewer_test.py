@@ -33,6 +33,15 @@ def missing():
     return None
 
 
+def wait_for_port(port_file, seconds=60):
+    """Waits for a server's port file (written whole); a loaded CI machine may take seconds."""
+    deadline = time.time() + seconds
+    while not os.path.exists(port_file):
+        if time.time() > deadline:
+            raise AssertionError(f"{port_file} did not appear within {seconds} s")
+        time.sleep(0.005)
+
+
 def rows(folder, name):
     with open(os.path.join(folder, name)) as f:
         return list(csv.DictReader(f))
@@ -46,10 +55,7 @@ class Viewer:
         port_file = os.path.join(tmp, "port")
         self.server = subprocess.Popen([SANET, "view", results, "--port", "0", "--port-file", port_file],
                                        stdout=subprocess.DEVNULL)
-        for _ in range(500):
-            if os.path.exists(port_file):
-                break
-            time.sleep(0.01)
+        wait_for_port(port_file)
         with open(port_file) as f:
             self.open_browser(f"http://127.0.0.1:{int(f.read())}/")
 
@@ -153,10 +159,7 @@ class ViewerTest(unittest.TestCase):
 def sse_frames(port_file, timeout=60):
     """Connects to a live view as soon as it listens and counts its frames until the run ends."""
     import urllib.request
-    for _ in range(2000):
-        if os.path.exists(port_file) and open(port_file).read().strip():
-            break
-        time.sleep(0.005)
+    wait_for_port(port_file)
     with open(port_file) as f:
         port = int(f.read())
     frames, ended = 0, False
@@ -197,10 +200,7 @@ class LiveTest(unittest.TestCase):
                                        "--port", "0", "--duration", "8", "-q", "-o", os.path.join(tmp, "out"),
                                        "--view", "--view-port", "0", "--view-port-file", port_file],
                                       stdout=subprocess.DEVNULL)
-            for _ in range(500):
-                if os.path.exists(port_file):
-                    break
-                time.sleep(0.01)
+            wait_for_port(port_file)
             viewer = Viewer.__new__(Viewer)
             viewer.server = server
             with open(port_file) as f:

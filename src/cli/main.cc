@@ -17,7 +17,6 @@
 #include "builtin.h"
 #include "core/atomic_file.h"
 #include "core/version.h"
-#include "hil/agent.h"
 #include "hil/launch.h"
 #include "hil/namespaces.h"
 #include "hil/radio_taps.h"
@@ -32,6 +31,7 @@
 #include "scenario/scenario_loader.h"
 #include "sim/interruption.h"
 #include "sim/world.h"
+#include "agent_command.h"
 #include "study_commands.h"
 #include "trace/earlier_run.h"
 #include "view/live_view.h"
@@ -224,6 +224,8 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   settings.bind = bind;
   settings.port = static_cast<std::uint16_t>(port);
   settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
+  settings.scenario_yaml = scenario::EffectiveScenarioYaml(sc);
+  settings.scenario_fingerprint = scenario::ScenarioFingerprint(sc);
   try {
     hil::RaiseDescriptorLimit(settings.max_clients);
   } catch (const std::runtime_error& e) {
@@ -254,6 +256,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
     j["real_time_lag"] = server.LagSummary();
     j["real_time_lag"]["scheduling"] = scheduling;
     j["agents"] = server.AgentStats();
+    j["clock"] = server.ClockSummary();
     if (wss) j["wss"] = wss->Summary();
     server.WriteAgentTable(folder);
   };
@@ -273,25 +276,6 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
     return 128 + sim::InterruptSignal();
   }
   return 0;
-}
-
-int Agent(const std::string& file, const std::string& robot, const std::string& server, std::optional<int> udp_base,
-          const std::string& udp_subnet, bool shared_clock, agents::Registry& registry) {
-  const scenario::Scenario sc = LoadChecked(file, {}, registry);
-  const auto colon = server.rfind(':');
-  if (colon == std::string::npos) throw CLI::ValidationError("--server", "expected HOST:PORT, not '" + server + "'");
-  hil::AgentSettings settings;
-  settings.server_host = server.substr(0, colon);
-  settings.server_port = static_cast<std::uint16_t>(std::stoi(server.substr(colon + 1)));
-  settings.udp_base_port = static_cast<std::uint16_t>(udp_base.value_or(sc.run.loop.udp_port));
-  settings.udp_subnet = udp_subnet;
-  settings.shared_clock = shared_clock;
-  std::optional<NodeId> id;
-  for (NodeId i = 0; i < sc.run.nodes.size(); ++i)
-    if (sc.run.nodes[i].name == robot) id = i;
-  if (!id || !sc.run.nodes[*id].controller)
-    throw CLI::ValidationError("--robot", "'" + robot + "' is not a robot with a controller in " + file);
-  return hil::RunAgent(sc.run, *id, settings, registry);
 }
 
 struct LaunchArgs {
@@ -323,7 +307,6 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
   hil::LaunchSettings settings;
   settings.scenario_file = a.file;
   settings.sets = a.sets;
-  settings.effective_scenario = scenario::EffectiveScenarioYaml(sc);
   settings.output = a.output.empty() ? sc.output_folder : a.output;
   settings.force = a.force;
   ClaimFolder(settings.output, a.force);
@@ -425,32 +408,6 @@ Command AddServe(CLI::App& app) {
   cmd->add_option("--wss-port-file", a->wss_port_file, "Once listening, write the WSS port number to this file");
   AddViewOptions(cmd, a->view);
   return {cmd, [a](agents::Registry& r) { return Serve(*a, r); }};
-}
-
-Command AddAgent(CLI::App& app) {
-  struct Args {
-    std::string file, robot, server = "127.0.0.1:3000", subnet;
-    std::optional<int> udp_base;
-    bool shared_clock = false;
-  };
-  auto a = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("agent",
-                                     "Run one robot's controller as its own process: sensors and motors "
-                                     "through a `sanet serve` server, messages over real UDP");
-  cmd->add_option("--scenario", a->file, "Scenario file: the robot's controller and parameters, the peers")->required();
-  cmd->add_option("--robot", a->robot, "The robot to drive (its name in the scenario)")->required();
-  cmd->add_option("--server", a->server, "The server, HOST:PORT")->capture_default_str();
-  cmd->add_option("--udp-base", a->udp_base,
-                  "UDP port of node 0; node i uses base + i (default: the scenario's "
-                  "loop.udp_port, 47000)")
-      ->check(CLI::Range(1024, 60000));
-  cmd->add_option("--udp-subnet", a->subnet,
-                  "Instead: node i listens on SUBNET.(i+1) at the base port (agents in "
-                  "network namespaces)");
-  cmd->add_flag("--shared-clock", a->shared_clock, "The server runs on this machine: share its clock exactly");
-  return {cmd, [a](agents::Registry& r) {
-            return Agent(a->file, a->robot, a->server, a->udp_base, a->subnet, a->shared_clock, r);
-          }};
 }
 
 Command AddLaunch(CLI::App& app) {

@@ -44,14 +44,26 @@ ProtocolMessage Stats(const StepGrid& grid, const RemoteNode& node, std::uint64_
   m.Add("DatagramsSent", std::to_string(d.sent)).Add("DatagramsReceived", std::to_string(d.received));
   m.Add("DatagramsRejected", std::to_string(d.rejected));
   m.Add("SendErrors", std::to_string(d.send_errors));
+  const ClockFigures clock = node.clock_figures();
+  m.Add("ClockOffset", FormatPrecise(clock.offset)).Add("ClockError", FormatPrecise(clock.error_bound));
+  m.Add("ClockErrorMax", FormatPrecise(clock.error_bound_max));
+  return m;
+}
+
+// The clock estimate after a burst of exchanges (clock.csv).
+ProtocolMessage ClockLine(const ClockFigures& f) {
+  ProtocolMessage m("CLOCK");
+  m.Add("Offset", FormatPrecise(f.offset)).Add("Error", FormatPrecise(f.error_bound));
+  m.Add("RoundTrip", FormatPrecise(f.round_trip)).Add("Drift", FormatPrecise(f.drift));
   return m;
 }
 
 }  // namespace
 
-int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, agents::Registry& registry) {
+int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, std::unique_ptr<ServerLink> link,
+             agents::Registry& registry) {
   const sim::ControllerSpec& controller = *spec.nodes.at(robot).controller;
-  RemoteNode node(spec, robot, settings);
+  RemoteNode node(spec, robot, settings, std::move(link));
   AgentClock clock(node);
   std::string failure;
   agents::ControllerHost::Hooks hooks;
@@ -75,6 +87,7 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   }
   StepGrid grid(controller.rate);
   double next_report = 0;
+  std::uint64_t bursts_reported = 0;
   while (host.running() && node.Poll(deliver)) {
     clock.RunDue();
     if (const auto t = grid.Due(node.ClockNow())) {
@@ -86,6 +99,10 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
     if (node.ClockNow() >= next_report) {  // five times a second: the server keeps the last
       node.Report(Stats(grid, node, received));
       next_report = node.ClockNow() + 0.2;
+    }
+    if (const ClockFigures clock = node.clock_figures(); clock.bursts > bursts_reported) {
+      node.Report(ClockLine(clock));
+      bursts_reported = clock.bursts;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }

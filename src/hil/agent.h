@@ -10,7 +10,9 @@
 
 namespace sanet::hil {
 
-// Returns the process's exit code: 0 when the server ended the run, 1 when the controller failed.
-int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, agents::Registry& registry);
+// Drives `robot` through `link` (handshake done). Returns the process's exit code: 0 when the
+// server ended the run, 1 when the controller failed.
+int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, std::unique_ptr<ServerLink> link,
+             agents::Registry& registry);
 
 }  // namespace sanet::hil

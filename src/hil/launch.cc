@@ -111,28 +111,6 @@ std::optional<int> WaitForPort(const std::string& path, pid_t server) {
   return std::nullopt;
 }
 
-// The effective scenario in a file of its own for the agents, removed when the launch ends.
-class EffectiveScenarioFile {
- public:
-  explicit EffectiveScenarioFile(const std::string& yaml) {
-    char dir[] = "/tmp/sanet-scenario-XXXXXX";
-    if (!::mkdtemp(dir)) throw std::runtime_error("cannot create a temporary folder for the effective scenario");
-    dir_ = dir;
-    path_ = dir_ + "/scenario.yaml";
-    WriteFileAtomically(path_, yaml);
-  }
-  ~EffectiveScenarioFile() {
-    std::error_code ignored;
-    std::filesystem::remove_all(dir_, ignored);
-  }
-  EffectiveScenarioFile(const EffectiveScenarioFile&) = delete;
-  EffectiveScenarioFile& operator=(const EffectiveScenarioFile&) = delete;
-  const std::string& path() const { return path_; }
-
- private:
-  std::string dir_, path_;
-};
-
 // Starts `sanet serve` and returns its process and address. The server tells its port through
 // a file, not through text meant for people.
 std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchSettings& settings,
@@ -159,15 +137,14 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
   return {server, bind + ":" + std::to_string(*port)};
 }
 
-pid_t StartAgent(const std::string& self, const LaunchSettings& settings, const std::string& scenario_file,
+pid_t StartAgent(const std::string& self, const LaunchSettings& settings,
                  const std::string& robot, const std::string& address, const std::string& namespace_name,
                  const std::string& subnet) {
   const pid_t agent = ::fork();
   if (agent != 0) return agent;
-  std::vector<std::string> args = {
-      "sanet",         "agent",   "--server", address,      "--scenario",
-      scenario_file,   "--robot", robot,      "--udp-base", std::to_string(settings.udp_base),
-      "--shared-clock"};
+  // The agent fetches the scenario from the server, as one on another computer does.
+  std::vector<std::string> args = {"sanet",     "agent", "--server",   address, "--robot", robot,
+                                   "--udp-base", std::to_string(settings.udp_base), "--shared-clock"};
   if (namespace_name.empty()) Exec(self, args);
   args.insert(args.end(), {"--udp-subnet", subnet});
   args[0] = self;  // ip runs the program itself: its path, not a name, comes first
@@ -222,13 +199,12 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
   if (SimulatedRadio(spec))
     for (NodeId id : robots) taps.push_back(spec.nodes[id].name + "=" + namespaces->Namespace(id));
   const auto [server, address] = StartServer(self, settings, bind, taps);
-  const EffectiveScenarioFile agents_scenario(settings.effective_scenario);
   const std::string subnet = SimulatedRadio(spec) ? kRadioSubnet : NetworkNamespaces::Subnet();
   std::vector<pid_t> children;
   for (NodeId id : robots) {
     const std::string& name = spec.nodes[id].name;
     const std::string where = namespaces ? namespaces->Namespace(id) : "";
-    children.push_back(StartAgent(self, settings, agents_scenario.path(), name, address, where, subnet));
+    children.push_back(StartAgent(self, settings, name, address, where, subnet));
     std::printf("  agent %s: process %d%s\n", name.c_str(), children.back(),
                 where.empty() ? "" : (" in namespace " + where).c_str());
   }

@@ -14,8 +14,6 @@ namespace sanet::hil {
 struct LaunchSettings {
   std::string scenario_file;
   std::vector<std::string> sets;  // --set, given to the server with the file
-  // The effective scenario (after --set): the agents read it, so that they run what the server runs.
-  std::string effective_scenario;
   std::string output;  // the results folder
   bool force = false;  // the server writes beside files no sanet run wrote
   int udp_base = 47000;

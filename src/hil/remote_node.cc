@@ -2,6 +2,7 @@
 
 #include <arpa/inet.h>
 #include <fcntl.h>
+#include <ifaddrs.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/socket.h>
@@ -17,6 +18,7 @@
 
 #include "hil/message_lines.h"
 #include "hil/sockets.h"
+#include "hil/time_service.h"
 #include "robots/kinematics.h"
 #include "sanet/codec.h"
 
@@ -26,75 +28,100 @@ namespace {
 constexpr std::uint8_t kUnicast = AgentDatagram::kUnicast, kBroadcast = AgentDatagram::kBroadcast;
 constexpr std::size_t kMostHeldEarly = 1024;  // datagrams kept until the agent has its clock and key
 
+// The first IPv4 address of a network interface.
+std::string InterfaceAddress(const std::string& interface) {
+  ifaddrs* all = nullptr;
+  if (::getifaddrs(&all) != 0) throw std::runtime_error(std::string("cannot list interfaces: ") + std::strerror(errno));
+  std::string found;
+  for (const ifaddrs* a = all; a && found.empty(); a = a->ifa_next)
+    if (a->ifa_addr && a->ifa_addr->sa_family == AF_INET && interface == a->ifa_name) {
+      char text[INET_ADDRSTRLEN];
+      ::inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(a->ifa_addr)->sin_addr, text, sizeof text);
+      found = text;
+    }
+  ::freeifaddrs(all);
+  if (found.empty()) throw std::runtime_error("interface " + interface + " has no IPv4 address (or does not exist)");
+  return found;
+}
+
 // USARSim frame (y right, yaw clockwise) back to sanet's.
 Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
 
 }  // namespace
 
-RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings)
+RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings, std::unique_ptr<ServerLink> link)
     : spec_(spec),
       id_(robot),
       settings_(std::move(settings)),
+      link_(std::move(link)),
       random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
-      server_time_at_(std::chrono::steady_clock::now()),
+      peers_(spec.nodes.size()),
       replays_(spec.nodes.size()) {
-  const sockaddr_in server = Ipv4Endpoint(settings_.server_host, settings_.server_port);
-  for (int attempt = 0; attempt < 100; ++attempt) {  // the server may still be starting
-    tcp_ = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (::connect(tcp_, reinterpret_cast<const sockaddr*>(&server), sizeof server) == 0) break;
-    ::close(tcp_);
-    tcp_ = -1;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  // The clock first: everything the agent stamps is on it.
+  if (settings_.shared_clock) {
+    clock_origin_ = link_->clock_origin();
+    if (!clock_origin_) throw std::runtime_error("--shared-clock: the server at " + link_->address() + " gave no ClockOrigin");
+  } else {
+    clock_sync_ = std::make_unique<ClockSync>(link_->host(), settings_.time_port, settings_.clock_skew);
   }
-  if (tcp_ < 0)
-    throw std::runtime_error("cannot reach the server at " + settings_.server_host + ":" +
-                             std::to_string(settings_.server_port));
-  const int yes = 1;
-  ::setsockopt(tcp_, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
-  ::fcntl(tcp_, F_SETFL, O_NONBLOCK);
-
-  udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
-  const sockaddr_in mine = Ipv4Endpoint(HostOf(id_), PortOf(id_));
-  if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
-    throw std::runtime_error("cannot bind UDP " + HostOf(id_) + ":" + std::to_string(PortOf(id_)) + ": " +
-                             std::strerror(errno));
-  ::fcntl(udp_, F_SETFL, O_NONBLOCK);
-
+  for (const sim::PeerLink& p : spec_.loop.peers)
+    if (const auto node = Lookup(p.robot); node && !p.address.empty())
+      peers_[*node] = Ipv4Endpoint(p.address, PortOf(*node));
+  OpenPeerSocket();
   ProtocolMessage init("INIT");
   init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());
   Command(init);
+  const sockaddr_in& mine = *peers_[id_];
+  char address[INET_ADDRSTRLEN];
+  ::inet_ntop(AF_INET, &mine.sin_addr, address, sizeof address);
+  Command(ProtocolMessage{"PEER"}.Add("Address", address).Add("Port", std::to_string(ntohs(mine.sin_port))));
 }
 
 RemoteNode::~RemoteNode() {
-  if (tcp_ >= 0) {
-    ProtocolMessage stop("DRIVE");
-    Holonomic() ? stop.Add("LinearVelocity", 0.0) : stop.Add("Left", 0.0).Add("Right", 0.0);
-    Command(stop);
-    ::close(tcp_);
-  }
+  ProtocolMessage stop("DRIVE");
+  Holonomic() ? stop.Add("LinearVelocity", 0.0) : stop.Add("Left", 0.0).Add("Right", 0.0);
+  Command(stop);
   if (udp_ >= 0) ::close(udp_);
 }
 
-void RemoteNode::Command(const ProtocolMessage& m) {
-  const std::string line = FormatLine(m);
-  std::size_t sent = 0;
-  while (tcp_ >= 0 && sent < line.size()) {
-    const ssize_t n = ::send(tcp_, line.data() + sent, line.size() - sent, MSG_NOSIGNAL);
-    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-      continue;
-    }
-    if (n <= 0) return;
-    sent += n;
-  }
+// The robot's peer socket: on the address and interface its peer link gives (the command line
+// over the scenario's loop.peers), else on the one-machine rule's address.
+void RemoteNode::OpenPeerSocket() {
+  const auto link = std::find_if(spec_.loop.peers.begin(), spec_.loop.peers.end(),
+                                 [&](const sim::PeerLink& p) { return p.robot == Name(); });
+  const bool linked = link != spec_.loop.peers.end();
+  const std::string interface = !settings_.peer_interface.empty() ? settings_.peer_interface
+                                : linked                          ? link->interface
+                                                                  : "";
+  std::string address = !settings_.peer_address.empty() ? settings_.peer_address : linked ? link->address : "";
+  if (address.empty()) address = interface.empty() ? HostOf(id_) : InterfaceAddress(interface);
+  udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
+  if (!interface.empty() &&
+      ::setsockopt(udp_, SOL_SOCKET, SO_BINDTODEVICE, interface.c_str(), static_cast<socklen_t>(interface.size())) != 0)
+    throw std::runtime_error("cannot bind the peer socket to interface " + interface + ": " + std::strerror(errno) +
+                             (errno == EPERM ? " (binding to an interface needs root or CAP_NET_RAW)" : ""));
+  const sockaddr_in mine = Ipv4Endpoint(address, PortOf(id_));
+  if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
+    throw std::runtime_error("cannot bind UDP " + address + ":" + std::to_string(PortOf(id_)) + ": " +
+                             std::strerror(errno));
+  ::fcntl(udp_, F_SETFL, O_NONBLOCK);
+  peers_[id_] = mine;
 }
+
+void RemoteNode::Command(const ProtocolMessage& m) { link_->Send(m); }
 
 double RemoteNode::Now() const { return step_time_ ? *step_time_ : ClockNow(); }
 
 double RemoteNode::ClockNow() const {
-  const auto now = std::chrono::steady_clock::now();
-  if (clock_origin_) return std::chrono::duration<double>(now.time_since_epoch()).count() - *clock_origin_;
-  return server_time_ + std::chrono::duration<double>(now - server_time_at_).count();
+  if (clock_origin_) return MonotonicSeconds() - *clock_origin_;
+  return clock_sync_->ServerNow();
+}
+
+ClockFigures RemoteNode::clock_figures() const {
+  if (clock_sync_) return clock_sync_->figures();
+  ClockFigures shared;
+  shared.offset = -*clock_origin_;
+  return shared;
 }
 
 std::optional<NodeId> RemoteNode::Lookup(const std::string& name) const {
@@ -104,30 +131,17 @@ std::optional<NodeId> RemoteNode::Lookup(const std::string& name) const {
 }
 
 bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
-  char buffer[65536];
-  while (tcp_ >= 0) {
-    const ssize_t n = ::recv(tcp_, buffer, sizeof buffer, 0);
-    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)) {
-      ::close(tcp_);
-      tcp_ = -1;
-      break;
-    }
-    if (n < 0) break;
-    reader_.Append(std::string_view(buffer, n));
-  }
-  bool too_long = false;
-  while (auto line = reader_.Next(&too_long)) {
-    std::string error;
-    if (auto m = ParseLine(*line, &error)) Take(*m, deliver);
-  }
+  std::vector<ProtocolMessage> lines;
+  const bool open = link_->Read(lines);
+  for (const ProtocolMessage& m : lines) Take(m, deliver);
   ReadUdp(deliver);
-  return tcp_ >= 0;
+  return open;
 }
 
 // A datagram from a peer is checked and stamped with this agent's clock when it is read; one
-// that comes before the agent has its clock and the run's key (a peer that started sooner) waits.
+// that comes before the agent has the run's key (a peer that started sooner) waits.
 void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
-  const bool ready = ClockKnown() && key_;
+  const bool ready = key_.has_value();
   if (ready) {
     for (const Bytes& d : early_) TakeDatagram(d, deliver);
     early_.clear();
@@ -142,7 +156,7 @@ void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
     else if (early_.size() < kMostHeldEarly)
       early_.push_back(std::move(datagram));
     else
-      Reject("more than " + std::to_string(kMostHeldEarly) + " datagrams before the agent had its clock");
+      Reject("more than " + std::to_string(kMostHeldEarly) + " datagrams before the agent had the run's key");
   }
 }
 
@@ -175,15 +189,6 @@ void RemoteNode::Reject(const std::string& why) {
 
 // Lines from the server: sensors, status, messages from its nodes, errors.
 void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver) {
-  if (auto t = m.Number("Time")) {
-    heard_time_ = true;
-    server_time_ = *t;
-    server_time_at_ = std::chrono::steady_clock::now();
-  }
-  // On this machine the server's clock origin gives the simulation time exactly; a server
-  // elsewhere has another monotonic clock, and its time is estimated from its messages.
-  if (m.type == "NFO" && (settings_.shared_clock || settings_.server_host.rfind("127.", 0) == 0))
-    if (auto origin = m.Number("ClockOrigin")) clock_origin_ = *origin;
   if (m.type == "ERR") {  // fatal while claiming the robot; afterwards the run goes on
     const std::string* text = m.Get("Message");
     const std::string why = "server: " + (text ? *text : std::string("error"));
@@ -201,6 +206,21 @@ void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const M
   if (m.type == "SEN") TakeSensor(m);
   if (m.type == "KEY")
     if (const std::string* hex = m.Get("Datagrams")) key_ = DatagramKey::FromHex(*hex);
+  if (m.type == "PEER") TakePeer(m);
+}
+
+// PEER {Name n} {Address a} {Port p}: where another agent listens (it said so to the server).
+void RemoteNode::TakePeer(const ProtocolMessage& m) {
+  const std::string *name = m.Get("Name"), *address = m.Get("Address");
+  const auto node = name ? Lookup(*name) : std::nullopt;
+  const auto port = m.Count("Port", 65535);
+  if (!node || !address || !port || *node == id_) return;
+  try {
+    peers_[*node] = Ipv4Endpoint(*address, static_cast<std::uint16_t>(*port));
+  } catch (const std::runtime_error&) {
+    std::fprintf(stderr, "sanet agent %s: the server gave %s a peer address that is none: %s\n", Name().c_str(),
+                 name->c_str(), address->c_str());
+  }
 }
 
 void RemoteNode::TakeSensor(const ProtocolMessage& m) {
@@ -280,7 +300,7 @@ void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
   d.time_sent = ClockNow();
   d.payload = payload;
   const Bytes datagram = SealDatagram(d, *key_);
-  const sockaddr_in peer = Ipv4Endpoint(HostOf(to), PortOf(to));
+  const sockaddr_in peer = peers_[to] ? *peers_[to] : Ipv4Endpoint(HostOf(to), PortOf(to));
   const ssize_t n =
       ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
   ++(n < 0 ? datagrams_.send_errors : datagrams_.sent);

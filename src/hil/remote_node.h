@@ -12,8 +12,14 @@
 #include <vector>
 
 #include "core/random_stream.h"
+#include <netinet/in.h>
+
+#include <memory>
+
 #include "hil/agent_datagram.h"
+#include "hil/clock_sync.h"
 #include "hil/protocol.h"
+#include "hil/server_link.h"
 #include "net/empty_view.h"
 #include "sanet/node.h"
 #include "sim/run_spec.h"
@@ -21,18 +27,22 @@
 namespace sanet::hil {
 
 struct AgentSettings {
-  std::string server_host = "127.0.0.1";
-  std::uint16_t server_port = 3000;
-  std::string udp_host = "127.0.0.1";   // where every node's UDP socket lives
+  std::string udp_host = "127.0.0.1";   // where every node's UDP socket lives (one machine)
   std::uint16_t udp_base_port = 47000;  // node i listens on base + i
   std::string udp_subnet;               // instead: node i listens on <subnet>.(i+1), port udp_base_port (namespaces)
-  bool shared_clock = false;            // the server runs on this machine: take its clock origin
+  // This robot's link to the other agents, over the scenario's loop.peers: the address its peer
+  // socket takes, and the interface it is bound to (robot-to-robot datagrams leave through it only).
+  std::string peer_address, peer_interface;
+  bool shared_clock = false;   // the server runs on this machine: take its clock origin
+  std::uint16_t time_port = 0;  // otherwise: the server's time service, for the clock estimate
+  double clock_skew = 0;        // tests: added to this computer's clock, which the estimate must find
 };
 
 class RemoteNode : public Node {
  public:
-  // Connects to the server (retrying for a few seconds), claims `robot` and opens its UDP socket.
-  RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings);  // throws std::runtime_error
+  // Takes the server's clock (shared, or estimated), opens the robot's peer socket, claims `robot`
+  // over `link` and says where it listens. Throws std::runtime_error.
+  RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings, std::unique_ptr<ServerLink> link);
   ~RemoteNode() override;
 
   // Reads what arrived on TCP and UDP; messages go to `deliver` as they arrived (the controller's
@@ -44,6 +54,8 @@ class RemoteNode : public Node {
   void SetStepTime(std::optional<double> t) { step_time_ = t; }
   // The run's clock as this process reads it, steps or not.
   double ClockNow() const;
+  // How well that clock agrees with the server's (all zero but the offset with a shared clock).
+  ClockFigures clock_figures() const;
   std::uint64_t messages_sent() const { return messages_sent_; }
   // The robot's own packets between agents (UDP datagrams): sent, refused by the sender's
   // stack (sendto failed) or not sent for want of the run's key, received whole from a known
@@ -91,20 +103,20 @@ class RemoteNode : public Node {
   void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
   std::string HostOf(NodeId node) const;
   std::uint16_t PortOf(NodeId node) const;
+  void OpenPeerSocket();
+  void TakePeer(const ProtocolMessage& m);
 
   const sim::RunSpec& spec_;
   NodeId id_;
   AgentSettings settings_;
-  int tcp_ = -1, udp_ = -1;
-  LineReader reader_{1 << 20};
+  std::unique_ptr<ServerLink> link_;
+  int udp_ = -1;
   net::EmptyView view_{"udp"};
   RandomStream random_;
-  double server_time_ = 0;
-  std::optional<double> clock_origin_;
-  std::chrono::steady_clock::time_point server_time_at_;
-  bool heard_time_ = false;   // a server line gave the time
-  std::vector<Bytes> early_;  // peers' datagrams that came before this agent had its clock and key
-  bool ClockKnown() const { return clock_origin_ || (heard_time_ && !settings_.shared_clock); }
+  std::optional<double> clock_origin_;  // a shared clock: the server's monotonic clock at time 0
+  std::unique_ptr<ClockSync> clock_sync_;  // otherwise
+  std::vector<std::optional<sockaddr_in>> peers_;  // where each agent listens, when known
+  std::vector<Bytes> early_;  // peers' datagrams that came before this agent had the run's key
   std::optional<DatagramKey> key_;     // the run's, from the server's KEY line
   std::uint64_t next_sequence_ = 1;    // of this agent's datagrams
   std::vector<ReplayWindow> replays_;  // per sender

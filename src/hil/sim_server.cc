@@ -108,7 +108,11 @@ nlohmann::ordered_json SimServer::LagSummary() const {
 void SimServer::Poll() {
   const double now = world_.Now();
   // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
-  if (wall_start_ < 0) wall_start_ = WallNow() - now;
+  if (wall_start_ < 0) {
+    wall_start_ = WallNow() - now;
+    // The time service's port: the robot protocol's number when UDP has it free.
+    time_service_ = std::make_unique<TimeService>(settings_.bind, port_, wall_start_);
+  }
   Accept();
   TakeLinesInTurn();
   for (auto& client : clients_) {
@@ -133,7 +137,7 @@ void SimServer::Accept() {
     // A small kernel buffer: what a client leaves unread piles up where the server can see it.
     ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
     clients_.push_back(std::make_unique<Client>(Client{
-        fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow(), 0, 0, false, false, WallNow()}));
+        fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow(), 0, 0, false, false, false, WallNow()}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
@@ -236,6 +240,9 @@ bool SimServer::TakeLines(Client& c) {
 
 void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "INIT") return Init(c, m);
+  if (m.type == "SANET") return Hello(c, m);
+  if (m.type == "GETSCENARIO") return SendScenario(c, m);
+  if (m.type == "GETPLUGIN") return SendPlugin(c, m);
   if (m.type == "GETSTARTPOSES") {
     ProtocolMessage reply{"NFO"};
     std::string poses;
@@ -257,6 +264,8 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "SEND") return SendMessage(c, m);
   if (m.type == "LOG" || m.type == "TRANSITION" || m.type == "METRIC") return Report(c, m);
   if (m.type == "STATS") return TakeStats(c, m);
+  if (m.type == "PEER") return TakePeer(c, m);
+  if (m.type == "CLOCK") return TakeClock(c, m);
   if (m.type == "RECV") {
     const std::string* from = m.Get("From");
     std::string error;
@@ -566,7 +575,10 @@ constexpr StatsKey kStatsKeys[] = {{"Steps", "steps", true},
                                    {"SendErrors", "send_errors", true},
                                    {"LatenessP50", "lateness_p50_s", false},
                                    {"LatenessP99", "lateness_p99_s", false},
-                                   {"LatenessMax", "lateness_max_s", false}};
+                                   {"LatenessMax", "lateness_max_s", false},
+                                   {"ClockOffset", "clock_offset_s", false},
+                                   {"ClockError", "clock_error_s", false},
+                                   {"ClockErrorMax", "clock_error_max_s", false}};
 
 }  // namespace
 
@@ -589,8 +601,13 @@ void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
   c.agent = true;
 }
 
-// agents.csv: one row per agent, its last STATS, in node order.
+// agents.csv: one row per agent, its last STATS, in node order; clock.csv: their CLOCK lines.
 void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
+  if (!clock_rows_.empty()) {
+    trace::CsvSink& clocks =
+        folder.Csv("clock.csv", "time_s,node,offset_s,error_bound_s,round_trip_s,drift_ppm");
+    for (const std::string& row : clock_rows_) clocks.Row(row);
+  }
   if (agent_stats_.empty()) return;
   std::string header = "node";
   for (const StatsKey& k : kStatsKeys) header += std::string(",") + k.name;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "hil/agent_datagram.h"
+#include "hil/time_service.h"
 #include "hil/protocol.h"
 #include "sim/world.h"
 #include "trace/results_folder.h"
@@ -37,6 +38,8 @@ struct ServerSettings {
   std::size_t lines_per_turn = 32;     // lines taken from one client before the next has its turn
   std::size_t bytes_per_turn = 16384;  // bytes read from one client per turn
   double poll_budget = 0.0015;         // s of line handling per poll; the rest waits for the next poll
+  // What agents fetch and compare (sanet extensions): the effective scenario and its fingerprint.
+  std::string scenario_yaml, scenario_fingerprint;
 };
 
 // `text` for an ERR line: a field in braces written 'Name' (one word) or (Name value), lone
@@ -61,8 +64,11 @@ class SimServer : public sim::StepObserver {
   nlohmann::ordered_json LagSummary() const;
   // What each agent last reported of its steps and messages (STATS lines), by robot.
   const nlohmann::ordered_json& AgentStats() const { return agent_stats_; }
-  // The same as a table, agents.csv (nothing without agents).
+  // The same as a table, agents.csv (nothing without agents), and the agents' clock estimates
+  // through the run, clock.csv.
   void WriteAgentTable(trace::ResultsFolder& folder) const;
+  // The time service's port and the clock's origin, for summary.json.
+  nlohmann::ordered_json ClockSummary() const;
 
  private:
   struct Client {
@@ -77,6 +83,7 @@ class SimServer : public sim::StepObserver {
     std::uint32_t last_window = 0;    // the window at the last poll
     bool told_off = false;            // told once that its robot is switched off
     bool agent = false;               // it has sent STATS: a sanet agent, which speaks five times a second
+    bool sanet = false;               // it has said SANET: it understands sanet's extension lines
     double last_heard = 0;            // wall clock (s) of its last line
   };
   struct Closing {  // a connection the server ends: told why, then closed once it hangs up
@@ -99,6 +106,13 @@ class SimServer : public sim::StepObserver {
   void SendMessage(Client& c, const ProtocolMessage& m);
   void Report(Client& c, const ProtocolMessage& m);
   void TakeStats(Client& c, const ProtocolMessage& m);
+  // sanet's extensions for agents (hil/server_extensions.cc).
+  void Hello(Client& c, const ProtocolMessage& m);
+  void SendScenario(Client& c, const ProtocolMessage& m);
+  void SendPlugin(Client& c, const ProtocolMessage& m);
+  void TakePeer(Client& c, const ProtocolMessage& m);
+  void TakeClock(Client& c, const ProtocolMessage& m);
+  void Refuse(Client& c, const std::string& why);
   sim::InboxResult Forward(NodeId to, const Message& message);
   Client* ClientOf(NodeId robot);
   agents::SimulatedNode& NodeOf(const Client& c) { return world_.parts().node(*c.robot); }
@@ -120,6 +134,13 @@ class SimServer : public sim::StepObserver {
   const DatagramKey datagram_key_ = DatagramKey::Random();  // new for every run
   std::vector<double> lags_;                                // s, per physics step
   nlohmann::ordered_json agent_stats_ = nlohmann::ordered_json::object();
+  std::unique_ptr<TimeService> time_service_;  // from the first poll, when the clock's origin is known
+  struct Peer {
+    std::string address;
+    std::uint16_t port;
+  };
+  std::vector<std::optional<Peer>> peers_;  // per node: where its agent listens for other agents
+  std::vector<std::string> clock_rows_;     // clock.csv
   double wall_start_ = -1;
 };
 

@@ -335,6 +335,29 @@ const Fields<sim::LinkShaping>& NetemFields() {
   return fields;
 }
 
+// A text field of a peer link (optional unless the declaration says so).
+void PeerText(Fields<sim::PeerLink>& f, const char* key, std::string sim::PeerLink::*member, const char* range,
+              const char* meaning) {
+  f.Custom(
+      {key, "text", "", "none", range, meaning}, [member](const Field& v, sim::PeerLink& p) { p.*member = v.Text(); },
+      [member](const sim::PeerLink& p) { return (p.*member).empty() ? YAML::Node() : YAML::Node(p.*member); });
+}
+
+const Fields<sim::PeerLink>& PeerFields() {
+  static const Fields<sim::PeerLink> fields = [] {
+    Fields<sim::PeerLink> f;
+    PeerText(f, "robot", &sim::PeerLink::robot, "a robot with a controller", "whose agent this is");
+    f.Required();
+    PeerText(f, "address", &sim::PeerLink::address, "IPv4",
+             "where its agent listens for the other agents (port: `udp_port` + the node's index)");
+    PeerText(f, "interface", &sim::PeerLink::interface, "",
+             "the network interface its agent binds its peer socket to (e.g. `wlan0`), taking its address "
+             "unless `address` is given");
+    return f;
+  }();
+  return fields;
+}
+
 const Fields<sim::LoopSpec>& LoopFields() {
   using sim::LoopSpec;
   static const Fields<LoopSpec> fields = [] {
@@ -360,6 +383,17 @@ const Fields<sim::LoopSpec>& LoopFields() {
         });
     f.Whole<std::uint16_t>("udp_port", Member(&LoopSpec::udp_port), "", 1024, 60000,
                            "loopback: node i uses this + i; namespaces: every node uses it");
+    f.Custom(
+        {"peers", "list of mappings", "", "none", "see [peers](#peers)",
+         "agents on computers of their own: the robot-to-robot segment each one's agent uses"},
+        [](const Field& v, LoopSpec& s) {
+          for (const Field& item : v.Items()) PeerFields().Read(item, s.peers.emplace_back());
+        },
+        [](const LoopSpec& s) {
+          YAML::Node items(YAML::NodeType::Sequence);
+          for (const sim::PeerLink& p : s.peers) items.push_back(PeerFields().Print(p));
+          return s.peers.empty() ? YAML::Node() : items;
+        });
     return f;
   }();
   return fields;
@@ -964,6 +998,7 @@ std::vector<SectionTable> SectionTables() {
       {"end", EndFields().Describe(sim::RunSpec{})},
       {"loop", LoopFields().Describe(sim::LoopSpec{})},
       {"loop.netem", NetemFields().Describe(sim::LinkShaping{})},
+      {"loop.peers", PeerFields().Describe(sim::PeerLink{})},
       {"spawn", SpawnFields().Describe(sim::SpawnSpec{})},
       {"spawn.class", SpawnClassFields().Describe(Keys{})},
       {"outputs", OutputsFields().Describe(Scenario{})},

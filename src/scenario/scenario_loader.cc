@@ -1,7 +1,11 @@
 #include "scenario/scenario_loader.h"
 
+#include <arpa/inet.h>
+#include <net/if.h>
+
 #include <cctype>
 #include <filesystem>
+#include <functional>
 #include <map>
 
 #include "scenario/declarations.h"
@@ -276,8 +280,33 @@ void ReadEvents(const Field& events, sim::RunSpec& run) {
   }
 }
 
+// Each peer link names a robot that runs as an agent, once, with an address or an interface.
+void CheckPeers(const Field& loop, const sim::RunSpec& run) {
+  const auto items = loop.Get("peers");
+  if (!items) return;
+  std::vector<std::string> seen;
+  for (std::size_t i = 0; i < run.loop.peers.size(); ++i) {
+    const sim::PeerLink& p = run.loop.peers[i];
+    const Field item = items->Items()[i];
+    const auto node = std::find_if(run.nodes.begin(), run.nodes.end(), [&](const auto& n) { return n.name == p.robot; });
+    if (node == run.nodes.end() || !sim::RunsAsAgent(*node))
+      item.Require("robot").Fail("'" + p.robot + "' is not a robot with a controller (only those run as agents)");
+    if (std::find(seen.begin(), seen.end(), p.robot) != seen.end())
+      item.Require("robot").Fail("'" + p.robot + "' has a peer link already");
+    seen.push_back(p.robot);
+    in_addr address{};
+    if (!p.address.empty() && ::inet_pton(AF_INET, p.address.c_str(), &address) != 1)
+      item.Require("address").Fail("'" + p.address + "' is not an IPv4 address (a.b.c.d)");
+    if (p.interface.size() >= IFNAMSIZ)
+      item.Require("interface").Fail("'" + p.interface + "' is longer than an interface name can be (" +
+                                     std::to_string(IFNAMSIZ - 1) + " characters)");
+    if (p.address.empty() && p.interface.empty()) item.Fail("give address, interface, or both");
+  }
+}
+
 void ReadLoop(const Field& loop, sim::RunSpec& run) {
   LoopFields().Read(loop, run.loop);
+  CheckPeers(loop, run);
   if (run.loop.network != sim::LoopNetwork::kSimulated) return;
   const Field network = loop.Require("network");
   if (!run.network) network.Fail("simulated needs the scenario's network section: the radio that carries the agents");
@@ -382,11 +411,14 @@ void CheckEachController(const Scenario& scenario, agents::Registry& registry) {
 
 }  // namespace
 
-Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {
+namespace {
+
+Scenario Load(const std::string& path, const std::vector<std::string>& overrides,
+              const std::function<Field()>& parse) {
   Scenario sc;
   sc.file = path;
   for (const std::string& text : overrides) sc.overrides.push_back(ParseOverride(text));
-  const Field root = ParseYamlFile(path);
+  const Field root = parse();
   ApplyOverrides(root.node(), sc.overrides);
   try {
     Read(root, sc);
@@ -394,6 +426,16 @@ Scenario LoadScenario(const std::string& path, const std::vector<std::string>& o
     throw Attributed(e, sc.overrides);
   }
   return sc;
+}
+
+}  // namespace
+
+Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {
+  return Load(path, overrides, [&] { return ParseYamlFile(path); });
+}
+
+Scenario LoadScenarioText(const std::string& text, const std::string& name) {
+  return Load(name, {}, [&] { return ParseYamlText(text, name); });
 }
 
 void CheckControllers(const Scenario& scenario, agents::Registry& registry) {

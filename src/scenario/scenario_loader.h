@@ -25,6 +25,9 @@ struct Scenario {
 // Reads and checks the file with `overrides` (--set) applied (structure, types, ranges, names).
 // Does not look at controllers. An error in a value set on the command line names the option.
 Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from text (the effective scenario a server sends); `name` stands for the file in errors
+// and relative paths in it are taken from the working folder.
+Scenario LoadScenarioText(const std::string& text, const std::string& name);
 
 // Checks that every node's controller exists (loading libraries) and accepts its parameters.
 void CheckControllers(const Scenario& scenario, agents::Registry& registry);

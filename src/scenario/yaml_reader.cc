@@ -164,21 +164,34 @@ void CountValues(const YAML::Node& node, std::size_t& count, const std::string& 
 
 }  // namespace
 
+namespace {
+
+Field ParseYaml(std::istream& in, const std::string& name) {
+  auto file = std::make_shared<const std::string>(name);
+  try {
+    YAML::Node root = YAML::Load(in);
+    if (!root.IsMap()) throw ScenarioError(name, 1, "", "a scenario must be a mapping of keys to values");
+    std::size_t count = 0;
+    CountValues(root, count, name);
+    return Field(root, "", file);
+  } catch (const YAML::Exception& e) {
+    throw ScenarioError(name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
+  }
+}
+
+}  // namespace
+
 Field ParseYamlFile(const std::string& path) {
-  auto file = std::make_shared<const std::string>(path);
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) throw ScenarioError(path, 0, "", "is a folder, not a scenario file");
   std::ifstream in(path);
   if (!in) throw ScenarioError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
-  try {
-    YAML::Node root = YAML::Load(in);
-    if (!root.IsMap()) throw ScenarioError(path, 1, "", "a scenario must be a mapping of keys to values");
-    std::size_t count = 0;
-    CountValues(root, count, path);
-    return Field(root, "", file);
-  } catch (const YAML::Exception& e) {
-    throw ScenarioError(path, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
-  }
+  return ParseYaml(in, path);
+}
+
+Field ParseYamlText(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  return ParseYaml(in, name);
 }
 
 }  // namespace sanet::scenario

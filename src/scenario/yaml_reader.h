@@ -66,5 +66,7 @@ class Field {
 
 // Parses a file; syntax errors become ScenarioErrors with the line.
 Field ParseYamlFile(const std::string& path);
+// The same for text that came from elsewhere; `name` stands for its file in errors.
+Field ParseYamlText(const std::string& text, const std::string& name);
 
 }  // namespace sanet::scenario

@@ -59,12 +59,22 @@ enum class LoopNetwork {
   kSimulated,  // the scenario's simulated radio (ns-3), through a tap in each agent's namespace
 };
 
+// Where a robot's agent listens for the other agents on the robot-to-robot segment (a radio of
+// its computer's own): an address, or a network interface whose address it takes and to which
+// its peer socket is bound, so that robot-to-robot datagrams leave through it alone.
+struct PeerLink {
+  std::string robot;
+  std::string address;    // IPv4; empty: the interface's, or the default rule's
+  std::string interface;  // e.g. wlan0; empty: the route decides
+};
+
 // How `sanet launch` connects the agents.
 struct LoopSpec {
   LoopNetwork network = LoopNetwork::kHost;
   bool namespaces = false;  // each agent in its own network namespace (always with kSimulated)
   LinkShaping shaping;
   std::uint16_t udp_port = 47000;  // loopback: node i uses port + i; namespaces: every node this port
+  std::vector<PeerLink> peers;     // agents on computers of their own (`sanet agent`)
 };
 
 // A robot class that clients of the server may add with INIT (a USARSim class name, e.g.

@@ -1,0 +1,108 @@
+#include "agent_command.h"
+
+#include <memory>
+#include <stdexcept>
+
+#include "hil/agent.h"
+#include "hil/plugin_identity.h"
+#include "hil/server_link.h"
+#include "scenario/effective_scenario.h"
+#include "scenario/scenario_loader.h"
+
+namespace sanet::cli {
+namespace {
+
+struct AgentArgs {
+  std::string file, robot, server = "127.0.0.1:3000", subnet, peer_address, peer_interface, library;
+  std::optional<int> udp_base;
+  bool shared_clock = false;
+  double test_clock_offset = 0;
+  int test_protocol = hil::kSanetProtocol;
+};
+
+std::unique_ptr<hil::ServerLink> Connect(const std::string& server) {
+  const auto colon = server.rfind(':');
+  const std::string port = colon == std::string::npos ? "" : server.substr(colon + 1);
+  if (colon == 0 || port.empty() || port.size() > 5 || port.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoi(port) < 1 || std::stoi(port) > 65535)
+    throw CLI::ValidationError("--server", "expected HOST:PORT (an IPv4 address and a port), not '" + server + "'");
+  try {
+    return std::make_unique<hil::ServerLink>(server.substr(0, colon), static_cast<std::uint16_t>(std::stoi(port)));
+  } catch (const std::runtime_error& e) {
+    if (std::string(e.what()).rfind("not an IPv4", 0) == 0) throw CLI::ValidationError("--server", e.what());
+    throw;
+  }
+}
+
+// The scenario: this computer's copy (which must be the server's), or the server's own.
+scenario::Scenario ScenarioOf(const AgentArgs& a, hil::ServerLink& link) {
+  std::optional<scenario::Scenario> own;
+  if (!a.file.empty()) own = scenario::LoadScenario(a.file);
+  link.Handshake(a.test_protocol, own ? scenario::ScenarioFingerprint(*own) : "");
+  if (own) return std::move(*own);
+  return scenario::LoadScenarioText(link.FetchScenario(), "the scenario of the server at " + link.address());
+}
+
+NodeId RobotOf(const scenario::Scenario& sc, const std::string& robot) {
+  for (NodeId i = 0; i < sc.run.nodes.size(); ++i)
+    if (sc.run.nodes[i].name == robot && sim::RunsAsAgent(sc.run.nodes[i])) return i;
+  throw CLI::ValidationError("--robot", "'" + robot + "' is not a robot with a controller in " + sc.file);
+}
+
+int Agent(const AgentArgs& a, agents::Registry& registry) {
+  std::unique_ptr<hil::ServerLink> link = Connect(a.server);
+  scenario::Scenario sc = ScenarioOf(a, *link);
+  const NodeId id = RobotOf(sc, a.robot);
+  sim::ControllerSpec& controller = *sc.run.nodes[id].controller;
+  if (!a.library.empty()) controller.library = a.library;
+  const std::string differs = hil::PluginDifference(link->FetchPlugin(a.robot), hil::IdentifyPlugin(controller));
+  if (!differs.empty()) throw std::runtime_error("this robot's controller is not the server's: " + differs);
+  hil::AgentSettings settings;
+  settings.udp_base_port = static_cast<std::uint16_t>(a.udp_base.value_or(sc.run.loop.udp_port));
+  settings.udp_subnet = a.subnet;
+  settings.peer_address = a.peer_address;
+  settings.peer_interface = a.peer_interface;
+  settings.shared_clock = a.shared_clock;
+  settings.clock_skew = a.test_clock_offset;
+  settings.time_port = link->time_port();
+  return hil::RunAgent(sc.run, id, settings, std::move(link), registry);
+}
+
+}  // namespace
+
+Command AddAgent(CLI::App& app) {
+  auto a = std::make_shared<AgentArgs>();
+  CLI::App* cmd = app.add_subcommand("agent",
+                                     "Run one robot's controller as its own process, on this computer or another: "
+                                     "sensors and motors through a `sanet serve` server, messages over real UDP");
+  cmd->add_option("--server", a->server, "The server, HOST:PORT")->capture_default_str();
+  cmd->add_option("--robot", a->robot, "The robot to drive (its name in the scenario)")->required();
+  cmd->add_option("--scenario", a->file,
+                  "This computer's copy of the scenario, which must be the server's (same fingerprint); without "
+                  "it the agent fetches the server's");
+  cmd->add_option("--library", a->library,
+                  "Where this computer keeps the robot's controller library (default: the scenario's path); it "
+                  "must be the server's build (same SHA-256)");
+  cmd->add_option("--peer-address", a->peer_address,
+                  "The address this robot's agent listens on for the other agents (overrides the scenario's "
+                  "loop.peers)");
+  cmd->add_option("--peer-interface", a->peer_interface,
+                  "The interface (e.g. wlan0) robot-to-robot datagrams use: the peer socket is bound to it and "
+                  "takes its address unless --peer-address is given (needs root or CAP_NET_RAW)");
+  cmd->add_option("--udp-base", a->udp_base,
+                  "UDP port of node 0; node i uses base + i (default: the scenario's loop.udp_port, 47000)")
+      ->check(CLI::Range(1024, 60000));
+  cmd->add_option("--udp-subnet", a->subnet,
+                  "Instead: node i listens on SUBNET.(i+1) at the base port (agents in network namespaces)");
+  cmd->add_flag("--shared-clock", a->shared_clock,
+                "The server runs on this machine: take its clock exactly instead of estimating it");
+  cmd->add_option("--test-clock-offset", a->test_clock_offset,
+                  "For tests: add this many seconds to this computer's clock (the estimate must find it)")
+      ->group("Testing");
+  cmd->add_option("--test-protocol-version", a->test_protocol,
+                  "For tests: claim this version of sanet's protocol (the server must refuse another)")
+      ->group("Testing");
+  return {cmd, [a](agents::Registry& r) { return Agent(*a, r); }};
+}
+
+}  // namespace sanet::cli

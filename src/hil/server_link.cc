@@ -1,0 +1,167 @@
+#include "hil/server_link.h"
+
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+#include "hil/message_lines.h"
+#include "core/version.h"
+#include "hil/sockets.h"
+
+namespace sanet::hil {
+namespace {
+
+constexpr int kConnectTries = 100;  // 0.1 s apart
+constexpr double kReplyWait = 10;   // s for an answer to one request
+
+}  // namespace
+
+ServerLink::ServerLink(const std::string& host, std::uint16_t port)
+    : host_(host), address_(host + ":" + std::to_string(port)) {
+  const sockaddr_in server = Ipv4Endpoint(host, port);
+  for (int attempt = 0; attempt < kConnectTries && fd_ < 0; ++attempt) {
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (::connect(fd_, reinterpret_cast<const sockaddr*>(&server), sizeof server) == 0) break;
+    ::close(fd_);
+    fd_ = -1;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  if (fd_ < 0) throw std::runtime_error("cannot reach the server at " + address_);
+  const int yes = 1;
+  ::setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+  ::fcntl(fd_, F_SETFL, O_NONBLOCK);
+  const ProtocolMessage greeting = Await("NFO", "");
+  clock_origin_ = greeting.Number("ClockOrigin");
+}
+
+ServerLink::~ServerLink() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void ServerLink::Send(const ProtocolMessage& m) {
+  const std::string line = FormatLine(m);
+  std::size_t sent = 0;
+  while (fd_ >= 0 && sent < line.size()) {
+    const ssize_t n = ::send(fd_, line.data() + sent, line.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      continue;
+    }
+    if (n <= 0) return;
+    sent += static_cast<std::size_t>(n);
+  }
+}
+
+bool ServerLink::Read(std::vector<ProtocolMessage>& lines) {
+  lines = std::move(waiting_);
+  waiting_.clear();
+  char buffer[65536];
+  while (fd_ >= 0) {
+    const ssize_t n = ::recv(fd_, buffer, sizeof buffer, 0);
+    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)) {
+      ::close(fd_);
+      fd_ = -1;
+      break;
+    }
+    if (n < 0) break;
+    reader_.Append(std::string_view(buffer, static_cast<std::size_t>(n)));
+  }
+  bool too_long = false;
+  while (auto line = reader_.Next(&too_long)) {
+    std::string error;
+    if (auto m = ParseLine(*line, &error)) lines.push_back(std::move(*m));
+  }
+  return fd_ >= 0 || !lines.empty();
+}
+
+// Waits for the first line of `type`; other lines wait for Read. An ERR is the server's answer.
+ProtocolMessage ServerLink::Await(const std::string& type, const std::string& request) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kReplyWait);
+  std::vector<ProtocolMessage> kept;
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::vector<ProtocolMessage> lines;
+    const bool open = Read(lines);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (lines[i].type == type || lines[i].type == "ERR") {
+        kept.insert(kept.end(), std::make_move_iterator(lines.begin() + i + 1), std::make_move_iterator(lines.end()));
+        waiting_ = std::move(kept);
+        if (lines[i].type == type) return lines[i];
+        const std::string* text = lines[i].Get("Message");
+        throw std::runtime_error("server " + address_ + (request.empty() ? "" : " (to " + request + ")") + ": " +
+                                 (text ? *text : "error"));
+      }
+      kept.push_back(std::move(lines[i]));
+    }
+    if (!open) throw std::runtime_error("the server at " + address_ + " closed the connection");
+    pollfd p{fd_, POLLIN, 0};
+    ::poll(&p, 1, 50);
+  }
+  throw std::runtime_error("the server at " + address_ + " did not answer" +
+                           (request.empty() ? "" : " " + request) + " within " +
+                           std::to_string(static_cast<int>(kReplyWait)) + " s");
+}
+
+ServerHello ServerLink::Handshake(int protocol, const std::string& fingerprint) {
+  ProtocolMessage hello{"SANET"};
+  hello.Add("Protocol", std::to_string(protocol)).Add("Version", SanetVersion());
+  if (!fingerprint.empty()) hello.Add("Fingerprint", fingerprint);
+  Send(hello);
+  ProtocolMessage reply;
+  try {
+    reply = Await("SANET", "SANET");
+  } catch (const std::runtime_error& e) {
+    if (std::string(e.what()).find("unknown command SANET") == std::string::npos) throw;
+    throw std::runtime_error("the server at " + address_ +
+                             " does not speak sanet's extensions (sanet before protocol 2, or another USARSim server)");
+  }
+  const auto theirs = reply.Count("Protocol", 1000000);
+  const std::string* version = reply.Get("Version");
+  if (!theirs || *theirs != static_cast<std::uint64_t>(protocol))
+    throw std::runtime_error("the server at " + address_ + " speaks sanet's protocol " +
+                             (theirs ? std::to_string(*theirs) : "?") + " (sanet " + (version ? *version : "?") +
+                             "), this agent " + std::to_string(protocol) + " (sanet " + SanetVersion() +
+                             "); run the same sanet on both computers");
+  ServerHello h;
+  h.version = version ? *version : "";
+  if (const std::string* f = reply.Get("Fingerprint")) h.fingerprint = *f;
+  h.time_port = time_port_ = static_cast<std::uint16_t>(reply.Count("TimePort", 65535).value_or(0));
+  return h;
+}
+
+std::string ServerLink::FetchScenario() {
+  std::string yaml;
+  for (std::uint64_t part = 0, parts = 1; part < parts; ++part) {
+    ProtocolMessage request{"GETSCENARIO"};
+    Send(request.Add("Part", std::to_string(part)));
+    const ProtocolMessage reply = Await("SCENARIO", "GETSCENARIO");
+    const auto n = reply.Count("Parts", 1 << 20);
+    const std::string* hex = reply.Get("Yaml");
+    const auto bytes = hex ? FromHex(*hex) : std::nullopt;
+    if (!n || !bytes) throw std::runtime_error("the server at " + address_ + " sent a malformed SCENARIO line");
+    parts = *n;
+    yaml.append(bytes->begin(), bytes->end());
+  }
+  return yaml;
+}
+
+PluginIdentity ServerLink::FetchPlugin(const std::string& robot) {
+  ProtocolMessage request{"GETPLUGIN"};
+  Send(request.Add("Robot", robot));
+  const ProtocolMessage reply = Await("PLUGIN", "GETPLUGIN");
+  PluginIdentity id;
+  id.controller_api = static_cast<int>(reply.Count("ControllerApi", 1000000).value_or(0));
+  if (const std::string* library = reply.Get("Library")) id.library = *library;
+  if (const std::string* sha = reply.Get("Sha256")) id.sha256 = *sha;
+  return id;
+}
+
+}  // namespace sanet::hil

@@ -213,6 +213,8 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   const int port = a.port;
   const bool quiet = a.quiet;
   scenario::Scenario sc = LoadChecked(file, a.sets, registry);
+  // Agents with their own copy of the file compare this; how long the server runs is its own affair.
+  const std::string fingerprint = scenario::ScenarioFingerprint(sc);
   if (a.duration) sc.run.duration = *a.duration;
   sc.run.robots_remote = true;
   const std::string results = output.empty() ? sc.output_folder : output;
@@ -225,7 +227,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   settings.port = static_cast<std::uint16_t>(port);
   settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
   settings.scenario_yaml = scenario::EffectiveScenarioYaml(sc);
-  settings.scenario_fingerprint = scenario::ScenarioFingerprint(sc);
+  settings.scenario_fingerprint = fingerprint;
   try {
     hil::RaiseDescriptorLimit(settings.max_clients);
   } catch (const std::runtime_error& e) {

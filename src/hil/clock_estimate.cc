@@ -19,34 +19,48 @@ void ClockEstimate::Add(const ClockSample& sample) {
   Fit();
 }
 
-// Weighted least squares, each sample weighted by the inverse square of its round trip (a
-// sample from a queued exchange counts little); a floor of 10 us keeps one lucky sample from
-// outweighing the rest. The slope is fitted only once two samples, each wrong by up to half the
-// sharpest round trip, pin it down better than kUnknownDrift.
-void ClockEstimate::Fit() {
+// Each sample weighted by the inverse square of its round trip: a queued exchange counts little.
+// A floor of 10 us keeps one lucky sample from outweighing all the others.
+double ClockEstimate::Weight(const ClockSample& s) const {
   constexpr double kFloor = 10e-6;
-  const ClockSample& latest = samples_.back();
-  double sharpest = latest.round_trip;
-  const std::size_t recent = std::min<std::size_t>(samples_.size(), 8);
-  for (std::size_t i = samples_.size() - recent; i < samples_.size(); ++i)
-    sharpest = std::min(sharpest, samples_[i].round_trip);
-  reference_ = latest.at;
-  double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  return 1 / std::pow(std::max(s.round_trip, kFloor), 2);
+}
+
+double ClockEstimate::ValueCoefficient(const ClockSample& s, double x) const {
+  const double xi = s.at - reference_;
+  if (!fitted_) return Weight(s) / sums_.w;
+  return Weight(s) * ((sums_.xx - sums_.x * xi) + x * (sums_.w * xi - sums_.x)) / sums_.Spread();
+}
+
+double ClockEstimate::SlopeCoefficient(const ClockSample& s) const {
+  return Weight(s) * (sums_.w * (s.at - reference_) - sums_.x) / sums_.Spread();
+}
+
+// Weighted least squares; the slope is fitted only once the samples pin it down better than
+// kUnknownDrift (its error is at most the sum of its coefficients times the half round trips).
+void ClockEstimate::Fit() {
+  reference_ = samples_.back().at;
+  sums_ = {};
   for (const ClockSample& s : samples_) {
-    const double w = 1 / std::pow(std::max(s.round_trip, kFloor), 2), x = s.at - reference_;
-    sw += w, sx += w * x, sy += w * s.offset, sxx += w * x * x, sxy += w * x * s.offset;
+    const double w = Weight(s), x = s.at - reference_;
+    sums_.w += w, sums_.x += w * x, sums_.y += w * s.offset, sums_.xx += w * x * x, sums_.xy += w * x * s.offset;
   }
-  const double span = latest.at - samples_.front().at, spread = sw * sxx - sx * sx;
-  const double measured = span > 0 ? std::max(sharpest, kFloor) / span : kUnknownDrift;
-  const bool fitted = measured < kUnknownDrift && spread > 0;
-  slope_ = fitted ? (sw * sxy - sx * sy) / spread : 0;
-  drift_uncertainty_ = fitted ? measured : kUnknownDrift;
-  intercept_ = (sy - slope_ * sx) / sw;
-  error_bound_ = sharpest / 2 + std::abs(latest.offset - intercept_);
+  fitted_ = false;
+  if (samples_.size() >= 2 && sums_.Spread() > 0) {
+    double slope_error = 0;
+    for (const ClockSample& s : samples_) slope_error += std::abs(SlopeCoefficient(s)) * s.round_trip / 2;
+    fitted_ = slope_error < kUnknownDrift;
+  }
+  slope_ = fitted_ ? (sums_.w * sums_.xy - sums_.x * sums_.y) / sums_.Spread() : 0;
+  intercept_ = (sums_.y - slope_ * sums_.x) / sums_.w;
 }
 
 double ClockEstimate::ErrorBound(double local) const {
-  return error_bound_ + drift_uncertainty_ * std::abs(local - reference_);
+  const double x = local - reference_;
+  double bound = 0;
+  for (const ClockSample& s : samples_) bound += std::abs(ValueCoefficient(s, x)) * s.round_trip / 2;
+  if (!fitted_) bound += kUnknownDrift * std::abs(x - sums_.x / sums_.w);
+  return bound;
 }
 
 }  // namespace sanet::hil

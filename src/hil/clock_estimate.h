@@ -33,23 +33,35 @@ class ClockEstimate {
   bool Known() const { return !samples_.empty(); }
   // The server's clock minus this computer's, at `local` on this computer's clock.
   double Offset(double local) const { return intercept_ + slope_ * (local - reference_); }
-  // How wrong Offset(local) may be: half the sharpest recent round trip, plus how far the latest
-  // sample strays from the line (what the line does not explain), plus what the drift's
-  // uncertainty adds since the latest sample.
+  // How wrong Offset(local) may be. Each sample's offset is wrong by at most half its round trip
+  // (however unequal the two directions); the line's value at `local` is a sum of the samples'
+  // offsets with known coefficients, so its error is at most the same sum of those half round
+  // trips, taken absolutely. Without a fitted drift, the oscillator's possible drift since the
+  // samples' weighted mean time is added.
   double ErrorBound(double local) const;
   double Drift() const { return slope_; }  // s per s (1e-6 is 1 ppm)
   const ClockSample& Latest() const { return samples_.back(); }
 
   // Samples kept for the line (about a minute at one burst a second).
   static constexpr std::size_t kKept = 64;
-  // Until the samples span enough time to measure the drift better than this, it is taken as 0
-  // and this is its uncertainty: the tolerance of a computer's quartz oscillator (tens of ppm).
+  // Until the samples pin the drift down better than this, it is taken as 0 and this is its
+  // uncertainty: the tolerance of a computer's quartz oscillator (tens of ppm).
   static constexpr double kUnknownDrift = 100e-6;  // s per s
 
  private:
+  struct Sums {  // of the weighted least squares, x measured from reference_
+    double w = 0, x = 0, y = 0, xx = 0, xy = 0;
+    double Spread() const { return w * xx - x * x; }
+  };
+  double Weight(const ClockSample& s) const;
+  // The coefficient of sample `s` in the line's value at x (from reference_), and in its slope.
+  double ValueCoefficient(const ClockSample& s, double x) const;
+  double SlopeCoefficient(const ClockSample& s) const;
   void Fit();
   std::deque<ClockSample> samples_;
-  double reference_ = 0, intercept_ = 0, slope_ = 0, error_bound_ = 0, drift_uncertainty_ = kUnknownDrift;
+  Sums sums_;
+  bool fitted_ = false;  // the slope is measured, not taken as 0
+  double reference_ = 0, intercept_ = 0, slope_ = 0;
 };
 
 // The exchange of a burst with the shortest round trip; nullopt for an empty burst.

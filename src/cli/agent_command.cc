@@ -88,7 +88,7 @@ Command AddAgent(CLI::App& app) {
                   "loop.peers)");
   cmd->add_option("--peer-interface", a->peer_interface,
                   "The interface (e.g. wlan0) robot-to-robot datagrams use: the peer socket is bound to it and "
-                  "takes its address unless --peer-address is given (needs root or CAP_NET_RAW)");
+                  "takes its address unless --peer-address is given (Linux before 5.7: needs root or CAP_NET_RAW)");
   cmd->add_option("--udp-base", a->udp_base,
                   "UDP port of node 0; node i uses base + i (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));

@@ -99,7 +99,7 @@ void RemoteNode::OpenPeerSocket() {
   if (!interface.empty() &&
       ::setsockopt(udp_, SOL_SOCKET, SO_BINDTODEVICE, interface.c_str(), static_cast<socklen_t>(interface.size())) != 0)
     throw std::runtime_error("cannot bind the peer socket to interface " + interface + ": " + std::strerror(errno) +
-                             (errno == EPERM ? " (binding to an interface needs root or CAP_NET_RAW)" : ""));
+                             (errno == EPERM ? " (before Linux 5.7, binding to an interface needs root or CAP_NET_RAW)" : ""));
   const sockaddr_in mine = Ipv4Endpoint(address, PortOf(id_));
   if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
     throw std::runtime_error("cannot bind UDP " + address + ":" + std::to_string(PortOf(id_)) + ": " +

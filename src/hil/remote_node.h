@@ -5,17 +5,16 @@
 // ns-3 network. The controller cannot tell it from the simulated node.
 #pragma once
 
+#include <netinet/in.h>
+
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/random_stream.h"
-#include <netinet/in.h>
-
-#include <memory>
-
 #include "hil/agent_datagram.h"
 #include "hil/clock_sync.h"
 #include "hil/protocol.h"
@@ -33,7 +32,7 @@ struct AgentSettings {
   // This robot's link to the other agents, over the scenario's loop.peers: the address its peer
   // socket takes, and the interface it is bound to (robot-to-robot datagrams leave through it only).
   std::string peer_address, peer_interface;
-  bool shared_clock = false;   // the server runs on this machine: take its clock origin
+  bool shared_clock = false;    // the server runs on this machine: take its clock origin
   std::uint16_t time_port = 0;  // otherwise: the server's time service, for the clock estimate
   double clock_skew = 0;        // tests: added to this computer's clock, which the estimate must find
 };
@@ -113,13 +112,13 @@ class RemoteNode : public Node {
   int udp_ = -1;
   net::EmptyView view_{"udp"};
   RandomStream random_;
-  std::optional<double> clock_origin_;  // a shared clock: the server's monotonic clock at time 0
-  std::unique_ptr<ClockSync> clock_sync_;  // otherwise
+  std::optional<double> clock_origin_;             // a shared clock: the server's monotonic clock at time 0
+  std::unique_ptr<ClockSync> clock_sync_;          // otherwise
   std::vector<std::optional<sockaddr_in>> peers_;  // where each agent listens, when known
-  std::vector<Bytes> early_;  // peers' datagrams that came before this agent had the run's key
-  std::optional<DatagramKey> key_;     // the run's, from the server's KEY line
-  std::uint64_t next_sequence_ = 1;    // of this agent's datagrams
-  std::vector<ReplayWindow> replays_;  // per sender
+  std::vector<Bytes> early_;                       // peers' datagrams that came before this agent had the run's key
+  std::optional<DatagramKey> key_;                 // the run's, from the server's KEY line
+  std::uint64_t next_sequence_ = 1;                // of this agent's datagrams
+  std::vector<ReplayWindow> replays_;              // per sender
   std::optional<Pose2D> truth_, odometry_;
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;

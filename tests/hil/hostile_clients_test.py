@@ -157,7 +157,7 @@ class HostileClients(unittest.TestCase):
         agent.send("INIT {Name r1}")  # reports like an agent, then falls silent (and still reads)
         agent.send("STATS {Steps 1} {Missed 0} {Rate 10} {Sent 0} {Received 0} {DatagramsSent 0} "
                    "{DatagramsReceived 0} {DatagramsRejected 0} {SendErrors 0} {LatenessP50 0} {LatenessP99 0} "
-                   "{LatenessMax 0}")
+                   "{LatenessMax 0} {ClockOffset 0} {ClockError 0} {ClockErrorMax 0}")
         silent_from = float(field(agent.sensor("GroundTruth"), "Time"))
         threading.Thread(target=lambda: [None for _ in agent.lines()], daemon=True).start()
         stopped_at = float(field(stopping.sensor("GroundTruth"), "Time"))  # and reads no more

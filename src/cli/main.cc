@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include "agent_command.h"
 #include "agents/controller_registry.h"
 #include "builtin.h"
 #include "core/atomic_file.h"
@@ -31,7 +32,6 @@
 #include "scenario/scenario_loader.h"
 #include "sim/interruption.h"
 #include "sim/world.h"
-#include "agent_command.h"
 #include "study_commands.h"
 #include "trace/earlier_run.h"
 #include "view/live_view.h"

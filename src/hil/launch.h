@@ -14,8 +14,8 @@ namespace sanet::hil {
 struct LaunchSettings {
   std::string scenario_file;
   std::vector<std::string> sets;  // --set, given to the server with the file
-  std::string output;  // the results folder
-  bool force = false;  // the server writes beside files no sanet run wrote
+  std::string output;             // the results folder
+  bool force = false;             // the server writes beside files no sanet run wrote
   int udp_base = 47000;
   std::optional<double> duration;  // overrides the scenario's
   // A program to run beside the agents, in `exec_robot`'s network namespace when there is one

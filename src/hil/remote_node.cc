@@ -60,7 +60,8 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   // The clock first: everything the agent stamps is on it.
   if (settings_.shared_clock) {
     clock_origin_ = link_->clock_origin();
-    if (!clock_origin_) throw std::runtime_error("--shared-clock: the server at " + link_->address() + " gave no ClockOrigin");
+    if (!clock_origin_)
+      throw std::runtime_error("--shared-clock: the server at " + link_->address() + " gave no ClockOrigin");
   } else {
     clock_sync_ = std::make_unique<ClockSync>(link_->host(), settings_.time_port, settings_.clock_skew);
   }
@@ -98,8 +99,9 @@ void RemoteNode::OpenPeerSocket() {
   udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
   if (!interface.empty() &&
       ::setsockopt(udp_, SOL_SOCKET, SO_BINDTODEVICE, interface.c_str(), static_cast<socklen_t>(interface.size())) != 0)
-    throw std::runtime_error("cannot bind the peer socket to interface " + interface + ": " + std::strerror(errno) +
-                             (errno == EPERM ? " (before Linux 5.7, binding to an interface needs root or CAP_NET_RAW)" : ""));
+    throw std::runtime_error(
+        "cannot bind the peer socket to interface " + interface + ": " + std::strerror(errno) +
+        (errno == EPERM ? " (before Linux 5.7, binding to an interface needs root or CAP_NET_RAW)" : ""));
   const sockaddr_in mine = Ipv4Endpoint(address, PortOf(id_));
   if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
     throw std::runtime_error("cannot bind UDP " + address + ":" + std::to_string(PortOf(id_)) + ": " +

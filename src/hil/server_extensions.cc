@@ -5,10 +5,10 @@
 
 #include <algorithm>
 
+#include "core/version.h"
 #include "hil/message_lines.h"
 #include "hil/plugin_identity.h"
 #include "hil/sim_server.h"
-#include "core/version.h"
 
 namespace sanet::hil {
 namespace {
@@ -111,7 +111,8 @@ void SimServer::TakePeer(Client& c, const ProtocolMessage& m) {
 void SimServer::TakeClock(Client& c, const ProtocolMessage& m) {
   const auto offset = m.Number("Offset"), error = m.Number("Error"), trip = m.Number("RoundTrip");
   const auto drift = m.Number("Drift");
-  if (!offset || !error || !trip || !drift) return Error(c, "CLOCK needs {Offset s} {Error s} {RoundTrip s} {Drift s/s}");
+  if (!offset || !error || !trip || !drift)
+    return Error(c, "CLOCK needs {Offset s} {Error s} {RoundTrip s} {Drift s/s}");
   clock_rows_.push_back(FormatPrecise(world_.Now()) + "," + trace::CsvField(world_.NameOf(*c.robot)) + "," +
                         FormatPrecise(*offset) + "," + FormatPrecise(*error) + "," + FormatPrecise(*trip) + "," +
                         FormatPrecise(*drift * 1e6));

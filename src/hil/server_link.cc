@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "hil/message_lines.h"
 #include "core/version.h"
+#include "hil/message_lines.h"
 #include "hil/sockets.h"
 
 namespace sanet::hil {
@@ -105,9 +105,8 @@ ProtocolMessage ServerLink::Await(const std::string& type, const std::string& re
     pollfd p{fd_, POLLIN, 0};
     ::poll(&p, 1, 50);
   }
-  throw std::runtime_error("the server at " + address_ + " did not answer" +
-                           (request.empty() ? "" : " " + request) + " within " +
-                           std::to_string(static_cast<int>(kReplyWait)) + " s");
+  throw std::runtime_error("the server at " + address_ + " did not answer" + (request.empty() ? "" : " " + request) +
+                           " within " + std::to_string(static_cast<int>(kReplyWait)) + " s");
 }
 
 ServerHello ServerLink::Handshake(int protocol, const std::string& fingerprint) {

@@ -136,8 +136,20 @@ void SimServer::Accept() {
     }
     // A small kernel buffer: what a client leaves unread piles up where the server can see it.
     ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
-    clients_.push_back(std::make_unique<Client>(Client{
-        fd, PeerOf(fd), LineReader(settings_.max_line), "", {}, 0, 0, WallNow(), 0, 0, false, false, false, WallNow()}));
+    clients_.push_back(std::make_unique<Client>(Client{fd,
+                                                       PeerOf(fd),
+                                                       LineReader(settings_.max_line),
+                                                       "",
+                                                       {},
+                                                       0,
+                                                       0,
+                                                       WallNow(),
+                                                       0,
+                                                       0,
+                                                       false,
+                                                       false,
+                                                       false,
+                                                       WallNow()}));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
@@ -604,8 +616,7 @@ void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
 // agents.csv: one row per agent, its last STATS, in node order; clock.csv: their CLOCK lines.
 void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
   if (!clock_rows_.empty()) {
-    trace::CsvSink& clocks =
-        folder.Csv("clock.csv", "time_s,node,offset_s,error_bound_s,round_trip_s,drift_ppm");
+    trace::CsvSink& clocks = folder.Csv("clock.csv", "time_s,node,offset_s,error_bound_s,round_trip_s,drift_ppm");
     for (const std::string& row : clock_rows_) clocks.Row(row);
   }
   if (agent_stats_.empty()) return;

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "hil/agent_datagram.h"
-#include "hil/time_service.h"
 #include "hil/protocol.h"
+#include "hil/time_service.h"
 #include "sim/world.h"
 #include "trace/results_folder.h"
 

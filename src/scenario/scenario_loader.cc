@@ -288,7 +288,8 @@ void CheckPeers(const Field& loop, const sim::RunSpec& run) {
   for (std::size_t i = 0; i < run.loop.peers.size(); ++i) {
     const sim::PeerLink& p = run.loop.peers[i];
     const Field item = items->Items()[i];
-    const auto node = std::find_if(run.nodes.begin(), run.nodes.end(), [&](const auto& n) { return n.name == p.robot; });
+    const auto node =
+        std::find_if(run.nodes.begin(), run.nodes.end(), [&](const auto& n) { return n.name == p.robot; });
     if (node == run.nodes.end() || !sim::RunsAsAgent(*node))
       item.Require("robot").Fail("'" + p.robot + "' is not a robot with a controller (only those run as agents)");
     if (std::find(seen.begin(), seen.end(), p.robot) != seen.end())
@@ -298,8 +299,9 @@ void CheckPeers(const Field& loop, const sim::RunSpec& run) {
     if (!p.address.empty() && ::inet_pton(AF_INET, p.address.c_str(), &address) != 1)
       item.Require("address").Fail("'" + p.address + "' is not an IPv4 address (a.b.c.d)");
     if (p.interface.size() >= IFNAMSIZ)
-      item.Require("interface").Fail("'" + p.interface + "' is longer than an interface name can be (" +
-                                     std::to_string(IFNAMSIZ - 1) + " characters)");
+      item.Require("interface")
+          .Fail("'" + p.interface + "' is longer than an interface name can be (" + std::to_string(IFNAMSIZ - 1) +
+                " characters)");
     if (p.address.empty() && p.interface.empty()) item.Fail("give address, interface, or both");
   }
 }
@@ -413,8 +415,7 @@ void CheckEachController(const Scenario& scenario, agents::Registry& registry) {
 
 namespace {
 
-Scenario Load(const std::string& path, const std::vector<std::string>& overrides,
-              const std::function<Field()>& parse) {
+Scenario Load(const std::string& path, const std::vector<std::string>& overrides, const std::function<Field()>& parse) {
   Scenario sc;
   sc.file = path;
   for (const std::string& text : overrides) sc.overrides.push_back(ParseOverride(text));

@@ -1,3 +1,5 @@
+#include "hil/clock_sync.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,7 +7,6 @@
 #include <vector>
 
 #include "hil/clock_estimate.h"
-#include "hil/clock_sync.h"
 #include "hil/time_service.h"
 
 namespace sanet::hil {

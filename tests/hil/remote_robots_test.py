@@ -190,8 +190,14 @@ class RemoteRobots(unittest.TestCase):
             self.assertLessEqual(abs(stats["clock_offset_s"] - truth), stats["clock_error_max_s"] + 2e-6, (robot, stats))
         clocks = self.rows("clock.csv")
         self.assertEqual({r["node"] for r in clocks}, set(ROBOTS))
-        bounds = [float(r["error_bound_s"]) for r in clocks]
-        self.assertLess(sorted(bounds)[int(0.99 * (len(bounds) - 1))], 1e-3, "p99 of the bounds")
+        bounds = sorted(float(r["error_bound_s"]) for r in clocks)
+        trips = sorted(float(r["round_trip_s"]) for r in clocks)
+        at = lambda values, q: values[int(q * (len(values) - 1))]
+        print(f"\nclock estimates: {len(clocks)}; round trip p50 {at(trips, 0.5) * 1e6:.0f} us, "
+              f"max {trips[-1] * 1e6:.0f} us; error bound p50 {at(bounds, 0.5) * 1e6:.0f} us, "
+              f"p99 {at(bounds, 0.99) * 1e6:.0f} us, max {bounds[-1] * 1e6:.0f} us; worst of the run (agents.csv) "
+              f"{max(self.summary['agents'][r]['clock_error_max_s'] for r in ROBOTS) * 1e6:.0f} us")
+        self.assertLess(at(bounds, 0.99), 1e-3, "p99 of the bounds")
 
     def test_no_delay_is_negative_beyond_the_two_bounds(self):
         bound = {r: self.summary["agents"][r]["clock_error_max_s"] for r in ROBOTS}

@@ -14,6 +14,7 @@ namespace sanet::hil {
 namespace {
 
 constexpr std::size_t kScenarioPart = 32768;  // bytes of YAML per SCENARIO line (twice that in hex)
+constexpr double kLeastClockPeriod = 0.5;     // s between two CLOCK rows of one robot
 
 bool IsIpv4(const std::string& text) {
   in_addr address{};
@@ -113,6 +114,10 @@ void SimServer::TakeClock(Client& c, const ProtocolMessage& m) {
   const auto drift = m.Number("Drift");
   if (!offset || !error || !trip || !drift)
     return Error(c, "CLOCK needs {Offset s} {Error s} {RoundTrip s} {Drift s/s}");
+  // An agent reports once a second; more often is no agent's doing, and would only grow the table.
+  last_clock_row_.resize(world_.NodeCount(), -1e300);
+  if (world_.Now() - last_clock_row_[*c.robot] < kLeastClockPeriod) return;
+  last_clock_row_[*c.robot] = world_.Now();
   clock_rows_.push_back(FormatPrecise(world_.Now()) + "," + trace::CsvField(world_.NameOf(*c.robot)) + "," +
                         FormatPrecise(*offset) + "," + FormatPrecise(*error) + "," + FormatPrecise(*trip) + "," +
                         FormatPrecise(*drift * 1e6));

@@ -141,6 +141,7 @@ class SimServer : public sim::StepObserver {
   };
   std::vector<std::optional<Peer>> peers_;  // per node: where its agent listens for other agents
   std::vector<std::string> clock_rows_;     // clock.csv
+  std::vector<double> last_clock_row_;      // per node: when its last CLOCK was recorded
   double wall_start_ = -1;
 };
 

@@ -113,6 +113,24 @@ class HostileClients(unittest.TestCase):
         print("lag", lag)
         self.assertLess(lag["p99_s"], lag["deadline_s"], "the step loop keeps its deadlines")
 
+    def test_a_flood_of_clock_reports_grows_no_table(self):
+        self.server, port, out = serve(SANET, SCENARIO, self.tmp.name)
+        claim = Client(port)
+        claim.send("INIT {Name r2}")
+        claim.sensor("GroundTruth")
+        flooder = Flooder(port, b"INIT {Name r3}\r\n" + b"CLOCK {Offset 1} {Error 0} {RoundTrip 0} {Drift 0}\r\n" * 50)
+        flooder.start()
+        started = time.time()
+        time.sleep(4)
+        self.server.send_signal(signal.SIGTERM)
+        self.server.wait(timeout=10)
+        flooder.running = False
+        with open(os.path.join(out, "clock.csv")) as f:
+            rows = [r for r in csv.DictReader(f) if r["node"] == "r3"]
+        self.assertGreater(flooder.sent, 1e6)
+        self.assertGreater(len(rows), 2, "the reports are taken")
+        self.assertLessEqual(len(rows), 2 * (time.time() - started) + 1, "at most one every 0.5 s")
+
     def test_200_clients_at_once_are_each_greeted_or_refused(self):
         self.server, port, out = serve(SANET, SCENARIO, self.tmp.name, "--max-clients", "100")
         sockets = [socket.socket() for _ in range(200)]

@@ -7,6 +7,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -20,25 +21,47 @@
 namespace sanet::hil {
 namespace {
 
-constexpr int kConnectTries = 100;  // 0.1 s apart
-constexpr double kReplyWait = 10;   // s for an answer to one request
+constexpr int kConnectWait = 10;   // s: the server may still be starting
+constexpr double kReplyWait = 10;  // s for an answer to one request
+
+// One non-blocking connection attempt that gives up at `deadline` (an address that does not
+// answer would otherwise hold connect() for minutes); -1 with the reason in `why`.
+int ConnectBefore(const sockaddr_in& server, std::chrono::steady_clock::time_point deadline, std::string* why) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK, 0);
+  int error = ::connect(fd, reinterpret_cast<const sockaddr*>(&server), sizeof server) == 0 ? 0 : errno;
+  if (error == EINPROGRESS) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    pollfd p{fd, POLLOUT, 0};
+    if (::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(0, left.count()))) > 0) {
+      socklen_t size = sizeof error;
+      ::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &size);
+    } else {
+      error = ETIMEDOUT;
+    }
+  }
+  if (error == 0) return fd;
+  *why = std::strerror(error);
+  ::close(fd);
+  return -1;
+}
 
 }  // namespace
 
 ServerLink::ServerLink(const std::string& host, std::uint16_t port)
     : host_(host), address_(host + ":" + std::to_string(port)) {
   const sockaddr_in server = Ipv4Endpoint(host, port);
-  for (int attempt = 0; attempt < kConnectTries && fd_ < 0; ++attempt) {
-    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (::connect(fd_, reinterpret_cast<const sockaddr*>(&server), sizeof server) == 0) break;
-    ::close(fd_);
-    fd_ = -1;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kConnectWait);
+  std::string why = "no answer";
+  while (fd_ < 0 && std::chrono::steady_clock::now() < deadline) {
+    fd_ = ConnectBefore(server, deadline, &why);
+    if (fd_ < 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
-  if (fd_ < 0) throw std::runtime_error("cannot reach the server at " + address_);
+  if (fd_ < 0)
+    throw std::runtime_error("cannot reach the server at " + address_ + " within " + std::to_string(kConnectWait) +
+                             " s: " + why);
   const int yes = 1;
   ::setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
-  ::fcntl(fd_, F_SETFL, O_NONBLOCK);
   const ProtocolMessage greeting = Await("NFO", "");
   clock_origin_ = greeting.Number("ClockOrigin");
 }

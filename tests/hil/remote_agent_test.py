@@ -131,6 +131,30 @@ class RemoteAgent(unittest.TestCase):
         self.assertRegex(out.stderr, r"the server's .* has SHA-256 [0-9a-f]{16}\.\.\., this computer's .*other\.so "
                                      r"[0-9a-f]{16}\.\.\.")
 
+    def test_a_server_that_never_answers_is_given_up_within_seconds(self):
+        # A listener whose backlog is full: the kernel drops further connection requests silently,
+        # as a firewall does, so connect() alone would wait minutes.
+        import socket
+        listener = socket.socket()
+        listener.bind(("127.0.0.1", 0))
+        listener.listen(0)
+        fillers = []
+        try:
+            while len(fillers) < 8:
+                fillers.append(socket.create_connection(listener.getsockname(), timeout=1))
+        except OSError:
+            pass  # the backlog is full: requests are dropped from here on
+        started = time.time()
+        out = subprocess.run([SANET, "agent", "--server", "127.0.0.1:%d" % listener.getsockname()[1], "--robot", "a"],
+                             capture_output=True, text=True, timeout=60)
+        took = time.time() - started
+        for s in fillers + [listener]:
+            s.close()
+        self.assertNotEqual(out.returncode, 0)
+        self.assertIn("cannot reach the server at 127.0.0.1:", out.stderr)
+        self.assertIn("within 10 s", out.stderr)
+        self.assertLess(took, 30)
+
     def test_a_usarsim_address_without_a_server_is_a_clear_error(self):
         out = subprocess.run([SANET, "agent", "--server", "localhost:3000", "--robot", "a"], capture_output=True,
                              text=True, timeout=30)

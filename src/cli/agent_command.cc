@@ -15,7 +15,7 @@ namespace {
 struct AgentArgs {
   std::string file, robot, server = "127.0.0.1:3000", subnet, peer_address, peer_interface, library;
   std::optional<int> udp_base;
-  bool shared_clock = false;
+  bool shared_clock = false, quiet = false;
   double test_clock_offset = 0;
   int test_protocol = hil::kSanetProtocol;
 };
@@ -25,11 +25,13 @@ std::unique_ptr<hil::ServerLink> Connect(const std::string& server) {
   const std::string port = colon == std::string::npos ? "" : server.substr(colon + 1);
   if (colon == 0 || port.empty() || port.size() > 5 || port.find_first_not_of("0123456789") != std::string::npos ||
       std::stoi(port) < 1 || std::stoi(port) > 65535)
-    throw CLI::ValidationError("--server", "expected HOST:PORT (an IPv4 address and a port), not '" + server + "'");
+    throw CLI::ValidationError("--server",
+                               "expected HOST:PORT (a host name or IPv4 address and a port), not '" + server + "'");
   try {
     return std::make_unique<hil::ServerLink>(server.substr(0, colon), static_cast<std::uint16_t>(std::stoi(port)));
   } catch (const std::runtime_error& e) {
-    if (std::string(e.what()).rfind("not an IPv4", 0) == 0) throw CLI::ValidationError("--server", e.what());
+    if (std::string(e.what()).rfind("cannot find the server's host", 0) == 0)
+      throw CLI::ValidationError("--server", e.what());
     throw;
   }
 }
@@ -38,15 +40,26 @@ std::unique_ptr<hil::ServerLink> Connect(const std::string& server) {
 scenario::Scenario ScenarioOf(const AgentArgs& a, hil::ServerLink& link) {
   std::optional<scenario::Scenario> own;
   if (!a.file.empty()) own = scenario::LoadScenario(a.file);
-  link.Handshake(a.test_protocol, own ? scenario::ScenarioFingerprint(*own) : "");
-  if (own) return std::move(*own);
-  return scenario::LoadScenarioText(link.FetchScenario(), "the scenario of the server at " + link.address());
+  const hil::ServerHello hello = link.Handshake(a.test_protocol, own ? scenario::ScenarioFingerprint(*own) : "");
+  scenario::Scenario sc =
+      own ? std::move(*own)
+          : scenario::LoadScenarioText(link.FetchScenario(), "the scenario of the server at " + link.address());
+  if (!a.quiet)
+    std::printf("sanet agent %s: server %s (sanet %s), scenario %s %s (fingerprint %s)\n", a.robot.c_str(),
+                link.address().c_str(), hello.version.c_str(), sc.run.name.c_str(),
+                own ? ("from " + a.file).c_str() : "fetched", hello.fingerprint.c_str());
+  return sc;
 }
 
 NodeId RobotOf(const scenario::Scenario& sc, const std::string& robot) {
-  for (NodeId i = 0; i < sc.run.nodes.size(); ++i)
-    if (sc.run.nodes[i].name == robot && sim::RunsAsAgent(sc.run.nodes[i])) return i;
-  throw CLI::ValidationError("--robot", "'" + robot + "' is not a robot with a controller in " + sc.file);
+  std::string robots;
+  for (NodeId i = 0; i < sc.run.nodes.size(); ++i) {
+    if (!sim::RunsAsAgent(sc.run.nodes[i])) continue;
+    if (sc.run.nodes[i].name == robot) return i;
+    robots += (robots.empty() ? "" : ", ") + sc.run.nodes[i].name;
+  }
+  throw CLI::ValidationError("--robot", "'" + robot + "' is not a robot with a controller in " + sc.file +
+                                            " (those are: " + (robots.empty() ? "none" : robots) + ")");
 }
 
 int Agent(const AgentArgs& a, agents::Registry& registry) {
@@ -65,6 +78,7 @@ int Agent(const AgentArgs& a, agents::Registry& registry) {
   settings.shared_clock = a.shared_clock;
   settings.clock_skew = a.test_clock_offset;
   settings.time_port = link->time_port();
+  settings.quiet = a.quiet;
   return hil::RunAgent(sc.run, id, settings, std::move(link), registry);
 }
 
@@ -74,8 +88,10 @@ Command AddAgent(CLI::App& app) {
   auto a = std::make_shared<AgentArgs>();
   CLI::App* cmd = app.add_subcommand("agent",
                                      "Run one robot's controller as its own process, on this computer or another: "
-                                     "sensors and motors through a `sanet serve` server, messages over real UDP");
-  cmd->add_option("--server", a->server, "The server, HOST:PORT")->capture_default_str();
+                                     "sensors and motors through a `sanet serve` server, messages over real UDP "
+                                     "(docs/remote-robots.md)");
+  cmd->add_option("--server", a->server, "The server, HOST:PORT (a host name or an IPv4 address)")
+      ->capture_default_str();
   cmd->add_option("--robot", a->robot, "The robot to drive (its name in the scenario)")->required();
   cmd->add_option("--scenario", a->file,
                   "This computer's copy of the scenario, which must be the server's (same fingerprint); without "
@@ -94,6 +110,7 @@ Command AddAgent(CLI::App& app) {
       ->check(CLI::Range(1024, 60000));
   cmd->add_option("--udp-subnet", a->subnet,
                   "Instead: node i listens on SUBNET.(i+1) at the base port (agents in network namespaces)");
+  cmd->add_flag("-q,--quiet", a->quiet, "Print only errors (and warnings)");
   cmd->add_flag("--shared-clock", a->shared_clock,
                 "The server runs on this machine: take its clock exactly instead of estimating it");
   cmd->add_option("--test-clock-offset", a->test_clock_offset,
@@ -101,6 +118,7 @@ Command AddAgent(CLI::App& app) {
       ->group("Testing");
   cmd->add_option("--test-protocol-version", a->test_protocol,
                   "For tests: claim this version of sanet's protocol (the server must refuse another)")
+      ->check(CLI::Range(1, 1000000))
       ->group("Testing");
   return {cmd, [a](agents::Registry& r) { return Agent(*a, r); }};
 }

@@ -80,6 +80,13 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
     ++received;
     host.Receive(m);
   };
+  if (!settings.quiet) {
+    const ClockFigures clock = node.clock_figures();
+    std::printf("sanet agent %s: peers reach it at %s; clock %s, offset %.6f s, error bound %.0f us\n",
+                node.Name().c_str(), node.peer_endpoint().c_str(), settings.shared_clock ? "shared" : "estimated",
+                clock.offset, clock.error_bound * 1e6);
+    std::fflush(stdout);
+  }
   // The first sensor lines tell where the robot is and what time it is.
   while (!node.HasPose()) {
     if (!node.Poll(deliver)) return 0;
@@ -105,6 +112,16 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
       bursts_reported = clock.bursts;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  if (!settings.quiet && failure.empty()) {
+    const RemoteNode::Datagrams& d = node.datagrams();
+    std::printf(
+        "sanet agent %s: the run is over (the server closed at %.1f s): %llu steps (%llu missed), %llu datagrams sent, "
+        "%llu received, %llu rejected; worst clock error bound %.0f us\n",
+        node.Name().c_str(), node.ClockNow(), static_cast<unsigned long long>(grid.run()),
+        static_cast<unsigned long long>(grid.missed()), static_cast<unsigned long long>(d.sent),
+        static_cast<unsigned long long>(d.received), static_cast<unsigned long long>(d.rejected),
+        node.clock_figures().error_bound_max * 1e6);
   }
   if (failure.empty()) return 0;  // the server ended the run
   std::fprintf(stderr, "sanet agent: %s\n", failure.c_str());

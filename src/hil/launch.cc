@@ -142,9 +142,9 @@ pid_t StartAgent(const std::string& self, const LaunchSettings& settings, const 
   const pid_t agent = ::fork();
   if (agent != 0) return agent;
   // The agent fetches the scenario from the server, as one on another computer does.
-  std::vector<std::string> args = {"sanet",         "agent", "--server",   address,
-                                   "--robot",       robot,   "--udp-base", std::to_string(settings.udp_base),
-                                   "--shared-clock"};
+  std::vector<std::string> args = {"sanet",          "agent", "--server",   address,
+                                   "--robot",        robot,   "--udp-base", std::to_string(settings.udp_base),
+                                   "--shared-clock", "-q"};
   if (namespace_name.empty()) Exec(self, args);
   args.insert(args.end(), {"--udp-subnet", subnet});
   args[0] = self;  // ip runs the program itself: its path, not a name, comes first

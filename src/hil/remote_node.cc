@@ -3,6 +3,7 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <ifaddrs.h>
+#include <net/if.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/socket.h>
@@ -42,6 +43,16 @@ std::string InterfaceAddress(const std::string& interface) {
   ::freeifaddrs(all);
   if (found.empty()) throw std::runtime_error("interface " + interface + " has no IPv4 address (or does not exist)");
   return found;
+}
+
+bool InterfaceIsUp(const std::string& interface) {
+  ifaddrs* all = nullptr;
+  if (::getifaddrs(&all) != 0) return true;  // cannot tell: say nothing
+  bool up = false;
+  for (const ifaddrs* a = all; a; a = a->ifa_next)
+    if (interface == a->ifa_name && (a->ifa_flags & IFF_UP) && (a->ifa_flags & IFF_RUNNING)) up = true;
+  ::freeifaddrs(all);
+  return up;
 }
 
 // USARSim frame (y right, yaw clockwise) back to sanet's.
@@ -108,6 +119,12 @@ void RemoteNode::OpenPeerSocket() {
                              std::strerror(errno));
   ::fcntl(udp_, F_SETFL, O_NONBLOCK);
   peers_[id_] = mine;
+  peer_endpoint_ = address + ":" + std::to_string(PortOf(id_)) + (interface.empty() ? "" : " on " + interface);
+  if (!interface.empty() && !InterfaceIsUp(interface))
+    std::fprintf(stderr,
+                 "sanet agent %s: warning: interface %s is down: datagrams to and from the other robots "
+                 "will not get through until it is up\n",
+                 Name().c_str(), interface.c_str());
 }
 
 void RemoteNode::Command(const ProtocolMessage& m) { link_->Send(m); }

@@ -35,6 +35,7 @@ struct AgentSettings {
   bool shared_clock = false;    // the server runs on this machine: take its clock origin
   std::uint16_t time_port = 0;  // otherwise: the server's time service, for the clock estimate
   double clock_skew = 0;        // tests: added to this computer's clock, which the estimate must find
+  bool quiet = false;           // no progress lines on stdout
 };
 
 class RemoteNode : public Node {
@@ -63,6 +64,8 @@ class RemoteNode : public Node {
     std::uint64_t sent = 0, send_errors = 0, received = 0, rejected = 0;
   };
   const Datagrams& datagrams() const { return datagrams_; }
+  // Where this robot listens for the other agents: "address:port", and " on IF" when bound to one.
+  const std::string& peer_endpoint() const { return peer_endpoint_; }
   // A robot whose controller runs as an agent: reached over UDP, not through the server.
   bool IsAgent(NodeId node) const;
   // Reports to the server (a sanet extension line), e.g. the agent's STATS.
@@ -116,9 +119,10 @@ class RemoteNode : public Node {
   std::unique_ptr<ClockSync> clock_sync_;          // otherwise
   std::vector<std::optional<sockaddr_in>> peers_;  // where each agent listens, when known
   std::vector<Bytes> early_;                       // peers' datagrams that came before this agent had the run's key
-  std::optional<DatagramKey> key_;                 // the run's, from the server's KEY line
-  std::uint64_t next_sequence_ = 1;                // of this agent's datagrams
-  std::vector<ReplayWindow> replays_;              // per sender
+  std::string peer_endpoint_;
+  std::optional<DatagramKey> key_;     // the run's, from the server's KEY line
+  std::uint64_t next_sequence_ = 1;    // of this agent's datagrams
+  std::vector<ReplayWindow> replays_;  // per sender
   std::optional<Pose2D> truth_, odometry_;
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;

@@ -1,6 +1,8 @@
 #include "hil/server_link.h"
 
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netdb.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
@@ -23,6 +25,20 @@ namespace {
 
 constexpr int kConnectWait = 10;   // s: the server may still be starting
 constexpr double kReplyWait = 10;  // s for an answer to one request
+
+// A host name or dotted address, as the dotted IPv4 address it resolves to.
+std::string Ipv4AddressOf(const std::string& host) {
+  addrinfo hints{};
+  hints.ai_family = AF_INET;
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* found = nullptr;
+  if (const int error = ::getaddrinfo(host.c_str(), nullptr, &hints, &found); error != 0)
+    throw std::runtime_error("cannot find the server's host '" + host + "': " + ::gai_strerror(error));
+  char text[INET_ADDRSTRLEN];
+  ::inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(found->ai_addr)->sin_addr, text, sizeof text);
+  ::freeaddrinfo(found);
+  return text;
+}
 
 // One non-blocking connection attempt that gives up at `deadline` (an address that does not
 // answer would otherwise hold connect() for minutes); -1 with the reason in `why`.
@@ -49,8 +65,8 @@ int ConnectBefore(const sockaddr_in& server, std::chrono::steady_clock::time_poi
 }  // namespace
 
 ServerLink::ServerLink(const std::string& host, std::uint16_t port)
-    : host_(host), address_(host + ":" + std::to_string(port)) {
-  const sockaddr_in server = Ipv4Endpoint(host, port);
+    : host_(Ipv4AddressOf(host)), address_(host + ":" + std::to_string(port)) {
+  const sockaddr_in server = Ipv4Endpoint(host_, port);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kConnectWait);
   std::string why = "no answer";
   while (fd_ < 0 && std::chrono::steady_clock::now() < deadline) {
@@ -59,7 +75,7 @@ ServerLink::ServerLink(const std::string& host, std::uint16_t port)
   }
   if (fd_ < 0)
     throw std::runtime_error("cannot reach the server at " + address_ + " within " + std::to_string(kConnectWait) +
-                             " s: " + why);
+                             " s: " + why + " (is `sanet serve` running there, and its run not over yet?)");
   const int yes = 1;
   ::setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
   const ProtocolMessage greeting = Await("NFO", "");
@@ -119,8 +135,7 @@ ProtocolMessage ServerLink::Await(const std::string& type, const std::string& re
         waiting_ = std::move(kept);
         if (lines[i].type == type) return lines[i];
         const std::string* text = lines[i].Get("Message");
-        throw std::runtime_error("server " + address_ + (request.empty() ? "" : " (to " + request + ")") + ": " +
-                                 (text ? *text : "error"));
+        throw std::runtime_error("the server at " + address_ + " says: " + (text ? *text : "error"));
       }
       kept.push_back(std::move(lines[i]));
     }

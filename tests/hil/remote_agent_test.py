@@ -74,6 +74,10 @@ class RemoteAgent(unittest.TestCase):
                              stderr=subprocess.PIPE, text=True)
         b = server.agent("b", "--test-clock-offset", "-7.25")
         self.assertEqual(b.returncode, 0, b.stderr)
+        self.assertIn("sanet agent b: server 127.0.0.1:", b.stdout)  # it says what it found
+        self.assertIn("scenario remote-agent fetched", b.stdout)
+        self.assertRegex(b.stdout, r"peers reach it at 127\.0\.0\.1:47001; clock estimated, offset -?[0-9.]+ s")
+        self.assertIn("the run is over", b.stdout)
         self.assertEqual(a.wait(timeout=60), 0, a.stderr.read())
         summary = server.finish()
         origin = summary["clock"]["origin_monotonic_s"]
@@ -102,6 +106,11 @@ class RemoteAgent(unittest.TestCase):
     def test_another_protocol_version_is_refused_naming_both(self):
         server = Server(self.tmp.name, self.scenario, 4)
         out = server.agent("a", "--test-protocol-version", "1", timeout=30)
+        unknown = server.agent("c", timeout=30)
+        self.assertEqual(unknown.returncode, 2)
+        self.assertIn("'c' is not a robot with a controller in the scenario of the server at 127.0.0.1:",
+                      unknown.stderr)
+        self.assertIn("(those are: a, b)", unknown.stderr)
         server.finish()
         self.assertNotEqual(out.returncode, 0)
         self.assertIn("speaks sanet's protocol 1 (sanet ", out.stderr)
@@ -155,12 +164,14 @@ class RemoteAgent(unittest.TestCase):
         self.assertIn("within 10 s", out.stderr)
         self.assertLess(took, 30)
 
-    def test_a_usarsim_address_without_a_server_is_a_clear_error(self):
-        out = subprocess.run([SANET, "agent", "--server", "localhost:3000", "--robot", "a"], capture_output=True,
-                             text=True, timeout=30)
-        self.assertEqual(out.returncode, 2)
-        self.assertIn("--server", out.stderr)
-
+    def test_a_server_address_that_cannot_be_is_a_usage_error(self):
+        for server, says in (("no-such-host.invalid:3000", "cannot find the server's host 'no-such-host.invalid'"),
+                             ("127.0.0.1", "expected HOST:PORT"), ("127.0.0.1:99999", "expected HOST:PORT")):
+            out = subprocess.run([SANET, "agent", "--server", server, "--robot", "a"], capture_output=True, text=True,
+                                 timeout=30)
+            self.assertEqual(out.returncode, 2, (server, out.stderr))
+            self.assertIn("--server", out.stderr)
+            self.assertIn(says, out.stderr)
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

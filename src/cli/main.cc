@@ -228,6 +228,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
   settings.scenario_yaml = scenario::EffectiveScenarioYaml(sc);
   settings.scenario_fingerprint = fingerprint;
+  settings.announce = !quiet;
   try {
     hil::RaiseDescriptorLimit(settings.max_clients);
   } catch (const std::runtime_error& e) {
@@ -271,6 +272,9 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
         "  results in %s/\n",
         r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
         static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), options.output_dir.c_str());
+    std::string idle;
+    for (const std::string& name : server.NeverDriven()) idle += (idle.empty() ? "" : ", ") + name;
+    if (!idle.empty()) std::printf("  no client drove %s: their controllers never ran\n", idle.c_str());
   }
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s; the results so far are in %s/ (status: interrupted)\n",

@@ -4,6 +4,7 @@
 #include <arpa/inet.h>
 
 #include <algorithm>
+#include <cstdio>
 
 #include "core/version.h"
 #include "hil/message_lines.h"
@@ -25,6 +26,7 @@ bool IsIpv4(const std::string& text) {
 
 // Told why, then closed (after the ERR has gone out).
 void SimServer::Refuse(Client& c, const std::string& why) {
+  if (settings_.announce) std::printf("sanet: client %s %s\n", c.peer.c_str(), why.c_str());
   Error(c, why);
   Flush(c);
   Drop(c, why);

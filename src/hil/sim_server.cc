@@ -334,6 +334,9 @@ void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
   if (usarsim_class && !spawned_as.empty() && !sim::SameClass(*usarsim_class, spawned_as))
     return Error(c, "INIT refused: robot '" + name + "' is a " + spawned_as + ", not a " + *usarsim_class);
   claimed_[id] = true;
+  ever_claimed_.resize(world_.NodeCount());
+  ever_claimed_[id] = true;
+  if (settings_.announce) std::printf("sanet: client %s drives %s\n", c.peer.c_str(), name.c_str());
   c.robot = id;
   c.next_sensors = c.next_status = world_.Now();
   // sanet extension: the run's key for the datagrams agents send each other (hil/agent_datagram.h).
@@ -527,6 +530,8 @@ void SimServer::Drop(Client& c, const std::string& why) {
     NodeOf(c).Drive({});  // a robot without its client stops
     claimed_[*c.robot] = false;
     world_.parts().Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
+    if (settings_.announce)
+      std::printf("sanet: client %s of %s gone (%s)\n", c.peer.c_str(), world_.NameOf(*c.robot).c_str(), why.c_str());
   }
 }
 
@@ -630,6 +635,14 @@ void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
     for (const StatsKey& k : kStatsKeys) row += "," + JsonText((*it)[k.name]);
     table.Row(row);
   }
+}
+
+std::vector<std::string> SimServer::NeverDriven() const {
+  std::vector<std::string> names;
+  for (NodeId id = 0; id < world_.spec().nodes.size(); ++id)
+    if (sim::RunsAsAgent(world_.spec().nodes[id]) && !(id < ever_claimed_.size() && ever_claimed_[id]))
+      names.push_back(world_.NameOf(id));
+  return names;
 }
 
 SimServer::Client* SimServer::ClientOf(NodeId robot) {

@@ -40,6 +40,7 @@ struct ServerSettings {
   double poll_budget = 0.0015;         // s of line handling per poll; the rest waits for the next poll
   // What agents fetch and compare (sanet extensions): the effective scenario and its fingerprint.
   std::string scenario_yaml, scenario_fingerprint;
+  bool announce = false;  // say on stdout which client drives which robot, and who is refused
 };
 
 // `text` for an ERR line: a field in braces written 'Name' (one word) or (Name value), lone
@@ -67,6 +68,8 @@ class SimServer : public sim::StepObserver {
   // The same as a table, agents.csv (nothing without agents), and the agents' clock estimates
   // through the run, clock.csv.
   void WriteAgentTable(trace::ResultsFolder& folder) const;
+  // Robots with a controller (agents' robots) that no client drove during the run.
+  std::vector<std::string> NeverDriven() const;
   // The time service's port and the clock's origin, for summary.json.
   nlohmann::ordered_json ClockSummary() const;
 
@@ -131,6 +134,7 @@ class SimServer : public sim::StepObserver {
   std::vector<Closing> closing_;
   std::vector<char> read_buffer_;  // one turn's bytes
   std::vector<bool> claimed_;
+  std::vector<bool> ever_claimed_;
   const DatagramKey datagram_key_ = DatagramKey::Random();  // new for every run
   std::vector<double> lags_;                                // s, per physics step
   nlohmann::ordered_json agent_stats_ = nlohmann::ordered_json::object();

@@ -34,11 +34,11 @@ nodes:
 class Server:
     """`sanet serve` on loopback, any free port, for `duration` s."""
 
-    def __init__(self, tmp, scenario, duration):
+    def __init__(self, tmp, scenario, duration, quiet=True):
         self.out = os.path.join(tmp, "out")
         port_file = os.path.join(tmp, "port")
         self.process = subprocess.Popen([SANET, "serve", scenario, "--port", "0", "--port-file", port_file, "-o",
-                                         self.out, "-q", "--duration", str(duration), "--force"],
+                                         self.out, "--duration", str(duration), "--force"] + (["-q"] if quiet else []),
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         deadline = time.time() + 60
         while not os.path.exists(port_file):
@@ -54,6 +54,7 @@ class Server:
     def finish(self):
         out, err = self.process.communicate(timeout=120)
         assert self.process.returncode == 0, err
+        self.stdout = out
         with open(os.path.join(self.out, "summary.json")) as f:
             return json.load(f)
 
@@ -115,6 +116,17 @@ class RemoteAgent(unittest.TestCase):
         self.assertNotEqual(out.returncode, 0)
         self.assertIn("speaks sanet's protocol 1 (sanet ", out.stderr)
         self.assertIn("the server protocol 2 (sanet ", out.stderr)
+
+    def test_the_server_says_who_drives_what_who_was_refused_and_which_robots_nobody_drove(self):
+        server = Server(self.tmp.name, self.scenario, 4, quiet=False)
+        refused = server.agent("b", "--test-protocol-version", "1", timeout=30)
+        driven = server.agent("a", timeout=30)
+        server.finish()
+        self.assertNotEqual(refused.returncode, 0)
+        self.assertEqual(driven.returncode, 0, driven.stderr)
+        self.assertRegex(server.stdout, r"sanet: client 127\.0\.0\.1:[0-9]+ refused: this agent speaks sanet's protocol 1")
+        self.assertRegex(server.stdout, r"sanet: client 127\.0\.0\.1:[0-9]+ drives a\n")
+        self.assertIn("no client drove b: their controllers never ran", server.stdout)
 
     def test_another_scenario_is_refused_naming_both_fingerprints(self):
         mine = os.path.join(self.tmp.name, "mine.yaml")

@@ -93,7 +93,7 @@ void TimeService::Serve() {
     if (n <= 0) continue;
     const auto sent = ReadTimeRequest(buffer, static_cast<std::size_t>(n));
     if (!sent) continue;  // not a request: nothing to say to whoever sent it
-    ++served_;  // before the reply: whoever has it may count on it
+    ++served_;            // before the reply: whoever has it may count on it
     const Bytes reply = TimeReply(*sent, received, MonotonicSeconds() - origin_);
     ::sendto(fd_, reply.data(), reply.size(), 0, reinterpret_cast<const sockaddr*>(&from), size);
   }

@@ -29,30 +29,25 @@ namespace {
 constexpr std::uint8_t kUnicast = AgentDatagram::kUnicast, kBroadcast = AgentDatagram::kBroadcast;
 constexpr std::size_t kMostHeldEarly = 1024;  // datagrams kept until the agent has its clock and key
 
-// The first IPv4 address of a network interface.
-std::string InterfaceAddress(const std::string& interface) {
+// A network interface as the peer socket needs it: its first IPv4 address ("" if none), and
+// whether it is up and running.
+struct InterfaceState {
+  std::string address;
+  bool up = false;
+};
+
+InterfaceState LookUpInterface(const std::string& interface) {
   ifaddrs* all = nullptr;
   if (::getifaddrs(&all) != 0) throw std::runtime_error(std::string("cannot list interfaces: ") + std::strerror(errno));
-  std::string found;
-  for (const ifaddrs* a = all; a && found.empty(); a = a->ifa_next)
-    if (a->ifa_addr && a->ifa_addr->sa_family == AF_INET && interface == a->ifa_name) {
-      char text[INET_ADDRSTRLEN];
-      ::inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(a->ifa_addr)->sin_addr, text, sizeof text);
-      found = text;
-    }
+  InterfaceState state;
+  for (const ifaddrs* a = all; a; a = a->ifa_next) {
+    if (interface != a->ifa_name) continue;
+    state.up = state.up || ((a->ifa_flags & IFF_UP) && (a->ifa_flags & IFF_RUNNING));
+    if (state.address.empty() && a->ifa_addr && a->ifa_addr->sa_family == AF_INET)
+      state.address = AddressText(a->ifa_addr);
+  }
   ::freeifaddrs(all);
-  if (found.empty()) throw std::runtime_error("interface " + interface + " has no IPv4 address (or does not exist)");
-  return found;
-}
-
-bool InterfaceIsUp(const std::string& interface) {
-  ifaddrs* all = nullptr;
-  if (::getifaddrs(&all) != 0) return true;  // cannot tell: say nothing
-  bool up = false;
-  for (const ifaddrs* a = all; a; a = a->ifa_next)
-    if (interface == a->ifa_name && (a->ifa_flags & IFF_UP) && (a->ifa_flags & IFF_RUNNING)) up = true;
-  ::freeifaddrs(all);
-  return up;
+  return state;
 }
 
 // USARSim frame (y right, yaw clockwise) back to sanet's.
@@ -83,10 +78,7 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   ProtocolMessage init("INIT");
   init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());
   Command(init);
-  const sockaddr_in& mine = *peers_[id_];
-  char address[INET_ADDRSTRLEN];
-  ::inet_ntop(AF_INET, &mine.sin_addr, address, sizeof address);
-  Command(ProtocolMessage{"PEER"}.Add("Address", address).Add("Port", std::to_string(ntohs(mine.sin_port))));
+  Command(ProtocolMessage{"PEER"}.Add("Address", peer_address_).Add("Port", std::to_string(PortOf(id_))));
 }
 
 RemoteNode::~RemoteNode() {
@@ -106,7 +98,10 @@ void RemoteNode::OpenPeerSocket() {
                                 : linked                          ? link->interface
                                                                   : "";
   std::string address = !settings_.peer_address.empty() ? settings_.peer_address : linked ? link->address : "";
-  if (address.empty()) address = interface.empty() ? HostOf(id_) : InterfaceAddress(interface);
+  const InterfaceState state = interface.empty() ? InterfaceState{"", true} : LookUpInterface(interface);
+  if (address.empty() && !interface.empty() && state.address.empty())
+    throw std::runtime_error("interface " + interface + " has no IPv4 address (or does not exist)");
+  if (address.empty()) address = interface.empty() ? HostOf(id_) : state.address;
   udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
   if (!interface.empty() &&
       ::setsockopt(udp_, SOL_SOCKET, SO_BINDTODEVICE, interface.c_str(), static_cast<socklen_t>(interface.size())) != 0)
@@ -119,8 +114,9 @@ void RemoteNode::OpenPeerSocket() {
                              std::strerror(errno));
   ::fcntl(udp_, F_SETFL, O_NONBLOCK);
   peers_[id_] = mine;
+  peer_address_ = address;
   peer_endpoint_ = address + ":" + std::to_string(PortOf(id_)) + (interface.empty() ? "" : " on " + interface);
-  if (!interface.empty() && !InterfaceIsUp(interface))
+  if (!state.up)
     std::fprintf(stderr,
                  "sanet agent %s: warning: interface %s is down: datagrams to and from the other robots "
                  "will not get through until it is up\n",

@@ -119,10 +119,10 @@ class RemoteNode : public Node {
   std::unique_ptr<ClockSync> clock_sync_;          // otherwise
   std::vector<std::optional<sockaddr_in>> peers_;  // where each agent listens, when known
   std::vector<Bytes> early_;                       // peers' datagrams that came before this agent had the run's key
-  std::string peer_endpoint_;
-  std::optional<DatagramKey> key_;     // the run's, from the server's KEY line
-  std::uint64_t next_sequence_ = 1;    // of this agent's datagrams
-  std::vector<ReplayWindow> replays_;  // per sender
+  std::string peer_address_, peer_endpoint_;       // where it listens; and that with port and interface
+  std::optional<DatagramKey> key_;                 // the run's, from the server's KEY line
+  std::uint64_t next_sequence_ = 1;                // of this agent's datagrams
+  std::vector<ReplayWindow> replays_;              // per sender
   std::optional<Pose2D> truth_, odometry_;
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;

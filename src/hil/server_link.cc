@@ -34,8 +34,7 @@ std::string Ipv4AddressOf(const std::string& host) {
   addrinfo* found = nullptr;
   if (const int error = ::getaddrinfo(host.c_str(), nullptr, &hints, &found); error != 0)
     throw std::runtime_error("cannot find the server's host '" + host + "': " + ::gai_strerror(error));
-  char text[INET_ADDRSTRLEN];
-  ::inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(found->ai_addr)->sin_addr, text, sizeof text);
+  const std::string text = AddressText(found->ai_addr);
   ::freeaddrinfo(found);
   return text;
 }

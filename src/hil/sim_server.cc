@@ -136,20 +136,7 @@ void SimServer::Accept() {
     }
     // A small kernel buffer: what a client leaves unread piles up where the server can see it.
     ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
-    clients_.push_back(std::make_unique<Client>(Client{fd,
-                                                       PeerOf(fd),
-                                                       LineReader(settings_.max_line),
-                                                       "",
-                                                       {},
-                                                       0,
-                                                       0,
-                                                       WallNow(),
-                                                       0,
-                                                       0,
-                                                       false,
-                                                       false,
-                                                       false,
-                                                       WallNow()}));
+    clients_.push_back(std::make_unique<Client>(fd, settings_.max_line, WallNow()));
     ProtocolMessage hello{"NFO"};
     hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
     // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes

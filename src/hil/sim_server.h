@@ -19,6 +19,7 @@
 
 #include "hil/agent_datagram.h"
 #include "hil/protocol.h"
+#include "hil/sockets.h"
 #include "hil/time_service.h"
 #include "sim/world.h"
 #include "trace/results_folder.h"
@@ -75,6 +76,8 @@ class SimServer : public sim::StepObserver {
 
  private:
   struct Client {
+    Client(int socket, std::size_t max_line, double now)
+        : fd(socket), peer(PeerOf(socket)), reader(max_line), last_caught_up(now), last_heard(now) {}
     int fd;
     std::string peer;
     LineReader reader;

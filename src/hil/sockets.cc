@@ -54,14 +54,19 @@ int ListenTcp(const std::string& bind, std::uint16_t port, int backlog, std::uin
   return fd;
 }
 
+std::string AddressText(const sockaddr* address) {
+  char text[INET_ADDRSTRLEN] = "?";
+  ::inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(address)->sin_addr, text, sizeof text);
+  return text;
+}
+
 std::string PeerOf(int fd, std::string* host) {
   sockaddr_in peer{};
   socklen_t size = sizeof peer;
   ::getpeername(fd, reinterpret_cast<sockaddr*>(&peer), &size);
-  char text[INET_ADDRSTRLEN] = "?";
-  ::inet_ntop(AF_INET, &peer.sin_addr, text, sizeof text);
+  const std::string text = AddressText(reinterpret_cast<const sockaddr*>(&peer));
   if (host) *host = text;
-  return std::string(text) + ":" + std::to_string(ntohs(peer.sin_port));
+  return text + ":" + std::to_string(ntohs(peer.sin_port));
 }
 
 }  // namespace sanet::hil

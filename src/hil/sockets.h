@@ -19,6 +19,9 @@ sockaddr_in Ipv4Endpoint(const std::string& host, std::uint16_t port);
 // out as they are written); -1 when none waits.
 int AcceptClient(int listener);
 
+// The dotted text of an IPv4 address.
+std::string AddressText(const sockaddr* address);
+
 // "host:port" of a connected socket's peer; its host alone in `host` if given.
 std::string PeerOf(int fd, std::string* host = nullptr);
 

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -35,6 +36,24 @@ double SteadyNow() {
   ::execv("/proc/self/exe", argv.data());
   std::perror("sanet sweep: cannot start a run");
   ::_exit(127);
+}
+
+// Stopped as a user stops a program (Ctrl-C, kill, a closed terminal, the sweep's own stop):
+// not the run's fault; it runs again next time. 130, 143 and 129: a run that handled SIGINT,
+// SIGTERM or SIGHUP and stopped. A crash (SIGSEGV, SIGABRT) or SIGKILL (the out-of-memory
+// killer's) is the run's failure, recorded as such.
+bool AskedToStop(int status) {
+  if (WIFSIGNALED(status))
+    return WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM || WTERMSIG(status) == SIGHUP;
+  const int code = WEXITSTATUS(status);
+  return code == 128 + SIGINT || code == 128 + SIGTERM || code == 128 + SIGHUP;
+}
+
+// How a failed run's process ended, after what it printed (which may be nothing: a crash).
+std::string EndOfProcess(int status) {
+  if (!WIFSIGNALED(status)) return "(the run exited with status " + std::to_string(WEXITSTATUS(status)) + ")";
+  const int sig = WTERMSIG(status);
+  return "(the run was killed by signal " + std::to_string(sig) + ", " + ::strsignal(sig) + ")";
 }
 
 }  // namespace
@@ -79,11 +98,11 @@ std::vector<JobEnd> LocalExecutor::Poll() {
                HostName(), c.started_utc,
                UtcNow(),   SteadyNow() - c.started,
                rank_};
-    // Stopped by a signal (ours, Ctrl-C, a kill): not the run's fault; it runs again next time.
-    // (130 and 143: a run that handled SIGINT or SIGTERM and stopped.)
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 0;
-    end.interrupted = stopping_ || WIFSIGNALED(status) || code == 130 || code == 143;
-    if (!end.completed) end.error = Tail(c.job.log);
+    end.interrupted = stopping_ || AskedToStop(status);
+    if (!end.completed) {
+      const std::string said = Tail(c.job.log);
+      end.error = (said.empty() ? "" : said + "\n") + EndOfProcess(status);
+    }
     ended.push_back(end);
     it = running_.erase(it);
   }

@@ -10,6 +10,7 @@
 #include "scenario/effective_scenario.h"
 #include "scenario/fields.h"
 #include "scenario/scenario_loader.h"
+#include "study/folder_message.h"
 #include "study/study_db.h"
 
 namespace sanet::study {
@@ -169,6 +170,7 @@ SweepTally RunSweep(const SweepSettings& s, const std::vector<PreparedRun>& runs
     for (; !queue.empty() && executor.Free() > 0; queue.pop_front()) {
       const RunJob job = JobFor(s, *queue.front());
       fs::remove_all(job.folder);  // the study's own: whatever a stopped run left there goes
+      fs::remove_all(IncomingFolder(job.folder));
       db.Started(job.name, UtcNow());
       executor.Start(job);
     }

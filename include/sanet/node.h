@@ -4,6 +4,7 @@
 // controller written against this header runs unchanged in every mode.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,9 +73,23 @@ class Node {
   // Actuators. Drive takes a body velocity in the robot frame (vx forward, vy left, omega
   // counter-clockwise); a differential drive ignores vy. Both return false on a node that
   // cannot move, and refuse a command that holds a NaN or an infinity (false, the node's log
-  // says why, the motors keep the last command they took).
-  virtual bool Drive(const Twist2D& velocity) = 0;
-  virtual bool SetWheelSpeeds(const std::vector<double>& rad_per_s) = 0;
+  // says why, the motors keep the last command they took). The check is made here, once, for
+  // every kind of node; what passes it goes to ApplyDrive / ApplyWheelSpeeds.
+  bool Drive(const Twist2D& velocity) {
+    if (!std::isfinite(velocity.vx) || !std::isfinite(velocity.vy) || !std::isfinite(velocity.omega)) {
+      Log("drive refused: a velocity that is not a finite number (the motors keep their last command)");
+      return false;
+    }
+    return ApplyDrive(velocity);
+  }
+  bool SetWheelSpeeds(const std::vector<double>& rad_per_s) {
+    for (double w : rad_per_s)
+      if (!std::isfinite(w)) {
+        Log("wheel speeds refused: a speed that is not a finite number (the motors keep their last command)");
+        return false;
+      }
+    return ApplyWheelSpeeds(rad_per_s);
+  }
   // True for a holonomic drive (omni3), which honours vy.
   virtual bool Holonomic() const = 0;
 
@@ -98,6 +113,11 @@ class Node {
   virtual void Transition(const std::string& from, const std::string& to, const std::string& why) = 0;
   // a measurement (metrics.csv; quartiles per node and name in summary.json).
   virtual void Metric(const std::string& name, double value) = 0;
+
+ protected:
+  // A kind of node's own part of Drive and SetWheelSpeeds, for commands of finite numbers only.
+  virtual bool ApplyDrive(const Twist2D& velocity) = 0;
+  virtual bool ApplyWheelSpeeds(const std::vector<double>& rad_per_s) = 0;
 };
 
 }  // namespace sanet

@@ -13,7 +13,9 @@
 #include "sanet/controller.h"
 
 // Bump whenever a header under include/sanet changes in a way that breaks binary compatibility.
-#define SANET_CONTROLLER_API_VERSION 4  // 4: Node::Transition and Node::Metric
+// 4: Node::Transition and Node::Metric. 5: Node::Drive and SetWheelSpeeds are checked by Node
+// itself and call the protected ApplyDrive / ApplyWheelSpeeds (docs/controllers.md, migration).
+#define SANET_CONTROLLER_API_VERSION 5
 
 // The entry points stay visible when a library hides its other symbols (-fvisibility=hidden).
 #define SANET_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))

@@ -8,8 +8,12 @@
 #include <csignal>
 #include <cstring>
 #include <stdexcept>
+#include <tuple>
+#include <type_traits>
 
 #include "agents/controller_host.h"
+#include "agents/node_call_codec.h"
+#include "agents/node_calls.h"
 #include "core/exception_text.h"
 #include "sanet/codec.h"
 
@@ -17,8 +21,10 @@ namespace sanet::agents {
 namespace {
 
 // What crosses the socket. The parent asks the child to run a controller call (kStart, kStep,
-// kMessage); while it runs, the child asks the parent for node calls (the rest) and gets one
-// answer for each; the call ends with kDone or kFailed (the text of what the controller threw).
+// kMessage); while it runs, the child asks the parent for node calls (the call list of
+// agents/node_calls.h) and gets one answer for each; the call ends with kDone or kFailed (the text
+// of what the controller threw).
+#define SANET_CALL_NUMBER(name, ...) k##name,
 enum Call : std::uint8_t {
   kMade = 1,
   kMakeFailed,
@@ -28,29 +34,9 @@ enum Call : std::uint8_t {
   kDone,
   kFailed,
   kAnswer,
-  kNow,
-  kLookup,
-  kNameOf,
-  kIr,
-  kLaser,
-  kOdometry,
-  kGroundTruth,
-  kBearing,
-  kDrive,
-  kSetWheelSpeeds,
-  kSend,
-  kBroadcast,
-  kFlood,
-  kRandom,
-  kLog,
-  kTransition,
-  kMetric,
-  kProtocol,
-  kRoutingTable,
-  kNeighbours,
-  kInvalidateRoute,
-  kRequestRoute
+  SANET_NODE_CALLS(SANET_CALL_NUMBER) SANET_NETWORK_CALLS(SANET_CALL_NUMBER)
 };
+#undef SANET_CALL_NUMBER
 
 constexpr std::size_t kMostBytes = 1 << 20;  // one packet either way
 
@@ -70,177 +56,94 @@ std::optional<Bytes> ReceivePacket(int fd) {
   return bytes;
 }
 
-void WriteDoubles(Writer& w, const std::vector<double>& v) {
-  w.U32(static_cast<std::uint32_t>(v.size()));
-  for (double x : v) w.F64(x);
+// The child's question to the parent: a call and its arguments; the answer is the call's result.
+template <typename Result, typename... Args>
+Result Ask(int fd, Call call, const std::tuple<Args...>& args) {
+  Writer question;
+  question.U8(call);
+  std::apply([&](const auto&... a) { (node_calls::Put(question, a), ...); }, args);
+  SendPacket(fd, question.bytes());
+  auto answer = ReceivePacket(fd);
+  if (!answer) std::_Exit(0);  // the run is over
+  Reader r(std::move(*answer));
+  r.U8();  // kAnswer
+  if constexpr (!std::is_void_v<Result>) return node_calls::Get<Result>(r);
 }
-std::vector<double> ReadDoubles(Reader& r) {
-  std::vector<double> v(r.U32());
-  for (double& x : v) x = r.F64();
-  return v;
-}
-void WriteBytes(Writer& w, const Bytes& b) {
-  w.U32(static_cast<std::uint32_t>(b.size()));
-  for (std::uint8_t x : b) w.U8(x);
-}
-Bytes ReadBytes(Reader& r) {
-  Bytes b(r.U32());
-  for (std::uint8_t& x : b) x = r.U8();
-  return b;
-}
-void WriteScan(Writer& w, const std::optional<RangeScan>& s) {
-  w.Bool(s.has_value());
-  if (!s) return;
-  WriteDoubles(w, s->angles);
-  WriteDoubles(w, s->ranges);
-  w.F64(s->max_range);
-}
-std::optional<RangeScan> ReadScan(Reader& r) {
-  if (!r.Bool()) return std::nullopt;
-  RangeScan s;
-  s.angles = ReadDoubles(r);
-  s.ranges = ReadDoubles(r);
-  s.max_range = r.F64();
-  return s;
-}
-void WritePose(Writer& w, const std::optional<Pose2D>& p) {
-  w.Bool(p.has_value());
-  if (p) w.F64(p->x).F64(p->y).F64(p->theta);
-}
-std::optional<Pose2D> ReadPose(Reader& r) {
-  if (!r.Bool()) return std::nullopt;
-  Pose2D p;
-  p.x = r.F64(), p.y = r.F64(), p.theta = r.F64();
-  return p;
-}
-void WriteMessage(Writer& w, const Message& m) {
-  w.U8(static_cast<std::uint8_t>(m.delivery)).U32(m.from).U32(m.to).F64(m.time_sent).F64(m.time_received);
-  w.Bool(m.hops.has_value()).I32(m.hops.value_or(0));
-  WriteBytes(w, m.payload);
-}
-Message ReadMessage(Reader& r) {
-  Message m;
-  m.delivery = static_cast<Delivery>(r.U8());
-  m.from = r.U32(), m.to = r.U32(), m.time_sent = r.F64(), m.time_received = r.F64();
-  const bool hops = r.Bool();
-  const int count = r.I32();
-  if (hops) m.hops = count;
-  m.payload = ReadBytes(r);
-  return m;
-}
+
+#define SANET_PROXY_CALL(name, override_name, Result, params, args, constness) \
+  Result override_name params constness override { return Ask<Result>(fd_, k##name, std::forward_as_tuple args); }
 
 // The child's side: a node whose every call is a question to the parent.
 class ProxyNetwork : public NetworkView {
  public:
-  explicit ProxyNetwork(std::function<Reader(const Writer&)> ask) : ask_(std::move(ask)) {}
-  std::string Protocol() const override { return ask_(Writer().U8(kProtocol)).Text(); }
-  std::vector<RouteEntry> RoutingTable() const override {
-    Reader r = ask_(Writer().U8(kRoutingTable));
-    std::vector<RouteEntry> table(r.U32());
-    for (RouteEntry& e : table) {
-      e.destination = r.U32(), e.next_hop = r.U32(), e.hops = r.I32(), e.valid = r.Bool();
-      e.expires_in = r.F64();
-    }
-    return table;
-  }
-  std::vector<NodeId> Neighbours() const override {
-    Reader r = ask_(Writer().U8(kNeighbours));
-    std::vector<NodeId> ids(r.U32());
-    for (NodeId& id : ids) id = r.U32();
-    return ids;
-  }
-  bool InvalidateRoute(NodeId d) override { return ask_(Writer().U8(kInvalidateRoute).U32(d)).Bool(); }
-  void RequestRoute(NodeId d) override { ask_(Writer().U8(kRequestRoute).U32(d)); }
+  explicit ProxyNetwork(int fd) : fd_(fd) {}
+  SANET_NETWORK_CALLS(SANET_PROXY_CALL)
 
  private:
-  std::function<Reader(const Writer&)> ask_;
+  int fd_;
 };
 
 class ProxyNode : public Node {
  public:
-  ProxyNode(int fd, Reader& identity) : fd_(fd), network_([this](const Writer& w) { return Ask(w); }) {
+  ProxyNode(int fd, Reader& identity) : fd_(fd), network_(fd) {
     id_ = identity.U32();
     name_ = identity.Text();
     count_ = identity.U32();
     holonomic_ = identity.Bool();
   }
-  double Now() const override { return Ask(Writer().U8(kNow)).F64(); }
   NodeId Id() const override { return id_; }
   const std::string& Name() const override { return name_; }
-  std::optional<NodeId> Lookup(const std::string& name) const override {
-    Reader r = Ask(Writer().U8(kLookup).Text(name));
-    const bool found = r.Bool();
-    const NodeId id = r.U32();
-    return found ? std::optional<NodeId>(id) : std::nullopt;
-  }
-  std::string NameOf(NodeId id) const override { return Ask(Writer().U8(kNameOf).U32(id)).Text(); }
   std::size_t NodeCount() const override { return count_; }
-  std::optional<RangeScan> Ir() override { return ReadScanOf(kIr); }
-  std::optional<RangeScan> Laser() override { return ReadScanOf(kLaser); }
-  std::optional<Pose2D> Odometry() override { return ReadPoseOf(kOdometry); }
-  std::optional<Pose2D> GroundTruth() override { return ReadPoseOf(kGroundTruth); }
-  std::optional<BearingReading> Bearing(NodeId target) override {
-    Reader r = Ask(Writer().U8(kBearing).U32(target));
-    if (!r.Bool()) return std::nullopt;
-    BearingReading b;
-    b.distance = r.F64(), b.bearing = r.F64();
-    return b;
-  }
-  bool Drive(const Twist2D& v) override { return Ask(Writer().U8(kDrive).F64(v.vx).F64(v.vy).F64(v.omega)).Bool(); }
-  bool SetWheelSpeeds(const std::vector<double>& w) override {
-    Writer question;
-    question.U8(kSetWheelSpeeds);
-    WriteDoubles(question, w);
-    return Ask(question).Bool();
-  }
   bool Holonomic() const override { return holonomic_; }
-  void Send(NodeId to, const Bytes& payload) override {
-    Writer question;
-    question.U8(kSend).U32(to);
-    WriteBytes(question, payload);
-    Ask(question);
-  }
-  void Broadcast(const Bytes& payload) override { AskWithBytes(kBroadcast, payload); }
-  void Flood(const Bytes& payload) override { AskWithBytes(kFlood, payload); }
   NetworkView& Network() override { return network_; }
-  double Random() override { return Ask(Writer().U8(kRandom)).F64(); }
-  void Log(const std::string& text) override { Ask(Writer().U8(kLog).Text(text)); }
-  void Transition(const std::string& from, const std::string& to, const std::string& why) override {
-    Ask(Writer().U8(kTransition).Text(from).Text(to).Text(why));
-  }
-  void Metric(const std::string& name, double value) override { Ask(Writer().U8(kMetric).Text(name).F64(value)); }
+  SANET_NODE_CALLS(SANET_PROXY_CALL)
 
  private:
-  Reader Ask(const Writer& question) const {
-    SendPacket(fd_, question.bytes());
-    auto answer = ReceivePacket(fd_);
-    if (!answer) std::_Exit(0);  // the run is over
-    Reader r(std::move(*answer));
-    r.U8();  // kAnswer
-    return r;
-  }
-  void AskWithBytes(Call call, const Bytes& payload) {
-    Writer question;
-    question.U8(call);
-    WriteBytes(question, payload);
-    Ask(question);
-  }
-  std::optional<RangeScan> ReadScanOf(Call call) {
-    Reader r = Ask(Writer().U8(call));
-    return ReadScan(r);
-  }
-  std::optional<Pose2D> ReadPoseOf(Call call) {
-    Reader r = Ask(Writer().U8(call));
-    return ReadPose(r);
-  }
-
   int fd_;
   NodeId id_ = 0;
   std::string name_;
   std::size_t count_ = 0;
   bool holonomic_ = false;
-  mutable ProxyNetwork network_;
+  ProxyNetwork network_;
 };
+#undef SANET_PROXY_CALL
+
+// The parent's answer to a question: `call` with the arguments read from `r`, its result
+// written to `w`.
+template <typename F>
+struct CallOf : CallOf<decltype(&F::operator())> {};
+template <typename F, typename Result, typename... Args>
+struct CallOf<Result (F::*)(Args...) const> {
+  static void Answer(const F& call, Reader& r, Writer& w) {
+    auto args = node_calls::GetAll<std::decay_t<Args>...>(r);
+    if constexpr (std::is_void_v<Result>)
+      std::apply(call, args);
+    else
+      node_calls::Put(w, std::apply(call, args));
+  }
+};
+template <typename F>
+void AnswerWith(const F& call, Reader& r, Writer& w) {
+  CallOf<F>::Answer(call, r, w);
+}
+
+#define SANET_NODE_ANSWER(name, override_name, Result, params, args, constness) \
+  case k##name:                                                                 \
+    return AnswerWith([&node] params { return node.name args; }, r, w);
+#define SANET_NETWORK_ANSWER(name, override_name, Result, params, args, constness) \
+  case k##name:                                                                    \
+    return AnswerWith([&node] params { return node.Network().name args; }, r, w);
+
+void Answer(Node& node, Call call, Reader& r, Writer& w) {
+  switch (call) {
+    SANET_NODE_CALLS(SANET_NODE_ANSWER)
+    SANET_NETWORK_CALLS(SANET_NETWORK_ANSWER)
+    default:
+      throw std::runtime_error("its process asked for an unknown node call " + std::to_string(call));
+  }
+}
+#undef SANET_NODE_ANSWER
+#undef SANET_NETWORK_ANSWER
 
 // The child: makes the controller, then runs each call the parent asks for.
 [[noreturn]] void HostInChild(int fd, const ControllerSpec& spec, Registry& registry) {
@@ -260,7 +163,7 @@ class ProxyNode : public Node {
     try {
       if (call == kStart) controller->Start(*node);
       if (call == kStep) controller->ControlStep(*node);
-      if (call == kMessage) controller->OnMessage(*node, ReadMessage(r));
+      if (call == kMessage) controller->OnMessage(*node, node_calls::Get<Message>(r));
       SendPacket(fd, Writer().U8(kDone).bytes());
     } catch (...) {
       SendPacket(fd, Writer().U8(kFailed).Text(CurrentExceptionText()).bytes());
@@ -282,7 +185,7 @@ class IsolatedController : public Controller {
   void ControlStep(Node& node) override { Run(node, Request(node, kStep)); }
   void OnMessage(Node& node, const Message& m) override {
     Writer request = Request(node, kMessage);
-    WriteMessage(request, m);
+    node_calls::Put(request, m);
     Run(node, request);
   }
 
@@ -309,7 +212,8 @@ class IsolatedController : public Controller {
       if (call == kFailed) throw std::runtime_error(r.Text());
       Writer answer;
       answer.U8(kAnswer);  // never an empty packet: that would read as the end of the stream
-      SendPacketOrCrash(Answer(node, call, r, answer).bytes());
+      Answer(node, call, r, answer);
+      SendPacketOrCrash(answer.bytes());
     }
   }
 
@@ -330,90 +234,6 @@ class IsolatedController : public Controller {
              std::to_string(WTERMSIG(status)) + " (" + ::strsignal(WTERMSIG(status)) + ")";
     return "its process (" + name_ + ", run apart with --isolate-controllers) exited with status " +
            std::to_string(WEXITSTATUS(status));
-  }
-
-  static Writer& Answer(Node& node, Call call, Reader& r, Writer& w) {
-    switch (call) {
-      case kNow:
-        return w.F64(node.Now());
-      case kLookup: {
-        const auto id = node.Lookup(r.Text());
-        return w.Bool(id.has_value()).U32(id.value_or(0));
-      }
-      case kNameOf:
-        return w.Text(node.NameOf(r.U32()));
-      case kIr:
-        WriteScan(w, node.Ir());
-        return w;
-      case kLaser:
-        WriteScan(w, node.Laser());
-        return w;
-      case kOdometry:
-        WritePose(w, node.Odometry());
-        return w;
-      case kGroundTruth:
-        WritePose(w, node.GroundTruth());
-        return w;
-      case kBearing: {
-        const auto b = node.Bearing(r.U32());
-        return w.Bool(b.has_value()).F64(b ? b->distance : 0).F64(b ? b->bearing : 0);
-      }
-      case kDrive: {
-        Twist2D v;
-        v.vx = r.F64(), v.vy = r.F64(), v.omega = r.F64();
-        return w.Bool(node.Drive(v));
-      }
-      case kSetWheelSpeeds:
-        return w.Bool(node.SetWheelSpeeds(ReadDoubles(r)));
-      case kSend: {
-        const NodeId to = r.U32();
-        node.Send(to, ReadBytes(r));
-        return w;
-      }
-      case kBroadcast:
-        node.Broadcast(ReadBytes(r));
-        return w;
-      case kFlood:
-        node.Flood(ReadBytes(r));
-        return w;
-      case kRandom:
-        return w.F64(node.Random());
-      case kLog:
-        node.Log(r.Text());
-        return w;
-      case kTransition: {
-        const std::string from = r.Text(), to = r.Text(), why = r.Text();
-        node.Transition(from, to, why);
-        return w;
-      }
-      case kMetric: {
-        const std::string name = r.Text();
-        node.Metric(name, r.F64());
-        return w;
-      }
-      case kProtocol:
-        return w.Text(node.Network().Protocol());
-      case kRoutingTable: {
-        const auto table = node.Network().RoutingTable();
-        w.U32(static_cast<std::uint32_t>(table.size()));
-        for (const RouteEntry& e : table)
-          w.U32(e.destination).U32(e.next_hop).I32(e.hops).Bool(e.valid).F64(e.expires_in);
-        return w;
-      }
-      case kNeighbours: {
-        const auto ids = node.Network().Neighbours();
-        w.U32(static_cast<std::uint32_t>(ids.size()));
-        for (NodeId id : ids) w.U32(id);
-        return w;
-      }
-      case kInvalidateRoute:
-        return w.Bool(node.Network().InvalidateRoute(r.U32()));
-      case kRequestRoute:
-        node.Network().RequestRoute(r.U32());
-        return w;
-      default:
-        throw std::runtime_error("its process asked for an unknown node call " + std::to_string(call));
-    }
   }
 
   int fd_;

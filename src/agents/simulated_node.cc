@@ -7,19 +7,9 @@ std::optional<BearingReading> SimulatedNode::Bearing(NodeId target) {
   return model_.Bearing(directory_.TruePose(target));
 }
 
-bool SimulatedNode::Drive(const Twist2D& velocity) {
-  if (off_) return false;
-  if (robots::Finite({velocity.vx, velocity.vy, velocity.omega})) return model_.Drive(velocity);
-  Log("drive refused: a velocity that is not a finite number (the motors keep their last command)");
-  return false;
-}
+bool SimulatedNode::ApplyDrive(const Twist2D& velocity) { return !off_ && model_.Drive(velocity); }
 
-bool SimulatedNode::SetWheelSpeeds(const std::vector<double>& w) {
-  if (off_) return false;
-  if (robots::Finite(w)) return model_.SetWheelSpeeds(w);
-  Log("wheel speeds refused: a speed that is not a finite number (the motors keep their last command)");
-  return false;
-}
+bool SimulatedNode::ApplyWheelSpeeds(const std::vector<double>& w) { return !off_ && model_.SetWheelSpeeds(w); }
 
 void SimulatedNode::SwitchOff() {
   model_.Drive({});

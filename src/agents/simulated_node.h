@@ -52,9 +52,6 @@ class SimulatedNode : public Node {
   std::optional<Pose2D> GroundTruth() override { return model_.GroundTruth(); }
   std::optional<BearingReading> Bearing(NodeId target) override;
 
-  // A switched-off node does not move, whoever asks; a command that is not a number is refused.
-  bool Drive(const Twist2D& velocity) override;
-  bool SetWheelSpeeds(const std::vector<double>& w) override;
   bool Holonomic() const override { return model_.holonomic(); }
 
   // A switched-off node's radio is off: it sends nothing.
@@ -80,6 +77,11 @@ class SimulatedNode : public Node {
   bool switched_off() const { return off_; }
   robots::NodeModel& model() { return model_; }
   const robots::NodeModel& model() const { return model_; }
+
+ protected:
+  // A switched-off node does not move, whoever asks (Node refused commands that are not numbers).
+  bool ApplyDrive(const Twist2D& velocity) override;
+  bool ApplyWheelSpeeds(const std::vector<double>& w) override;
 
  private:
   NodeId id_;

@@ -273,7 +273,7 @@ void RemoteNode::TakeSensor(const ProtocolMessage& m) {
   }
 }
 
-bool RemoteNode::Drive(const Twist2D& v) {
+bool RemoteNode::ApplyDrive(const Twist2D& v) {
   const auto& model = spec_.nodes[id_].model;
   ProtocolMessage drive("DRIVE");
   if (model.kind == robots::ModelKind::kDiffDrive) {
@@ -294,7 +294,7 @@ bool RemoteNode::Drive(const Twist2D& v) {
   return true;
 }
 
-bool RemoteNode::SetWheelSpeeds(const std::vector<double>& w) {
+bool RemoteNode::ApplyWheelSpeeds(const std::vector<double>& w) {
   if (spec_.nodes[id_].model.kind != robots::ModelKind::kDiffDrive || w.size() != 2) return false;
   ProtocolMessage drive("DRIVE");
   drive.Add("Left", w[0]).Add("Right", w[1]);

@@ -82,8 +82,6 @@ class RemoteNode : public Node {
   std::optional<Pose2D> Odometry() override { return odometry_; }
   std::optional<Pose2D> GroundTruth() override { return truth_; }
   std::optional<BearingReading> Bearing(NodeId) override { return std::nullopt; }  // not served
-  bool Drive(const Twist2D& velocity) override;
-  bool SetWheelSpeeds(const std::vector<double>& rad_per_s) override;
   bool Holonomic() const override { return spec_.nodes[id_].model.kind == robots::ModelKind::kOmni3; }
   void Send(NodeId to, const Bytes& payload) override;
   void Broadcast(const Bytes& payload) override;
@@ -93,6 +91,10 @@ class RemoteNode : public Node {
   void Log(const std::string& text) override;
   void Transition(const std::string& from, const std::string& to, const std::string& why) override;
   void Metric(const std::string& name, double value) override;
+
+ protected:
+  bool ApplyDrive(const Twist2D& velocity) override;
+  bool ApplyWheelSpeeds(const std::vector<double>& rad_per_s) override;
 
  private:
   void Command(const ProtocolMessage& m);

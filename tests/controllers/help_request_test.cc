@@ -110,8 +110,8 @@ class TableWitness : public Node {
   std::optional<Pose2D> Odometry() override { return inner_.Odometry(); }
   std::optional<Pose2D> GroundTruth() override { return inner_.GroundTruth(); }
   std::optional<BearingReading> Bearing(NodeId t) override { return inner_.Bearing(t); }
-  bool Drive(const Twist2D& v) override { return inner_.Drive(v); }
-  bool SetWheelSpeeds(const std::vector<double>& w) override { return inner_.SetWheelSpeeds(w); }
+  bool ApplyDrive(const Twist2D& v) override { return inner_.Drive(v); }
+  bool ApplyWheelSpeeds(const std::vector<double>& w) override { return inner_.SetWheelSpeeds(w); }
   bool Holonomic() const override { return inner_.Holonomic(); }
   void Send(NodeId to, const Bytes& p) override { inner_.Send(to, p); }
   void Broadcast(const Bytes& p) override { inner_.Broadcast(p); }

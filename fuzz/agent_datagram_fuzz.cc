@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "hil/agent_datagram.h"
+#include "wire/agent_datagram.h"
 
 using sanet::hil::DatagramKey;
 

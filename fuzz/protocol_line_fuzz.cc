@@ -6,8 +6,8 @@
 #include <string>
 #include <string_view>
 
-#include "hil/message_lines.h"
-#include "hil/protocol.h"
+#include "wire/message_lines.h"
+#include "wire/protocol.h"
 
 using sanet::hil::ProtocolMessage;
 

@@ -3,11 +3,11 @@
 #include <memory>
 #include <stdexcept>
 
-#include "hil/agent.h"
-#include "hil/plugin_identity.h"
-#include "hil/server_link.h"
+#include "remote_agent/agent.h"
+#include "remote_agent/server_link.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
+#include "wire/plugin_identity.h"
 
 namespace sanet::cli {
 namespace {

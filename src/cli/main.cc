@@ -18,14 +18,12 @@
 #include "builtin.h"
 #include "core/atomic_file.h"
 #include "core/version.h"
-#include "hil/launch.h"
-#include "hil/namespaces.h"
-#include "hil/radio_taps.h"
-#include "hil/realtime_priority.h"
-#include "hil/remote_node.h"
-#include "hil/sim_server.h"
-#include "hil/wss_server.h"
+#include "launch/launch.h"
+#include "launch/namespaces.h"
+#include "launch/radio_taps.h"
 #include "options.h"
+#include "remote_agent/remote_node.h"
+#include "robot_server/sim_server.h"
 #include "robots/node_model.h"
 #include "scenario/catalogue.h"
 #include "scenario/effective_scenario.h"
@@ -36,6 +34,8 @@
 #include "trace/earlier_run.h"
 #include "view/live_view.h"
 #include "view/viewer_server.h"
+#include "wire/realtime_priority.h"
+#include "wss/wss_server.h"
 
 namespace {
 

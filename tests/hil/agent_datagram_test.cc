@@ -1,4 +1,4 @@
-#include "hil/agent_datagram.h"
+#include "wire/agent_datagram.h"
 
 #include <gtest/gtest.h>
 

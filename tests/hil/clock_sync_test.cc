@@ -1,4 +1,4 @@
-#include "hil/clock_sync.h"
+#include "remote_agent/clock_sync.h"
 
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include "hil/clock_estimate.h"
-#include "hil/time_service.h"
+#include "wire/clock_estimate.h"
+#include "wire/time_service.h"
 
 namespace sanet::hil {
 namespace {

@@ -1,9 +1,9 @@
-#include "hil/protocol.h"
+#include "wire/protocol.h"
 
 #include <gtest/gtest.h>
 
-#include "hil/message_lines.h"
-#include "hil/sim_server.h"
+#include "robot_server/sim_server.h"
+#include "wire/message_lines.h"
 
 namespace sanet::hil {
 namespace {

@@ -20,6 +20,23 @@ if grep -qE "net/transport.h: No such file|'net/transport.h' file not found" <<<
 fi
 echo "ok: net cannot include sim/world.h"
 
+# The agent's layer cannot include the robot server's headers (nor does it link its library).
+out=$(cmake --build "$build" --target sanet_agent_server_probe 2>&1)
+if [ $? -eq 0 ]; then
+  echo "FAIL: an agent file that includes robot_server/sim_server.h compiled"
+  exit 1
+fi
+if ! grep -qE "robot_server/sim_server.h: No such file or directory|'robot_server/sim_server.h' file not found" <<<"$out"; then
+  echo "FAIL: the agent probe failed for another reason:"
+  echo "$out" | tail -20
+  exit 1
+fi
+if grep -qE "remote_agent/remote_node.h: No such file|'remote_agent/remote_node.h' file not found" <<<"$out"; then
+  echo "FAIL: the agent's own headers were not found"
+  exit 1
+fi
+echo "ok: the agent cannot include robot_server/sim_server.h"
+
 # The libraries sanet keeps private are system headers here: check that only their layers
 # include them.
 src="$(dirname "$0")/../../src"
@@ -38,5 +55,5 @@ check_private "box2d/" "/src/physics/box2d/"
 check_private "yaml-cpp/" "/src/scenario/"
 check_private "mpi.h" "/src/study/"
 check_private "plplot/" "/src/study/"
-check_private "openssl/" "/src/hil/"
+check_private "openssl/" "/src/wire/"
 echo "ok: ns-3, ODE, Box2D, yaml-cpp, MPI, PLplot and OpenSSL stay in their layers"

@@ -1,0 +1,94 @@
+#include "launch/namespaces.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace sanet::hil {
+namespace {
+
+int Quiet(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
+
+std::string Millis(double seconds) { return std::to_string(seconds * 1000) + "ms"; }
+
+}  // namespace
+
+bool NetworkNamespaces::Permitted(std::string* why) {
+  const std::string probe = "sanetprobe" + std::to_string(::getpid());
+  if (Quiet("ip netns add " + probe) != 0) {
+    *why =
+        Quiet("command -v ip") != 0 ? "the ip command (iproute2) is missing" : "'ip netns add' is not permitted here";
+    return false;
+  }
+  Quiet("ip netns del " + probe);
+  return true;
+}
+
+bool NetworkNamespaces::ShapingPermitted(std::string* why) {
+  const std::string probe = "sanetprobe" + std::to_string(::getpid());
+  if (Quiet("ip netns add " + probe) != 0) {
+    *why = "no network namespaces";
+    return false;
+  }
+  const bool ok = Quiet("ip netns exec " + probe + " ip link add sanetdummy type dummy") == 0 &&
+                  Quiet("ip netns exec " + probe + " tc qdisc add dev sanetdummy root netem delay 1ms") == 0;
+  Quiet("ip netns del " + probe);
+  if (!ok)
+    *why = Quiet("command -v tc") != 0 ? "the tc command (iproute2) is missing"
+                                       : "this kernel has no netem queueing discipline (sch_netem)";
+  return ok;
+}
+
+NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sim::LinkShaping& shaping,
+                                     bool shape)
+    : tag_("sa" + std::to_string(::getpid() % 100000)), nodes_(nodes), shape_(shape) {
+  try {
+    Run("ip link add " + tag_ + "br type bridge");
+    bridge_ = true;
+    Run("ip addr add " + ServerAddress() + "/24 dev " + tag_ + "br");
+    Run("ip link set " + tag_ + "br up");
+    for (std::uint32_t node : nodes) {
+      if (node >= 253) throw std::runtime_error("network namespaces support node ids below 253");
+      const std::string ns = Namespace(node), host = tag_ + "h" + std::to_string(node),
+                        inside = tag_ + "n" + std::to_string(node);
+      Run("ip netns add " + ns);
+      made_.push_back(ns);
+      Run("ip link add " + host + " type veth peer name " + inside);
+      Run("ip link set " + inside + " netns " + ns);
+      Run("ip link set " + host + " master " + tag_ + "br up");
+      Run("ip netns exec " + ns + " ip addr add " + Subnet() + "." + std::to_string(node + 1) + "/24 dev " + inside);
+      Run("ip netns exec " + ns + " ip link set " + inside + " up");
+      Run("ip netns exec " + ns + " ip link set lo up");
+      if (shape_ && (shaping.delay > 0 || shaping.jitter > 0 || shaping.loss > 0 || shaping.rate > 0)) {
+        std::string netem = "ip netns exec " + ns + " tc qdisc add dev " + inside + " root netem";
+        if (shaping.delay > 0 || shaping.jitter > 0)
+          netem += " delay " + Millis(shaping.delay) + " " + Millis(shaping.jitter);
+        if (shaping.loss > 0) netem += " loss " + std::to_string(shaping.loss * 100) + "%";
+        if (shaping.rate > 0) netem += " rate " + std::to_string(static_cast<long long>(shaping.rate)) + "bit";
+        Run(netem);
+      }
+    }
+  } catch (...) {
+    Remove();
+    throw;
+  }
+}
+
+NetworkNamespaces::~NetworkNamespaces() { Remove(); }
+
+void NetworkNamespaces::Remove() {
+  for (const std::string& ns : made_) Quiet("ip netns del " + ns);  // takes its veth pair along
+  made_.clear();
+  if (bridge_) Quiet("ip link del " + tag_ + "br");
+  bridge_ = false;
+}
+
+std::string NetworkNamespaces::Namespace(std::uint32_t node) const { return tag_ + "-" + std::to_string(node); }
+
+void NetworkNamespaces::Run(const std::string& command) {
+  if (Quiet(command) != 0) throw std::runtime_error("could not set up the agents' network: '" + command + "' failed");
+}
+
+}  // namespace sanet::hil

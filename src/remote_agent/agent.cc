@@ -1,0 +1,132 @@
+#include "remote_agent/agent.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <thread>
+
+#include "agents/controller_host.h"
+#include "remote_agent/agent_steps.h"
+#include "wire/message_lines.h"
+
+namespace sanet::hil {
+namespace {
+
+// The agent's estimate of the simulation clock (the remote node's), with the delayed actions the
+// host asks for, run as the agent's loop polls.
+class AgentClock : public agents::HostClock {
+ public:
+  explicit AgentClock(const RemoteNode& node) : node_(node) {}
+  double Now() const override { return node_.Now(); }
+  void After(double delay, std::function<void()> action) override { due_.emplace(Now() + delay, std::move(action)); }
+  void RunDue() {
+    while (!due_.empty() && due_.begin()->first <= Now()) {
+      auto action = std::move(due_.begin()->second);
+      due_.erase(due_.begin());
+      action();
+    }
+  }
+
+ private:
+  const RemoteNode& node_;
+  std::multimap<double, std::function<void()>> due_;  // in time order, then in order asked
+};
+
+// What the agent tells the server about its steps and messages (summary.json's `agents`).
+ProtocolMessage Stats(const StepGrid& grid, const RemoteNode& node, std::uint64_t received) {
+  ProtocolMessage m("STATS");
+  m.Add("Steps", std::to_string(grid.run())).Add("Missed", std::to_string(grid.missed()));
+  m.Add("Rate", FormatPrecise(grid.achieved_rate())).Add("Sent", std::to_string(node.messages_sent()));
+  const StepGrid::Lateness late = grid.lateness();
+  m.Add("Received", std::to_string(received)).Add("LatenessP50", FormatPrecise(late.p50));
+  m.Add("LatenessP99", FormatPrecise(late.p99)).Add("LatenessMax", FormatPrecise(late.max));
+  const RemoteNode::Datagrams& d = node.datagrams();
+  m.Add("DatagramsSent", std::to_string(d.sent)).Add("DatagramsReceived", std::to_string(d.received));
+  m.Add("DatagramsRejected", std::to_string(d.rejected));
+  m.Add("SendErrors", std::to_string(d.send_errors));
+  const ClockFigures clock = node.clock_figures();
+  m.Add("ClockOffset", FormatPrecise(clock.offset)).Add("ClockError", FormatPrecise(clock.error_bound));
+  m.Add("ClockErrorMax", FormatPrecise(clock.error_bound_max));
+  return m;
+}
+
+// The clock estimate after a burst of exchanges (clock.csv).
+ProtocolMessage ClockLine(const ClockFigures& f) {
+  ProtocolMessage m("CLOCK");
+  m.Add("Offset", FormatPrecise(f.offset)).Add("Error", FormatPrecise(f.error_bound));
+  m.Add("RoundTrip", FormatPrecise(f.round_trip)).Add("Drift", FormatPrecise(f.drift));
+  return m;
+}
+
+}  // namespace
+
+int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, std::unique_ptr<ServerLink> link,
+             agents::Registry& registry) {
+  const sim::ControllerSpec& controller = *spec.nodes.at(robot).controller;
+  RemoteNode node(spec, robot, settings, std::move(link));
+  AgentClock clock(node);
+  std::string failure;
+  agents::ControllerHost::Hooks hooks;
+  hooks.failed = [&](const std::string& why) { failure = why; };
+  // The server records what reaches this robot through it; what other agents send over UDP it
+  // learns from here, for messages.csv.
+  hooks.delivered = [&](const Message& m) {
+    if (node.IsAgent(m.from)) node.Report(RecvLine(m, node.NameOf(m.from)));
+  };
+  agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
+                              {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
+  std::uint64_t received = 0;
+  const auto deliver = [&](const Message& m) {
+    ++received;
+    host.Receive(m);
+  };
+  if (!settings.quiet) {
+    const ClockFigures clock = node.clock_figures();
+    std::printf("sanet agent %s: peers reach it at %s; clock %s, offset %.6f s, error bound %.0f us\n",
+                node.Name().c_str(), node.peer_endpoint().c_str(), settings.shared_clock ? "shared" : "estimated",
+                clock.offset, clock.error_bound * 1e6);
+    std::fflush(stdout);
+  }
+  // The first sensor lines tell where the robot is and what time it is.
+  while (!node.HasPose()) {
+    if (!node.Poll(deliver)) return 0;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  StepGrid grid(controller.rate);
+  double next_report = 0;
+  std::uint64_t bursts_reported = 0;
+  while (host.running() && node.Poll(deliver)) {
+    clock.RunDue();
+    if (const auto t = grid.Due(node.ClockNow())) {
+      node.SetStepTime(*t);
+      if (grid.run() == 1) host.Start();
+      host.Step();
+      node.SetStepTime(std::nullopt);
+    }
+    if (node.ClockNow() >= next_report) {  // five times a second: the server keeps the last
+      node.Report(Stats(grid, node, received));
+      next_report = node.ClockNow() + 0.2;
+    }
+    if (const ClockFigures clock = node.clock_figures(); clock.bursts > bursts_reported) {
+      node.Report(ClockLine(clock));
+      bursts_reported = clock.bursts;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  if (!settings.quiet && failure.empty()) {
+    const RemoteNode::Datagrams& d = node.datagrams();
+    std::printf(
+        "sanet agent %s: the run is over (the server closed at %.1f s): %llu steps (%llu missed), %llu datagrams sent, "
+        "%llu received, %llu rejected; worst clock error bound %.0f us\n",
+        node.Name().c_str(), node.ClockNow(), static_cast<unsigned long long>(grid.run()),
+        static_cast<unsigned long long>(grid.missed()), static_cast<unsigned long long>(d.sent),
+        static_cast<unsigned long long>(d.received), static_cast<unsigned long long>(d.rejected),
+        node.clock_figures().error_bound_max * 1e6);
+  }
+  if (failure.empty()) return 0;  // the server ended the run
+  std::fprintf(stderr, "sanet agent: %s\n", failure.c_str());
+  node.Log(failure);
+  return 1;
+}
+
+}  // namespace sanet::hil

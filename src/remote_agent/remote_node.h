@@ -1,0 +1,135 @@
+// The node a controller sees when it runs as its own process: sensors and actuators over the
+// robot protocol (a TCP client of `sanet serve`), messages to other agents over real UDP
+// sockets (one port per node of the scenario), messages to and from the nodes that live in the
+// server (motes) over the protocol connection, through the robot's own node in the server's
+// ns-3 network. The controller cannot tell it from the simulated node.
+#pragma once
+
+#include <netinet/in.h>
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/random_stream.h"
+#include "net/empty_view.h"
+#include "remote_agent/clock_sync.h"
+#include "remote_agent/server_link.h"
+#include "sanet/node.h"
+#include "sim/run_spec.h"
+#include "wire/agent_datagram.h"
+#include "wire/protocol.h"
+
+namespace sanet::hil {
+
+struct AgentSettings {
+  std::string udp_host = "127.0.0.1";   // where every node's UDP socket lives (one machine)
+  std::uint16_t udp_base_port = 47000;  // node i listens on base + i
+  std::string udp_subnet;               // instead: node i listens on <subnet>.(i+1), port udp_base_port (namespaces)
+  // This robot's link to the other agents, over the scenario's loop.peers: the address its peer
+  // socket takes, and the interface it is bound to (robot-to-robot datagrams leave through it only).
+  std::string peer_address, peer_interface;
+  bool shared_clock = false;    // the server runs on this machine: take its clock origin
+  std::uint16_t time_port = 0;  // otherwise: the server's time service, for the clock estimate
+  double clock_skew = 0;        // tests: added to this computer's clock, which the estimate must find
+  bool quiet = false;           // no progress lines on stdout
+};
+
+class RemoteNode : public Node {
+ public:
+  // Takes the server's clock (shared, or estimated), opens the robot's peer socket, claims `robot`
+  // over `link` and says where it listens. Throws std::runtime_error.
+  RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings, std::unique_ptr<ServerLink> link);
+  ~RemoteNode() override;
+
+  // Reads what arrived on TCP and UDP; messages go to `deliver` as they arrived (the controller's
+  // host applies the scenario's impairments). False once the server is gone.
+  bool Poll(const std::function<void(const Message&)>& deliver);
+  bool HasPose() const { return truth_.has_value(); }
+  // Inside a control step, Now() is the step's time on the shared clock's grid, not the moment
+  // the process happened to wake (as in a simulated run); nullopt outside steps.
+  void SetStepTime(std::optional<double> t) { step_time_ = t; }
+  // The run's clock as this process reads it, steps or not.
+  double ClockNow() const;
+  // How well that clock agrees with the server's (all zero but the offset with a shared clock).
+  ClockFigures clock_figures() const;
+  std::uint64_t messages_sent() const { return messages_sent_; }
+  // The robot's own packets between agents (UDP datagrams): sent, refused by the sender's
+  // stack (sendto failed) or not sent for want of the run's key, received whole from a known
+  // node with a valid MAC, and rejected (malformed, forged, replayed, or not for this robot).
+  struct Datagrams {
+    std::uint64_t sent = 0, send_errors = 0, received = 0, rejected = 0;
+  };
+  const Datagrams& datagrams() const { return datagrams_; }
+  // Where this robot listens for the other agents: "address:port", and " on IF" when bound to one.
+  const std::string& peer_endpoint() const { return peer_endpoint_; }
+  // A robot whose controller runs as an agent: reached over UDP, not through the server.
+  bool IsAgent(NodeId node) const;
+  // Reports to the server (a sanet extension line), e.g. the agent's STATS.
+  void Report(const ProtocolMessage& m) { Command(m); }
+
+  double Now() const override;
+  NodeId Id() const override { return id_; }
+  const std::string& Name() const override { return spec_.nodes[id_].name; }
+  std::optional<NodeId> Lookup(const std::string& name) const override;
+  std::string NameOf(NodeId id) const override { return id < spec_.nodes.size() ? spec_.nodes[id].name : ""; }
+  std::size_t NodeCount() const override { return spec_.nodes.size(); }
+  std::optional<RangeScan> Ir() override { return ir_; }
+  std::optional<RangeScan> Laser() override { return laser_; }
+  std::optional<Pose2D> Odometry() override { return odometry_; }
+  std::optional<Pose2D> GroundTruth() override { return truth_; }
+  std::optional<BearingReading> Bearing(NodeId) override { return std::nullopt; }  // not served
+  bool Holonomic() const override { return spec_.nodes[id_].model.kind == robots::ModelKind::kOmni3; }
+  void Send(NodeId to, const Bytes& payload) override;
+  void Broadcast(const Bytes& payload) override;
+  void Flood(const Bytes& payload) override;
+  NetworkView& Network() override { return view_; }
+  double Random() override { return random_.Uniform(); }
+  void Log(const std::string& text) override;
+  void Transition(const std::string& from, const std::string& to, const std::string& why) override;
+  void Metric(const std::string& name, double value) override;
+
+ protected:
+  bool ApplyDrive(const Twist2D& velocity) override;
+  bool ApplyWheelSpeeds(const std::vector<double>& rad_per_s) override;
+
+ private:
+  void Command(const ProtocolMessage& m);
+  void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
+  void TakeSensor(const ProtocolMessage& m);
+  void ReadUdp(const std::function<void(const Message&)>& deliver);
+  void TakeDatagram(const Bytes& datagram, const std::function<void(const Message&)>& deliver);
+  void Reject(const std::string& why);
+  void SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload);
+  void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
+  std::string HostOf(NodeId node) const;
+  std::uint16_t PortOf(NodeId node) const;
+  void OpenPeerSocket();
+  void TakePeer(const ProtocolMessage& m);
+
+  const sim::RunSpec& spec_;
+  NodeId id_;
+  AgentSettings settings_;
+  std::unique_ptr<ServerLink> link_;
+  int udp_ = -1;
+  net::EmptyView view_{"udp"};
+  RandomStream random_;
+  std::optional<double> clock_origin_;             // a shared clock: the server's monotonic clock at time 0
+  std::unique_ptr<ClockSync> clock_sync_;          // otherwise
+  std::vector<std::optional<sockaddr_in>> peers_;  // where each agent listens, when known
+  std::vector<Bytes> early_;                       // peers' datagrams that came before this agent had the run's key
+  std::string peer_address_, peer_endpoint_;       // where it listens; and that with port and interface
+  std::optional<DatagramKey> key_;                 // the run's, from the server's KEY line
+  std::uint64_t next_sequence_ = 1;                // of this agent's datagrams
+  std::vector<ReplayWindow> replays_;              // per sender
+  std::optional<Pose2D> truth_, odometry_;
+  std::optional<RangeScan> laser_, ir_;
+  std::optional<double> step_time_;
+  std::uint64_t messages_sent_ = 0;
+  Datagrams datagrams_;
+};
+
+}  // namespace sanet::hil

@@ -1,0 +1,498 @@
+#include "robot_server/sim_server.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/resource.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include "core/json_text.h"
+#include "core/statistics.h"
+#include "sim/spawning.h"
+#include "wire/agent_datagram.h"
+#include "wire/message_lines.h"
+#include "wire/sockets.h"
+#include "wire/tcp_window.h"
+
+namespace sanet::hil {
+namespace {
+
+double WallNow() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+// sanet's frame is z up (x forward, y left, angles counter-clockwise); USARSim's is z down
+// (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
+std::vector<double> ToUsarsim(const Pose2D& p) { return {p.x, -p.y, -p.theta}; }
+
+}  // namespace
+
+std::size_t DefaultMaxClients(const sim::RunSpec& spec) {
+  const auto robots = std::count_if(spec.nodes.begin(), spec.nodes.end(),
+                                    [](const sim::NodeSpec& n) { return n.model.kind != robots::ModelKind::kMote; });
+  return std::max<std::size_t>(64, 2 * static_cast<std::size_t>(robots));
+}
+
+SimServer::SimServer(sim::World& world, ServerSettings settings)
+    : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
+  world_.parts().SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
+  LineServer::Events events;
+  events.connected = [this](ConnectionId id) { Greet(id); };
+  events.line = [this](ConnectionId id, const std::string& line) {
+    Client& c = clients_.at(id);
+    std::string error;
+    if (auto m = ParseLine(line, &error))
+      Handle(c, *m);
+    else
+      Error(c, "malformed line: " + error);
+  };
+  events.gone = [this](ConnectionId id, const std::string& why) { Gone(id, why); };
+  events.line_too_long = [](std::size_t max_line) {
+    return FormatLine(
+        ProtocolMessage{"ERR"}.Add("Message", "line longer than " + std::to_string(max_line) + " bytes: closing"));
+  };
+  events.refusal_line = [](const std::string& why) { return FormatLine(ProtocolMessage{"ERR"}.Add("Message", why)); };
+  lines_ = std::make_unique<LineServer>(
+      LineServerSettings{settings_.bind, settings_.port, settings_.max_clients, "--max-clients", settings_.max_line,
+                         settings_.max_backlog, settings_.stall_timeout, settings_.lines_per_turn,
+                         settings_.bytes_per_turn, settings_.poll_budget},
+      std::move(events));
+}
+
+SimServer::~SimServer() { world_.parts().SetRemoteInbox(nullptr); }
+
+void SimServer::Start() {
+  world_.Every(settings_.poll_period, [this] { Poll(); });
+  world_.AddObserver(*this);
+}
+
+// The lag of every physics step behind the wall clock.
+void SimServer::AfterStep(const sim::WorldSnapshot& snapshot) {
+  lags_.push_back(std::max(0.0, (WallNow() - wall_start_) - snapshot.time()));
+}
+
+nlohmann::ordered_json SimServer::LagSummary() const {
+  std::vector<double> sorted = lags_;
+  std::sort(sorted.begin(), sorted.end());
+  const auto at = [&](double q) {
+    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))];
+  };
+  const double step = world_.spec().physics_step;
+  const auto missed = std::count_if(lags_.begin(), lags_.end(), [&](double l) { return l > step; });
+  return {{"steps", lags_.size()},      {"p50_s", at(0.5)},
+          {"p99_s", at(0.99)},          {"max_s", sorted.empty() ? 0 : sorted.back()},
+          {"missed_deadlines", missed}, {"deadline_s", step}};
+}
+
+void SimServer::Poll() {
+  const double now = world_.Now();
+  // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
+  if (wall_start_ < 0) {
+    wall_start_ = WallNow() - now;
+    // The time service's port: the robot protocol's number when UDP has it free.
+    time_service_ = std::make_unique<TimeService>(settings_.bind, lines_->port(), wall_start_);
+  }
+  lines_->Read();
+  for (auto& [id, c] : clients_)
+    if (c.open && c.robot) SendSensors(c, now);
+  lines_->Write();
+  for (auto it = clients_.begin(); it != clients_.end();) it = it->second.open ? std::next(it) : clients_.erase(it);
+}
+
+void SimServer::Greet(ConnectionId id) {
+  Client& c = clients_.emplace(id, Client(id, lines_->Peer(id))).first->second;
+  ProtocolMessage hello{"NFO"};
+  hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
+  // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
+  // on this machine share the simulation's time to the microsecond.
+  hello.Add("ClockOrigin", FormatPrecise(wall_start_));
+  Send(c, hello);
+}
+
+void SimServer::Handle(Client& c, const ProtocolMessage& m) {
+  if (m.type == "INIT") return Init(c, m);
+  if (m.type == "SANET") return Hello(c, m);
+  if (m.type == "GETSCENARIO") return SendScenario(c, m);
+  if (m.type == "GETPLUGIN") return SendPlugin(c, m);
+  if (m.type == "GETSTARTPOSES") {
+    ProtocolMessage reply{"NFO"};
+    std::string poses;
+    int count = 0;
+    for (NodeId id = 0; id < world_.NodeCount(); ++id) {
+      const sim::NodeSpec& node = world_.spec().nodes[id];
+      if (node.model.kind == robots::ModelKind::kMote || world_.parts().IsSpawned(id)) continue;
+      const auto p = ToUsarsim(world_.spec().nodes[id].pose);
+      poses += (count++ ? " " : "") + world_.NameOf(id) + " " + FormatNumber(p[0]) + "," + FormatNumber(p[1]) +
+               ",0.0000 0.0000,0.0000," + FormatNumber(p[2]);
+    }
+    reply.Add("StartPoses", std::to_string(count)).Add(poses.empty() ? "None" : poses, "");
+    return Send(c, reply);
+  }
+  if (!c.robot) return Error(c, m.type + " before INIT");
+  const NodeId id = *c.robot;
+  const auto& spec = world_.spec().nodes[id].model;
+  if (m.type == "DRIVE") return Drive(c, m);
+  if (m.type == "SEND") return SendMessage(c, m);
+  if (m.type == "LOG" || m.type == "TRANSITION" || m.type == "METRIC") return Report(c, m);
+  if (m.type == "STATS") return TakeStats(c, m);
+  if (m.type == "PEER") return TakePeer(c, m);
+  if (m.type == "CLOCK") return TakeClock(c, m);
+  if (m.type == "RECV") {
+    const std::string* from = m.Get("From");
+    std::string error;
+    const auto report = ParseRecvLine(m, from ? world_.Lookup(*from) : std::nullopt, id, &error);
+    return report ? world_.parts().RecordDelivery(id, report->message) : Error(c, error);
+  }
+  if (m.type == "GETCONF") {
+    ProtocolMessage reply{"CONF"};
+    reply.Add("Type", "GroundVehicle")
+        .Add("Name", world_.NameOf(id))
+        .Add("SteeringType", spec.kind == robots::ModelKind::kOmni3 ? "OmniDrive" : "SkidSteered")
+        .Add("MaxSpeed", spec.max_speed)
+        .Add("MaxTurnRate", spec.max_turn_rate);
+    return Send(c, reply);
+  }
+  if (m.type == "GETGEO") {
+    ProtocolMessage reply{"GEO"};
+    const bool omni = spec.kind == robots::ModelKind::kOmni3;
+    reply.Add("Type", "GroundVehicle")
+        .Add("Name", world_.NameOf(id))
+        .Add("WheelRadius", omni ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius)
+        .Add("WheelSeparation", omni ? 2 * spec.omni3.wheel_distance : spec.diffdrive.axle_length);
+    return Send(c, reply);
+  }
+  Error(c, "unknown command " + m.type);
+}
+
+// INIT {Name r} claims a robot that is there (the scenario's, or one spawned before); with a
+// {ClassName} and a name nobody has, it spawns a new robot, as in USARSim.
+void SimServer::Init(Client& c, const ProtocolMessage& m) {
+  if (c.robot) return Error(c, "INIT refused: this connection already drives " + world_.NameOf(*c.robot));
+  const std::string* name = m.Get("Name");
+  const std::string* usarsim_class = m.Get("ClassName");
+  if (name)
+    if (const auto id = world_.Lookup(*name)) return Claim(c, *id, usarsim_class);
+  if (!usarsim_class)
+    return Error(c, name ? "INIT refused: no robot named '" + *name + "' in this scenario; INIT {ClassName c} {Name " +
+                               *name + "} {Location x,y,z} adds one where the scenario allows it"
+                         : "INIT refused: give {Name robot} to claim one of the scenario's robots, or {ClassName c} "
+                           "{Location x,y,z} to add one");
+  if (m.Get("Start"))
+    return Error(c,
+                 "INIT refused: {Start tag}: the start poses belong to the scenario's robots; claim one with INIT "
+                 "{Name tag}, or give {Location x,y,z} for a new robot");
+  Spawn(c, *usarsim_class, name ? *name : "", m);
+}
+
+void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
+  const std::string name = world_.NameOf(id);
+  if (world_.spec().nodes[id].model.kind == robots::ModelKind::kMote)
+    return Error(c, "INIT refused: the name '" + name + "' is taken by a mote of this scenario");
+  if (claimed_[id]) return Error(c, "INIT refused: robot '" + name + "' is already driven by another client");
+  const std::string spawned_as = world_.parts().SpawnedAs(id);
+  if (usarsim_class && !spawned_as.empty() && !sim::SameClass(*usarsim_class, spawned_as))
+    return Error(c, "INIT refused: robot '" + name + "' is a " + spawned_as + ", not a " + *usarsim_class);
+  claimed_[id] = true;
+  ever_claimed_.resize(world_.NodeCount());
+  ever_claimed_[id] = true;
+  if (settings_.announce) std::printf("sanet: client %s drives %s\n", c.peer.c_str(), name.c_str());
+  c.robot = id;
+  c.next_sensors = c.next_status = world_.Now();
+  // sanet extension: the run's key for the datagrams agents send each other (wire/agent_datagram.h).
+  Send(c, ProtocolMessage{"KEY"}.Add("Datagrams", datagram_key_.Hex()));
+  world_.parts().Log(id, "client " + c.peer + " drives this robot");
+}
+
+// {Location} and {Rotation} are in USARSim's frame (y right, yaw clockwise); the robot stands
+// on the ground, whatever z says.
+void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const ProtocolMessage& m) {
+  if (!m.Get("Location"))
+    return Error(
+        c, "INIT refused: {ClassName " + usarsim_class + "} needs {Location x,y,z}: where the new robot stands (m)");
+  const auto location = m.Numbers("Location");
+  if (!location || location->size() != 3)
+    return Error(c, "INIT refused: {Location " + *m.Get("Location") + "}: expected three numbers x,y,z");
+  const auto rotation = m.Get("Rotation") ? m.Numbers("Rotation") : std::vector<double>{0, 0, 0};
+  if (!rotation || rotation->size() != 3)
+    return Error(c, "INIT refused: {Rotation " + *m.Get("Rotation") + "}: expected three numbers r,p,y (rad)");
+  const sim::SpawnRequest request{usarsim_class, name, {(*location)[0], -(*location)[1], -(*rotation)[2]}};
+  const sim::SpawnPlan plan = sim::PlanSpawn(world_.parts(), request);
+  if (!plan.node) return Error(c, "INIT refused: " + plan.refusal);
+  const NodeId id =
+      world_.parts().Spawn(*plan.node, plan.usarsim_class, "spawned as " + plan.usarsim_class + " by client " + c.peer);
+  claimed_.resize(world_.NodeCount(), false);
+  Claim(c, id, nullptr);
+}
+
+// Through the robot's simulated node, as its controller would drive it: a switched-off robot
+// does not move, whoever asks.
+void SimServer::Drive(Client& c, const ProtocolMessage& m) {
+  agents::SimulatedNode& node = NodeOf(c);
+  if (node.switched_off()) {
+    if (!c.told_off) Error(c, "robot " + node.Name() + " is switched off: DRIVE ignored");
+    c.told_off = true;
+    return;
+  }
+  const auto& spec = world_.spec().nodes[*c.robot].model;
+  if (m.Get("Left") || m.Get("Right")) {
+    const auto left = m.Number("Left"), right = m.Number("Right");
+    if (!left || !right) return Error(c, "DRIVE needs numbers for both {Left} and {Right}");
+    double l = *left, r = *right;
+    if (const std::string* normalized = m.Get("Normalized");
+        normalized && (*normalized == "True" || *normalized == "true")) {
+      const double radius =
+          spec.kind == robots::ModelKind::kOmni3 ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius;
+      const double top = spec.max_speed / radius;  // rad/s at 100 %
+      l = std::clamp(l, -100.0, 100.0) / 100 * top, r = std::clamp(r, -100.0, 100.0) / 100 * top;
+    }
+    if (spec.kind != robots::ModelKind::kDiffDrive)
+      return Error(c, "{Left} {Right} drive a diffdrive; use {LinearVelocity} ... for omni3");
+    node.SetWheelSpeeds({l, r});
+    return;
+  }
+  if (m.Get("LinearVelocity") || m.Get("RotationalVelocity") || m.Get("LateralVelocity")) {
+    const auto v = m.Number("LinearVelocity"), lateral = m.Number("LateralVelocity"),
+               w = m.Number("RotationalVelocity");
+    if ((m.Get("LinearVelocity") && !v) || (m.Get("LateralVelocity") && !lateral) ||
+        (m.Get("RotationalVelocity") && !w))
+      return Error(c, "DRIVE velocities must be numbers");
+    node.Drive({v.value_or(0), -lateral.value_or(0), -w.value_or(0)});  // USARSim: y right, yaw clockwise
+    return;
+  }
+  Error(c, "DRIVE needs {Left l} {Right r}, or {LinearVelocity} {LateralVelocity} {RotationalVelocity}");
+}
+
+void SimServer::SendSensors(Client& c, double now) {
+  robots::NodeModel& model = NodeOf(c).model();
+  if (now + 1e-9 >= c.next_sensors) {
+    c.next_sensors = now + settings_.sensor_period;
+    const std::string time = FormatNumber(now);
+    const Pose2D truth = model.GroundTruth();
+    ProtocolMessage gt{"SEN"};
+    const auto p = ToUsarsim(truth);
+    gt.Add("Time", time)
+        .Add("Type", "GroundTruth")
+        .Add("Name", "GroundTruth")
+        .Add("Location", std::vector<double>{p[0], p[1], model.body().position3().z})
+        .Add("Orientation", std::vector<double>{0, 0, p[2]});
+    Send(c, gt);
+    if (auto odometry = model.Odometry()) {
+      ProtocolMessage odo{"SEN"};
+      odo.Add("Time", time).Add("Type", "Odometry").Add("Name", "Odometry").Add("Pose", ToUsarsim(*odometry));
+      Send(c, odo);
+    }
+    if (auto scan = model.Laser()) {
+      ProtocolMessage laser{"SEN"};
+      const double resolution = scan->angles.size() > 1 ? scan->angles[1] - scan->angles[0] : 0;
+      const double fov = scan->angles.empty() ? 0 : scan->angles.back() - scan->angles.front();
+      laser.Add("Time", time)
+          .Add("Type", "RangeScanner")
+          .Add("Name", "Scanner1")
+          .Add("Resolution", resolution)
+          .Add("FOV", fov)
+          .Add("Range", scan->ranges);
+      Send(c, laser);
+    }
+    if (auto ir = model.Ir()) {
+      ProtocolMessage sonar{"SEN"};
+      sonar.Add("Time", time).Add("Type", "IR");
+      for (std::size_t i = 0; i < ir->ranges.size(); ++i)
+        sonar.Add("Name", "IR" + std::to_string(i) + " Range " + FormatNumber(ir->ranges[i]));
+      Send(c, sonar);
+    }
+  }
+  if (now + 1e-9 >= c.next_status) {
+    c.next_status = now + settings_.status_period;
+    ProtocolMessage status{"STA"};
+    status.Add("Type", "GroundVehicle")
+        .Add("Time", now)
+        .Add("FrontSteer", 0.0)
+        .Add("RearSteer", 0.0)
+        .Add("LightToggle", "False")
+        .Add("LightIntensity", "0")
+        .Add("Battery", "3600")
+        .Add("View", "-1");
+    Send(c, status);
+  }
+}
+
+void SimServer::Send(Client& c, const ProtocolMessage& m) {
+  if (c.open) lines_->Send(c.id, FormatLine(m));
+}
+
+// An ERR line carries no braces, whatever it quotes (a client's own text, a field's name):
+// braces would end its {Message ...} field early for a client's parser. A field's name in braces
+// becomes quoted ('Left'), a field with its value parenthesised ((ClassName c)), a lone brace '.
+std::string WithoutBraces(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const std::size_t close = text[i] == '{' ? text.find_first_of("{}", i + 1) : std::string::npos;
+    if (close != std::string::npos && text[close] == '}') {
+      const std::string inside = text.substr(i + 1, close - i - 1);
+      const bool one_word = inside.find(' ') == std::string::npos;
+      out += one_word ? "'" + inside + "'" : "(" + inside + ")";
+      i = close;
+    } else {
+      out += text[i] == '{' || text[i] == '}' ? '\'' : text[i];
+    }
+  }
+  return out;
+}
+
+void SimServer::Error(Client& c, const std::string& why) {
+  ProtocolMessage error{"ERR"};
+  error.Add("Message", WithoutBraces(why));
+  Send(c, error);
+}
+
+void SimServer::Drop(Client& c, const std::string& why) { lines_->Drop(c.id, why); }
+
+// The line server ended the connection (or the client did): its robot stops and is free.
+void SimServer::Gone(ConnectionId id, const std::string& why) {
+  Client& c = clients_.at(id);
+  c.open = false;
+  if (!c.robot) return;
+  NodeOf(c).Drive({});  // a robot without its client stops
+  claimed_[*c.robot] = false;
+  world_.parts().Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
+  if (settings_.announce)
+    std::printf("sanet: client %s of %s gone (%s)\n", c.peer.c_str(), world_.NameOf(*c.robot).c_str(), why.c_str());
+}
+
+// SEND: the robot's message leaves from its own ns-3 node, like any node's. Values are
+// case-sensitive, as node names are.
+void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
+  const std::string* delivery = m.Get("Delivery");
+  const std::string* data = m.Get("Data");
+  const auto kind = ParseDelivery(delivery ? *delivery : "unicast");
+  if (!kind) return Error(c, "SEND {Delivery " + *delivery + "}: expected unicast, broadcast or flood");
+  if (!data) return Error(c, "SEND needs {Data hex bytes}");
+  const auto payload = FromHex(*data);
+  if (!payload) return Error(c, "SEND {Data ...}: expected hex bytes (pairs of 0-9, a-f), not '" + *data + "'");
+  agents::SimulatedNode& node = NodeOf(c);
+  if (node.switched_off()) return Error(c, "robot " + node.Name() + " is switched off: SEND ignored");
+  if (*kind == Delivery::kBroadcast) return node.Broadcast(*payload);
+  if (*kind == Delivery::kFlood) return node.Flood(*payload);
+  const std::string* to = m.Get("To");
+  if (!to) return Error(c, "SEND to one node needs {To node}; or give {Delivery broadcast} or {Delivery flood}");
+  const auto target = world_.Lookup(*to);
+  if (!target) return Error(c, "SEND {To " + *to + "}: no node named '" + *to + "' in this scenario");
+  if (*target == node.Id()) return Error(c, "SEND {To " + *to + "}: that is this robot");
+  node.Send(*target, *payload);
+}
+
+// LOG, TRANSITION and METRIC: the controller's reports, as its node would make them in process.
+void SimServer::Report(Client& c, const ProtocolMessage& m) {
+  agents::SimulatedNode& node = NodeOf(c);
+  const std::string* text = m.Get("Text");
+  if (m.type == "LOG") return text && !text->empty() ? node.Log(*text) : Error(c, "LOG needs {Text ...}");
+  if (m.type == "METRIC") {
+    const std::string* name = m.Get("Name");
+    const auto value = m.Number("Value");
+    return name && value ? node.Metric(*name, *value) : Error(c, "METRIC needs {Name n} and a number {Value v}");
+  }
+  const std::string *from = m.Get("From"), *to = m.Get("To"), *why = m.Get("Why");
+  if (!from || !to || from->empty() || to->empty())
+    return Error(c, "TRANSITION needs {From state} {To state}, both named, and may give {Why ...}");
+  node.Transition(*from, *to, why ? *why : "");
+}
+
+namespace {
+
+// STATS keys and their names in the results; counts are whole numbers.
+struct StatsKey {
+  const char* key;
+  const char* name;
+  bool count;
+};
+constexpr StatsKey kStatsKeys[] = {{"Steps", "steps", true},
+                                   {"Missed", "steps_missed", true},
+                                   {"Rate", "achieved_rate_hz", false},
+                                   {"Sent", "messages_sent", true},
+                                   {"Received", "messages_received", true},
+                                   {"DatagramsSent", "datagrams_sent", true},
+                                   {"DatagramsReceived", "datagrams_received", true},
+                                   {"DatagramsRejected", "datagrams_rejected", true},
+                                   {"SendErrors", "send_errors", true},
+                                   {"LatenessP50", "lateness_p50_s", false},
+                                   {"LatenessP99", "lateness_p99_s", false},
+                                   {"LatenessMax", "lateness_max_s", false},
+                                   {"ClockOffset", "clock_offset_s", false},
+                                   {"ClockError", "clock_error_s", false},
+                                   {"ClockErrorMax", "clock_error_max_s", false}};
+
+}  // namespace
+
+// STATS (sanet extension): an agent's steps, messages and packets so far; the last one counts.
+void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
+  nlohmann::ordered_json stats = nlohmann::ordered_json::object();
+  for (const StatsKey& k : kStatsKeys) {
+    constexpr std::uint64_t kMostCount = std::uint64_t{1} << 53;  // whole numbers a double holds exactly
+    if (k.count) {
+      const auto count = m.Count(k.key, kMostCount);
+      if (!count) return Error(c, std::string("STATS needs a whole number from 0 to 2^53 '") + k.key + " ...'");
+      stats[k.name] = *count;
+    } else {
+      const auto value = m.Number(k.key);
+      if (!value) return Error(c, std::string("STATS needs a number '") + k.key + " ...'");
+      stats[k.name] = *value;
+    }
+  }
+  agent_stats_[world_.NameOf(*c.robot)] = stats;
+  if (!c.agent) lines_->ExpectChatter(c.id);  // an agent reads and writes in one loop: silence tells it stopped
+  c.agent = true;
+}
+
+// agents.csv: one row per agent, its last STATS, in node order; clock.csv: their CLOCK lines.
+void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
+  if (!clock_rows_.empty()) {
+    trace::CsvSink& clocks = folder.Csv("clock.csv", "time_s,node,offset_s,error_bound_s,round_trip_s,drift_ppm");
+    for (const std::string& row : clock_rows_) clocks.Row(row);
+  }
+  if (agent_stats_.empty()) return;
+  std::string header = "node";
+  for (const StatsKey& k : kStatsKeys) header += std::string(",") + k.name;
+  trace::CsvSink& table = folder.Csv("agents.csv", header);
+  for (NodeId id = 0; id < world_.NodeCount(); ++id) {
+    const auto it = agent_stats_.find(world_.NameOf(id));
+    if (it == agent_stats_.end()) continue;
+    std::string row = trace::CsvField(world_.NameOf(id));
+    for (const StatsKey& k : kStatsKeys) row += "," + JsonText((*it)[k.name]);
+    table.Row(row);
+  }
+}
+
+std::vector<std::string> SimServer::NeverDriven() const {
+  std::vector<std::string> names;
+  for (NodeId id = 0; id < world_.spec().nodes.size(); ++id)
+    if (sim::RunsAsAgent(world_.spec().nodes[id]) && !(id < ever_claimed_.size() && ever_claimed_[id]))
+      names.push_back(world_.NameOf(id));
+  return names;
+}
+
+SimServer::Client* SimServer::ClientOf(NodeId robot) {
+  for (auto& [id, c] : clients_)
+    if (c.open && c.robot == robot) return &c;
+  return nullptr;
+}
+
+// A message reached a client's robot in the simulated network: it goes on to the client. Agents
+// hear each other over their own UDP sockets, so the server passes on only what comes from
+// nodes that live here.
+sim::InboxResult SimServer::Forward(NodeId to, const Message& m) {
+  if (world_.spec().robots_remote && sim::RunsAsAgent(world_.spec().nodes[m.from])) return sim::InboxResult::kIgnored;
+  Client* c = ClientOf(to);
+  if (c) Send(*c, MsgLine(m, world_.NameOf(m.from)));
+  return c && c->open ? sim::InboxResult::kDelivered : sim::InboxResult::kLost;
+}
+
+}  // namespace sanet::hil

@@ -156,7 +156,7 @@ struct ServeArgs {
   std::string file, bind = "127.0.0.1", output, port_file, wss_port_file;
   int port = 3000;
   std::optional<int> wss_port;
-  std::optional<int> max_clients;
+  std::optional<int> max_clients, wss_max_clients;
   bool quiet = false, force = false;
   std::optional<double> duration;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
@@ -190,12 +190,18 @@ void WritePortFile(const std::string& path, std::uint16_t port, const char* opti
   }
 }
 
+std::size_t WssMaxClients(const ServeArgs& a, const sim::RunSpec& spec) {
+  if (!a.wss_port) return 0;
+  return a.wss_max_clients ? static_cast<std::size_t>(*a.wss_max_clients) : hil::DefaultMaxClients(spec);
+}
+
 // --wss-port: a Wireless Simulation Server beside the robot protocol's server.
 std::unique_ptr<hil::WssServer> StartWss(sim::World& world, const ServeArgs& a) {
   if (!a.wss_port) return nullptr;
   hil::WssSettings settings;
   settings.bind = a.bind;
   settings.port = static_cast<std::uint16_t>(*a.wss_port);
+  settings.max_clients = WssMaxClients(a, world.spec());
   std::unique_ptr<hil::WssServer> wss;
   try {
     wss = std::make_unique<hil::WssServer>(world, settings);
@@ -230,9 +236,9 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   settings.scenario_fingerprint = fingerprint;
   settings.announce = !quiet;
   try {
-    hil::RaiseDescriptorLimit(settings.max_clients);
+    hil::RaiseDescriptorLimit(settings.max_clients + WssMaxClients(a, sc.run));
   } catch (const std::runtime_error& e) {
-    throw CLI::ValidationError("--max-clients", e.what());
+    throw CLI::ValidationError(a.wss_max_clients ? "--max-clients, --wss-max-clients" : "--max-clients", e.what());
   }
   std::unique_ptr<hil::SimServer> listening;
   try {
@@ -412,6 +418,10 @@ Command AddServe(CLI::App& app) {
                   "0: any free port), with signal strengths and links from the simulated radio")
       ->check(CLI::Range(0, 65535));
   cmd->add_option("--wss-port-file", a->wss_port_file, "Once listening, write the WSS port number to this file");
+  cmd->add_option("--wss-max-clients", a->wss_max_clients,
+                  "WSS control connections served at once (default: twice the scenario's robots, at least 64); one "
+                  "more is answered ERROR and closed")
+      ->check(CLI::Range(1, 10000));
   AddViewOptions(cmd, a->view);
   return {cmd, [a](agents::Registry& r) { return Serve(*a, r); }};
 }

@@ -15,8 +15,6 @@
 namespace sanet::hil {
 namespace {
 
-constexpr std::size_t kMaxBacklog = 1 << 20;  // bytes waiting for a robot that does not read
-
 // "5000,5001" or "5000 5001": whole port numbers, or nothing.
 std::optional<std::vector<std::uint16_t>> Ports(const std::string& text) {
   std::vector<std::uint16_t> ports;
@@ -40,15 +38,26 @@ std::optional<std::vector<std::uint16_t>> Ports(const std::string& text) {
 }  // namespace
 
 WssServer::WssServer(sim::World& world, WssSettings settings) : world_(world), settings_(std::move(settings)) {
-  listener_ = ListenTcp(settings_.bind, settings_.port, 64, &port_);
+  LineServer::Events events;
+  events.connected = [this](ConnectionId id) { robots_[id] = Robot{id, lines_->PeerHost(id)}; };
+  events.line = [this](ConnectionId id, const std::string& line) {
+    std::string error;
+    if (auto m = ParseLine(line, &error)) Handle(robots_.at(id), *m);  // WSS has no word for a malformed line
+  };
+  events.gone = [this](ConnectionId id, const std::string&) { Gone(id); };
+  events.refusal_line = [](const std::string& why) {
+    return FormatLine(ProtocolMessage("ERROR").Add("Reason", "Too.Many.Connections: " + why));
+  };
+  LineServerSettings lines;
+  lines.bind = settings_.bind;
+  lines.port = settings_.port;
+  lines.max_clients = settings_.max_clients;
+  lines.cap_option = "--wss-max-clients";
+  lines.max_line = settings_.max_line;
+  lines_ = std::make_unique<LineServer>(lines, std::move(events));
 }
 
-WssServer::~WssServer() {
-  relays_.clear();
-  for (auto& r : robots_)
-    if (r->fd >= 0) ::close(r->fd);
-  if (listener_ >= 0) ::close(listener_);
-}
+WssServer::~WssServer() { relays_.clear(); }
 
 void WssServer::Start() {
   world_.Every(settings_.poll_period, [this] { Poll(); });
@@ -58,7 +67,7 @@ nlohmann::ordered_json WssServer::Summary() const {
   std::uint64_t cut = relays_cut_, connections = connections_, bytes = bytes_;
   for (const auto& [key, relay] : relays_)
     cut += relay->cut(), connections += relay->connections(), bytes += relay->bytes();
-  return {{"port", port_},
+  return {{"port", lines_->port()},
           {"relays", relays_opened_},
           {"connections", connections},
           {"connections_cut", cut},
@@ -66,51 +75,10 @@ nlohmann::ordered_json WssServer::Summary() const {
 }
 
 void WssServer::Poll() {
-  Accept();
-  for (auto& r : robots_)
-    if (r->fd >= 0) Read(*r);
+  lines_->Read();
   UpdateRelays();
-  for (auto& r : robots_) {
-    while (r->fd >= 0 && !r->out.empty()) {
-      const ssize_t n = ::send(r->fd, r->out.data(), r->out.size(), MSG_NOSIGNAL);
-      if (n < 0) {
-        if (errno != EAGAIN && errno != EWOULDBLOCK) Drop(*r);
-        break;
-      }
-      r->out.erase(0, n);
-    }
-  }
-  robots_.erase(std::remove_if(robots_.begin(), robots_.end(), [](const auto& r) { return r->fd < 0; }), robots_.end());
-}
-
-void WssServer::Accept() {
-  while (true) {
-    const int fd = AcceptClient(listener_);
-    if (fd < 0) return;
-    auto robot = std::make_unique<Robot>();
-    robot->fd = fd;
-    robot->reader = LineReader(settings_.max_line);
-    PeerOf(fd, &robot->host);
-    robots_.push_back(std::move(robot));
-  }
-}
-
-void WssServer::Read(Robot& r) {
-  char buffer[4096];
-  bool gone = false;
-  while (true) {
-    const ssize_t n = ::recv(r.fd, buffer, sizeof buffer, 0);
-    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)) gone = true;
-    if (n <= 0) break;
-    r.reader.Append(std::string_view(buffer, n));
-  }
-  bool too_long = false;
-  while (auto line = r.reader.Next(&too_long)) {
-    if (line->find_first_not_of(" \t") == std::string::npos) continue;
-    std::string error;
-    if (auto m = ParseLine(*line, &error)) Handle(r, *m);
-  }
-  if (gone || too_long) Drop(r);
+  lines_->Write();
+  for (auto it = robots_.begin(); it != robots_.end();) it = it->second.open ? std::next(it) : robots_.erase(it);
 }
 
 void WssServer::Handle(Robot& r, const ProtocolMessage& m) {
@@ -191,8 +159,8 @@ void WssServer::ReverseDns(Robot& r, const ProtocolMessage& m) {
 }
 
 WssServer::Robot* WssServer::Registered(const std::string& name) {
-  for (auto& r : robots_)
-    if (r->fd >= 0 && r->name == name) return r.get();
+  for (auto& [id, r] : robots_)
+    if (r.open && r.name == name) return &r;
   return nullptr;
 }
 
@@ -211,10 +179,9 @@ void WssServer::UpdateRelays() {
 }
 
 // Closing the control connection deregisters the robot: its relays, both ways, go with it.
-void WssServer::Drop(Robot& r) {
-  if (r.fd < 0) return;
-  ::close(r.fd);
-  r.fd = -1;
+void WssServer::Gone(ConnectionId id) {
+  Robot& r = robots_.at(id);
+  r.open = false;
   for (auto it = relays_.begin(); it != relays_.end();) {
     if (!r.name.empty() && (std::get<0>(it->first) == r.name || std::get<1>(it->first) == r.name)) {
       relays_cut_ += it->second->cut();
@@ -228,8 +195,7 @@ void WssServer::Drop(Robot& r) {
 }
 
 void WssServer::Send(Robot& r, const ProtocolMessage& m) {
-  r.out += FormatLine(m);
-  if (r.out.size() > kMaxBacklog) Drop(r);
+  if (r.open) lines_->Send(r.id, FormatLine(m));
 }
 
 void WssServer::Error(Robot& r, const std::string& reason) { Send(r, ProtocolMessage("ERROR").Add("Reason", reason)); }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sim/world.h"
+#include "wire/line_server.h"
 #include "wire/protocol.h"
 #include "wss/wss_relay.h"
 
@@ -26,23 +27,24 @@ struct WssSettings {
   std::uint16_t port = 50000;  // USARSim's WSS default; 0: any free port
   double poll_period = 0.005;  // s between polls of the sockets and the links
   std::size_t max_line = 4096;
+  std::size_t max_clients = 64;  // control connections at once (--wss-max-clients)
 };
 
 class WssServer {
  public:
   WssServer(sim::World& world, WssSettings settings);  // listens; throws std::runtime_error
   ~WssServer();
-  std::uint16_t port() const { return port_; }
+  std::uint16_t port() const { return lines_->port(); }
   void Start();  // polls on the simulation clock
   // Relays opened and cut and bytes carried, for summary.json.
   nlohmann::ordered_json Summary() const;
 
  private:
+  // A control connection (LineServer keeps its socket and buffers) and the robot it registered.
   struct Robot {
-    int fd = -1;
+    ConnectionId id = 0;
     std::string host;  // where its control connection comes from: its ports are there
-    LineReader reader{4096};
-    std::string out;
+    bool open = true;
     std::string name;  // empty until INIT
     NodeId node = 0;
     std::vector<std::uint16_t> ports;
@@ -50,8 +52,7 @@ class WssServer {
   using RelayKey = std::tuple<std::string, std::string, std::uint16_t>;  // from, to, port of `to`
 
   void Poll();
-  void Accept();
-  void Read(Robot& r);
+  void Gone(ConnectionId id);
   void Handle(Robot& r, const ProtocolMessage& m);
   void Init(Robot& r, const ProtocolMessage& m);
   void GetSignal(Robot& r, const ProtocolMessage& m);
@@ -60,15 +61,13 @@ class WssServer {
   Robot* Registered(const std::string& name);
   bool LinkUp(NodeId a, NodeId b) const;
   void UpdateRelays();
-  void Drop(Robot& r);
   void Send(Robot& r, const ProtocolMessage& m);
   void Error(Robot& r, const std::string& reason);
 
   sim::World& world_;
   WssSettings settings_;
-  int listener_ = -1;
-  std::uint16_t port_ = 0;
-  std::vector<std::unique_ptr<Robot>> robots_;
+  std::map<ConnectionId, Robot> robots_;
+  std::unique_ptr<LineServer> lines_;
   std::map<RelayKey, std::unique_ptr<WssRelay>> relays_;
   std::uint64_t relays_cut_ = 0, connections_ = 0, bytes_ = 0;  // of relays already gone
   std::uint64_t relays_opened_ = 0;

@@ -176,6 +176,75 @@ class WirelessSimulationServer(unittest.TestCase):
         self.assertEqual(self.echo_again, b"back")
 
 
+class WssUnderLoad(unittest.TestCase):
+    """The WSS endpoint is a line server like the robot server: connections over its cap are told
+    why and closed, a client that floods (without line ends, or with lines it never reads the
+    answers to) does not stall the others, and a well-behaved client is answered throughout."""
+
+    def test_cap_and_flooders(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            port_file = os.path.join(tmp, "wss-port")
+            server, _, _ = serve(SANET, SCENARIO.replace("duration: 25", "duration: 20"), tmp, "--wss-port", "0",
+                                 "--wss-port-file", port_file, "--wss-max-clients", "3")
+            try:
+                with open(port_file) as f:
+                    port = int(f.read())
+                self.check_under_load(port)
+            finally:
+                server.kill()
+                server.wait()
+
+    def check_under_load(self, port):
+        w1 = Wss(port)
+        self.assertEqual(w1.ask("INIT {Robot r1} {Port 4999}"), "INITREPLY {Status OK}")
+        # A flood without line ends ends its own connection (a line is at most 4096 bytes).
+        endless = socket.create_connection(("127.0.0.1", port), timeout=5)
+        try:
+            for _ in range(64):
+                endless.sendall(b"x" * 1024)
+        except ConnectionError:
+            pass
+        self.assertIn(read_to_end(endless), (b"", None), "the flooder's connection is closed")
+        self.assertTrue(w1.ask("GETSS {Robot r2}").startswith("SS {Robot r2}"))
+        # Two more fill the cap of three; the fourth is told why and closed.
+        w2, idle = Wss(port), Wss(port)
+        self.assertEqual(w2.ask("INIT {Robot r2} {Port 5000}"), "INITREPLY {Status OK}")
+        refused = socket.create_connection(("127.0.0.1", port), timeout=5)
+        self.assertEqual(read_to_end(refused), b"ERROR {Reason Too.Many.Connections: connection refused: the server "
+                                               b"already has 3 connections (its cap, --wss-max-clients 3)}\r\n")
+        idle.sock.close()
+        time.sleep(0.1)
+        # A client that sends lines and never reads the answers, while w1 asks and is answered.
+        flooder = socket.create_connection(("127.0.0.1", port), timeout=5)
+        flooder.sendall(b"INIT {Robot r2x} {Port 1}\r\n")
+        stop = threading.Event()
+
+        def flood():
+            try:
+                while not stop.is_set():
+                    flooder.sendall(b"GETSS {Robot r1}\r\n" * 256)
+            except OSError:
+                pass  # the server dropped it: it never read its answers
+        thread = threading.Thread(target=flood, daemon=True)
+        thread.start()
+        answers = [w1.ask("GETSS {Robot r2}") for _ in range(200)]
+        stop.set()
+        thread.join(timeout=10)
+        self.assertTrue(all(a.startswith("SS {Robot r2} {Strength ") for a in answers), answers[:3])
+        self.assertEqual(w2.ask("GETSS {Robot r1}")[:13], "SS {Robot r1}")
+
+
+def read_to_end(sock):
+    """What the server sent before it closed the connection (None if it reset it)."""
+    data = b""
+    try:
+        while chunk := sock.recv(4096):
+            data += chunk
+    except ConnectionResetError:
+        return None if not data else data
+    return data
+
+
 if __name__ == "__main__":
     warnings.simplefilter("ignore", ResourceWarning)  # relayed sockets are left to the server to cut
     unittest.main(verbosity=2, warnings="ignore")

@@ -99,7 +99,9 @@ void PrintEnd(const study::SweepTally& t, const std::string& folder, bool has_en
 int Sweep(const SweepArgs& a, agents::Registry& registry) {
   const scenario::Scenario base = scenario::LoadScenario(a.file, a.sets);
   const study::SweepSettings s = Settings(a, base);
-  const int jobs = a.jobs.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  // Under MPI the ranks are the parallelism (one per core, as mpirun places them): one run each.
+  const int jobs =
+      a.jobs.value_or(study::UnderMpi() ? 1 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   if (study::UnderMpi() && !study::IsMpiCoordinator()) return study::ServeAsMpiWorker(jobs);
   CheckStudyFolder(s.folder, a.force);
   const std::vector<study::PreparedRun> runs = study::Prepare(s, registry);
@@ -208,8 +210,10 @@ Command AddSweep(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("--seeds", a->seeds, "Seeds of each combination: a list and/or ranges, e.g. 1-10 or 1,5,9")
       ->capture_default_str();
-  cmd->add_option("-j,--jobs", a->jobs,
-                  "Runs at a time (default: one per core); under MPI, runs at a time on each rank")
+  cmd->add_option(
+         "-j,--jobs", a->jobs,
+         "Runs at a time (default: one per core); under MPI, runs at a time on each rank (default 1: one rank per "
+         "core)")
       ->check(CLI::Range(1, 1024));
   AddSet(cmd, a->sets);
   AddDuration(cmd, a->duration);

@@ -23,6 +23,9 @@ double SteadyNow() {
 // In the child: output to the log, die with the parent, become `sanet args...`.
 [[noreturn]] void BecomeRun(const RunJob& job) {
   ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  // A process group of its own: a signal to the sweep's group (Ctrl-C, mpirun stopping its ranks)
+  // reaches the run once, through the sweep, not a second time directly (which would end it at once).
+  ::setpgid(0, 0);
   const int log = ::open(job.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log >= 0) {
     ::dup2(log, STDOUT_FILENO);
@@ -112,6 +115,11 @@ std::vector<JobEnd> LocalExecutor::Poll() {
 void LocalExecutor::StopAll() {
   stopping_ = true;
   for (auto& [pid, child] : running_) ::kill(pid, SIGTERM);
+}
+
+void LocalExecutor::StopNow() {
+  stopping_ = true;
+  for (auto& [pid, child] : running_) ::kill(pid, SIGKILL);
 }
 
 }  // namespace sanet::study

@@ -51,6 +51,9 @@ class LocalExecutor : public Executor {
   std::vector<JobEnd> Poll() override;
   int Running() const override { return static_cast<int>(running_.size()); }
   void StopAll() override;
+  // Kills the running ones (they end as interrupted, their results unwritten): for a stop that
+  // must be over within mpirun's second of grace.
+  void StopNow();
 
  private:
   struct Child {

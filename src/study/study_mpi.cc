@@ -3,6 +3,7 @@
 #include <mpi.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -83,7 +84,7 @@ class MpiExecutor : public Executor {
   void StopAll() override {
     stopping_ = true;
     give_up_at_ = SteadySeconds() + kStopGrace;
-    local_.StopAll();
+    local_.StopNow();  // mpirun kills the ranks a second after it stops them: no time for results
     for (int r = 1; r < ranks(); ++r) link_.Send(r, kStopNow, "");
   }
   int ranks() const { return static_cast<int>(free_.size()); }
@@ -158,6 +159,22 @@ void SendBack(MpiLink& link, JobEnd end, const fs::path& dir) {
 
 volatile std::sig_atomic_t g_worker_stop = 0;
 
+// A worker's runs live in <tmp>/sanet-rank-<rank>-<pid>/ until they are sent back.
+const std::string kScratchPrefix = "sanet-rank-";
+
+// Folders of workers that were killed outright (mpirun's SIGKILL a second after a stop) and
+// could not remove their own: their process is gone.
+void RemoveScratchOfDeadRanks() {
+  std::error_code ignored;
+  for (const auto& entry : fs::directory_iterator(fs::temp_directory_path(), ignored)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(kScratchPrefix, 0) != 0) continue;
+    const std::string pid = name.substr(name.rfind('-') + 1);
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), ignored);
+  }
+}
+
 }  // namespace
 
 bool UnderMpi() {
@@ -171,8 +188,9 @@ bool IsMpiCoordinator() { return !UnderMpi() || MpiSession::Get().rank() == 0; }
 int ServeAsMpiWorker(int jobs) {
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, [](int) { g_worker_stop = 1; });
   const int rank = MpiSession::Get().rank();
+  RemoveScratchOfDeadRanks();
   const fs::path scratch =
-      fs::temp_directory_path() / ("sanet-rank-" + std::to_string(rank) + "-" + std::to_string(::getpid()));
+      fs::temp_directory_path() / (kScratchPrefix + std::to_string(rank) + "-" + std::to_string(::getpid()));
   MpiLink link;
   {
     LocalExecutor local(jobs, rank);
@@ -186,7 +204,7 @@ int ServeAsMpiWorker(int jobs) {
       }
       if ((g_worker_stop || stopped) && !stopping) {
         finish = stopping = true;
-        local.StopAll();
+        local.StopNow();  // its results would only be thrown away: the run is done again
       }
       for (const JobEnd& end : local.Poll()) SendBack(link, end, scratch / end.name);
       link.Progress();

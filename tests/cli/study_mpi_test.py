@@ -101,6 +101,11 @@ class MpiSweep(unittest.TestCase):
                   "WHERE s.name LIKE 'network.%' ORDER BY 1, 2"
         expected = rows(local, query)
         self.assertEqual(len(expected), 18)
+        # What a worker rank killed outright leaves behind: the next MPI sweep removes it.
+        gone = subprocess.Popen(["true"])
+        gone.wait()
+        stale = os.path.join(tempfile.gettempdir(), f"sanet-rank-1-{gone.pid}")
+        os.makedirs(os.path.join(stale, "tx_power=28,seed=1"), exist_ok=True)
         for ranks, jobs, attempt in ((2, 2, 1), (2, 1, 2), (3, 1, 1), (3, 2, 2)):
             with self.subTest(ranks=ranks, jobs=jobs, attempt=attempt):
                 study = self.folder(f"mpi-{ranks}-{jobs}-{attempt}")
@@ -114,6 +119,7 @@ class MpiSweep(unittest.TestCase):
                 self.assertEqual({r[0] for r in rows(study, "SELECT rank FROM runs")}, set(range(ranks)),
                                  "every rank ran")
                 self.assertEqual(sorted(os.listdir(os.path.join(study, "runs"))), [r[0] for r in expected])
+                self.assertFalse(os.path.exists(stale), "the folder of a rank that is gone was removed")
 
     def test_failed_crashed_and_killed_runs_are_recorded_and_the_study_completes(self):
         scenario = self.folder("crashing.yaml")
@@ -200,6 +206,9 @@ class MpiSweep(unittest.TestCase):
                 before = dict(rows(study, "SELECT name, finished_utc FROM runs WHERE status = 'completed'"))
                 self.assertGreaterEqual(len(before), 3)
                 self.assertLess(len(before), 12)
+                for log in glob.glob(os.path.join(study, "logs", "*.txt")):
+                    with open(log) as f:
+                        self.assertNotIn("second signal", f.read(), "a run got the stop twice")
                 again = subprocess.run(mpirun(2, SCENARIO, *grid, "-o", study), capture_output=True, text=True,
                                        timeout=300, env=ENV)
                 self.assertEqual(again.returncode, 0, again.stdout + again.stderr)

@@ -176,7 +176,7 @@ void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
     pairs.emplace_back(t.substr(0, equals), t.substr(equals + 1));
   }
   try {
-    hil::JoinRadioTaps(world, pairs);
+    hil::JoinRadioTaps(world.driver(), pairs);
   } catch (const std::exception& e) {
     throw CLI::ValidationError("--tap", e.what());
   }
@@ -204,7 +204,7 @@ std::unique_ptr<hil::WssServer> StartWss(sim::World& world, const ServeArgs& a) 
   settings.max_clients = WssMaxClients(a, world.spec());
   std::unique_ptr<hil::WssServer> wss;
   try {
-    wss = std::make_unique<hil::WssServer>(world, settings);
+    wss = std::make_unique<hil::WssServer>(world.driver(), settings);
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError("--wss-port", e.what());
   }
@@ -242,7 +242,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   }
   std::unique_ptr<hil::SimServer> listening;
   try {
-    listening = std::make_unique<hil::SimServer>(world, settings);
+    listening = std::make_unique<hil::SimServer>(world.driver(), settings);
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError("--port", e.what());
   }

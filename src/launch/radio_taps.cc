@@ -58,7 +58,7 @@ std::string RadioMac(NodeId node) {
   return mac;
 }
 
-void JoinRadioTaps(sim::World& world, const std::vector<std::pair<std::string, std::string>>& robot_namespaces) {
+void JoinRadioTaps(sim::Driver& world, const std::vector<std::pair<std::string, std::string>>& robot_namespaces) {
   for (const auto& [robot, ns] : robot_namespaces) {
     const auto id = world.Lookup(robot);
     if (!id) throw std::runtime_error("no node named '" + robot + "' in this scenario");
@@ -68,7 +68,7 @@ void JoinRadioTaps(sim::World& world, const std::vector<std::pair<std::string, s
     const std::string name = "sn" + std::to_string(::getpid() % 100000) + "r" + std::to_string(*id);
     const int fd = OpenTap(name);
     if (fd < 0) throw std::runtime_error("cannot create a tap device for " + robot + ": " + std::strerror(errno));
-    world.parts().JoinTap(*id, fd, RadioMac(*id));  // the world's network owns it from here
+    world.JoinTap(*id, fd, RadioMac(*id));  // the world's network owns it from here
     Run("ip link set dev " + name + " netns " + ns);
     Run("ip -n " + ns + " link set dev " + name + " name " + kRadioInterface);
     Run("ip -n " + ns + " link set dev " + kRadioInterface + " address " + RadioMac(*id) + " mtu 1500 arp off up");

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/world.h"
+#include "sim/driver.h"
 
 namespace sanet::hil {
 
@@ -26,6 +26,6 @@ constexpr const char* kRadioSubnet = "10.0.0";  // robot i is kRadioSubnet.(i+1)
 // Opens a tap for every (robot, namespace), moves it into the namespace, configures it and joins
 // it to the robot's node in `world`. Throws std::runtime_error naming the step that failed. The
 // world's network owns the taps from then on (closed when the world ends).
-void JoinRadioTaps(sim::World& world, const std::vector<std::pair<std::string, std::string>>& robot_namespaces);
+void JoinRadioTaps(sim::Driver& world, const std::vector<std::pair<std::string, std::string>>& robot_namespaces);
 
 }  // namespace sanet::hil

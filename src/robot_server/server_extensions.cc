@@ -72,12 +72,12 @@ void SimServer::SendScenario(Client& c, const ProtocolMessage& m) {
 // GETPLUGIN {Robot r}: which controller code the robot runs here.
 void SimServer::SendPlugin(Client& c, const ProtocolMessage& m) {
   const std::string* robot = m.Get("Robot");
-  const auto id = robot ? world_.Lookup(*robot) : std::nullopt;
-  if (!id || !world_.spec().nodes[*id].controller)
+  const auto id = robot ? driver_.Lookup(*robot) : std::nullopt;
+  if (!id || !driver_.Spec(*id).controller)
     return Error(c, "GETPLUGIN {Robot r}: r must be a node with a controller in this scenario");
   PluginIdentity plugin;
   try {
-    plugin = IdentifyPlugin(*world_.spec().nodes[*id].controller);
+    plugin = IdentifyPlugin(*driver_.Spec(*id).controller);
   } catch (const std::runtime_error& e) {
     return Error(c, e.what());
   }
@@ -94,11 +94,11 @@ void SimServer::TakePeer(Client& c, const ProtocolMessage& m) {
   const auto port = m.Count("Port", 65535);
   if (!address || !IsIpv4(*address) || !port || *port == 0)
     return Error(c, "PEER needs {Address a.b.c.d} and {Port p} (1 to 65535)");
-  peers_.resize(world_.NodeCount());
+  peers_.resize(driver_.NodeCount());
   peers_[*c.robot] = Peer{*address, static_cast<std::uint16_t>(*port)};
   const auto line = [&](NodeId id) {
     return ProtocolMessage{"PEER"}
-        .Add("Name", world_.NameOf(id))
+        .Add("Name", driver_.NameOf(id))
         .Add("Address", peers_[id]->address)
         .Add("Port", std::to_string(peers_[id]->port));
   };
@@ -116,10 +116,10 @@ void SimServer::TakeClock(Client& c, const ProtocolMessage& m) {
   if (!offset || !error || !trip || !drift)
     return Error(c, "CLOCK needs {Offset s} {Error s} {RoundTrip s} {Drift s/s}");
   // An agent reports once a second; more often is no agent's doing, and would only grow the table.
-  last_clock_row_.resize(world_.NodeCount(), -1e300);
-  if (world_.Now() - last_clock_row_[*c.robot] < kLeastClockPeriod) return;
-  last_clock_row_[*c.robot] = world_.Now();
-  clock_rows_.push_back(FormatPrecise(world_.Now()) + "," + trace::CsvField(world_.NameOf(*c.robot)) + "," +
+  last_clock_row_.resize(driver_.NodeCount(), -1e300);
+  if (driver_.Now() - last_clock_row_[*c.robot] < kLeastClockPeriod) return;
+  last_clock_row_[*c.robot] = driver_.Now();
+  clock_rows_.push_back(FormatPrecise(driver_.Now()) + "," + trace::CsvField(driver_.NameOf(*c.robot)) + "," +
                         FormatPrecise(*offset) + "," + FormatPrecise(*error) + "," + FormatPrecise(*trip) + "," +
                         FormatPrecise(*drift * 1e6));
 }

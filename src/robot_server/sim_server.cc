@@ -42,9 +42,8 @@ std::size_t DefaultMaxClients(const sim::RunSpec& spec) {
   return std::max<std::size_t>(64, 2 * static_cast<std::size_t>(robots));
 }
 
-SimServer::SimServer(sim::World& world, ServerSettings settings)
-    : world_(world), settings_(std::move(settings)), claimed_(world.NodeCount(), false) {
-  world_.parts().SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
+SimServer::SimServer(sim::Driver& driver, ServerSettings settings) : driver_(driver), settings_(std::move(settings)) {
+  driver_.SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
   LineServer::Events events;
   events.connected = [this](ConnectionId id) { Greet(id); };
   events.line = [this](ConnectionId id, const std::string& line) {
@@ -68,11 +67,11 @@ SimServer::SimServer(sim::World& world, ServerSettings settings)
       std::move(events));
 }
 
-SimServer::~SimServer() { world_.parts().SetRemoteInbox(nullptr); }
+SimServer::~SimServer() { driver_.SetRemoteInbox(nullptr); }
 
 void SimServer::Start() {
-  world_.Every(settings_.poll_period, [this] { Poll(); });
-  world_.AddObserver(*this);
+  driver_.Every(settings_.poll_period, [this] { Poll(); });
+  driver_.AddObserver(*this);
 }
 
 // The lag of every physics step behind the wall clock.
@@ -86,7 +85,7 @@ nlohmann::ordered_json SimServer::LagSummary() const {
   const auto at = [&](double q) {
     return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))];
   };
-  const double step = world_.spec().physics_step;
+  const double step = driver_.spec().physics_step;
   const auto missed = std::count_if(lags_.begin(), lags_.end(), [&](double l) { return l > step; });
   return {{"steps", lags_.size()},      {"p50_s", at(0.5)},
           {"p99_s", at(0.99)},          {"max_s", sorted.empty() ? 0 : sorted.back()},
@@ -94,7 +93,7 @@ nlohmann::ordered_json SimServer::LagSummary() const {
 }
 
 void SimServer::Poll() {
-  const double now = world_.Now();
+  const double now = driver_.Now();
   // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
   if (wall_start_ < 0) {
     wall_start_ = WallNow() - now;
@@ -111,7 +110,7 @@ void SimServer::Poll() {
 void SimServer::Greet(ConnectionId id) {
   Client& c = clients_.emplace(id, Client(id, lines_->Peer(id))).first->second;
   ProtocolMessage hello{"NFO"};
-  hello.Add("Gametype", "BotDeathMatch").Add("Level", world_.spec().name).Add("TimeLimit", world_.spec().duration);
+  hello.Add("Gametype", "BotDeathMatch").Add("Level", driver_.spec().name).Add("TimeLimit", driver_.spec().duration);
   // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
   // on this machine share the simulation's time to the microsecond.
   hello.Add("ClockOrigin", FormatPrecise(wall_start_));
@@ -127,11 +126,11 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
     ProtocolMessage reply{"NFO"};
     std::string poses;
     int count = 0;
-    for (NodeId id = 0; id < world_.NodeCount(); ++id) {
-      const sim::NodeSpec& node = world_.spec().nodes[id];
-      if (node.model.kind == robots::ModelKind::kMote || world_.parts().IsSpawned(id)) continue;
-      const auto p = ToUsarsim(world_.spec().nodes[id].pose);
-      poses += (count++ ? " " : "") + world_.NameOf(id) + " " + FormatNumber(p[0]) + "," + FormatNumber(p[1]) +
+    for (NodeId id = 0; id < driver_.NodeCount(); ++id) {
+      const sim::NodeSpec& node = driver_.Spec(id);
+      if (node.model.kind == robots::ModelKind::kMote || driver_.IsSpawned(id)) continue;
+      const auto p = ToUsarsim(node.pose);
+      poses += (count++ ? " " : "") + driver_.NameOf(id) + " " + FormatNumber(p[0]) + "," + FormatNumber(p[1]) +
                ",0.0000 0.0000,0.0000," + FormatNumber(p[2]);
     }
     reply.Add("StartPoses", std::to_string(count)).Add(poses.empty() ? "None" : poses, "");
@@ -139,7 +138,7 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   }
   if (!c.robot) return Error(c, m.type + " before INIT");
   const NodeId id = *c.robot;
-  const auto& spec = world_.spec().nodes[id].model;
+  const auto& spec = driver_.Spec(id).model;
   if (m.type == "DRIVE") return Drive(c, m);
   if (m.type == "SEND") return SendMessage(c, m);
   if (m.type == "LOG" || m.type == "TRANSITION" || m.type == "METRIC") return Report(c, m);
@@ -149,13 +148,13 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "RECV") {
     const std::string* from = m.Get("From");
     std::string error;
-    const auto report = ParseRecvLine(m, from ? world_.Lookup(*from) : std::nullopt, id, &error);
-    return report ? world_.parts().RecordDelivery(id, report->message) : Error(c, error);
+    const auto report = ParseRecvLine(m, from ? driver_.Lookup(*from) : std::nullopt, id, &error);
+    return report ? driver_.RecordDelivery(id, report->message) : Error(c, error);
   }
   if (m.type == "GETCONF") {
     ProtocolMessage reply{"CONF"};
     reply.Add("Type", "GroundVehicle")
-        .Add("Name", world_.NameOf(id))
+        .Add("Name", driver_.NameOf(id))
         .Add("SteeringType", spec.kind == robots::ModelKind::kOmni3 ? "OmniDrive" : "SkidSteered")
         .Add("MaxSpeed", spec.max_speed)
         .Add("MaxTurnRate", spec.max_turn_rate);
@@ -165,7 +164,7 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
     ProtocolMessage reply{"GEO"};
     const bool omni = spec.kind == robots::ModelKind::kOmni3;
     reply.Add("Type", "GroundVehicle")
-        .Add("Name", world_.NameOf(id))
+        .Add("Name", driver_.NameOf(id))
         .Add("WheelRadius", omni ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius)
         .Add("WheelSeparation", omni ? 2 * spec.omni3.wheel_distance : spec.diffdrive.axle_length);
     return Send(c, reply);
@@ -176,11 +175,11 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
 // INIT {Name r} claims a robot that is there (the scenario's, or one spawned before); with a
 // {ClassName} and a name nobody has, it spawns a new robot, as in USARSim.
 void SimServer::Init(Client& c, const ProtocolMessage& m) {
-  if (c.robot) return Error(c, "INIT refused: this connection already drives " + world_.NameOf(*c.robot));
+  if (c.robot) return Error(c, "INIT refused: this connection already drives " + driver_.NameOf(*c.robot));
   const std::string* name = m.Get("Name");
   const std::string* usarsim_class = m.Get("ClassName");
   if (name)
-    if (const auto id = world_.Lookup(*name)) return Claim(c, *id, usarsim_class);
+    if (const auto id = driver_.Lookup(*name)) return Claim(c, *id, usarsim_class);
   if (!usarsim_class)
     return Error(c, name ? "INIT refused: no robot named '" + *name + "' in this scenario; INIT {ClassName c} {Name " +
                                *name + "} {Location x,y,z} adds one where the scenario allows it"
@@ -194,22 +193,23 @@ void SimServer::Init(Client& c, const ProtocolMessage& m) {
 }
 
 void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
-  const std::string name = world_.NameOf(id);
-  if (world_.spec().nodes[id].model.kind == robots::ModelKind::kMote)
+  const std::string name = driver_.NameOf(id);
+  if (driver_.Spec(id).model.kind == robots::ModelKind::kMote)
     return Error(c, "INIT refused: the name '" + name + "' is taken by a mote of this scenario");
-  if (claimed_[id]) return Error(c, "INIT refused: robot '" + name + "' is already driven by another client");
-  const std::string spawned_as = world_.parts().SpawnedAs(id);
+  if (const auto owner = driver_.OwnerOf(id); owner && *owner != Owner(c))
+    return Error(c, "INIT refused: robot '" + name + "' is already driven by another client");
+  const std::string spawned_as = driver_.SpawnedAs(id);
   if (usarsim_class && !spawned_as.empty() && !sim::SameClass(*usarsim_class, spawned_as))
     return Error(c, "INIT refused: robot '" + name + "' is a " + spawned_as + ", not a " + *usarsim_class);
-  claimed_[id] = true;
-  ever_claimed_.resize(world_.NodeCount());
+  if (const auto refused = driver_.Claim(id, Owner(c))) return Error(c, "INIT refused: " + *refused);
+  ever_claimed_.resize(driver_.NodeCount());
   ever_claimed_[id] = true;
   if (settings_.announce) std::printf("sanet: client %s drives %s\n", c.peer.c_str(), name.c_str());
   c.robot = id;
-  c.next_sensors = c.next_status = world_.Now();
+  c.next_sensors = c.next_status = driver_.Now();
   // sanet extension: the run's key for the datagrams agents send each other (wire/agent_datagram.h).
   Send(c, ProtocolMessage{"KEY"}.Add("Datagrams", datagram_key_.Hex()));
-  world_.parts().Log(id, "client " + c.peer + " drives this robot");
+  driver_.Log(id, "client " + c.peer + " drives this robot");
 }
 
 // {Location} and {Rotation} are in USARSim's frame (y right, yaw clockwise); the robot stands
@@ -225,24 +225,22 @@ void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::st
   if (!rotation || rotation->size() != 3)
     return Error(c, "INIT refused: {Rotation " + *m.Get("Rotation") + "}: expected three numbers r,p,y (rad)");
   const sim::SpawnRequest request{usarsim_class, name, {(*location)[0], -(*location)[1], -(*rotation)[2]}};
-  const sim::SpawnPlan plan = sim::PlanSpawn(world_.parts(), request);
+  const sim::SpawnPlan plan = driver_.PlanSpawn(request);
   if (!plan.node) return Error(c, "INIT refused: " + plan.refusal);
-  const NodeId id =
-      world_.parts().Spawn(*plan.node, plan.usarsim_class, "spawned as " + plan.usarsim_class + " by client " + c.peer);
-  claimed_.resize(world_.NodeCount(), false);
+  const NodeId id = driver_.Spawn(plan, "spawned as " + plan.usarsim_class + " by client " + c.peer);
   Claim(c, id, nullptr);
 }
 
 // Through the robot's simulated node, as its controller would drive it: a switched-off robot
 // does not move, whoever asks.
 void SimServer::Drive(Client& c, const ProtocolMessage& m) {
-  agents::SimulatedNode& node = NodeOf(c);
-  if (node.switched_off()) {
+  Node& node = NodeOf(c);
+  if (driver_.SwitchedOff(*c.robot)) {
     if (!c.told_off) Error(c, "robot " + node.Name() + " is switched off: DRIVE ignored");
     c.told_off = true;
     return;
   }
-  const auto& spec = world_.spec().nodes[*c.robot].model;
+  const auto& spec = driver_.Spec(*c.robot).model;
   if (m.Get("Left") || m.Get("Right")) {
     const auto left = m.Number("Left"), right = m.Number("Right");
     if (!left || !right) return Error(c, "DRIVE needs numbers for both {Left} and {Right}");
@@ -271,44 +269,12 @@ void SimServer::Drive(Client& c, const ProtocolMessage& m) {
   Error(c, "DRIVE needs {Left l} {Right r}, or {LinearVelocity} {LateralVelocity} {RotationalVelocity}");
 }
 
+// Every sensor period, the robot's sensors as its owner reads them (once: noisy sensors draw
+// from the node's random stream); every status period, its status.
 void SimServer::SendSensors(Client& c, double now) {
-  robots::NodeModel& model = NodeOf(c).model();
   if (now + 1e-9 >= c.next_sensors) {
     c.next_sensors = now + settings_.sensor_period;
-    const std::string time = FormatNumber(now);
-    const Pose2D truth = model.GroundTruth();
-    ProtocolMessage gt{"SEN"};
-    const auto p = ToUsarsim(truth);
-    gt.Add("Time", time)
-        .Add("Type", "GroundTruth")
-        .Add("Name", "GroundTruth")
-        .Add("Location", std::vector<double>{p[0], p[1], model.body().position3().z})
-        .Add("Orientation", std::vector<double>{0, 0, p[2]});
-    Send(c, gt);
-    if (auto odometry = model.Odometry()) {
-      ProtocolMessage odo{"SEN"};
-      odo.Add("Time", time).Add("Type", "Odometry").Add("Name", "Odometry").Add("Pose", ToUsarsim(*odometry));
-      Send(c, odo);
-    }
-    if (auto scan = model.Laser()) {
-      ProtocolMessage laser{"SEN"};
-      const double resolution = scan->angles.size() > 1 ? scan->angles[1] - scan->angles[0] : 0;
-      const double fov = scan->angles.empty() ? 0 : scan->angles.back() - scan->angles.front();
-      laser.Add("Time", time)
-          .Add("Type", "RangeScanner")
-          .Add("Name", "Scanner1")
-          .Add("Resolution", resolution)
-          .Add("FOV", fov)
-          .Add("Range", scan->ranges);
-      Send(c, laser);
-    }
-    if (auto ir = model.Ir()) {
-      ProtocolMessage sonar{"SEN"};
-      sonar.Add("Time", time).Add("Type", "IR");
-      for (std::size_t i = 0; i < ir->ranges.size(); ++i)
-        sonar.Add("Name", "IR" + std::to_string(i) + " Range " + FormatNumber(ir->ranges[i]));
-      Send(c, sonar);
-    }
+    for (const ProtocolMessage& line : SensorLines(driver_.TakeReadings(*c.robot, Owner(c)))) Send(c, line);
   }
   if (now + 1e-9 >= c.next_status) {
     c.next_status = now + settings_.status_period;
@@ -323,6 +289,44 @@ void SimServer::SendSensors(Client& c, double now) {
         .Add("View", "-1");
     Send(c, status);
   }
+}
+
+std::vector<ProtocolMessage> SimServer::SensorLines(const sim::SensorReadings& r) {
+  std::vector<ProtocolMessage> lines;
+  const std::string time = FormatNumber(r.time);
+  const auto p = ToUsarsim(r.ground_truth);
+  lines.push_back(ProtocolMessage{"SEN"}
+                      .Add("Time", time)
+                      .Add("Type", "GroundTruth")
+                      .Add("Name", "GroundTruth")
+                      .Add("Location", std::vector<double>{p[0], p[1], r.height})
+                      .Add("Orientation", std::vector<double>{0, 0, p[2]}));
+  if (r.odometry)
+    lines.push_back(ProtocolMessage{"SEN"}
+                        .Add("Time", time)
+                        .Add("Type", "Odometry")
+                        .Add("Name", "Odometry")
+                        .Add("Pose", ToUsarsim(*r.odometry)));
+  if (r.laser) {
+    const RangeScan& scan = *r.laser;
+    const double resolution = scan.angles.size() > 1 ? scan.angles[1] - scan.angles[0] : 0;
+    const double fov = scan.angles.empty() ? 0 : scan.angles.back() - scan.angles.front();
+    lines.push_back(ProtocolMessage{"SEN"}
+                        .Add("Time", time)
+                        .Add("Type", "RangeScanner")
+                        .Add("Name", "Scanner1")
+                        .Add("Resolution", resolution)
+                        .Add("FOV", fov)
+                        .Add("Range", scan.ranges));
+  }
+  if (r.ir) {
+    ProtocolMessage sonar{"SEN"};
+    sonar.Add("Time", time).Add("Type", "IR");
+    for (std::size_t i = 0; i < r.ir->ranges.size(); ++i)
+      sonar.Add("Name", "IR" + std::to_string(i) + " Range " + FormatNumber(r.ir->ranges[i]));
+    lines.push_back(sonar);
+  }
+  return lines;
 }
 
 void SimServer::Send(Client& c, const ProtocolMessage& m) {
@@ -362,10 +366,10 @@ void SimServer::Gone(ConnectionId id, const std::string& why) {
   c.open = false;
   if (!c.robot) return;
   NodeOf(c).Drive({});  // a robot without its client stops
-  claimed_[*c.robot] = false;
-  world_.parts().Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
+  driver_.Release(*c.robot, Owner(c));
+  driver_.Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
   if (settings_.announce)
-    std::printf("sanet: client %s of %s gone (%s)\n", c.peer.c_str(), world_.NameOf(*c.robot).c_str(), why.c_str());
+    std::printf("sanet: client %s of %s gone (%s)\n", c.peer.c_str(), driver_.NameOf(*c.robot).c_str(), why.c_str());
 }
 
 // SEND: the robot's message leaves from its own ns-3 node, like any node's. Values are
@@ -378,13 +382,13 @@ void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
   if (!data) return Error(c, "SEND needs {Data hex bytes}");
   const auto payload = FromHex(*data);
   if (!payload) return Error(c, "SEND {Data ...}: expected hex bytes (pairs of 0-9, a-f), not '" + *data + "'");
-  agents::SimulatedNode& node = NodeOf(c);
-  if (node.switched_off()) return Error(c, "robot " + node.Name() + " is switched off: SEND ignored");
+  Node& node = NodeOf(c);
+  if (driver_.SwitchedOff(*c.robot)) return Error(c, "robot " + node.Name() + " is switched off: SEND ignored");
   if (*kind == Delivery::kBroadcast) return node.Broadcast(*payload);
   if (*kind == Delivery::kFlood) return node.Flood(*payload);
   const std::string* to = m.Get("To");
   if (!to) return Error(c, "SEND to one node needs {To node}; or give {Delivery broadcast} or {Delivery flood}");
-  const auto target = world_.Lookup(*to);
+  const auto target = driver_.Lookup(*to);
   if (!target) return Error(c, "SEND {To " + *to + "}: no node named '" + *to + "' in this scenario");
   if (*target == node.Id()) return Error(c, "SEND {To " + *to + "}: that is this robot");
   node.Send(*target, *payload);
@@ -392,7 +396,7 @@ void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
 
 // LOG, TRANSITION and METRIC: the controller's reports, as its node would make them in process.
 void SimServer::Report(Client& c, const ProtocolMessage& m) {
-  agents::SimulatedNode& node = NodeOf(c);
+  Node& node = NodeOf(c);
   const std::string* text = m.Get("Text");
   if (m.type == "LOG") return text && !text->empty() ? node.Log(*text) : Error(c, "LOG needs {Text ...}");
   if (m.type == "METRIC") {
@@ -447,7 +451,7 @@ void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
       stats[k.name] = *value;
     }
   }
-  agent_stats_[world_.NameOf(*c.robot)] = stats;
+  agent_stats_[driver_.NameOf(*c.robot)] = stats;
   if (!c.agent) lines_->ExpectChatter(c.id);  // an agent reads and writes in one loop: silence tells it stopped
   c.agent = true;
 }
@@ -462,10 +466,10 @@ void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
   std::string header = "node";
   for (const StatsKey& k : kStatsKeys) header += std::string(",") + k.name;
   trace::CsvSink& table = folder.Csv("agents.csv", header);
-  for (NodeId id = 0; id < world_.NodeCount(); ++id) {
-    const auto it = agent_stats_.find(world_.NameOf(id));
+  for (NodeId id = 0; id < driver_.NodeCount(); ++id) {
+    const auto it = agent_stats_.find(driver_.NameOf(id));
     if (it == agent_stats_.end()) continue;
-    std::string row = trace::CsvField(world_.NameOf(id));
+    std::string row = trace::CsvField(driver_.NameOf(id));
     for (const StatsKey& k : kStatsKeys) row += "," + JsonText((*it)[k.name]);
     table.Row(row);
   }
@@ -473,9 +477,9 @@ void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
 
 std::vector<std::string> SimServer::NeverDriven() const {
   std::vector<std::string> names;
-  for (NodeId id = 0; id < world_.spec().nodes.size(); ++id)
-    if (sim::RunsAsAgent(world_.spec().nodes[id]) && !(id < ever_claimed_.size() && ever_claimed_[id]))
-      names.push_back(world_.NameOf(id));
+  for (NodeId id = 0; id < driver_.spec().nodes.size(); ++id)
+    if (sim::RunsAsAgent(driver_.Spec(id)) && !(id < ever_claimed_.size() && ever_claimed_[id]))
+      names.push_back(driver_.NameOf(id));
   return names;
 }
 
@@ -489,9 +493,9 @@ SimServer::Client* SimServer::ClientOf(NodeId robot) {
 // hear each other over their own UDP sockets, so the server passes on only what comes from
 // nodes that live here.
 sim::InboxResult SimServer::Forward(NodeId to, const Message& m) {
-  if (world_.spec().robots_remote && sim::RunsAsAgent(world_.spec().nodes[m.from])) return sim::InboxResult::kIgnored;
+  if (driver_.spec().robots_remote && sim::RunsAsAgent(driver_.Spec(m.from))) return sim::InboxResult::kIgnored;
   Client* c = ClientOf(to);
-  if (c) Send(*c, MsgLine(m, world_.NameOf(m.from)));
+  if (c) Send(*c, MsgLine(m, driver_.NameOf(m.from)));
   return c && c->open ? sim::InboxResult::kDelivered : sim::InboxResult::kLost;
 }
 

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/world.h"
+#include "sim/driver.h"
 #include "trace/results_folder.h"
 #include "wire/agent_datagram.h"
 #include "wire/line_server.h"
@@ -55,7 +55,7 @@ std::size_t DefaultMaxClients(const sim::RunSpec& spec);
 
 class SimServer : public sim::StepObserver {
  public:
-  SimServer(sim::World& world, ServerSettings settings);  // listens; throws std::runtime_error
+  SimServer(sim::Driver& driver, ServerSettings settings);  // listens; throws std::runtime_error
   ~SimServer() override;
   std::uint16_t port() const { return lines_->port(); }
   void Start();  // schedules polling and lag measurement on the simulation clock
@@ -105,17 +105,18 @@ class SimServer : public sim::StepObserver {
   void Refuse(Client& c, const std::string& why);
   sim::InboxResult Forward(NodeId to, const Message& message);
   Client* ClientOf(NodeId robot);
-  agents::SimulatedNode& NodeOf(const Client& c) { return world_.parts().node(*c.robot); }
+  Node& NodeOf(const Client& c) { return driver_.NodeOf(*c.robot); }
+  std::string Owner(const Client& c) const { return "client " + c.peer; }
   void SendSensors(Client& c, double now);
+  static std::vector<ProtocolMessage> SensorLines(const sim::SensorReadings& readings);
   void Send(Client& c, const ProtocolMessage& m);
   void Error(Client& c, const std::string& why);
   void Drop(Client& c, const std::string& why);
 
-  sim::World& world_;
+  sim::Driver& driver_;
   ServerSettings settings_;
   std::map<ConnectionId, Client> clients_;
   std::unique_ptr<LineServer> lines_;
-  std::vector<bool> claimed_;
   std::vector<bool> ever_claimed_;
   const DatagramKey datagram_key_ = DatagramKey::Random();  // new for every run
   std::vector<double> lags_;                                // s, per physics step

@@ -213,7 +213,7 @@ std::string Assembly::SpawnedAs(NodeId id) const {
   return IsSpawned(id) && id < spec_.nodes.size() ? spawned_as_.at(id + spawned_ - spec_.nodes.size()) : "";
 }
 
-std::optional<Assembly::Signal> Assembly::SignalBetween(NodeId from, NodeId to) const {
+std::optional<Signal> Assembly::SignalBetween(NodeId from, NodeId to) const {
   if (!wireless_) return std::nullopt;
   return Signal{wireless_->ReceivedPower(from, to), wireless_->DetectionThreshold()};
 }

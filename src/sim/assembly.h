@@ -15,9 +15,11 @@
 #include "agents/simulated_node.h"
 #include "physics/pipelined_world.h"
 #include "sim/message_ledger.h"
+#include "sim/remote_inbox.h"
 #include "sim/run_events.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
+#include "sim/world_error.h"
 
 namespace sanet::net {
 class BodyMobilityModel;
@@ -27,17 +29,6 @@ class WirelessNetwork;
 }  // namespace sanet::net
 
 namespace sanet::sim {
-
-class WorldError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// Someone outside the run who drives a node (the server's protocol client): messages that reach
-// the node are handed to it. It says whether the message was delivered, lost (nobody drives the
-// node now) or is none of its business (it reaches the driver another way), and is not recorded.
-enum class InboxResult { kDelivered, kLost, kIgnored };
-using RemoteInbox = std::function<InboxResult(NodeId to, const Message& message)>;
 
 class Assembly : public agents::NodeDirectory, public SnapshotSource {
  public:
@@ -85,11 +76,8 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // Joins a real IP stack (an agent's network namespace) to node `id`'s radio through the tap
   // `fd`, whose interface has the MAC address `tap_mac` ("02:..."). Needs ns-3's network.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
-  // How strongly `to` hears `from` now (dBm), and the radio's detection threshold: from ns-3's
-  // channel at the bodies' positions. Empty without ns-3's network.
-  struct Signal {
-    double received_dbm, threshold_dbm;
-  };
+  // How strongly `to` hears `from` now: from ns-3's channel at the bodies' positions. Empty
+  // without ns-3's network.
   std::optional<Signal> SignalBetween(NodeId from, NodeId to) const;
   bool IsSpawned(NodeId id) const { return id + spawned_ >= spec_.nodes.size(); }
   // The class a client spawned the robot as; "" for the scenario's nodes.

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/assembly.h"
 #include "sim/stepper.h"
 
 namespace sanet::sim {
@@ -31,38 +32,24 @@ void World::Observe(std::function<void(const WorldSnapshot&)> observer) {
   AddObserver(*owned_observers_.back());
 }
 
-// An action repeated on the simulation clock.
-class World::Repeater {
- public:
-  Repeater(double period, std::function<void()> action) : period_(period), action_(std::move(action)) {
-    ns3::Simulator::ScheduleNow(&Repeater::Tick, this);
-  }
-
- private:
-  void Tick() {
-    action_();
-    ns3::Simulator::Schedule(ns3::Seconds(period_), &Repeater::Tick, this);
-  }
-  double period_;
-  std::function<void()> action_;
-};
-
-World::World(const RunSpec& spec, agents::Registry& registry) : parts_(spec, registry) {}
+World::World(const RunSpec& spec, agents::Registry& registry)
+    : parts_(std::make_unique<Assembly>(spec, registry)), driver_(std::make_unique<Driver>(*parts_)) {}
 World::~World() = default;
 
-void World::Every(double period, std::function<void()> action) {
-  repeaters_.push_back(std::make_unique<Repeater>(period, std::move(action)));
-}
-
+const RunSpec& World::spec() const { return parts_->spec(); }
+robots::NodeModel& World::model(NodeId id) { return parts_->model(id); }
+std::size_t World::NodeCount() const { return parts_->NodeCount(); }
+std::optional<NodeId> World::Lookup(const std::string& name) const { return parts_->Lookup(name); }
+std::string World::NameOf(NodeId id) const { return parts_->NameOf(id); }
 double World::Now() const { return ns3::Simulator::Now().GetSeconds(); }
-void World::Stop() { ns3::Simulator::Stop(); }
+void World::Stop() { driver_->Stop(); }
 
 RunResult World::Run(const RunOptions& options) {
   if (ran_) throw WorldError("a World runs once");
   ran_ = true;
   Outputs outputs(spec(), options.output_dir, options.force);
   if (options.provenance) outputs.Begin(*options.provenance);
-  Stepper stepper(parts_, outputs, observers_);
+  Stepper stepper(*parts_, outputs, driver_->observers());
   stepper.Run(options.progress);
 
   RunResult result;
@@ -78,10 +65,10 @@ RunResult World::Run(const RunOptions& options) {
   interrupted_ = outputs.interrupted();
   ended_at_ = outputs.ended_at();
   std::vector<Pose2D> final_poses;
-  for (NodeId id = 0; id < parts_.size(); ++id) final_poses.push_back(parts_.model(id).body().pose());
+  for (NodeId id = 0; id < parts_->size(); ++id) final_poses.push_back(parts_->model(id).body().pose());
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
   if (options.add_results) options.add_results(extra, outputs.folder());
-  outputs.Finish(result, parts_.transport().Traces(), options.scenario_file, final_poses, extra);
+  outputs.Finish(result, parts_->transport().Traces(), options.scenario_file, final_poses, extra);
   if (!outputs.failure().empty()) throw WorldError(outputs.failure());
   return result;
 }

@@ -1,6 +1,5 @@
 // One run: its parts (Assembly), its clock (Stepper) and its results (Outputs), put together.
-// Tests, benchmarks and the command line see this facade; the server watches and drives the
-// world through observers and the simulated nodes.
+// Tests, benchmarks and the command line see this facade; front ends see its Driver only.
 #pragma once
 
 #include <functional>
@@ -9,11 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "agents/controller_host.h"
 #include "agents/controller_registry.h"
-#include "sim/assembly.h"
+#include "sim/driver.h"
 #include "sim/outputs.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
+#include "sim/world_error.h"
 #include "trace/results_folder.h"
 
 namespace sanet::sim {
@@ -35,6 +36,8 @@ struct RunOptions {
 // wall clock (the simulation server).
 void UseRealTimeClock();
 
+class Assembly;
+
 class World {
  public:
   World(const RunSpec& spec, agents::Registry& registry);
@@ -48,34 +51,34 @@ class World {
   // The run was stopped by a signal (sim/interruption.h) and its results say so.
   bool interrupted() const { return interrupted_; }
 
-  const RunSpec& spec() const { return parts_.spec(); }
-  Assembly& parts() { return parts_; }
+  const RunSpec& spec() const;
+  // The parts themselves, for tests and benchmarks (sim/assembly.h); front ends use driver().
+  Assembly& parts() { return *parts_; }
+  // What front ends may know and do (sim/driver.h).
+  Driver& driver() { return *driver_; }
   // After Run: the end condition that stopped the run ("" if it ran its duration).
   const std::string& ended_by() const { return ended_by_; }
   double ended_at() const { return ended_at_; }
-  robots::NodeModel& model(NodeId id) { return parts_.model(id); }
-  std::size_t NodeCount() const { return parts_.NodeCount(); }
-  std::optional<NodeId> Lookup(const std::string& name) const { return parts_.Lookup(name); }
-  std::string NameOf(NodeId id) const { return parts_.NameOf(id); }
+  robots::NodeModel& model(NodeId id);
+  std::size_t NodeCount() const;
+  std::optional<NodeId> Lookup(const std::string& name) const;
+  std::string NameOf(NodeId id) const;
 
   // Observers see a snapshot after every step; add them before Run. The world does not own them.
-  void AddObserver(StepObserver& observer) { observers_.push_back(&observer); }
+  void AddObserver(StepObserver& observer) { driver_->AddObserver(observer); }
   // The same for a function (tests).
   void Observe(std::function<void(const WorldSnapshot&)> observer);
 
-  // For front ends that live on the run's clock (the server's socket polling): `action` runs at
-  // t = 0 and then every `period` s of simulated time. Add before Run.
-  void Every(double period, std::function<void()> action);
+  // `action` runs at t = 0 and then every `period` s of simulated time. Add before Run.
+  void Every(double period, std::function<void()> action) { driver_->Every(period, std::move(action)); }
   double Now() const;  // s, simulated
   // Ends the run now, as if its duration were over (results are written as usual).
   void Stop();
 
  private:
-  Assembly parts_;
-  std::vector<StepObserver*> observers_;
+  std::unique_ptr<Assembly> parts_;
+  std::unique_ptr<Driver> driver_;
   std::vector<std::unique_ptr<StepObserver>> owned_observers_;
-  class Repeater;
-  std::vector<std::unique_ptr<Repeater>> repeaters_;
   bool ran_ = false, interrupted_ = false;
   std::string ended_by_;
   double ended_at_ = 0;

@@ -37,7 +37,7 @@ std::optional<std::vector<std::uint16_t>> Ports(const std::string& text) {
 
 }  // namespace
 
-WssServer::WssServer(sim::World& world, WssSettings settings) : world_(world), settings_(std::move(settings)) {
+WssServer::WssServer(sim::Driver& driver, WssSettings settings) : driver_(driver), settings_(std::move(settings)) {
   LineServer::Events events;
   events.connected = [this](ConnectionId id) { robots_[id] = Robot{id, lines_->PeerHost(id)}; };
   events.line = [this](ConnectionId id, const std::string& line) {
@@ -60,7 +60,7 @@ WssServer::WssServer(sim::World& world, WssSettings settings) : world_(world), s
 WssServer::~WssServer() { relays_.clear(); }
 
 void WssServer::Start() {
-  world_.Every(settings_.poll_period, [this] { Poll(); });
+  driver_.Every(settings_.poll_period, [this] { Poll(); });
 }
 
 nlohmann::ordered_json WssServer::Summary() const {
@@ -96,7 +96,7 @@ void WssServer::Init(Robot& r, const ProtocolMessage& m) {
   const auto list = ports ? Ports(*ports) : std::nullopt;
   if (!list) return Error(r, "Ports.List.Must.Be.Integer");
   if (Registered(*name)) return Error(r, "Robot.Alread.Exists");  // sic, as USARSim's WSS spells it
-  const auto node = world_.Lookup(*name);
+  const auto node = driver_.Lookup(*name);
   if (!node) return Error(r, "Robot.Not.In.Simulation");  // sanet: its position comes from the world
   r.name = *name;
   r.node = *node;
@@ -111,7 +111,7 @@ void WssServer::GetSignal(Robot& r, const ProtocolMessage& m) {
   Robot* o = other ? Registered(*other) : nullptr;
   if (o == &r) return Send(r, reply.Add("Strength", "INF").Add("Error", "SS.To.Self"));
   if (!o) return Send(r, reply.Add("Strength", "NaN").Add("Error", "Robot.Does.Not.Exist"));
-  const auto signal = world_.parts().SignalBetween(o->node, r.node);
+  const auto signal = driver_.SignalBetween(o->node, r.node);
   Send(r, signal ? reply.Add("Strength", FormatNumber(signal->received_dbm))
                  : reply.Add("Strength", "NaN").Add("Error", "No.Simulated.Radio"));
 }
@@ -122,7 +122,7 @@ void WssServer::Dns(Robot& r, const ProtocolMessage& m) {
   reply.Add("Robot", other ? *other : "");
   Robot* o = other ? Registered(*other) : nullptr;
   if (!o || o == &r) return Send(r, reply.Add("Port", "-1").Add("Error", "NoSuchRobot"));
-  if (!world_.parts().SignalBetween(r.node, o->node))
+  if (!driver_.SignalBetween(r.node, o->node))
     return Send(r, reply.Add("Port", "-1").Add("Error", "No.Simulated.Radio"));
   std::uint16_t port = o->ports.front();
   if (const std::string* asked = m.Get("Port")) {
@@ -166,13 +166,13 @@ WssServer::Robot* WssServer::Registered(const std::string& name) {
 
 // Both ways over the threshold: each robot's frames are detected by the other.
 bool WssServer::LinkUp(NodeId a, NodeId b) const {
-  const auto there = world_.parts().SignalBetween(a, b), back = world_.parts().SignalBetween(b, a);
+  const auto there = driver_.SignalBetween(a, b), back = driver_.SignalBetween(b, a);
   return there && back && there->received_dbm >= there->threshold_dbm && back->received_dbm >= back->threshold_dbm;
 }
 
 void WssServer::UpdateRelays() {
   for (auto& [key, relay] : relays_) {
-    const auto from = world_.Lookup(std::get<0>(key)), to = world_.Lookup(std::get<1>(key));
+    const auto from = driver_.Lookup(std::get<0>(key)), to = driver_.Lookup(std::get<1>(key));
     relay->SetLinkUp(from && to && LinkUp(*from, *to));
     relay->Pump();
   }

@@ -15,7 +15,7 @@
 #include <tuple>
 #include <vector>
 
-#include "sim/world.h"
+#include "sim/driver.h"
 #include "wire/line_server.h"
 #include "wire/protocol.h"
 #include "wss/wss_relay.h"
@@ -32,7 +32,7 @@ struct WssSettings {
 
 class WssServer {
  public:
-  WssServer(sim::World& world, WssSettings settings);  // listens; throws std::runtime_error
+  WssServer(sim::Driver& driver, WssSettings settings);  // listens; throws std::runtime_error
   ~WssServer();
   std::uint16_t port() const { return lines_->port(); }
   void Start();  // polls on the simulation clock
@@ -64,7 +64,7 @@ class WssServer {
   void Send(Robot& r, const ProtocolMessage& m);
   void Error(Robot& r, const std::string& reason);
 
-  sim::World& world_;
+  sim::Driver& driver_;
   WssSettings settings_;
   std::map<ConnectionId, Robot> robots_;
   std::unique_ptr<LineServer> lines_;

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "scenario/scenario_loader.h"
+#include "sim/assembly.h"
 #include "support/test_world.h"
 
 namespace sanet {

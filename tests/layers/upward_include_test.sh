@@ -37,6 +37,19 @@ if grep -qE "remote_agent/remote_node.h: No such file|'remote_agent/remote_node.
 fi
 echo "ok: the agent cannot include robot_server/sim_server.h"
 
+# Front ends reach a running world through sim/driver.h only: none includes the assembly, nor
+# World and the stepper and outputs behind it.
+front_ends="wire robot_server remote_agent launch wss view"
+found=""
+for layer in $front_ends; do
+  found+=$(grep -rlE '#include "sim/(assembly|stepper|outputs|world)\.h"' "$(dirname "$0")/../../src/$layer" || true)
+done
+if [ -n "$found" ]; then
+  echo "FAIL: front ends include the assembly, World, the stepper or the outputs: $found"
+  exit 1
+fi
+echo "ok: front ends ($front_ends) include no sim/assembly.h, stepper.h, outputs.h or world.h"
+
 # The libraries sanet keeps private are system headers here: check that only their layers
 # include them.
 src="$(dirname "$0")/../../src"

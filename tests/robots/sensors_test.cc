@@ -1,6 +1,7 @@
 // Range sensors measure the distance to walls and boxes, on either physics engine.
 #include <gtest/gtest.h>
 
+#include "sim/assembly.h"
 #include "support/test_world.h"
 
 namespace sanet {

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "sim/assembly.h"
 #include "support/test_world.h"
 
 namespace sanet {

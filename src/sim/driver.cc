@@ -1,0 +1,100 @@
+#include "sim/driver.h"
+
+#include <ns3/simulator.h>
+
+#include <stdexcept>
+
+#include "sim/assembly.h"
+
+namespace sanet::sim {
+
+// An action repeated on the simulation clock.
+class Driver::Repeater {
+ public:
+  Repeater(double period, std::function<void()> action) : period_(period), action_(std::move(action)) {
+    ns3::Simulator::ScheduleNow(&Repeater::Tick, this);
+  }
+
+ private:
+  void Tick() {
+    action_();
+    ns3::Simulator::Schedule(ns3::Seconds(period_), &Repeater::Tick, this);
+  }
+  double period_;
+  std::function<void()> action_;
+};
+
+Driver::Driver(Assembly& parts) : parts_(parts) {}
+Driver::~Driver() = default;
+
+void Driver::Every(double period, std::function<void()> action) {
+  repeaters_.push_back(std::make_unique<Repeater>(period, std::move(action)));
+}
+
+void Driver::Stop() { ns3::Simulator::Stop(); }
+
+const RunSpec& Driver::spec() const { return parts_.spec(); }
+double Driver::Now() const { return ns3::Simulator::Now().GetSeconds(); }
+std::size_t Driver::NodeCount() const { return parts_.NodeCount(); }
+std::optional<NodeId> Driver::Lookup(const std::string& name) const { return parts_.Lookup(name); }
+std::string Driver::NameOf(NodeId id) const { return parts_.NameOf(id); }
+const NodeSpec& Driver::Spec(NodeId id) const { return parts_.spec().nodes.at(id); }
+bool Driver::IsSpawned(NodeId id) const { return parts_.IsSpawned(id); }
+std::string Driver::SpawnedAs(NodeId id) const { return parts_.SpawnedAs(id); }
+
+std::optional<std::string> Driver::Claim(NodeId robot, const std::string& owner) {
+  owners_.resize(NodeCount());
+  const std::string& held_by = owners_.at(robot);
+  if (!held_by.empty() && held_by != owner) return "robot '" + NameOf(robot) + "' is already driven by " + held_by;
+  owners_[robot] = owner;
+  return std::nullopt;
+}
+
+void Driver::Release(NodeId robot, const std::string& owner) {
+  if (robot < owners_.size() && owners_[robot] == owner) owners_[robot].clear();
+}
+
+std::optional<std::string> Driver::OwnerOf(NodeId robot) const {
+  if (robot >= owners_.size() || owners_[robot].empty()) return std::nullopt;
+  return owners_[robot];
+}
+
+Node& Driver::NodeOf(NodeId robot) { return parts_.node(robot); }
+bool Driver::SwitchedOff(NodeId robot) const { return parts_.node(robot).switched_off(); }
+
+const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owner) {
+  if (OwnerOf(robot) != owner)
+    throw std::logic_error(owner + " read the sensors of " + NameOf(robot) + ", which it does not drive");
+  readings_.resize(NodeCount());
+  robots::NodeModel& model = parts_.model(robot);
+  SensorReadings& r = readings_[robot];
+  r.time = Now();
+  r.ground_truth = model.GroundTruth();
+  r.height = model.body().position3().z;
+  r.velocity = parts_.Body(robot).velocity;
+  r.odometry = model.Odometry();
+  r.laser = model.Laser();
+  r.ir = model.Ir();
+  return r;
+}
+
+const SensorReadings& Driver::LastReadings(NodeId robot) const {
+  static const SensorReadings kNone;
+  return robot < readings_.size() ? readings_[robot] : kNone;
+}
+
+std::optional<Signal> Driver::SignalBetween(NodeId from, NodeId to) const { return parts_.SignalBetween(from, to); }
+void Driver::JoinTap(NodeId id, int fd, const std::string& tap_mac) { parts_.JoinTap(id, fd, tap_mac); }
+void Driver::SetRemoteInbox(RemoteInbox inbox) { parts_.SetRemoteInbox(std::move(inbox)); }
+void Driver::RecordDelivery(NodeId to, const Message& message) { parts_.RecordDelivery(to, message); }
+void Driver::Log(NodeId node, const std::string& text) { parts_.Log(node, text); }
+
+SpawnPlan Driver::PlanSpawn(const SpawnRequest& request) const { return sim::PlanSpawn(parts_, request); }
+
+NodeId Driver::Spawn(const SpawnPlan& plan, const std::string& why) {
+  const NodeId id = parts_.Spawn(*plan.node, plan.usarsim_class, why);
+  owners_.resize(NodeCount());
+  return id;
+}
+
+}  // namespace sanet::sim

@@ -1,0 +1,97 @@
+// The one seam between a running world and its front ends (the USARSim robot server, the WSS
+// endpoint, launch's radio taps, and those to come): what they may know and do, and nothing of
+// the assembly behind it. A robot has at most one owner at a time, the front end that drives it;
+// another front end asking for it is refused with a sentence naming the owner. The owner reads a
+// robot's sensors (one read per sensor period: noisy sensors draw from the node's random stream,
+// so a second read would change the run); everyone else sees the readings it last took.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sanet/node.h"
+#include "sim/remote_inbox.h"
+#include "sim/run_spec.h"
+#include "sim/snapshot.h"
+#include "sim/spawning.h"
+
+namespace sanet::sim {
+
+class Assembly;
+
+// A robot's sensors, read once by its owner.
+struct SensorReadings {
+  double time = -1;  // s, simulated; -1 before the first read
+  Pose2D ground_truth;
+  double height = 0;  // m, of the body's centre
+  Twist2D velocity;   // world frame
+  std::optional<Pose2D> odometry;
+  std::optional<RangeScan> laser, ir;
+};
+
+class Driver {
+ public:
+  explicit Driver(Assembly& parts);
+  ~Driver();
+  Driver(const Driver&) = delete;
+  Driver& operator=(const Driver&) = delete;
+
+  // The run as loaded (spawned robots are in Spec(id), not here).
+  const RunSpec& spec() const;
+  double Now() const;  // s, simulated
+  std::size_t NodeCount() const;
+  std::optional<NodeId> Lookup(const std::string& name) const;
+  std::string NameOf(NodeId id) const;
+  const NodeSpec& Spec(NodeId id) const;  // the scenario's node, or the spawned robot's
+  bool IsSpawned(NodeId id) const;
+  std::string SpawnedAs(NodeId id) const;  // the class a client spawned it as; "" otherwise
+
+  // Ownership. Claim returns nothing when granted (or already held by `owner`), or the refusal.
+  std::optional<std::string> Claim(NodeId robot, const std::string& owner);
+  void Release(NodeId robot, const std::string& owner);
+  std::optional<std::string> OwnerOf(NodeId robot) const;
+
+  // The node a front end drives through, as a controller would: every Node check applies.
+  Node& NodeOf(NodeId robot);
+  bool SwitchedOff(NodeId robot) const;
+  // The owner's read of every sensor; throws std::logic_error for anyone else.
+  const SensorReadings& TakeReadings(NodeId robot, const std::string& owner);
+  // What the owner read last (time -1 if it never read), for everyone else.
+  const SensorReadings& LastReadings(NodeId robot) const;
+
+  // The radio between two nodes now; empty without ns-3's network.
+  std::optional<Signal> SignalBetween(NodeId from, NodeId to) const;
+  // Joins a real IP stack (a network namespace's tap `fd`, MAC `tap_mac`) to node `id`'s radio.
+  void JoinTap(NodeId id, int fd, const std::string& tap_mac);
+  // Messages that reach a node driven from outside go to `inbox` (nullptr: none).
+  void SetRemoteInbox(RemoteInbox inbox);
+  // A message that reached `to` outside the run's own transport, recorded as delivered.
+  void RecordDelivery(NodeId to, const Message& message);
+  // A line in the node's log (log.csv), from the front end.
+  void Log(NodeId node, const std::string& text);
+
+  // Robots added to the running world (the scenario's spawn section decides).
+  SpawnPlan PlanSpawn(const SpawnRequest& request) const;
+  NodeId Spawn(const SpawnPlan& plan, const std::string& why);
+
+  // On the run's clock (add before the run starts): `action` at t = 0 and then every `period` s
+  // of simulated time (a front end's socket polling), and observers that see every step.
+  void Every(double period, std::function<void()> action);
+  void AddObserver(StepObserver& observer) { observers_.push_back(&observer); }
+  const std::vector<StepObserver*>& observers() const { return observers_; }
+  // Ends the run now, as if its duration were over (results are written as usual).
+  void Stop();
+
+ private:
+  class Repeater;
+  Assembly& parts_;
+  std::vector<StepObserver*> observers_;
+  std::vector<std::unique_ptr<Repeater>> repeaters_;
+  std::vector<std::string> owners_;  // per node; "" for none
+  std::vector<SensorReadings> readings_;
+};
+
+}  // namespace sanet::sim

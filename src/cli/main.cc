@@ -214,51 +214,68 @@ std::unique_ptr<hil::WssServer> StartWss(sim::World& world, const ServeArgs& a) 
   return wss;
 }
 
-int Serve(const ServeArgs& a, agents::Registry& registry) {
-  const std::string &file = a.file, &bind = a.bind, &port_file = a.port_file, &output = a.output;
-  const int port = a.port;
-  const bool quiet = a.quiet;
-  scenario::Scenario sc = LoadChecked(file, a.sets, registry);
-  // Agents with their own copy of the file compare this; how long the server runs is its own affair.
-  const std::string fingerprint = scenario::ScenarioFingerprint(sc);
-  if (a.duration) sc.run.duration = *a.duration;
-  sc.run.robots_remote = true;
-  const std::string results = output.empty() ? sc.output_folder : output;
-  ClaimFolder(results, a.force);
-  sim::UseRealTimeClock();  // the same schedule, run against the wall clock
-  const std::string scheduling = hil::UseRealTimePriority();
-  sim::World world(sc.run, registry);
+hil::ServerSettings ServerSettingsFor(const ServeArgs& a, const scenario::Scenario& sc,
+                                      const std::string& fingerprint) {
   hil::ServerSettings settings;
-  settings.bind = bind;
-  settings.port = static_cast<std::uint16_t>(port);
+  settings.bind = a.bind;
+  settings.port = static_cast<std::uint16_t>(a.port);
   settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
   settings.scenario_yaml = scenario::EffectiveScenarioYaml(sc);
   settings.scenario_fingerprint = fingerprint;
-  settings.announce = !quiet;
+  settings.announce = !a.quiet;
   try {
     hil::RaiseDescriptorLimit(settings.max_clients + WssMaxClients(a, sc.run));
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError(a.wss_max_clients ? "--max-clients, --wss-max-clients" : "--max-clients", e.what());
   }
-  std::unique_ptr<hil::SimServer> listening;
+  return settings;
+}
+
+std::unique_ptr<hil::SimServer> StartServer(sim::World& world, const hil::ServerSettings& settings) {
   try {
-    listening = std::make_unique<hil::SimServer>(world.driver(), settings);
+    return std::make_unique<hil::SimServer>(world.driver(), settings);
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError("--port", e.what());
   }
+}
+
+void PrintServed(const hil::SimServer& server, const sim::RunResult& r, const std::string& results) {
+  const auto lag = server.LagSummary();
+  std::printf(
+      "  served %.1f s; lag behind the wall clock p50 %.4f s, p99 %.4f s, max %.4f s, %lld missed deadlines\n"
+      "  results in %s/\n",
+      r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
+      static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), results.c_str());
+  std::string idle;
+  for (const std::string& name : server.NeverDriven()) idle += (idle.empty() ? "" : ", ") + name;
+  if (!idle.empty()) std::printf("  no client drove %s: their controllers never ran\n", idle.c_str());
+}
+
+int Serve(const ServeArgs& a, agents::Registry& registry) {
+  scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
+  // Agents with their own copy of the file compare this; how long the server runs is its own affair.
+  const std::string fingerprint = scenario::ScenarioFingerprint(sc);
+  if (a.duration) sc.run.duration = *a.duration;
+  sc.run.robots_remote = true;
+  const std::string results = a.output.empty() ? sc.output_folder : a.output;
+  ClaimFolder(results, a.force);
+  sim::UseRealTimeClock();  // the same schedule, run against the wall clock
+  const std::string scheduling = hil::UseRealTimePriority();
+  sim::World world(sc.run, registry);
+  const std::unique_ptr<hil::SimServer> listening = StartServer(world, ServerSettingsFor(a, sc, fingerprint));
   hil::SimServer& server = *listening;
   JoinTaps(world, a.taps);
   const std::unique_ptr<hil::WssServer> wss = StartWss(world, a);
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, a.view);
-  WritePortFile(port_file, server.port(), "--port-file");
+  WritePortFile(a.port_file, server.port(), "--port-file");
   server.Start();
   sim::InstallStopHandlers();
-  std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), bind.c_str(), server.port(),
+  std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), a.bind.c_str(), server.port(),
               sc.run.duration);
   std::fflush(stdout);
   sim::RunOptions options;
   options.output_dir = results;
-  options.scenario_file = file;
+  options.scenario_file = a.file;
   options.force = a.force;
   options.provenance = ProvenanceOf(sc);
   options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
@@ -271,20 +288,10 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   };
   const sim::RunResult r = world.Run(options);
   if (live) live->Finish();
-  if (!quiet) {
-    const auto lag = server.LagSummary();
-    std::printf(
-        "  served %.1f s; lag behind the wall clock p50 %.4f s, p99 %.4f s, max %.4f s, %lld missed deadlines\n"
-        "  results in %s/\n",
-        r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
-        static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), options.output_dir.c_str());
-    std::string idle;
-    for (const std::string& name : server.NeverDriven()) idle += (idle.empty() ? "" : ", ") + name;
-    if (!idle.empty()) std::printf("  no client drove %s: their controllers never ran\n", idle.c_str());
-  }
+  if (!a.quiet) PrintServed(server, r, results);
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s; the results so far are in %s/ (status: interrupted)\n",
-                 world.ended_by().c_str(), world.ended_at(), options.output_dir.c_str());
+                 world.ended_by().c_str(), world.ended_at(), results.c_str());
     return 128 + sim::InterruptSignal();
   }
   return 0;

@@ -1,7 +1,9 @@
 #include "remote_agent/agent.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <thread>
 
@@ -58,6 +60,52 @@ ProtocolMessage ClockLine(const ClockFigures& f) {
   return m;
 }
 
+void SayWhereItListens(RemoteNode& node, const AgentSettings& settings) {
+  if (settings.quiet) return;
+  const ClockFigures clock = node.clock_figures();
+  std::printf("sanet agent %s: peers reach it at %s; clock %s, offset %.6f s, error bound %.0f us\n",
+              node.Name().c_str(), node.peer_endpoint().c_str(), settings.shared_clock ? "shared" : "estimated",
+              clock.offset, clock.error_bound * 1e6);
+  std::fflush(stdout);
+}
+
+void SayHowItEnded(RemoteNode& node, const StepGrid& grid) {
+  const RemoteNode::Datagrams& d = node.datagrams();
+  std::printf(
+      "sanet agent %s: the run is over (the server closed at %.1f s): %llu steps (%llu missed), %llu datagrams sent, "
+      "%llu received, %llu rejected; worst clock error bound %.0f us\n",
+      node.Name().c_str(), node.ClockNow(), static_cast<unsigned long long>(grid.run()),
+      static_cast<unsigned long long>(grid.missed()), static_cast<unsigned long long>(d.sent),
+      static_cast<unsigned long long>(d.received), static_cast<unsigned long long>(d.rejected),
+      node.clock_figures().error_bound_max * 1e6);
+}
+
+// The controller's steps on the shared clock's grid, with the agent's reports to the server,
+// until the server ends the run or the controller fails.
+void RunSteps(RemoteNode& node, agents::ControllerHost& host, AgentClock& clock, StepGrid& grid,
+              const std::function<void(const Message&)>& deliver, const std::uint64_t& received) {
+  double next_report = 0;
+  std::uint64_t bursts_reported = 0;
+  while (host.running() && node.Poll(deliver)) {
+    clock.RunDue();
+    if (const auto t = grid.Due(node.ClockNow())) {
+      node.SetStepTime(*t);
+      if (grid.run() == 1) host.Start();
+      host.Step();
+      node.SetStepTime(std::nullopt);
+    }
+    if (node.ClockNow() >= next_report) {  // five times a second: the server keeps the last
+      node.Report(Stats(grid, node, received));
+      next_report = node.ClockNow() + 0.2;
+    }
+    if (const ClockFigures figures = node.clock_figures(); figures.bursts > bursts_reported) {
+      node.Report(ClockLine(figures));
+      bursts_reported = figures.bursts;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
 }  // namespace
 
 int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, std::unique_ptr<ServerLink> link,
@@ -76,54 +124,22 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
   std::uint64_t received = 0;
-  const auto deliver = [&](const Message& m) {
+  const std::function<void(const Message&)> deliver = [&](const Message& m) {
     ++received;
     host.Receive(m);
   };
-  if (!settings.quiet) {
-    const ClockFigures clock = node.clock_figures();
-    std::printf("sanet agent %s: peers reach it at %s; clock %s, offset %.6f s, error bound %.0f us\n",
-                node.Name().c_str(), node.peer_endpoint().c_str(), settings.shared_clock ? "shared" : "estimated",
-                clock.offset, clock.error_bound * 1e6);
-    std::fflush(stdout);
-  }
+  SayWhereItListens(node, settings);
   // The first sensor lines tell where the robot is and what time it is.
   while (!node.HasPose()) {
     if (!node.Poll(deliver)) return 0;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   StepGrid grid(controller.rate);
-  double next_report = 0;
-  std::uint64_t bursts_reported = 0;
-  while (host.running() && node.Poll(deliver)) {
-    clock.RunDue();
-    if (const auto t = grid.Due(node.ClockNow())) {
-      node.SetStepTime(*t);
-      if (grid.run() == 1) host.Start();
-      host.Step();
-      node.SetStepTime(std::nullopt);
-    }
-    if (node.ClockNow() >= next_report) {  // five times a second: the server keeps the last
-      node.Report(Stats(grid, node, received));
-      next_report = node.ClockNow() + 0.2;
-    }
-    if (const ClockFigures clock = node.clock_figures(); clock.bursts > bursts_reported) {
-      node.Report(ClockLine(clock));
-      bursts_reported = clock.bursts;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  RunSteps(node, host, clock, grid, deliver, received);
+  if (failure.empty()) {  // the server ended the run
+    if (!settings.quiet) SayHowItEnded(node, grid);
+    return 0;
   }
-  if (!settings.quiet && failure.empty()) {
-    const RemoteNode::Datagrams& d = node.datagrams();
-    std::printf(
-        "sanet agent %s: the run is over (the server closed at %.1f s): %llu steps (%llu missed), %llu datagrams sent, "
-        "%llu received, %llu rejected; worst clock error bound %.0f us\n",
-        node.Name().c_str(), node.ClockNow(), static_cast<unsigned long long>(grid.run()),
-        static_cast<unsigned long long>(grid.missed()), static_cast<unsigned long long>(d.sent),
-        static_cast<unsigned long long>(d.received), static_cast<unsigned long long>(d.rejected),
-        node.clock_figures().error_bound_max * 1e6);
-  }
-  if (failure.empty()) return 0;  // the server ended the run
   std::fprintf(stderr, "sanet agent: %s\n", failure.c_str());
   node.Log(failure);
   return 1;

@@ -18,6 +18,7 @@
 #include "builtin.h"
 #include "core/atomic_file.h"
 #include "core/version.h"
+#include "interruption.h"
 #include "launch/launch.h"
 #include "launch/namespaces.h"
 #include "launch/radio_taps.h"
@@ -28,9 +29,9 @@
 #include "scenario/catalogue.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
-#include "sim/interruption.h"
 #include "sim/world.h"
 #include "study_commands.h"
+#include "terminal_progress.h"
 #include "trace/earlier_run.h"
 #include "view/live_view.h"
 #include "view/viewer_server.h"
@@ -123,7 +124,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   sim::RunOptions options;
   options.output_dir = args.output.empty() ? sc.output_folder : args.output;
   options.scenario_file = args.file;
-  options.progress = !args.quiet && !args.no_progress && isatty(STDERR_FILENO);
+  options.stop_requested = InterruptReason;
   options.force = args.force;
   options.provenance = ProvenanceOf(sc);
   ClaimFolder(options.output_dir, args.force);
@@ -134,13 +135,18 @@ int Run(const RunArgs& args, agents::Registry& registry) {
                 sc.run.threads == 2 ? ", physics on a second thread" : "");
   sim::World world(sc.run, registry);
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, args.view, !args.quiet);
-  sim::InstallStopHandlers();
-  const sim::RunResult r = world.Run(options);
+  InstallStopHandlers();
+  sim::RunResult r;
+  {
+    TerminalProgress progress(!args.quiet && !args.no_progress && isatty(STDERR_FILENO));
+    options.progress = progress.Callback();
+    r = world.Run(options);
+  }
   if (live) live->Finish();
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s simulated; the results so far are in %s/ (status: interrupted)\n",
                  world.ended_by().c_str(), world.ended_at(), options.output_dir.c_str());
-    return 128 + sim::InterruptSignal();
+    return 128 + InterruptSignal();
   }
   if (!args.quiet) {
     std::printf("  simulated %.1f s in %.2f s wall (%.1fx real time), %llu events\n", r.simulated, r.wall,
@@ -269,7 +275,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, a.view);
   WritePortFile(a.port_file, server.port(), "--port-file");
   server.Start();
-  sim::InstallStopHandlers();
+  InstallStopHandlers();
   std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), a.bind.c_str(), server.port(),
               sc.run.duration);
   std::fflush(stdout);
@@ -278,6 +284,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   options.scenario_file = a.file;
   options.force = a.force;
   options.provenance = ProvenanceOf(sc);
+  options.stop_requested = InterruptReason;
   options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
     j["real_time_lag"] = server.LagSummary();
     j["real_time_lag"]["scheduling"] = scheduling;
@@ -292,7 +299,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s; the results so far are in %s/ (status: interrupted)\n",
                  world.ended_by().c_str(), world.ended_at(), results.c_str());
-    return 128 + sim::InterruptSignal();
+    return 128 + InterruptSignal();
   }
   return 0;
 }

@@ -125,7 +125,7 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
   states_.emplace_back();
 }
 
-NodeId Assembly::Spawn(const NodeSpec& node, const std::string& usarsim_class, const std::string& why) {
+NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why) {
   const NodeId id = spec_.nodes.size();
   spec_.nodes.push_back(node);
   models_.push_back(
@@ -138,8 +138,8 @@ NodeId Assembly::Spawn(const NodeSpec& node, const std::string& usarsim_class, c
   if (local_) local_->AddNode();
   AddNode(id, nullptr);
   ++spawned_;
-  spawned_as_.push_back(usarsim_class);
-  if (events_) events_->Spawned(id, usarsim_class);
+  spawned_as_.push_back(spawned_as);
+  if (events_) events_->Spawned(id, spawned_as);
   Log(id, why);
   return id;
 }

@@ -71,7 +71,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // Adds a robot to the running world (sim::PlanSpawn checked it): its body, its own ns-3 node
   // with the scenario's radio and routing, a simulated node and a host without a controller.
   // Every other node can see it from now on. Returns its id, the next one.
-  NodeId Spawn(const NodeSpec& node, const std::string& usarsim_class, const std::string& why);
+  NodeId Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why);
   std::size_t spawned() const { return spawned_; }
   // Joins a real IP stack (an agent's network namespace) to node `id`'s radio through the tap
   // `fd`, whose interface has the MAC address `tap_mac` ("02:..."). Needs ns-3's network.

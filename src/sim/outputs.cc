@@ -165,11 +165,11 @@ void Outputs::Record(double now, NodeId id, const Pose2D& p) {
   if (trace_) trace_->Pose(now, id, p.x, p.y, p.theta);
 }
 
-void Outputs::Spawned(double t, NodeId node, const std::string& usarsim_class, const Pose2D& pose) {
-  spawned_as_[node] = usarsim_class;
+void Outputs::Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose) {
+  spawned_as_[node] = spawned_as;
   if (trace_) {
     trace_->Node(node, Name(node), robots::ModelName(spec_.nodes[node].model.kind), pose.x, pose.y, pose.theta);
-    trace_->Event(t, node, "spawn", usarsim_class);
+    trace_->Event(t, node, "spawn", spawned_as);
   }
   last_recorded_.resize(spec_.nodes.size());
   Record(std::min(t, spec_.duration), node, pose);

@@ -30,6 +30,13 @@ struct Profile {
   double physics_wait = 0;  // wall time the network's thread waited for the physics thread
 };
 
+// Where a run is, for whoever shows its progress.
+struct RunProgress {
+  double time = 0, duration = 0;  // s, simulated
+  double real_time_factor = 0;
+  double eta = 0;  // s of wall time left at this pace
+};
+
 struct RunResult {
   double simulated = 0;  // s
   double wall = 0;       // s
@@ -77,7 +84,7 @@ class Outputs {
   // A message that reached a node's radio but not its controller (`why`, e.g. no client).
   void Lost(NodeId to, const Message& message, const std::string& why);
   // A robot a client added at time `t`, standing at `pose`: its first trajectory row.
-  void Spawned(double t, NodeId node, const std::string& usarsim_class, const Pose2D& pose);
+  void Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose);
   void Ended(const std::string& by, double at);
   // Stopped from outside at `at` (a signal): the summary says "interrupted".
   void Interrupted(const std::string& by, double at);

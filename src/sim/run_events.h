@@ -18,8 +18,8 @@ class RunEvents {
   virtual void DroppedByImpairment(NodeId to, const Message& message) = 0;
   virtual void Lost(NodeId to, const Message& message, const std::string& why) = 0;
   virtual void Failed(const std::string& why) = 0;
-  // A node joined the running world (a robot a client spawned).
-  virtual void Spawned(NodeId node, const std::string& usarsim_class) = 0;
+  // A node joined the running world (a robot a front end spawned, as the class it names).
+  virtual void Spawned(NodeId node, const std::string& spawned_as) = 0;
 };
 
 }  // namespace sanet::sim

@@ -6,8 +6,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/interruption.h"
-
 namespace sanet::sim {
 namespace {
 
@@ -54,18 +52,19 @@ Stepper::~Stepper() {
 double Stepper::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 double Stepper::wall() const { return Since(wall_start_); }
 
-void Stepper::Run(bool progress) {
+void Stepper::Run(std::function<void(const RunProgress&)> progress, std::function<std::string()> stop_requested) {
+  progress_ = std::move(progress);
+  stop_requested_ = std::move(stop_requested);
   ScheduleAll();
   world_.transport().Open(outputs_.folder());
   wall_start_ = last_progress_ = std::chrono::steady_clock::now();
-  if (progress) ns3::Simulator::ScheduleNow(&Stepper::ShowProgress, this);
+  if (progress_) ns3::Simulator::ScheduleNow(&Stepper::TellProgress, this);
   // Events at exactly `duration` still run: the run covers [0, duration].
   ns3::Simulator::Stop(Period(world_.spec().duration) + ns3::NanoSeconds(1));
   ns3::Simulator::Run();
   world_.physics().Settle();  // a run that stopped between two physics events
   CatchUp();
   profile_.physics_wait = world_.physics().waited();
-  if (progress) std::fprintf(stderr, "\r%78s\r", "");
   world_.transport().Close();
   outputs_.Sample(Now(), /*final_row=*/true, Poses());
 }
@@ -126,11 +125,13 @@ void Stepper::ControlRound(std::int64_t period_ns) {
 // queued behind steps it has not finished, while the network goes on; anything that reads or
 // drives a body waits for every step started (physics::PipelinedWorld), the radios only for the
 // steps that have ended.
-// A signal asked the run to stop: it ends now, its results written as they stand.
+// Someone asked the run to stop (a signal, for the command): it ends now, its results written
+// as they stand.
 bool Stepper::StopIfInterrupted() {
-  const int signal = InterruptSignal();
-  if (signal == 0 || outputs_.interrupted()) return false;
-  outputs_.Interrupted(std::string("interrupted by ") + SignalName(signal), Now());
+  if (!stop_requested_ || outputs_.interrupted()) return false;
+  const std::string why = stop_requested_();
+  if (why.empty()) return false;
+  outputs_.Interrupted(why, Now());
   ns3::Simulator::Stop();
   return true;
 }
@@ -262,26 +263,27 @@ void Stepper::Failed(const std::string& why) {
 
 // A robot joined: it moves with the others from the next physics step (one that starts now, if
 // it is the world's first vehicle).
-void Stepper::Spawned(NodeId node, const std::string& usarsim_class) {
+void Stepper::Spawned(NodeId node, const std::string& spawned_as) {
   world_.physics().Settle();  // the physics thread reads the lists grown here
-  outputs_.Spawned(Now(), node, usarsim_class, world_.model(node).body().pose());
+  outputs_.Spawned(Now(), node, spawned_as, world_.model(node).body().pose());
   moving_.resize(world_.size(), 0);
   if (!world_.model(node).mobile()) return;
   if (vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
   vehicles_.push_back(node);
 }
 
-void Stepper::ShowProgress() {
+void Stepper::TellProgress() {
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_progress_).count() >= 0.5) {
     last_progress_ = now;
-    const double t = Now(), wall = Since(wall_start_), duration = world_.spec().duration;
-    const double rtf = wall > 0 ? t / wall : 0;
-    const double eta = rtf > 0 ? (duration - t) / rtf : 0;
-    std::fprintf(stderr, "\r  t = %.1f / %.1f s   %.1fx real time   ETA %.0f s   ", t, duration, rtf, eta);
-    std::fflush(stderr);
+    RunProgress p;
+    p.time = Now(), p.duration = world_.spec().duration;
+    const double wall = Since(wall_start_);
+    p.real_time_factor = wall > 0 ? p.time / wall : 0;
+    p.eta = p.real_time_factor > 0 ? (p.duration - p.time) / p.real_time_factor : 0;
+    progress_(p);
   }
-  ns3::Simulator::Schedule(ns3::Seconds(1), &Stepper::ShowProgress, this);
+  ns3::Simulator::Schedule(ns3::Seconds(1), &Stepper::TellProgress, this);
 }
 
 }  // namespace sanet::sim

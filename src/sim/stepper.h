@@ -11,7 +11,9 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "sim/assembly.h"
@@ -27,9 +29,9 @@ class Stepper : public RunEvents {
   Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers);
   ~Stepper() override;
 
-  // Runs to the spec's duration (or an end condition, or a failure). `progress` prints simulated
-  // time, real-time factor and ETA to stderr.
-  void Run(bool progress);
+  // Runs to the spec's duration (or an end condition, a failure, or a stop asked for);
+  // `progress`, if given, hears where the run is (RunOptions).
+  void Run(std::function<void(const RunProgress&)> progress, std::function<std::string()> stop_requested);
   const Profile& profile() const { return profile_; }
   std::uint64_t physics_steps() const { return physics_steps_; }
   // Physics steps in which no other event ran (no network, controller or recording event).
@@ -45,7 +47,7 @@ class Stepper : public RunEvents {
   void DroppedByImpairment(NodeId, const Message&) override { outputs_.DroppedByImpairment(); }
   void Lost(NodeId to, const Message& message, const std::string& why) override { outputs_.Lost(to, message, why); }
   void Failed(const std::string& why) override;
-  void Spawned(NodeId node, const std::string& usarsim_class) override;
+  void Spawned(NodeId node, const std::string& spawned_as) override;
 
  private:
   void ScheduleAll();
@@ -63,7 +65,7 @@ class Stepper : public RunEvents {
   void Record();
   void Notify();
   void CollectMoving();
-  void ShowProgress();
+  void TellProgress();
   void SwitchOff(NodeId node);
   bool StopIfInterrupted();
   void CountTowardsEnd(const std::vector<std::string>& watched, const std::string& what, const std::string& said);
@@ -85,6 +87,8 @@ class Stepper : public RunEvents {
   std::uint64_t quiet_physics_steps_ = 0, events_at_last_step_ = 0;
   int end_events_ = 0;  // of the end condition, so far
   std::chrono::steady_clock::time_point wall_start_, last_progress_;
+  std::function<void(const RunProgress&)> progress_;
+  std::function<std::string()> stop_requested_;
 };
 
 }  // namespace sanet::sim

@@ -50,7 +50,7 @@ RunResult World::Run(const RunOptions& options) {
   Outputs outputs(spec(), options.output_dir, options.force);
   if (options.provenance) outputs.Begin(*options.provenance);
   Stepper stepper(*parts_, outputs, driver_->observers());
-  stepper.Run(options.progress);
+  stepper.Run(options.progress, options.stop_requested);
 
   RunResult result;
   result.simulated = std::min(stepper.Now(), spec().duration);

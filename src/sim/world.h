@@ -24,8 +24,12 @@ using agents::MakeController;
 struct RunOptions {
   std::string output_dir;     // "" writes nothing (tests, benchmarks)
   std::string scenario_file;  // recorded in the summary
-  bool progress = false;      // print simulated time, real-time factor and ETA to stderr
-  bool force = false;         // write beside files that no sanet run wrote (trace/earlier_run.h)
+  // About once a second of simulated time (at most twice a second of wall time): where the run is.
+  std::function<void(const RunProgress&)> progress = nullptr;
+  // Asked at every physics step: a reason (e.g. "interrupted by SIGINT") ends the run there, its
+  // results written and marked interrupted; "" lets it go on. sim installs no signal handler.
+  std::function<std::string()> stop_requested = nullptr;
+  bool force = false;  // write beside files that no sanet run wrote (trace/earlier_run.h)
   std::optional<Provenance> provenance = std::nullopt;  // written first into the folder
   // Adds fields of its own to summary.json and files of its own to the results folder (the
   // server adds its lag and the agents' reports), once the run has ended.
@@ -48,7 +52,7 @@ class World {
   // Runs for the spec's duration and writes the results (once per World). Throws WorldError
   // after writing them when a controller failed.
   RunResult Run(const RunOptions& options);
-  // The run was stopped by a signal (sim/interruption.h) and its results say so.
+  // The run was stopped (RunOptions::stop_requested) and its results say so.
   bool interrupted() const { return interrupted_; }
 
   const RunSpec& spec() const;

@@ -46,7 +46,7 @@ std::string RunIn(const std::string& tag, const sim::RunSpec& spec, agents::Regi
   const std::string dir = ::testing::TempDir() + "/sanet-help-" + tag;
   std::filesystem::remove_all(dir);
   sim::World world(spec, registry);
-  world.Run({dir, "", false});
+  world.Run({dir, ""});
   return dir;
 }
 
@@ -75,7 +75,7 @@ TEST(HelpRequest, TheRobotArrivesAroundTheWall) {
     world.Observe([&](const sim::WorldSnapshot&) {
       closest = std::min(closest, DistanceToBox(world.model(robot).body().pose().position(), spec.obstacles[0].box));
     });
-    world.Run({dir, "", false});
+    world.Run({dir, ""});
   }
   const auto transitions = Transitions(dir);
   ASSERT_TRUE(Find(transitions, "robot", "arrived")) << ReadFile(dir + "/transitions.csv");

@@ -59,7 +59,7 @@ nlohmann::json Summary(const sim::RunSpec& spec, const std::string& tag, std::st
   const std::string dir = ::testing::TempDir() + "/sanet-indexed-" + tag;
   std::filesystem::remove_all(dir);
   sim::World world(spec, BuiltinRegistry());
-  *fingerprint = world.Run({dir, "", false}).fingerprint;
+  *fingerprint = world.Run({dir, ""}).fingerprint;
   return nlohmann::json::parse(ReadFile(dir + "/summary.json"));
 }
 
@@ -151,7 +151,7 @@ TEST(BroadcastJitter, SpreadsBroadcastsOverTheJitter) {
     const std::string dir = ::testing::TempDir() + "/sanet-jitter";
     std::filesystem::remove_all(dir);
     sim::World world(spec, BuiltinRegistry());
-    world.Run({dir, "", false});
+    world.Run({dir, ""});
     std::vector<double> out;
     std::istringstream csv(ReadFile(dir + "/messages.csv"));
     std::string line;

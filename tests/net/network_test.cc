@@ -239,7 +239,7 @@ TEST(Network, RoutingTableAgreesWithNs3AndInvalidationStartsANewDiscovery) {
   const std::string dir = ::testing::TempDir() + "/sanet-invalidate";
   std::filesystem::remove_all(dir);
   sim::World world(spec, probes.registry);
-  world.Run({dir, "", false});
+  world.Run({dir, ""});
 
   // ns-3's dump: "Destination Gateway Interface Flag Expire Hops" per line.
   std::map<std::string, std::vector<std::string>> dumped;
@@ -317,7 +317,7 @@ TEST(Network, PcapFilesHoldTheUdpPacketsSent) {
   std::filesystem::remove_all(dir);
   {
     sim::World world(spec, probes.registry);
-    world.Run({dir, "", false});
+    world.Run({dir, ""});
   }
   ASSERT_EQ(probes.inboxes[1].size(), 5u);
   EXPECT_EQ(CountUdpFrames(dir + "/pcap/m0.pcap", 9000, "10.0.0.1"), 5) << "sent by m0";
@@ -338,7 +338,7 @@ TEST(Network, SameSeedGivesIdenticalDelayAndPacketFiles) {
     const std::string dir = ::testing::TempDir() + "/sanet-netdet-" + tag;
     std::filesystem::remove_all(dir);
     sim::World world(spec, BuiltinRegistry());
-    world.Run({dir, "", false});
+    world.Run({dir, ""});
     return dir;
   };
   const std::string a = run("a"), b = run("b");

@@ -71,7 +71,7 @@ std::vector<double> DiscoveryStarts(const std::vector<std::string>& sets, const 
   const std::string dir = ::testing::TempDir() + "/sanet-ns3-" + tag;
   std::filesystem::remove_all(dir);
   sim::World world(spec, BuiltinRegistry());
-  *fingerprint = world.Run({dir, "", false}).fingerprint;
+  *fingerprint = world.Run({dir, ""}).fingerprint;
   std::ifstream routes(dir + "/routes.csv");
   std::vector<double> starts;
   std::string line;

@@ -21,7 +21,7 @@ Outputs RunScenario(sim::RunSpec spec, const std::string& tag) {
   const std::string dir = ::testing::TempDir() + "/sanet-determinism-" + tag;
   std::filesystem::remove_all(dir);
   sim::World world(spec, BuiltinRegistry());
-  const sim::RunResult r = world.Run({dir, "", false});
+  const sim::RunResult r = world.Run({dir, ""});
   return {r.fingerprint, ReadFile(dir + "/trajectories.csv"), ReadFile(dir + "/log.csv")};
 }
 

@@ -24,7 +24,7 @@ Ended RunWith(const std::string& file, const std::vector<std::string>& sets, con
   const std::string dir = ::testing::TempDir() + "/sanet-end-" + tag;
   std::filesystem::remove_all(dir);
   sim::World world(spec, BuiltinRegistry());
-  world.Run({dir, "", false});
+  world.Run({dir, ""});
   return {world.ended_by(), world.ended_at(), dir};
 }
 

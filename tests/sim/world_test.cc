@@ -97,7 +97,7 @@ TEST(World, AFailingControllerEndsTheRunButKeepsItsResults) {
   std::filesystem::remove_all(dir);
   sim::World world(Spec(10, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("thrower", {}))}), registry);
   try {
-    world.Run({dir, "test", false});
+    world.Run({dir, "test"});
     FAIL() << "the failure was not reported";
   } catch (const sim::WorldError& e) {
     EXPECT_NE(std::string(e.what()).find("sensor exploded"), std::string::npos);
@@ -134,7 +134,7 @@ TEST(World, AControllerThrowingAnythingEndsTheRunNamingWhatItThrew) {
     const std::string dir = ::testing::TempDir() + "/sanet-throws-anything";
     std::filesystem::remove_all(dir);
     sim::World world(Spec(10, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("throws", {}))}), registry);
-    EXPECT_THROW(world.Run({dir, "test", false}), sim::WorldError);
+    EXPECT_THROW(world.Run({dir, "test"}), sim::WorldError);
     const std::string summary = ReadFile(dir + "/summary.json");
     EXPECT_NE(summary.find("failed: controller of r failed: " + named), std::string::npos) << summary;
     EXPECT_NE(ReadFile(dir + "/trajectories.csv").find("0.000,r,"), std::string::npos);
@@ -157,7 +157,7 @@ TEST(World, TextThatIsNotUtf8LeavesAValidSummary) {
   const std::string dir = ::testing::TempDir() + "/sanet-not-utf8";
   std::filesystem::remove_all(dir);
   sim::World world(Spec(1, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("babble", {}))}), registry);
-  world.Run({dir, "test", false});
+  world.Run({dir, "test"});
   const auto summary = nlohmann::json::parse(ReadFile(dir + "/summary.json"));
   EXPECT_EQ(summary["status"], "completed");
   EXPECT_TRUE(summary["metrics"]["r"].contains("m\xef\xbf\xbdtric")) << summary["metrics"].dump();
@@ -183,7 +183,7 @@ TEST(World, ANonFiniteCommandIsRefusedLoggedAndTheMotorsKeepTheLastOne) {
   const std::string dir = ::testing::TempDir() + "/sanet-nan-drive";
   std::filesystem::remove_all(dir);
   sim::World world(Spec(2, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("nan", {}))}), registry);
-  world.Run({dir, "test", false});
+  world.Run({dir, "test"});
   EXPECT_EQ(answers, (std::vector<bool>{true, false, false}));
   const std::string log = ReadFile(dir + "/log.csv");
   EXPECT_NE(log.find("drive refused: a velocity that is not a finite number"), std::string::npos) << log;
@@ -203,7 +203,7 @@ TEST(World, WritesTrajectoriesForMovingNodesAndOnceForRestingOnes) {
       Spec(2, {Robot("r", ModelKind::kOmni3, {0, 0, 0}, UseController("constant_velocity", {{"vx", Scalar(0.3)}})),
                Robot("m", ModelKind::kMote, {5, 5, 0})}),
       BuiltinRegistry());
-  const sim::RunResult r = world.Run({dir, "test", false});
+  const sim::RunResult r = world.Run({dir, "test"});
   const std::string csv = ReadFile(dir + "/trajectories.csv");
   std::size_t robot_rows = 0, mote_rows = 0;
   std::istringstream lines(csv);

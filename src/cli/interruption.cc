@@ -1,11 +1,11 @@
-#include "sim/interruption.h"
+#include "interruption.h"
 
 #include <unistd.h>
 
 #include <csignal>
 #include <initializer_list>
 
-namespace sanet::sim {
+namespace sanet::cli {
 namespace {
 
 volatile std::sig_atomic_t g_signal = 0;
@@ -44,7 +44,9 @@ const char* SignalName(int signal) {
   }
 }
 
+std::string InterruptReason() { return g_signal ? std::string("interrupted by ") + SignalName(g_signal) : ""; }
+
 void ClearInterrupt() { g_signal = 0; }
 void RequestInterrupt(int signal) { g_signal = signal; }
 
-}  // namespace sanet::sim
+}  // namespace sanet::cli

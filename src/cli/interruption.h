@@ -3,9 +3,12 @@
 // results are written whole (temporary name, then rename), so that leaves only temporary files.
 #pragma once
 
-namespace sanet::sim {
+#include <string>
 
-// Installs handlers for SIGINT, SIGTERM and SIGHUP doing the above.
+namespace sanet::cli {
+
+// Installs handlers for SIGINT, SIGTERM and SIGHUP doing the above (the command's: sim installs
+// none; a run asks RunOptions::stop_requested).
 void InstallStopHandlers();
 // The signal that asked the run to stop, or 0. Async-signal-safe to set, cheap to read.
 int InterruptSignal();
@@ -15,5 +18,7 @@ const char* SignalName(int signal);
 void ClearInterrupt();
 // Asks for a stop as a signal would.
 void RequestInterrupt(int signal);
+// For RunOptions::stop_requested: "interrupted by SIGINT" once a signal came, "" before.
+std::string InterruptReason();
 
-}  // namespace sanet::sim
+}  // namespace sanet::cli

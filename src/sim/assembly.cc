@@ -43,7 +43,7 @@ Assembly::Assembly(const RunSpec& spec, agents::Registry& registry) : spec_(spec
   g_assembly_exists = true;
   try {
     clock_ = std::make_unique<SimulationClock>();
-    pose_feed_ = std::make_unique<net::PoseFeed>();
+    poses_ = std::make_unique<PosePipeline>([this](const std::vector<NodeId>& moved) { transport_->Moved(moved); });
     ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(spec.seed % 4294967295u) + 1);
     BuildBodies();
     BuildTransport();
@@ -76,9 +76,7 @@ void Assembly::BuildTransport() {
   ns3::NodeContainer nodes;
   for (NodeId id = 0; id < models_.size(); ++id) {
     nodes.Add(Ns3Node());
-    mobility_.push_back(ns3::PeekPointer(nodes.Get(id)->GetObject<net::BodyMobilityModel>()));
-    mobility_.back()->Follow(pose_feed_.get());
-    PublishPose(id);
+    FollowBody(id, ns3::PeekPointer(nodes.Get(id)->GetObject<net::BodyMobilityModel>()));
   }
   std::unique_ptr<net::Transport> inner;
   if (spec_.network) {
@@ -131,9 +129,7 @@ NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, cons
   models_.push_back(
       std::make_unique<robots::NodeModel>(*physics_, node.model, node.pose, spec_.seed, "node/" + node.name));
   ns3::Ptr<ns3::Node> ns3_node = Ns3Node();
-  mobility_.push_back(ns3::PeekPointer(ns3_node->GetObject<net::BodyMobilityModel>()));
-  mobility_.back()->Follow(pose_feed_.get());
-  PublishPose(id);
+  FollowBody(id, ns3::PeekPointer(ns3_node->GetObject<net::BodyMobilityModel>()));
   if (wireless_) wireless_->AddNode(ns3_node, node.name, node.radio);
   if (local_) local_->AddNode();
   AddNode(id, nullptr);
@@ -169,37 +165,16 @@ void Assembly::Receive(NodeId to, const Message& m) {
     events_->Lost(to, m, "no client drives " + NameOf(to));
 }
 
-Assembly::RadioPose Assembly::PoseOf(NodeId id) const {
-  const physics::Body& body = models_.at(id)->body();
-  return {id, body.position3(), body.velocity()};
+void Assembly::FollowBody(NodeId id, net::BodyMobilityModel* mobility) {
+  poses_->Add(mobility, PosePipeline::Of(id, models_.at(id)->body()));
 }
 
-void Assembly::Publish(const RadioPose& p) {
-  mobility_.at(p.node)->Publish(ns3::Vector(p.position.x, p.position.y, p.position.z),
-                                ns3::Vector(p.velocity.vx, p.velocity.vy, 0));
-}
-
-void Assembly::PublishPose(NodeId id) { Publish(PoseOf(id)); }
-
-std::vector<Assembly::RadioPose> Assembly::RadioPoses(const std::vector<NodeId>& moved) const {
+std::vector<RadioPose> Assembly::RadioPoses(const std::vector<NodeId>& moved) const {
   std::vector<RadioPose> poses;
   poses.reserve(moved.size());
-  for (NodeId id : moved) poses.push_back(PoseOf(id));
+  for (NodeId id : moved) poses.push_back(PosePipeline::Of(id, models_.at(id)->body()));
   return poses;
 }
-
-void Assembly::PublishPoses(const std::vector<RadioPose>& poses) {
-  moved_scratch_.clear();
-  for (const RadioPose& p : poses) {
-    Publish(p);
-    moved_scratch_.push_back(p.node);
-  }
-  transport_->Moved(moved_scratch_);
-}
-
-void Assembly::SetPoseCatchUp(std::function<void()> catch_up) { pose_feed_->catch_up = std::move(catch_up); }
-void Assembly::PosesBehind() { pose_feed_->behind = true; }
-void Assembly::PosesCaughtUp() { pose_feed_->behind = false; }
 
 // A node switched off again stays off: ns-3 aborts when a radio that is off is switched off.
 void Assembly::SwitchOff(NodeId id) {

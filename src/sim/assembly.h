@@ -15,6 +15,7 @@
 #include "agents/simulated_node.h"
 #include "physics/pipelined_world.h"
 #include "sim/message_ledger.h"
+#include "sim/pose_pipeline.h"
 #include "sim/remote_inbox.h"
 #include "sim/run_events.h"
 #include "sim/run_spec.h"
@@ -23,7 +24,6 @@
 
 namespace sanet::net {
 class BodyMobilityModel;
-struct PoseFeed;
 class LocalTransport;
 class WirelessNetwork;
 }  // namespace sanet::net
@@ -48,22 +48,11 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // True for a robot that a client of the server drives instead of its scenario controller.
   bool remote(NodeId id) const;
 
-  // The radios read positions published at step boundaries, never the bodies themselves.
-  struct RadioPose {
-    NodeId node;
-    physics::Vec3 position;  // m
-    Twist2D velocity;
-  };
-  // The poses of `moved` bodies now, for PublishPoses (on the physics thread, after its step).
+  // The radios read positions published at step boundaries, never the bodies themselves
+  // (sim/pose_pipeline.h).
+  PosePipeline& poses() { return *poses_; }
+  // The poses of `moved` bodies now, for PosePipeline::Publish (on the physics thread, after its step).
   std::vector<RadioPose> RadioPoses(const std::vector<NodeId>& moved) const;
-  // The radios learn the poses, and re-index the bodies that moved.
-  void PublishPoses(const std::vector<RadioPose>& poses);
-  // Who publishes steps that have ended: after PosesBehind, the radios call `catch_up` before
-  // they next read a position. It calls PosesCaughtUp first (publishing re-indexes the radios,
-  // which reads positions again).
-  void SetPoseCatchUp(std::function<void()> catch_up);
-  void PosesBehind();
-  void PosesCaughtUp();
 
   void SetEvents(RunEvents* events) { events_ = events; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
@@ -110,16 +99,12 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void AddNode(NodeId id, std::unique_ptr<Controller> controller);
   void Receive(NodeId to, const Message& message);
   agents::ControllerHost::Hooks HostHooks(NodeId id);
-  RadioPose PoseOf(NodeId id) const;
-  void Publish(const RadioPose& pose);  // to the node's mobility model only
-  void PublishPose(NodeId id);          // its body's pose now
+  void FollowBody(NodeId id, net::BodyMobilityModel* mobility);  // its radio, from its body's pose now
 
   RunSpec spec_;
   std::unique_ptr<physics::PipelinedWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
-  std::vector<net::BodyMobilityModel*> mobility_;  // per node; ns-3's nodes own them
-  std::unique_ptr<net::PoseFeed> pose_feed_;       // what the mobility models follow
-  std::vector<NodeId> moved_scratch_;
+  std::unique_ptr<PosePipeline> poses_;
   std::unique_ptr<MessageLedger> transport_;
   net::WirelessNetwork* wireless_ = nullptr;  // the inner transport, when it is ns-3's network
   net::LocalTransport* local_ = nullptr;      // or when it is the local stand-in

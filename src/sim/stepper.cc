@@ -31,7 +31,7 @@ class StageTimer {
 Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers)
     : world_(world), outputs_(outputs), observers_(observers) {
   world_.SetEvents(this);
-  world_.SetPoseCatchUp([this] { CatchUp(); });
+  world_.poses().SetCatchUp([this] { CatchUp(); });
   for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
   moving_.assign(world_.size(), 0);
   if (!observers_.empty()) world_.transport().Watch();
@@ -45,7 +45,7 @@ Stepper::~Stepper() {
     world_.physics().Settle();  // no step may still use this stepper
   } catch (...) {               // a failed step, thrown once already (by Run, unwinding now)
   }
-  world_.SetPoseCatchUp([] {});
+  world_.poses().SetCatchUp([] {});
   world_.SetEvents(nullptr);
 }
 
@@ -145,7 +145,7 @@ void Stepper::PhysicsStep() {
   events_at_last_step_ = events;
   if (due_ != steps_.size()) {
     due_ = steps_.size();
-    world_.PosesBehind();
+    world_.poses().Behind();
   }
   if (!observers_.empty() && launched_ > 0) {
     CatchUp();
@@ -185,10 +185,10 @@ void Stepper::Integrate(StepOutcome& outcome) {
 
 // The radios learn where the bodies were at the end of each step that has ended.
 void Stepper::CatchUp() {
-  world_.PosesCaughtUp();
+  world_.poses().CaughtUp();
   for (; due_ > 0; --due_) {
     world_.physics().SettleStep(steps_.front().number);
-    world_.PublishPoses(steps_.front().poses);
+    world_.poses().Publish(steps_.front().poses);
     steps_.pop_front();
   }
 }

@@ -56,9 +56,9 @@ class Stepper : public RunEvents {
   void ControlRound(std::int64_t period_ns);
   void PhysicsStep();
   struct StepOutcome {
-    double dt = 0;                           // s
-    std::uint64_t number = 0;                // the physics world's
-    std::vector<Assembly::RadioPose> poses;  // of the bodies that moved, at its end
+    double dt = 0;                 // s
+    std::uint64_t number = 0;      // the physics world's
+    std::vector<RadioPose> poses;  // of the bodies that moved, at its end
   };
   void Integrate(StepOutcome& outcome);
   void CatchUp();

@@ -3,39 +3,33 @@
 # header must fail because sim's headers are not on net's include root (and for no other reason).
 set -u
 build="$1"
-out=$(cmake --build "$build" --target sanet_upward_include_probe 2>&1)
-if [ $? -eq 0 ]; then
-  echo "FAIL: a net file that includes sim/world.h compiled"
-  exit 1
-fi
-# gcc and clang (the sanitize build) say it differently.
-if ! grep -qE "sim/world.h: No such file or directory|'sim/world.h' file not found" <<<"$out"; then
-  echo "FAIL: the probe failed for another reason:"
-  echo "$out" | tail -20
-  exit 1
-fi
-if grep -qE "net/transport.h: No such file|'net/transport.h' file not found" <<<"$out"; then
-  echo "FAIL: net's own headers were not found"
-  exit 1
-fi
-echo "ok: net cannot include sim/world.h"
 
-# The agent's layer cannot include the robot server's headers (nor does it link its library).
-out=$(cmake --build "$build" --target sanet_agent_server_probe 2>&1)
-if [ $? -eq 0 ]; then
-  echo "FAIL: an agent file that includes robot_server/sim_server.h compiled"
-  exit 1
-fi
-if ! grep -qE "robot_server/sim_server.h: No such file or directory|'robot_server/sim_server.h' file not found" <<<"$out"; then
-  echo "FAIL: the agent probe failed for another reason:"
-  echo "$out" | tail -20
-  exit 1
-fi
-if grep -qE "remote_agent/remote_node.h: No such file|'remote_agent/remote_node.h' file not found" <<<"$out"; then
-  echo "FAIL: the agent's own headers were not found"
-  exit 1
-fi
-echo "ok: the agent cannot include robot_server/sim_server.h"
+# expect_not_found PROBE_TARGET LAYER FORBIDDEN_HEADER OWN_HEADER: the probe must fail to compile
+# because FORBIDDEN_HEADER is not on LAYER's include root, and for no other reason.
+expect_not_found() {
+  local target=$1 layer=$2 forbidden=$3 own=$4 out
+  out=$(cmake --build "$build" --target "$target" 2>&1)
+  if [ $? -eq 0 ]; then
+    echo "FAIL: a $layer file that includes $forbidden compiled"
+    exit 1
+  fi
+  # gcc and clang (the sanitize build) say it differently.
+  if ! grep -qE "$forbidden: No such file or directory|'$forbidden' file not found" <<<"$out"; then
+    echo "FAIL: the $layer probe failed for another reason:"
+    echo "$out" | tail -20
+    exit 1
+  fi
+  if grep -qE "$own: No such file|'$own' file not found" <<<"$out"; then
+    echo "FAIL: $layer's own headers were not found"
+    exit 1
+  fi
+  echo "ok: $layer cannot include $forbidden"
+}
+
+expect_not_found sanet_upward_include_probe net sim/world.h net/transport.h
+# The agent's layer cannot include the robot server's headers (nor does it link its library:
+# checked when configuring).
+expect_not_found sanet_agent_server_probe remote_agent robot_server/sim_server.h remote_agent/remote_node.h
 
 # Front ends reach a running world through sim/driver.h only: none includes the assembly, nor
 # World and the stepper and outputs behind it.

@@ -52,21 +52,41 @@ Stepper::~Stepper() {
 double Stepper::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 double Stepper::wall() const { return Since(wall_start_); }
 
-void Stepper::Run(std::function<void(const RunProgress&)> progress, std::function<std::string()> stop_requested) {
+void Stepper::Begin(std::function<void(const RunProgress&)> progress, std::function<std::string()> stop_requested) {
   progress_ = std::move(progress);
   stop_requested_ = std::move(stop_requested);
   ScheduleAll();
   world_.transport().Open(outputs_.folder());
   wall_start_ = last_progress_ = std::chrono::steady_clock::now();
   if (progress_) ns3::Simulator::ScheduleNow(&Stepper::TellProgress, this);
-  // Events at exactly `duration` still run: the run covers [0, duration].
-  ns3::Simulator::Stop(Period(world_.spec().duration) + ns3::NanoSeconds(1));
+}
+
+bool Stepper::Advance(double until) {
+  if (ended_) return false;
+  // The run ends at its duration, or once an end condition's grace is over.
+  const double end = std::min(world_.spec().duration, end_at_);
+  const double target = std::min(until, end);
+  if (Period(target) < ns3::Simulator::Now()) return true;  // already there
+  // Events at exactly `target` still run: the run covers [0, duration].
+  ns3::Simulator::Stop(Period(target) - ns3::Simulator::Now() + ns3::NanoSeconds(1));
+  ++advances_;
   ns3::Simulator::Run();
   world_.physics().Settle();  // a run that stopped between two physics events
   CatchUp();
+  // Stopped short of the target: an end condition's grace, a failure or a stop asked for.
+  ended_ = stopped_ || target >= std::min(world_.spec().duration, end_at_) || ns3::Simulator::Now() < Period(target);
+  return !ended_;
+}
+
+void Stepper::End() {
   profile_.physics_wait = world_.physics().waited();
   world_.transport().Close();
   outputs_.Sample(Now(), /*final_row=*/true, Poses());
+}
+
+std::uint64_t Stepper::events() const {
+  const std::uint64_t stops = advances_ > 0 ? advances_ - 1 : 0;
+  return ns3::Simulator::GetEventCount() - stops;
 }
 
 // Order at equal times follows scheduling order: controllers start, then step, then scenario
@@ -132,6 +152,7 @@ bool Stepper::StopIfInterrupted() {
   const std::string why = stop_requested_();
   if (why.empty()) return false;
   outputs_.Interrupted(why, Now());
+  stopped_ = true;
   ns3::Simulator::Stop();
   return true;
 }
@@ -250,7 +271,8 @@ void Stepper::CountTowardsEnd(const std::vector<std::string>& watched, const std
   const int count = world_.spec().end_count;
   if (++end_events_ < count) return;
   outputs_.Ended(count == 1 ? said : said + " (" + std::to_string(count) + " in all)", Now());
-  ns3::Simulator::Stop(Period(world_.spec().end_grace));  // let the last messages arrive
+  end_at_ = Now() + world_.spec().end_grace;  // let the last messages arrive
+  ns3::Simulator::Stop(Period(world_.spec().end_grace));
 }
 
 void Stepper::Delivered(NodeId to, const Message& message) { outputs_.Delivered(to, message); }
@@ -258,6 +280,7 @@ void Stepper::Delivered(NodeId to, const Message& message) { outputs_.Delivered(
 void Stepper::Failed(const std::string& why) {
   outputs_.Failed(why);
   outputs_.Ended("controller failure", ns3::Simulator::Now().GetSeconds());
+  stopped_ = true;
   ns3::Simulator::Stop();
 }
 

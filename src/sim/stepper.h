@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -29,9 +30,16 @@ class Stepper : public RunEvents {
   Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers);
   ~Stepper() override;
 
-  // Runs to the spec's duration (or an end condition, a failure, or a stop asked for);
-  // `progress`, if given, hears where the run is (RunOptions).
-  void Run(std::function<void(const RunProgress&)> progress, std::function<std::string()> stop_requested);
+  // A run in three parts: Begin schedules it (`progress`, if given, hears where the run is;
+  // RunOptions), Advance runs it to simulated time `until` (events at exactly `until` included)
+  // and says whether it goes on (false once the duration is reached, or an end condition, a
+  // failure or a stop ended it), End closes it. Advancing in many pieces gives the same run as
+  // in one.
+  void Begin(std::function<void(const RunProgress&)> progress, std::function<std::string()> stop_requested);
+  bool Advance(double until);
+  void End();
+  // Events the run's own (the scheduler also counts the stops that end each Advance but the last).
+  std::uint64_t events() const;
   const Profile& profile() const { return profile_; }
   std::uint64_t physics_steps() const { return physics_steps_; }
   // Physics steps in which no other event ran (no network, controller or recording event).
@@ -89,6 +97,10 @@ class Stepper : public RunEvents {
   std::chrono::steady_clock::time_point wall_start_, last_progress_;
   std::function<void(const RunProgress&)> progress_;
   std::function<std::string()> stop_requested_;
+  std::uint64_t advances_ = 0;
+  bool ended_ = false;                                       // Advance has nothing more to run
+  bool stopped_ = false;                                     // a failure or a stop asked for ended it at once
+  double end_at_ = std::numeric_limits<double>::infinity();  // s: an end condition's grace is over
 };
 
 }  // namespace sanet::sim

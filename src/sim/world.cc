@@ -44,19 +44,46 @@ std::string World::NameOf(NodeId id) const { return parts_->NameOf(id); }
 double World::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 void World::Stop() { driver_->Stop(); }
 
+struct World::Running {
+  Running(World& world, const RunOptions& run_options)
+      : options(run_options),
+        outputs(world.spec(), options.output_dir, options.force),
+        stepper(*world.parts_, outputs, world.driver_->observers()) {}
+  RunOptions options;
+  Outputs outputs;
+  Stepper stepper;
+};
+
 RunResult World::Run(const RunOptions& options) {
+  Start(options);
+  RunUntil(spec().duration);
+  return Finish();
+}
+
+void World::Start(const RunOptions& options) {
   if (ran_) throw WorldError("a World runs once");
   ran_ = true;
-  Outputs outputs(spec(), options.output_dir, options.force);
-  if (options.provenance) outputs.Begin(*options.provenance);
-  Stepper stepper(*parts_, outputs, driver_->observers());
-  stepper.Run(options.progress, options.stop_requested);
+  running_ = std::make_unique<Running>(*this, options);
+  if (options.provenance) running_->outputs.Begin(*options.provenance);
+  running_->stepper.Begin(options.progress, options.stop_requested);
+}
 
+bool World::RunUntil(double t) {
+  if (!running_) throw WorldError("RunUntil before Start, or after Finish");
+  return running_->stepper.Advance(t);
+}
+
+RunResult World::Finish() {
+  if (!running_) throw WorldError("Finish before Start, or twice");
+  const std::unique_ptr<Running> run = std::move(running_);
+  Stepper& stepper = run->stepper;
+  Outputs& outputs = run->outputs;
+  stepper.End();
   RunResult result;
   result.simulated = std::min(stepper.Now(), spec().duration);
   result.wall = stepper.wall();
   result.real_time_factor = result.wall > 0 ? result.simulated / result.wall : 0;
-  result.events = ns3::Simulator::GetEventCount();
+  result.events = stepper.events();
   result.physics_steps = stepper.physics_steps();
   result.quiet_physics_steps = stepper.quiet_physics_steps();
   result.threads = spec().threads;
@@ -67,8 +94,8 @@ RunResult World::Run(const RunOptions& options) {
   std::vector<Pose2D> final_poses;
   for (NodeId id = 0; id < parts_->size(); ++id) final_poses.push_back(parts_->model(id).body().pose());
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
-  if (options.add_results) options.add_results(extra, outputs.folder());
-  outputs.Finish(result, parts_->transport().Traces(), options.scenario_file, final_poses, extra);
+  if (run->options.add_results) run->options.add_results(extra, outputs.folder());
+  outputs.Finish(result, parts_->transport().Traces(), run->options.scenario_file, final_poses, extra);
   if (!outputs.failure().empty()) throw WorldError(outputs.failure());
   return result;
 }

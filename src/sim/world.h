@@ -52,6 +52,13 @@ class World {
   // Runs for the spec's duration and writes the results (once per World). Throws WorldError
   // after writing them when a controller failed.
   RunResult Run(const RunOptions& options);
+  // The same run stepped from outside (a script, a notebook): Start, then RunUntil as often as
+  // wanted (simulated time `t`, events at exactly `t` included; false once the run has ended:
+  // its duration, an end condition, a failure or a stop), then Finish, which writes the results
+  // as Run does. Stepped in any pieces, the run gives the same results as Run.
+  void Start(const RunOptions& options);
+  bool RunUntil(double t);
+  RunResult Finish();
   // The run was stopped (RunOptions::stop_requested) and its results say so.
   bool interrupted() const { return interrupted_; }
 
@@ -84,6 +91,8 @@ class World {
   std::unique_ptr<Driver> driver_;
   std::vector<std::unique_ptr<StepObserver>> owned_observers_;
   bool ran_ = false, interrupted_ = false;
+  struct Running;  // between Start and Finish
+  std::unique_ptr<Running> running_;
   std::string ended_by_;
   double ended_at_ = 0;
 };

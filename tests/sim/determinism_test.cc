@@ -104,3 +104,34 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, OneThreadOrTwo,
 
 }  // namespace
 }  // namespace sanet
+
+namespace sanet {
+namespace {
+
+// A run stepped from outside (World::Start, RunUntil, Finish) in uneven pieces gives the same
+// results as one Run: the same fingerprint, events and end.
+TEST(Stepping, PiecesGiveTheRunOfOneGo) {
+  const auto run_file = [](const std::string& file, const std::vector<double>& stops) {
+    sim::RunSpec spec = scenario::LoadScenario(std::string(SANET_SOURCE_DIR "/scenarios/") + file).run;
+    spec.duration = std::min(spec.duration, 60.0);
+    sim::World world(spec, testing::BuiltinRegistry());
+    sim::RunOptions options;
+    if (stops.empty()) {
+      const sim::RunResult r = world.Run(options);
+      return std::make_tuple(r.fingerprint, r.events, world.ended_by());
+    }
+    world.Start(options);
+    for (double t : stops)
+      if (!world.RunUntil(t)) break;
+    EXPECT_FALSE(world.RunUntil(1e9)) << "the run is over at its end";
+    const sim::RunResult r = world.Finish();
+    return std::make_tuple(r.fingerprint, r.events, world.ended_by());
+  };
+  for (const char* file : {"around-the-wall.yaml", "help-request.yaml", "sensor-network.yaml"}) {
+    const auto whole = run_file(file, {});
+    EXPECT_EQ(run_file(file, {0, 0.0025, 1.7, 1.7, 13.333, 30}), whole) << file;
+  }
+}
+
+}  // namespace
+}  // namespace sanet

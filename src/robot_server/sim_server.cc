@@ -1,16 +1,12 @@
 #include "robot_server/sim_server.h"
 
 #include <arpa/inet.h>
-#include <fcntl.h>
 #include <netinet/in.h>
-#include <netinet/tcp.h>
-#include <sys/resource.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -23,12 +19,9 @@
 #include "wire/agent_datagram.h"
 #include "wire/message_lines.h"
 #include "wire/sockets.h"
-#include "wire/tcp_window.h"
 
 namespace sanet::hil {
 namespace {
-
-double WallNow() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // sanet's frame is z up (x forward, y left, angles counter-clockwise); USARSim's is z down
 // (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
@@ -60,11 +53,18 @@ SimServer::SimServer(sim::Driver& driver, ServerSettings settings) : driver_(dri
         ProtocolMessage{"ERR"}.Add("Message", "line longer than " + std::to_string(max_line) + " bytes: closing"));
   };
   events.refusal_line = [](const std::string& why) { return FormatLine(ProtocolMessage{"ERR"}.Add("Message", why)); };
-  lines_ = std::make_unique<LineServer>(
-      LineServerSettings{settings_.bind, settings_.port, settings_.max_clients, "--max-clients", settings_.max_line,
-                         settings_.max_backlog, settings_.stall_timeout, settings_.lines_per_turn,
-                         settings_.bytes_per_turn, settings_.poll_budget},
-      std::move(events));
+  LineServerSettings lines;
+  lines.bind = settings_.bind;
+  lines.port = settings_.port;
+  lines.max_clients = settings_.max_clients;
+  lines.cap_option = "--max-clients";
+  lines.max_line = settings_.max_line;
+  lines.max_backlog = settings_.max_backlog;
+  lines.stall_timeout = settings_.stall_timeout;
+  lines.lines_per_turn = settings_.lines_per_turn;
+  lines.bytes_per_turn = settings_.bytes_per_turn;
+  lines.poll_budget = settings_.poll_budget;
+  lines_ = std::make_unique<LineServer>(lines, std::move(events));
 }
 
 SimServer::~SimServer() { driver_.SetRemoteInbox(nullptr); }
@@ -76,7 +76,7 @@ void SimServer::Start() {
 
 // The lag of every physics step behind the wall clock.
 void SimServer::AfterStep(const sim::WorldSnapshot& snapshot) {
-  lags_.push_back(std::max(0.0, (WallNow() - wall_start_) - snapshot.time()));
+  lags_.push_back(std::max(0.0, (MonotonicSeconds() - wall_start_) - snapshot.time()));
 }
 
 nlohmann::ordered_json SimServer::LagSummary() const {
@@ -96,7 +96,7 @@ void SimServer::Poll() {
   const double now = driver_.Now();
   // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
   if (wall_start_ < 0) {
-    wall_start_ = WallNow() - now;
+    wall_start_ = MonotonicSeconds() - now;
     // The time service's port: the robot protocol's number when UDP has it free.
     time_service_ = std::make_unique<TimeService>(settings_.bind, lines_->port(), wall_start_);
   }

@@ -92,9 +92,7 @@ void Driver::Log(NodeId node, const std::string& text) { parts_.Log(node, text);
 SpawnPlan Driver::PlanSpawn(const SpawnRequest& request) const { return sim::PlanSpawn(parts_, request); }
 
 NodeId Driver::Spawn(const SpawnPlan& plan, const std::string& why) {
-  const NodeId id = parts_.Spawn(*plan.node, plan.usarsim_class, why);
-  owners_.resize(NodeCount());
-  return id;
+  return parts_.Spawn(*plan.node, plan.usarsim_class, why);
 }
 
 }  // namespace sanet::sim

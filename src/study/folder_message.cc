@@ -11,11 +11,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadWhole(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 // The header's length leads, as 8 decimal digits, so that the files need no escaping.
 constexpr std::size_t kLengthDigits = 8;
 
@@ -27,7 +22,7 @@ std::string PackFolder(const nlohmann::json& header, const fs::path& folder, con
   if (fs::exists(folder))
     for (const auto& entry : fs::recursive_directory_iterator(folder)) {
       if (!entry.is_regular_file()) continue;
-      const std::string content = ReadWhole(entry.path());
+      const std::string content = ReadWholeFile(entry.path());
       index.push_back({{"path", fs::relative(entry.path(), folder).string()}, {"size", content.size()}});
       files += content;
     }
@@ -45,6 +40,11 @@ UnpackedMessage ReadFolderMessage(const std::string& message) {
     throw std::runtime_error("a results message is shorter than its index");
   return {head["header"], head["index"], message.substr(kLengthDigits + length, files_size),
           message.substr(kLengthDigits + length + files_size)};
+}
+
+std::string ReadWholeFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 fs::path IncomingFolder(const fs::path& folder) { return folder.string() + ".incoming"; }

@@ -23,6 +23,9 @@ UnpackedMessage ReadFolderMessage(const std::string& message);
 // Writes the files as `folder`, whole: beside it first (folder.incoming), then in its place.
 void WriteFolder(const UnpackedMessage& message, const std::filesystem::path& folder);
 
+// A file's bytes ("" for a file that is not there).
+std::string ReadWholeFile(const std::filesystem::path& path);
+
 // Where WriteFolder puts a folder until it is complete.
 std::filesystem::path IncomingFolder(const std::filesystem::path& folder);
 

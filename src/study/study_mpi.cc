@@ -50,8 +50,9 @@ double SteadySeconds() {
 class MpiExecutor : public Executor {
  public:
   explicit MpiExecutor(int jobs) : local_(jobs, 0), free_(MpiSession::Get().size(), 0) {}
-  ~MpiExecutor() override {
-    for (int r = 1; r < ranks(); ++r) link_.Send(r, stopping_ ? kStopNow : kFinish, "");
+  ~MpiExecutor() override {  // a stopped study told the ranks in StopAll
+    if (!stopping_)
+      for (int r = 1; r < ranks(); ++r) link_.Send(r, kFinish, "");
   }
   int Free() const override {
     int free = local_.Free();
@@ -137,15 +138,10 @@ RunJob LocalCopy(const nlohmann::json& j, const fs::path& scratch) {
   return job;
 }
 
-std::string ReadWhole(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 // A run's end, its folder and its output, to rank 0; a folder too large for one MPI message
 // is reported as the run's failure rather than lost in silence.
 void SendBack(MpiLink& link, JobEnd end, const fs::path& dir) {
-  const std::string log = ReadWhole(dir / "output.txt");
+  const std::string log = ReadWholeFile(dir / "output.txt");
   try {
     link.Send(0, kEnded, PackFolder(EndJson(end), dir / "results", log));
   } catch (const std::length_error& e) {
@@ -211,9 +207,8 @@ int ServeAsMpiWorker(int jobs) {
       PollPause();
     }
   }
-  link.Flush(10);
   fs::remove_all(scratch);
-  return g_worker_stop ? 130 : 0;
+  return g_worker_stop ? 130 : 0;  // the link flushes what it still sends as it goes
 }
 
 std::unique_ptr<Executor> MakeExecutor(int jobs) {

@@ -6,18 +6,16 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
 #include "wire/sockets.h"
 #include "wire/tcp_window.h"
+#include "wire/time_service.h"
 
 namespace sanet::hil {
 namespace {
-
-double WallNow() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // A client whose advertised window is this close to the widest it has advertised has read what
 // reached it, give or take the last lines (a laser scan line is about 1.5 KB).
@@ -76,10 +74,10 @@ LineServer::~LineServer() {
 
 void LineServer::Read() {
   Accept();
-  const double deadline = WallNow() + settings_.poll_budget;
+  const double deadline = MonotonicSeconds() + settings_.poll_budget;
   std::size_t idle = 0;  // connections in a row that had nothing more
   for (std::size_t k = 0; !connections_.empty() && idle < connections_.size(); ++k) {
-    if (k > 0 && WallNow() > deadline) break;
+    if (k > 0 && MonotonicSeconds() > deadline) break;
     auto it = connections_.lower_bound(next_turn_);
     if (it == connections_.end()) it = connections_.begin();
     next_turn_ = it->first + 1;
@@ -89,7 +87,7 @@ void LineServer::Read() {
 }
 
 void LineServer::Write() {
-  const double now = WallNow();
+  const double now = MonotonicSeconds();
   for (auto& [id, c] : connections_) {
     if (c.fd >= 0) Flush(id, c);
     if (c.fd >= 0) CheckReading(id, c, now);
@@ -133,7 +131,7 @@ void LineServer::Accept() {
     // A small kernel buffer: what a client leaves unread piles up where the server can see it.
     ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
     const ConnectionId id = next_id_++;
-    connections_.emplace(id, Connection(fd, settings_.max_line, WallNow()));
+    connections_.emplace(id, Connection(fd, settings_.max_line, MonotonicSeconds()));
     if (events_.connected) events_.connected(id);
   }
 }
@@ -156,13 +154,13 @@ void LineServer::Linger(int fd) {
     ::close(fd);
     return;
   }
-  closing_.push_back({fd, WallNow() + kClosingLinger});
+  closing_.push_back({fd, MonotonicSeconds() + kClosingLinger});
 }
 
 // What the client still sends is read and thrown away, one turn's bytes per poll at most: one that
 // keeps sending is closed at its deadline all the same.
 void LineServer::CloseLingering() {
-  const double now = WallNow();
+  const double now = MonotonicSeconds();
   read_buffer_.resize(settings_.bytes_per_turn);
   for (Closing& r : closing_) {
     const ssize_t n = ::recv(r.fd, read_buffer_.data(), read_buffer_.size(), 0);
@@ -196,7 +194,7 @@ bool LineServer::TakeLines(ConnectionId id, Connection& c) {
     events_.line(id, *line);
     if (c.fd < 0) return false;
   }
-  if (taken > 0) c.last_heard = WallNow();  // once a turn, not for every line
+  if (taken > 0) c.last_heard = MonotonicSeconds();  // once a turn, not for every line
   if (too_long) {
     if (events_.line_too_long) Send(id, events_.line_too_long(settings_.max_line));
     Drop(id, "line too long");

@@ -1,16 +1,7 @@
 #include "wss/wss_server.h"
 
-#include <fcntl.h>
-#include <netinet/in.h>
-#include <netinet/tcp.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
-
-#include "wire/sockets.h"
+#include <cctype>
 
 namespace sanet::hil {
 namespace {

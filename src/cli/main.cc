@@ -228,6 +228,7 @@ hil::ServerSettings ServerSettingsFor(const ServeArgs& a, const scenario::Scenar
   settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
   settings.scenario_yaml = scenario::EffectiveScenarioYaml(sc);
   settings.scenario_fingerprint = fingerprint;
+  settings.spawn = sc.spawn;
   settings.announce = !a.quiet;
   try {
     hil::RaiseDescriptorLimit(settings.max_clients + WssMaxClients(a, sc.run));
@@ -262,12 +263,11 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   // Agents with their own copy of the file compare this; how long the server runs is its own affair.
   const std::string fingerprint = scenario::ScenarioFingerprint(sc);
   if (a.duration) sc.run.duration = *a.duration;
-  sc.run.robots_remote = true;
   const std::string results = a.output.empty() ? sc.output_folder : a.output;
   ClaimFolder(results, a.force);
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
   const std::string scheduling = hil::UseRealTimePriority();
-  sim::World world(sc.run, registry);
+  sim::World world(sc.run, registry, sim::RobotDrivers::kFrontEnds);
   const std::unique_ptr<hil::SimServer> listening = StartServer(world, ServerSettingsFor(a, sc, fingerprint));
   hil::SimServer& server = *listening;
   JoinTaps(world, a.taps);
@@ -324,8 +324,8 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
                     });
   if (!a.exec_robot.empty() && !exec)
     throw CLI::ValidationError("--exec", a.exec_robot + " is not a robot with a controller (only those run as agents)");
-  const int udp_base = a.udp_base.value_or(sc.run.loop.udp_port);
-  if (sc.run.loop.network == sim::LoopNetwork::kSimulated && sc.run.network &&
+  const int udp_base = a.udp_base.value_or(sc.loop.udp_port);
+  if (sc.loop.network == sections::LoopNetwork::kSimulated && sc.run.network &&
       (udp_base == sc.run.network->port || udp_base == net::kAodvPort || udp_base == net::kOlsrPort ||
        udp_base == net::kDsdvPort))
     throw CLI::ValidationError(
@@ -336,6 +336,7 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
   settings.output = a.output.empty() ? sc.output_folder : a.output;
   settings.force = a.force;
   ClaimFolder(settings.output, a.force);
+  settings.loop = sc.loop;
   settings.udp_base = udp_base;
   settings.duration = a.duration;
   settings.exec_robot = a.exec_robot;

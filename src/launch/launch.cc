@@ -53,7 +53,7 @@ std::optional<NodeId> ExecRobot(const sim::RunSpec& spec, const LaunchSettings& 
                            ")");
 }
 
-bool SimulatedRadio(const sim::RunSpec& spec) { return spec.loop.network == sim::LoopNetwork::kSimulated; }
+bool SimulatedRadio(const sections::LoopSpec& loop) { return loop.network == sections::LoopNetwork::kSimulated; }
 
 // The simulated radio needs namespaces and taps: without them the run is refused, never moved to
 // other links.
@@ -67,15 +67,15 @@ void RequireSimulatedRadio() {
 }
 
 // Real links between namespaces where the machine allows it; loopback (null) otherwise.
-std::unique_ptr<NetworkNamespaces> MakeNamespaces(const sim::RunSpec& spec, const std::vector<NodeId>& robots) {
-  if (SimulatedRadio(spec)) {
+std::unique_ptr<NetworkNamespaces> MakeNamespaces(const sections::LoopSpec& loop, const std::vector<NodeId>& robots) {
+  if (SimulatedRadio(loop)) {
     RequireSimulatedRadio();
-    auto namespaces = std::make_unique<NetworkNamespaces>(robots, sim::LinkShaping{}, false);
+    auto namespaces = std::make_unique<NetworkNamespaces>(robots, sections::LinkShaping{}, false);
     std::printf("sanet: each agent in its own network namespace; their traffic crosses the simulated radio (%s)\n",
                 kRadioInterface);
     return namespaces;
   }
-  if (!spec.loop.namespaces) return nullptr;
+  if (!loop.namespaces) return nullptr;
   std::string why;
   if (!NetworkNamespaces::Permitted(&why)) {
     std::printf(
@@ -84,7 +84,7 @@ std::unique_ptr<NetworkNamespaces> MakeNamespaces(const sim::RunSpec& spec, cons
         why.c_str());
     return nullptr;
   }
-  const sim::LinkShaping& s = spec.loop.shaping;
+  const sections::LinkShaping& s = loop.shaping;
   const bool wants_shaping = s.delay > 0 || s.jitter > 0 || s.loss > 0 || s.rate > 0;
   std::string no_shaping;
   const bool shape = wants_shaping && NetworkNamespaces::ShapingPermitted(&no_shaping);
@@ -190,16 +190,16 @@ int WaitForServer(pid_t server) {
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
   const std::vector<NodeId> robots = RobotsWithControllers(spec);
   const std::optional<NodeId> exec_robot = ExecRobot(spec, settings, robots);
-  const std::unique_ptr<NetworkNamespaces> namespaces = MakeNamespaces(spec, robots);
+  const std::unique_ptr<NetworkNamespaces> namespaces = MakeNamespaces(settings.loop, robots);
   const std::string bind = namespaces ? NetworkNamespaces::ServerAddress() : "127.0.0.1";
   const std::string self = std::filesystem::read_symlink("/proc/self/exe");
   std::signal(SIGINT, [](int) { g_interrupted = 1; });
   std::signal(SIGTERM, [](int) { g_interrupted = 1; });
   std::vector<std::string> taps;
-  if (SimulatedRadio(spec))
+  if (SimulatedRadio(settings.loop))
     for (NodeId id : robots) taps.push_back(spec.nodes[id].name + "=" + namespaces->Namespace(id));
   const auto [server, address] = StartServer(self, settings, bind, taps);
-  const std::string subnet = SimulatedRadio(spec) ? kRadioSubnet : NetworkNamespaces::Subnet();
+  const std::string subnet = SimulatedRadio(settings.loop) ? kRadioSubnet : NetworkNamespaces::Subnet();
   std::vector<pid_t> children;
   for (NodeId id : robots) {
     const std::string& name = spec.nodes[id].name;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sections/loop_section.h"
 #include "sim/run_spec.h"
 
 namespace sanet::hil {
@@ -16,6 +17,7 @@ struct LaunchSettings {
   std::vector<std::string> sets;  // --set, given to the server with the file
   std::string output;             // the results folder
   bool force = false;             // the server writes beside files no sanet run wrote
+  sections::LoopSpec loop;        // the scenario's loop section
   int udp_base = 47000;
   std::optional<double> duration;  // overrides the scenario's
   // A program to run beside the agents, in `exec_robot`'s network namespace when there is one

@@ -41,7 +41,7 @@ bool NetworkNamespaces::ShapingPermitted(std::string* why) {
   return ok;
 }
 
-NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sim::LinkShaping& shaping,
+NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sections::LinkShaping& shaping,
                                      bool shape)
     : tag_("sa" + std::to_string(::getpid() % 100000)), nodes_(nodes), shape_(shape) {
   try {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/run_spec.h"
+#include "sections/loop_section.h"
 
 namespace sanet::hil {
 
@@ -19,7 +19,7 @@ class NetworkNamespaces {
 
   // One namespace per node id in `nodes` (ids < 253); throws std::runtime_error naming the
   // command that failed (everything made so far is removed).
-  NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sim::LinkShaping& shaping, bool shape);
+  NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sections::LinkShaping& shaping, bool shape);
   ~NetworkNamespaces();
 
   std::string Namespace(std::uint32_t node) const;

@@ -71,7 +71,7 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   } else {
     clock_sync_ = std::make_unique<ClockSync>(link_->host(), settings_.time_port, settings_.clock_skew);
   }
-  for (const sim::PeerLink& p : spec_.loop.peers)
+  for (const sections::PeerLink& p : settings_.peers)
     if (const auto node = Lookup(p.robot); node && !p.address.empty())
       peers_[*node] = Ipv4Endpoint(p.address, PortOf(*node));
   OpenPeerSocket();
@@ -91,9 +91,9 @@ RemoteNode::~RemoteNode() {
 // The robot's peer socket: on the address and interface its peer link gives (the command line
 // over the scenario's loop.peers), else on the one-machine rule's address.
 void RemoteNode::OpenPeerSocket() {
-  const auto link = std::find_if(spec_.loop.peers.begin(), spec_.loop.peers.end(),
-                                 [&](const sim::PeerLink& p) { return p.robot == Name(); });
-  const bool linked = link != spec_.loop.peers.end();
+  const auto link = std::find_if(settings_.peers.begin(), settings_.peers.end(),
+                                 [&](const sections::PeerLink& p) { return p.robot == Name(); });
+  const bool linked = link != settings_.peers.end();
   const std::string interface = !settings_.peer_interface.empty() ? settings_.peer_interface
                                 : linked                          ? link->interface
                                                                   : "";

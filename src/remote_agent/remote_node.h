@@ -19,6 +19,7 @@
 #include "remote_agent/clock_sync.h"
 #include "remote_agent/server_link.h"
 #include "sanet/node.h"
+#include "sections/loop_section.h"
 #include "sim/run_spec.h"
 #include "wire/agent_datagram.h"
 #include "wire/protocol.h"
@@ -32,10 +33,11 @@ struct AgentSettings {
   // This robot's link to the other agents, over the scenario's loop.peers: the address its peer
   // socket takes, and the interface it is bound to (robot-to-robot datagrams leave through it only).
   std::string peer_address, peer_interface;
-  bool shared_clock = false;    // the server runs on this machine: take its clock origin
-  std::uint16_t time_port = 0;  // otherwise: the server's time service, for the clock estimate
-  double clock_skew = 0;        // tests: added to this computer's clock, which the estimate must find
-  bool quiet = false;           // no progress lines on stdout
+  std::vector<sections::PeerLink> peers;  // the scenario's loop.peers: where each robot's agent listens
+  bool shared_clock = false;              // the server runs on this machine: take its clock origin
+  std::uint16_t time_port = 0;            // otherwise: the server's time service, for the clock estimate
+  double clock_skew = 0;                  // tests: added to this computer's clock, which the estimate must find
+  bool quiet = false;                     // no progress lines on stdout
 };
 
 class RemoteNode : public Node {

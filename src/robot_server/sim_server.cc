@@ -15,7 +15,7 @@
 
 #include "core/json_text.h"
 #include "core/statistics.h"
-#include "sim/spawning.h"
+#include "robot_server/spawn_policy.h"
 #include "wire/agent_datagram.h"
 #include "wire/message_lines.h"
 #include "wire/sockets.h"
@@ -199,7 +199,7 @@ void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
   if (const auto owner = driver_.OwnerOf(id); owner && *owner != Owner(c))
     return Error(c, "INIT refused: robot '" + name + "' is already driven by another client");
   const std::string spawned_as = driver_.SpawnedAs(id);
-  if (usarsim_class && !spawned_as.empty() && !sim::SameClass(*usarsim_class, spawned_as))
+  if (usarsim_class && !spawned_as.empty() && !sections::SameClass(*usarsim_class, spawned_as))
     return Error(c, "INIT refused: robot '" + name + "' is a " + spawned_as + ", not a " + *usarsim_class);
   if (const auto refused = driver_.Claim(id, Owner(c))) return Error(c, "INIT refused: " + *refused);
   ever_claimed_.resize(driver_.NodeCount());
@@ -224,10 +224,11 @@ void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::st
   const auto rotation = m.Get("Rotation") ? m.Numbers("Rotation") : std::vector<double>{0, 0, 0};
   if (!rotation || rotation->size() != 3)
     return Error(c, "INIT refused: {Rotation " + *m.Get("Rotation") + "}: expected three numbers r,p,y (rad)");
-  const sim::SpawnRequest request{usarsim_class, name, {(*location)[0], -(*location)[1], -(*rotation)[2]}};
-  const sim::SpawnPlan plan = driver_.PlanSpawn(request);
+  const SpawnRequest request{usarsim_class, name, {(*location)[0], -(*location)[1], -(*rotation)[2]}};
+  const SpawnPlan plan = PlanSpawn(driver_, settings_.spawn, request);
   if (!plan.node) return Error(c, "INIT refused: " + plan.refusal);
-  const NodeId id = driver_.Spawn(plan, "spawned as " + plan.usarsim_class + " by client " + c.peer);
+  const NodeId id =
+      driver_.Spawn(*plan.node, plan.usarsim_class, "spawned as " + plan.usarsim_class + " by client " + c.peer);
   Claim(c, id, nullptr);
 }
 
@@ -493,7 +494,8 @@ SimServer::Client* SimServer::ClientOf(NodeId robot) {
 // hear each other over their own UDP sockets, so the server passes on only what comes from
 // nodes that live here.
 sim::InboxResult SimServer::Forward(NodeId to, const Message& m) {
-  if (driver_.spec().robots_remote && sim::RunsAsAgent(driver_.Spec(m.from))) return sim::InboxResult::kIgnored;
+  if (driver_.drivers() == sim::RobotDrivers::kFrontEnds && sim::RunsAsAgent(driver_.Spec(m.from)))
+    return sim::InboxResult::kIgnored;
   Client* c = ClientOf(to);
   if (c) Send(*c, MsgLine(m, driver_.NameOf(m.from)));
   return c && c->open ? sim::InboxResult::kDelivered : sim::InboxResult::kLost;

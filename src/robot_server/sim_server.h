@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "sections/spawn_section.h"
 #include "sim/driver.h"
 #include "trace/results_folder.h"
 #include "wire/agent_datagram.h"
@@ -43,6 +44,8 @@ struct ServerSettings {
   double poll_budget = 0.0015;         // s of line handling per poll; the rest waits for the next poll
   // What agents fetch and compare (sanet extensions): the effective scenario and its fingerprint.
   std::string scenario_yaml, scenario_fingerprint;
+  // The scenario's spawn section: robots clients may add with INIT (none without one).
+  std::optional<sections::SpawnSpec> spawn;
   bool announce = false;  // say on stdout which client drives which robot, and who is refused
 };
 
@@ -53,7 +56,7 @@ std::string WithoutBraces(const std::string& text);
 // The default connection cap: twice the robots, and never fewer than 64.
 std::size_t DefaultMaxClients(const sim::RunSpec& spec);
 
-class SimServer : public sim::StepObserver {
+class SimServer : public sim::RunObserver {
  public:
   SimServer(sim::Driver& driver, ServerSettings settings);  // listens; throws std::runtime_error
   ~SimServer() override;

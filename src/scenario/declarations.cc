@@ -322,8 +322,8 @@ const Fields<sim::RunSpec>& MessagesFields() {
   return fields;
 }
 
-const Fields<sim::LinkShaping>& NetemFields() {
-  using sim::LinkShaping;
+const Fields<sections::LinkShaping>& NetemFields() {
+  using sections::LinkShaping;
   static const Fields<LinkShaping> fields = [] {
     Fields<LinkShaping> f;
     f.Number("delay", Member(&LinkShaping::delay), "s", 0, 60, "added to each agent's outgoing packets");
@@ -336,21 +336,22 @@ const Fields<sim::LinkShaping>& NetemFields() {
 }
 
 // A text field of a peer link (optional unless the declaration says so).
-void PeerText(Fields<sim::PeerLink>& f, const char* key, std::string sim::PeerLink::*member, const char* range,
-              const char* meaning) {
+void PeerText(Fields<sections::PeerLink>& f, const char* key, std::string sections::PeerLink::*member,
+              const char* range, const char* meaning) {
   f.Custom(
-      {key, "text", "", "none", range, meaning}, [member](const Field& v, sim::PeerLink& p) { p.*member = v.Text(); },
-      [member](const sim::PeerLink& p) { return (p.*member).empty() ? YAML::Node() : YAML::Node(p.*member); });
+      {key, "text", "", "none", range, meaning},
+      [member](const Field& v, sections::PeerLink& p) { p.*member = v.Text(); },
+      [member](const sections::PeerLink& p) { return (p.*member).empty() ? YAML::Node() : YAML::Node(p.*member); });
 }
 
-const Fields<sim::PeerLink>& PeerFields() {
-  static const Fields<sim::PeerLink> fields = [] {
-    Fields<sim::PeerLink> f;
-    PeerText(f, "robot", &sim::PeerLink::robot, "a robot with a controller", "whose agent this is");
+const Fields<sections::PeerLink>& PeerFields() {
+  static const Fields<sections::PeerLink> fields = [] {
+    Fields<sections::PeerLink> f;
+    PeerText(f, "robot", &sections::PeerLink::robot, "a robot with a controller", "whose agent this is");
     f.Required();
-    PeerText(f, "address", &sim::PeerLink::address, "IPv4",
+    PeerText(f, "address", &sections::PeerLink::address, "IPv4",
              "where its agent listens for the other agents (port: `udp_port` + the node's index)");
-    PeerText(f, "interface", &sim::PeerLink::interface, "",
+    PeerText(f, "interface", &sections::PeerLink::interface, "",
              "the network interface its agent binds its peer socket to (e.g. `wlan0`), taking its address "
              "unless `address` is given");
     return f;
@@ -358,13 +359,13 @@ const Fields<sim::PeerLink>& PeerFields() {
   return fields;
 }
 
-const Fields<sim::LoopSpec>& LoopFields() {
-  using sim::LoopSpec;
+const Fields<sections::LoopSpec>& LoopFields() {
+  using sections::LoopSpec;
   static const Fields<LoopSpec> fields = [] {
     Fields<LoopSpec> f;
-    f.Choice<sim::LoopNetwork>(
+    f.Choice<sections::LoopNetwork>(
         "network", Member(&LoopSpec::network),
-        {{"host", sim::LoopNetwork::kHost}, {"simulated", sim::LoopNetwork::kSimulated}},
+        {{"host", sections::LoopNetwork::kHost}, {"simulated", sections::LoopNetwork::kSimulated}},
         "what carries the agents' traffic to each other: the host's links, or the scenario's simulated radio "
         "(ns-3; each agent in its own namespace with an interface `radio0`; needs root)");
     f.Flag("namespaces", Member(&LoopSpec::namespaces),
@@ -372,13 +373,13 @@ const Fields<sim::LoopSpec>& LoopFields() {
     f.Custom(
         {"netem", "mapping", "", "none", "see [netem](#netem)", "shaping of each agent's link; needs `namespaces`"},
         [](const Field& v, LoopSpec& s) {
-          if (s.network == sim::LoopNetwork::kSimulated)
+          if (s.network == sections::LoopNetwork::kSimulated)
             v.Fail("shapes the host's links; with network: simulated the simulated radio shapes them");
           if (!s.namespaces) v.Fail("shapes the links between namespaces: set loop.namespaces: true");
           NetemFields().Read(v, s.shaping);
         },
         [](const LoopSpec& s) {
-          const bool shaped = s.namespaces && s.network != sim::LoopNetwork::kSimulated;
+          const bool shaped = s.namespaces && s.network != sections::LoopNetwork::kSimulated;
           return shaped ? NetemFields().Print(s.shaping) : YAML::Node();
         });
     f.Whole<std::uint16_t>("udp_port", Member(&LoopSpec::udp_port), "", 1024, 60000,
@@ -391,7 +392,7 @@ const Fields<sim::LoopSpec>& LoopFields() {
         },
         [](const LoopSpec& s) {
           YAML::Node items(YAML::NodeType::Sequence);
-          for (const sim::PeerLink& p : s.peers) items.push_back(PeerFields().Print(p));
+          for (const sections::PeerLink& p : s.peers) items.push_back(PeerFields().Print(p));
           return s.peers.empty() ? YAML::Node() : items;
         });
     return f;
@@ -433,14 +434,14 @@ const Fields<sim::RunSpec>& EndFields() {
 
 namespace {
 
-void ReadRegion(const Field& v, sim::SpawnSpec& s) {
+void ReadRegion(const Field& v, sections::SpawnSpec& s) {
   v.ExpectKeys({"min", "max"});
   const Vec2 low = ReadPoint(v.Require("min")), high = ReadPoint(v.Require("max"));
   if (!(low.x < high.x && low.y < high.y)) v.Require("max").Fail("must be above and to the right of 'min'");
   s.region = {low, high};
 }
 
-YAML::Node PrintRegion(const sim::SpawnSpec& s) {
+YAML::Node PrintRegion(const sections::SpawnSpec& s) {
   YAML::Node region;
   region["min"] = Numbers({s.region.first.x, s.region.first.y});
   region["max"] = Numbers({s.region.second.x, s.region.second.y});
@@ -449,8 +450,8 @@ YAML::Node PrintRegion(const sim::SpawnSpec& s) {
 
 }  // namespace
 
-const Fields<sim::SpawnSpec>& SpawnFields() {
-  using sim::SpawnSpec;
+const Fields<sections::SpawnSpec>& SpawnFields() {
+  using sections::SpawnSpec;
   static const Fields<SpawnSpec> fields = [] {
     Fields<SpawnSpec> f;
     f.Whole<std::size_t>("max", Member(&SpawnSpec::max), "", 0, 65534, "robots clients may add over the whole run");
@@ -996,10 +997,10 @@ std::vector<SectionTable> SectionTables() {
       {"messages", MessagesFields().Describe(sim::RunSpec{})},
       {"events", EventFields().Describe(EventSettings{})},
       {"end", EndFields().Describe(sim::RunSpec{})},
-      {"loop", LoopFields().Describe(sim::LoopSpec{})},
-      {"loop.netem", NetemFields().Describe(sim::LinkShaping{})},
-      {"loop.peers", PeerFields().Describe(sim::PeerLink{})},
-      {"spawn", SpawnFields().Describe(sim::SpawnSpec{})},
+      {"loop", LoopFields().Describe(sections::LoopSpec{})},
+      {"loop.netem", NetemFields().Describe(sections::LinkShaping{})},
+      {"loop.peers", PeerFields().Describe(sections::PeerLink{})},
+      {"spawn", SpawnFields().Describe(sections::SpawnSpec{})},
       {"spawn.class", SpawnClassFields().Describe(Keys{})},
       {"outputs", OutputsFields().Describe(Scenario{})},
   };

@@ -20,11 +20,11 @@ const Fields<net::NetworkSpec>& NetworkFields();
 const Fields<net::NetworkSpec>& PropagationFields();
 const Fields<net::NetworkSpec>& ChannelFields();
 const Fields<sim::RunSpec>& MessagesFields();
-const Fields<sim::LoopSpec>& LoopFields();
-const Fields<sim::LinkShaping>& NetemFields();
+const Fields<sections::LoopSpec>& LoopFields();
+const Fields<sections::LinkShaping>& NetemFields();
 const Fields<sim::RunSpec>& EndFields();
 // `spawn:` (max, region; its classes are read by the loader, each as a SpawnClassFields item).
-const Fields<sim::SpawnSpec>& SpawnFields();
+const Fields<sections::SpawnSpec>& SpawnFields();
 const Fields<Scenario>& OutputsFields();
 // A model's `body` keys (with its drive limits for robots).
 const Fields<robots::ModelSpec>& BodyFields(robots::ModelKind kind);

@@ -37,10 +37,10 @@ YAML::Node Node(const sim::NodeSpec& n, bool has_network) {
   return out;
 }
 
-YAML::Node Spawn(const sim::SpawnSpec& spawn, bool has_network) {
+YAML::Node Spawn(const sections::SpawnSpec& spawn, bool has_network) {
   YAML::Node out = SpawnFields().Print(spawn);
   YAML::Node classes(YAML::NodeType::Sequence);
-  for (const sim::SpawnClass& c : spawn.classes) {
+  for (const sections::SpawnClass& c : spawn.classes) {
     YAML::Node item;
     item["class"] = c.usarsim_class;
     PutRobot(item, c.model, c.radio, has_network);
@@ -73,8 +73,8 @@ std::string EffectiveBody(const Scenario& sc) {
   root["messages"] = MessagesFields().Print(run);
   if (!run.events.empty()) root["events"] = Events(run);
   if (run.HasEndCondition()) root["end"] = EndFields().Print(run);
-  root["loop"] = LoopFields().Print(run.loop);
-  if (run.spawn) root["spawn"] = Spawn(*run.spawn, run.network.has_value());
+  root["loop"] = LoopFields().Print(sc.loop);
+  if (sc.spawn) root["spawn"] = Spawn(*sc.spawn, run.network.has_value());
   root["outputs"] = OutputsFields().Print(sc);
   YAML::Node nodes(YAML::NodeType::Sequence);
   for (const sim::NodeSpec& n : run.nodes) nodes.push_back(Node(n, run.network.has_value()));

@@ -9,7 +9,6 @@
 #include <map>
 
 #include "scenario/declarations.h"
-#include "sim/spawning.h"
 #include "sim/world.h"
 
 namespace sanet::scenario {
@@ -281,12 +280,13 @@ void ReadEvents(const Field& events, sim::RunSpec& run) {
 }
 
 // Each peer link names a robot that runs as an agent, once, with an address or an interface.
-void CheckPeers(const Field& loop, const sim::RunSpec& run) {
+void CheckPeers(const Field& loop, const Scenario& sc) {
+  const sim::RunSpec& run = sc.run;
   const auto items = loop.Get("peers");
   if (!items) return;
   std::vector<std::string> seen;
-  for (std::size_t i = 0; i < run.loop.peers.size(); ++i) {
-    const sim::PeerLink& p = run.loop.peers[i];
+  for (std::size_t i = 0; i < sc.loop.peers.size(); ++i) {
+    const sections::PeerLink& p = sc.loop.peers[i];
     const Field item = items->Items()[i];
     const auto node =
         std::find_if(run.nodes.begin(), run.nodes.end(), [&](const auto& n) { return n.name == p.robot; });
@@ -306,18 +306,19 @@ void CheckPeers(const Field& loop, const sim::RunSpec& run) {
   }
 }
 
-void ReadLoop(const Field& loop, sim::RunSpec& run) {
-  LoopFields().Read(loop, run.loop);
-  CheckPeers(loop, run);
-  if (run.loop.network != sim::LoopNetwork::kSimulated) return;
+void ReadLoop(const Field& loop, Scenario& sc) {
+  const sim::RunSpec& run = sc.run;
+  LoopFields().Read(loop, sc.loop);
+  CheckPeers(loop, sc);
+  if (sc.loop.network != sections::LoopNetwork::kSimulated) return;
   const Field network = loop.Require("network");
   if (!run.network) network.Fail("simulated needs the scenario's network section: the radio that carries the agents");
-  const std::uint16_t port = run.loop.udp_port;
+  const std::uint16_t port = sc.loop.udp_port;
   if (port == run.network->port || port == net::kAodvPort || port == net::kOlsrPort || port == net::kDsdvPort)
     (loop.Get("udp_port") ? *loop.Get("udp_port") : network)
         .Fail("the agents' UDP port " + std::to_string(port) +
               " is network.port, which the simulated network serves itself");
-  run.loop.namespaces = true;
+  sc.loop.namespaces = true;
 }
 
 void ReadEnd(const Field& end, sim::RunSpec& run) {
@@ -327,9 +328,9 @@ void ReadEnd(const Field& end, sim::RunSpec& run) {
 
 void ReadOutputs(const Field& outputs, Scenario& sc) { OutputsFields().Read(outputs, sc); }
 
-sim::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool has_network) {
+sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool has_network) {
   item.ExpectKeys(SpawnClassFields().Keys());
-  sim::SpawnClass c;
+  sections::SpawnClass c;
   c.usarsim_class = item.Require("class").Text();
   if (c.usarsim_class.empty()) item.Require("class").Fail("a class needs a name");
   const NodeTemplate t = ReadNodeTemplate(item, dir, has_network);
@@ -340,9 +341,10 @@ sim::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool has_
 }
 
 // After the nodes and the world: the default region is the field around them.
-void ReadSpawn(const Field& spawn, const fs::path& dir, sim::RunSpec& run) {
-  sim::SpawnSpec s;
-  s.region = sim::DefaultSpawnRegion(run);
+void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc) {
+  const sim::RunSpec& run = sc.run;
+  sections::SpawnSpec s;
+  s.region = sections::DefaultSpawnRegion(run);
   SpawnFields().Read(spawn, s);
   if (auto classes = spawn.Get("classes")) {
     std::map<std::string, int> lines;  // lower-case class -> line
@@ -355,9 +357,9 @@ void ReadSpawn(const Field& spawn, const fs::path& dir, sim::RunSpec& run) {
     }
     if (s.classes.empty()) classes->Fail("list at least one class, or leave 'classes' out for the default ones");
   } else {
-    s.classes = sim::DefaultSpawnClasses();
+    s.classes = sections::DefaultSpawnClasses();
   }
-  run.spawn = s;
+  sc.spawn = s;
 }
 
 // The whole scenario from its (overridden) tree.
@@ -371,12 +373,12 @@ void Read(const Field& root, Scenario& sc) {
   ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc);
   if (auto messages = root.Get("messages")) ReadMessages(*messages, run);
   if (auto events = root.Get("events")) ReadEvents(*events, run);
-  if (auto loop = root.Get("loop")) ReadLoop(*loop, run);
+  if (auto loop = root.Get("loop")) ReadLoop(*loop, sc);
   if (auto end = root.Get("end")) ReadEnd(*end, run);
   sc.output_folder = "results/" + run.name;
   if (auto outputs = root.Get("outputs")) ReadOutputs(*outputs, sc);
   run.trace = sc.trace.value_or(run.nodes.size() <= kMaxTracedNodes);
-  if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), run);
+  if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), sc);
   if (run.trajectory_interval < run.physics_step) {
     const auto outputs = root.Get("outputs");
     const auto interval = outputs ? outputs->Get("trajectory_interval") : std::nullopt;

@@ -8,6 +8,8 @@
 #include "agents/controller_registry.h"
 #include "scenario/overrides.h"
 #include "scenario/yaml_reader.h"
+#include "sections/loop_section.h"
+#include "sections/spawn_section.h"
 #include "sim/run_spec.h"
 
 namespace sanet::scenario {
@@ -15,6 +17,9 @@ namespace sanet::scenario {
 struct Scenario {
   std::string file;
   sim::RunSpec run;
+  // Sections for the front ends, which the simulation never sees.
+  sections::LoopSpec loop;                     // how `sanet launch` connects the agents
+  std::optional<sections::SpawnSpec> spawn;    // robots the server's clients may add with INIT
   std::string output_folder;                   // as given, or results/<name>
   std::vector<int> controller_lines;           // per node: line of its controller (0 if none)
   std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"

@@ -37,7 +37,8 @@ ns3::Ptr<ns3::Node> Ns3Node() {
 
 }  // namespace
 
-Assembly::Assembly(const RunSpec& spec, agents::Registry& registry) : spec_(spec) {
+Assembly::Assembly(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers)
+    : spec_(spec), run_nodes_(spec.nodes), drivers_(drivers) {
   if (g_assembly_exists) throw WorldError("only one World may exist at a time (ns-3 is process-wide)");
   if (spec.physics_step <= 0) throw WorldError("physics step must be positive");
   g_assembly_exists = true;
@@ -67,7 +68,7 @@ void Assembly::BuildBodies() {
   physics_ = std::make_unique<physics::PipelinedWorld>(physics::CreatePhysicsWorld(spec_.physics), spec_.threads == 2,
                                                        kStepsAhead);
   for (const Obstacle& o : spec_.obstacles) physics_->add_static_box(o.box);
-  for (const NodeSpec& n : spec_.nodes)
+  for (const NodeSpec& n : run_nodes_)
     models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose, spec_.seed, "node/" + n.name));
 }
 
@@ -82,12 +83,12 @@ void Assembly::BuildTransport() {
   if (spec_.network) {
     std::vector<std::string> names;
     std::vector<net::NodeRadio> radios;
-    for (const NodeSpec& n : spec_.nodes) names.push_back(n.name), radios.push_back(n.radio);
+    for (const NodeSpec& n : run_nodes_) names.push_back(n.name), radios.push_back(n.radio);
     auto wireless = std::make_unique<net::WirelessNetwork>(*spec_.network, nodes, names, radios);
     wireless_ = wireless.get();
     inner = std::move(wireless);
   } else {
-    auto local = std::make_unique<net::LocalTransport>(spec_.nodes.size(), spec_.message_latency);
+    auto local = std::make_unique<net::LocalTransport>(run_nodes_.size(), spec_.message_latency);
     local_ = local.get();
     inner = std::move(local);
   }
@@ -96,12 +97,12 @@ void Assembly::BuildTransport() {
 }
 
 bool Assembly::remote(NodeId id) const {
-  return spec_.robots_remote && spec_.nodes.at(id).model.kind != robots::ModelKind::kMote;
+  return drivers_ == RobotDrivers::kFrontEnds && run_nodes_.at(id).model.kind != robots::ModelKind::kMote;
 }
 
 void Assembly::BuildNodes(agents::Registry& registry) {
-  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
-    const NodeSpec& n = spec_.nodes[id];
+  for (NodeId id = 0; id < run_nodes_.size(); ++id) {
+    const NodeSpec& n = run_nodes_[id];
     if (!n.controller || remote(id)) {
       AddNode(id, nullptr);
       continue;
@@ -113,7 +114,7 @@ void Assembly::BuildNodes(agents::Registry& registry) {
 
 // The simulated node and the controller's host of node `id`, whose body exists.
 void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
-  const NodeSpec& n = spec_.nodes[id];
+  const NodeSpec& n = run_nodes_[id];
   nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this, *clock_,
                                                            RandomStream(spec_.seed, "node/" + n.name + "/controller")));
   const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
@@ -124,8 +125,7 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
 }
 
 NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why) {
-  const NodeId id = spec_.nodes.size();
-  spec_.nodes.push_back(node);
+  const NodeId id = run_nodes_.Add(node, spawned_as);
   models_.push_back(
       std::make_unique<robots::NodeModel>(*physics_, node.model, node.pose, spec_.seed, "node/" + node.name));
   ns3::Ptr<ns3::Node> ns3_node = Ns3Node();
@@ -133,8 +133,6 @@ NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, cons
   if (wireless_) wireless_->AddNode(ns3_node, node.name, node.radio);
   if (local_) local_->AddNode();
   AddNode(id, nullptr);
-  ++spawned_;
-  spawned_as_.push_back(spawned_as);
   if (events_) events_->Spawned(id, spawned_as);
   Log(id, why);
   return id;
@@ -184,10 +182,6 @@ void Assembly::SwitchOff(NodeId id) {
   Log(id, "switched off");
 }
 
-std::string Assembly::SpawnedAs(NodeId id) const {
-  return IsSpawned(id) && id < spec_.nodes.size() ? spawned_as_.at(id + spawned_ - spec_.nodes.size()) : "";
-}
-
 std::optional<Signal> Assembly::SignalBetween(NodeId from, NodeId to) const {
   if (!wireless_) return std::nullopt;
   return Signal{wireless_->ReceivedPower(from, to), wireless_->DetectionThreshold()};
@@ -198,11 +192,7 @@ void Assembly::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
   wireless_->JoinTap(id, fd, tap_mac);
 }
 
-std::optional<NodeId> Assembly::Lookup(const std::string& name) const {
-  for (NodeId id = 0; id < spec_.nodes.size(); ++id)
-    if (spec_.nodes[id].name == name) return id;
-  return std::nullopt;
-}
+std::optional<NodeId> Assembly::Lookup(const std::string& name) const { return run_nodes_.Find(name); }
 
 void Assembly::Log(NodeId node, const std::string& text) {
   if (events_) events_->Log(node, text);

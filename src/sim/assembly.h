@@ -18,6 +18,7 @@
 #include "sim/pose_pipeline.h"
 #include "sim/remote_inbox.h"
 #include "sim/run_events.h"
+#include "sim/run_nodes.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
 #include "sim/world_error.h"
@@ -32,12 +33,14 @@ namespace sanet::sim {
 
 class Assembly : public agents::NodeDirectory, public SnapshotSource {
  public:
-  Assembly(const RunSpec& spec, agents::Registry& registry);
+  Assembly(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers);
   ~Assembly() override;
   Assembly(const Assembly&) = delete;
   Assembly& operator=(const Assembly&) = delete;
 
+  // The run as loaded, and its nodes now (the scenario's, then those spawned).
   const RunSpec& spec() const { return spec_; }
+  const RunNodes& run_nodes() const { return run_nodes_; }
   std::size_t size() const { return nodes_.size(); }
   agents::SimulatedNode& node(NodeId id) { return *nodes_.at(id); }
   agents::ControllerHost& host(NodeId id) { return *hosts_.at(id); }
@@ -45,8 +48,9 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // The bodies' world; with `world.threads: 2` its steps run on a thread of their own.
   physics::PipelinedWorld& physics() { return *physics_; }
   MessageLedger& transport() { return *transport_; }
-  // True for a robot that a client of the server drives instead of its scenario controller.
+  // True for a robot that a front end drives instead of its scenario controller.
   bool remote(NodeId id) const;
+  RobotDrivers drivers() const { return drivers_; }
 
   // The radios read positions published at step boundaries, never the bodies themselves
   // (sim/pose_pipeline.h).
@@ -57,20 +61,17 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void SetEvents(RunEvents* events) { events_ = events; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
   void SwitchOff(NodeId id);
-  // Adds a robot to the running world (sim::PlanSpawn checked it): its body, its own ns-3 node
+  // Adds a robot to the running world (its front end checked where it stands): its body, its own ns-3 node
   // with the scenario's radio and routing, a simulated node and a host without a controller.
   // Every other node can see it from now on. Returns its id, the next one.
   NodeId Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why);
-  std::size_t spawned() const { return spawned_; }
+  std::size_t spawned() const { return run_nodes_.spawned(); }
   // Joins a real IP stack (an agent's network namespace) to node `id`'s radio through the tap
   // `fd`, whose interface has the MAC address `tap_mac` ("02:..."). Needs ns-3's network.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
   // How strongly `to` hears `from` now: from ns-3's channel at the bodies' positions. Empty
   // without ns-3's network.
   std::optional<Signal> SignalBetween(NodeId from, NodeId to) const;
-  bool IsSpawned(NodeId id) const { return id + spawned_ >= spec_.nodes.size(); }
-  // The class a client spawned the robot as; "" for the scenario's nodes.
-  std::string SpawnedAs(NodeId id) const;
   // A message that reached a node outside the run's own transport (between agents, over UDP),
   // recorded as delivered.
   void RecordDelivery(NodeId to, const Message& message) {
@@ -79,8 +80,8 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
 
   // NodeDirectory
   std::optional<NodeId> Lookup(const std::string& name) const override;
-  std::string NameOf(NodeId id) const override { return id < spec_.nodes.size() ? spec_.nodes[id].name : ""; }
-  std::size_t NodeCount() const override { return spec_.nodes.size(); }
+  std::string NameOf(NodeId id) const override { return run_nodes_.NameOf(id); }
+  std::size_t NodeCount() const override { return run_nodes_.size(); }
   Pose2D TruePose(NodeId node) const override { return models_.at(node)->body().pose(); }
   void Log(NodeId node, const std::string& text) override;
   void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) override;
@@ -101,15 +102,15 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   agents::ControllerHost::Hooks HostHooks(NodeId id);
   void FollowBody(NodeId id, net::BodyMobilityModel* mobility);  // its radio, from its body's pose now
 
-  RunSpec spec_;
+  const RunSpec spec_;
+  RunNodes run_nodes_;
+  const RobotDrivers drivers_;
   std::unique_ptr<physics::PipelinedWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
   std::unique_ptr<PosePipeline> poses_;
   std::unique_ptr<MessageLedger> transport_;
   net::WirelessNetwork* wireless_ = nullptr;  // the inner transport, when it is ns-3's network
   net::LocalTransport* local_ = nullptr;      // or when it is the local stand-in
-  std::size_t spawned_ = 0;
-  std::vector<std::string> spawned_as_;  // of the spawned robots, in id order
   std::unique_ptr<agents::HostClock> clock_;
   std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
   std::vector<std::unique_ptr<agents::ControllerHost>> hosts_;

@@ -38,9 +38,12 @@ double Driver::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 std::size_t Driver::NodeCount() const { return parts_.NodeCount(); }
 std::optional<NodeId> Driver::Lookup(const std::string& name) const { return parts_.Lookup(name); }
 std::string Driver::NameOf(NodeId id) const { return parts_.NameOf(id); }
-const NodeSpec& Driver::Spec(NodeId id) const { return parts_.spec().nodes.at(id); }
-bool Driver::IsSpawned(NodeId id) const { return parts_.IsSpawned(id); }
-std::string Driver::SpawnedAs(NodeId id) const { return parts_.SpawnedAs(id); }
+const NodeSpec& Driver::Spec(NodeId id) const { return parts_.run_nodes().at(id); }
+bool Driver::IsSpawned(NodeId id) const { return parts_.run_nodes().IsSpawned(id); }
+std::string Driver::SpawnedAs(NodeId id) const { return parts_.run_nodes().SpawnedAs(id); }
+RobotDrivers Driver::drivers() const { return parts_.drivers(); }
+std::size_t Driver::SpawnedCount() const { return parts_.run_nodes().spawned(); }
+Pose2D Driver::PoseOf(NodeId id) const { return parts_.TruePose(id); }
 
 std::optional<std::string> Driver::Claim(NodeId robot, const std::string& owner) {
   owners_.resize(NodeCount());
@@ -89,10 +92,8 @@ void Driver::SetRemoteInbox(RemoteInbox inbox) { parts_.SetRemoteInbox(std::move
 void Driver::RecordDelivery(NodeId to, const Message& message) { parts_.RecordDelivery(to, message); }
 void Driver::Log(NodeId node, const std::string& text) { parts_.Log(node, text); }
 
-SpawnPlan Driver::PlanSpawn(const SpawnRequest& request) const { return sim::PlanSpawn(parts_, request); }
-
-NodeId Driver::Spawn(const SpawnPlan& plan, const std::string& why) {
-  return parts_.Spawn(*plan.node, plan.usarsim_class, why);
+NodeId Driver::Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why) {
+  return parts_.Spawn(node, spawned_as, why);
 }
 
 }  // namespace sanet::sim

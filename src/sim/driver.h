@@ -14,9 +14,9 @@
 
 #include "sanet/node.h"
 #include "sim/remote_inbox.h"
+#include "sim/run_observer.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
-#include "sim/spawning.h"
 
 namespace sanet::sim {
 
@@ -39,7 +39,7 @@ class Driver {
   Driver(const Driver&) = delete;
   Driver& operator=(const Driver&) = delete;
 
-  // The run as loaded (spawned robots are in Spec(id), not here).
+  // The run as loaded, which never changes (spawned robots are in Spec(id), not here).
   const RunSpec& spec() const;
   double Now() const;  // s, simulated
   std::size_t NodeCount() const;
@@ -48,6 +48,11 @@ class Driver {
   const NodeSpec& Spec(NodeId id) const;  // the scenario's node, or the spawned robot's
   bool IsSpawned(NodeId id) const;
   std::string SpawnedAs(NodeId id) const;  // the class a client spawned it as; "" otherwise
+  std::size_t SpawnedCount() const;
+  // Whether the robots' scenario controllers run here or front ends drive them (World's choice).
+  RobotDrivers drivers() const;
+  // Where the body stands now (the truth, not a sensor read: it draws no noise).
+  Pose2D PoseOf(NodeId id) const;
 
   // Ownership. Claim returns nothing when granted (or already held by `owner`), or the refusal.
   std::optional<std::string> Claim(NodeId robot, const std::string& owner);
@@ -73,22 +78,23 @@ class Driver {
   // A line in the node's log (log.csv), from the front end.
   void Log(NodeId node, const std::string& text);
 
-  // Robots added to the running world (the scenario's spawn section decides).
-  SpawnPlan PlanSpawn(const SpawnRequest& request) const;
-  NodeId Spawn(const SpawnPlan& plan, const std::string& why);
+  // Adds a robot to the running world, as the class `spawned_as` that its front end names (the
+  // front end decided it may: where it stands, its name); `why` goes to its log. Returns its id.
+  NodeId Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why);
 
   // On the run's clock (add before the run starts): `action` at t = 0 and then every `period` s
-  // of simulated time (a front end's socket polling), and observers that see every step.
+  // of simulated time (a front end's socket polling), and observers of the run's typed event
+  // streams (sim/run_observer.h).
   void Every(double period, std::function<void()> action);
-  void AddObserver(StepObserver& observer) { observers_.push_back(&observer); }
-  const std::vector<StepObserver*>& observers() const { return observers_; }
+  void AddObserver(RunObserver& observer) { observers_.push_back(&observer); }
+  const std::vector<RunObserver*>& observers() const { return observers_; }
   // Ends the run now, as if its duration were over (results are written as usual).
   void Stop();
 
  private:
   class Repeater;
   Assembly& parts_;
-  std::vector<StepObserver*> observers_;
+  std::vector<RunObserver*> observers_;
   std::vector<std::unique_ptr<Repeater>> repeaters_;
   std::vector<std::string> owners_;  // per node; "" for none
   std::vector<SensorReadings> readings_;

@@ -28,15 +28,16 @@ bool Unmoved(const Pose2D& p, const Pose2D& last) {
 
 }  // namespace
 
-Outputs::Outputs(const RunSpec& spec, const std::string& dir, bool force)
+Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force)
     : spec_(spec),
+      nodes_(nodes),
       folder_(dir, force),
       trajectories_(folder_.Csv("trajectories.csv", "time,node,x,y,theta")),
       log_(folder_.Csv("log.csv", "time,node,text")),
       messages_(folder_.Csv("messages.csv", "time_sent,from,to,delivery,bytes,time_received,delay,hops")),
       transitions_(folder_.Csv("transitions.csv", "time,node,from,to,why")),
       metric_rows_(folder_.Csv("metrics.csv", "time,node,name,value")),
-      last_recorded_(spec.nodes.size()) {
+      last_recorded_(nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
   if (spec_.trace && folder_.writes()) StartTrace();
 }
@@ -51,8 +52,8 @@ void Outputs::StartTrace() {
   trace_->Info("world_size_m", Format("%.9g %.9g", spec_.world_size.x, spec_.world_size.y));
   trace_->Info("pose_interval_s", Format("%.9g", spec_.trajectory_interval));
   trace_->Info("network", spec_.network ? "ns-3" : "none");
-  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
-    const NodeSpec& n = spec_.nodes[id];
+  for (NodeId id = 0; id < nodes_.size(); ++id) {
+    const NodeSpec& n = nodes_[id];
     trace_->Node(id, n.name, robots::ModelName(n.model.kind), n.pose.x, n.pose.y, n.pose.theta);
   }
   for (const Obstacle& o : spec_.obstacles)
@@ -99,14 +100,13 @@ void Outputs::Delivered(NodeId to, const Message& m) {
 
 // A row without time_received, delay and hops: the message reached the node but not whoever
 // drives it.
-void Outputs::Lost(NodeId to, const Message& m, const std::string& why) {
+void Outputs::Lost(NodeId to, const Message& m) {
   ++messages_undelivered_;
   if (trace_)
     trace_->Message(m.time_sent, std::nullopt, m.from, to, DeliveryName(m.delivery),
                     static_cast<std::uint32_t>(m.payload.size()), std::nullopt);
   messages_.Row(Format("%.6f,%s,%s,%s,%zu,,,", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
                        DeliveryName(m.delivery), m.payload.size()));
-  Log(m.time_received, to, "message from " + Name(m.from) + " lost: " + why);
 }
 
 void Outputs::Ended(const std::string& by, double at) {
@@ -144,8 +144,8 @@ void Outputs::SampleMinDistance(double now, const PoseReader& world) {
 void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
   now = std::min(now, spec_.duration);
   if (min_distance_ && !final_row) SampleMinDistance(now, world);
-  last_recorded_.resize(spec_.nodes.size());  // robots spawned while the run goes
-  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
+  last_recorded_.resize(nodes_.size());  // robots spawned while the run goes
+  for (NodeId id = 0; id < nodes_.size(); ++id) {
     const Pose2D p = world.pose(id);
     auto& last = last_recorded_[id];
     // Nodes at rest add no rows (a mote appears at the start and the end unless something moves
@@ -157,7 +157,7 @@ void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
 
 void Outputs::Record(double now, NodeId id, const Pose2D& p) {
   last_recorded_[id] = Recorded{p, now};
-  if (spec_.figures && spec_.nodes[id].model.kind != robots::ModelKind::kMote) {
+  if (spec_.figures && nodes_[id].model.kind != robots::ModelKind::kMote) {
     trace::Track& track = tracks_[id];
     track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
   }
@@ -168,10 +168,10 @@ void Outputs::Record(double now, NodeId id, const Pose2D& p) {
 void Outputs::Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose) {
   spawned_as_[node] = spawned_as;
   if (trace_) {
-    trace_->Node(node, Name(node), robots::ModelName(spec_.nodes[node].model.kind), pose.x, pose.y, pose.theta);
+    trace_->Node(node, Name(node), robots::ModelName(nodes_[node].model.kind), pose.x, pose.y, pose.theta);
     trace_->Event(t, node, "spawn", spawned_as);
   }
-  last_recorded_.resize(spec_.nodes.size());
+  last_recorded_.resize(nodes_.size());
   Record(std::min(t, spec_.duration), node, pose);
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/fingerprint.h"
 #include "net/network_traces.h"
+#include "sim/run_nodes.h"
 #include "sim/run_spec.h"
 #include "trace/figures.h"
 #include "trace/results_folder.h"
@@ -67,7 +68,8 @@ struct Provenance {
 class Outputs {
  public:
   // Clears what an earlier run left in `dir` first (refusing foreign files unless `force`).
-  Outputs(const RunSpec& spec, const std::string& dir, bool force = false);
+  // `nodes` grows while the run goes (robots spawned by front ends).
+  Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force = false);
   void Begin(const Provenance& provenance);
   trace::ResultsFolder& folder() { return folder_; }
   // The run's trace, when the scenario asks for one and the results are written.
@@ -81,8 +83,8 @@ class Outputs {
   void Metric(double t, NodeId node, const std::string& name, double value);
   void Delivered(NodeId to, const Message& message);
   void DroppedByImpairment() { ++messages_lost_; }
-  // A message that reached a node's radio but not its controller (`why`, e.g. no client).
-  void Lost(NodeId to, const Message& message, const std::string& why);
+  // A message that reached a node's radio but not its controller (the stepper logs why).
+  void Lost(NodeId to, const Message& message);
   // A robot a client added at time `t`, standing at `pose`: its first trajectory row.
   void Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose);
   void Ended(const std::string& by, double at);
@@ -112,10 +114,11 @@ class Outputs {
   nlohmann::ordered_json Summary(const RunResult& result, const std::string& scenario_file,
                                  const std::vector<Pose2D>& final_poses) const;
   nlohmann::ordered_json MinDistanceSummary() const;
-  const std::string& Name(NodeId id) const { return spec_.nodes.at(id).name; }
+  const std::string& Name(NodeId id) const { return nodes_.at(id).name; }
   std::string Stamp(double t, NodeId node) const;
 
   const RunSpec& spec_;
+  const RunNodes& nodes_;
   trace::ResultsFolder folder_;
   std::string scenario_fingerprint_;  // with a provenance
   trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;

@@ -123,7 +123,7 @@ void Outputs::AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp
   fp.Add(packets.hash());
   fp.Add(routes.hash());
   if (network.packet_logs)
-    for (const NodeSpec& n : spec_.nodes) fp.Add(folder_.CsvHash("packets/" + n.name + ".csv"));
+    for (const NodeSpec& n : nodes_) fp.Add(folder_.CsvHash("packets/" + n.name + ".csv"));
 }
 
 void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>& network,
@@ -165,8 +165,8 @@ void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::op
   in.title = spec_.name;
   for (const Obstacle& o : spec_.obstacles)
     in.obstacles.push_back({o.kind, {o.box.center.x, o.box.center.y}, {o.box.size.x, o.box.size.y}, o.box.yaw});
-  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
-    const NodeSpec& n = spec_.nodes[id];
+  for (NodeId id = 0; id < nodes_.size(); ++id) {
+    const NodeSpec& n = nodes_[id];
     in.nodes.push_back({n.name, n.model.kind == robots::ModelKind::kMote, n.pose, final_poses.at(id)});
   }
   for (auto& [id, track] : tracks_) {
@@ -231,11 +231,11 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
                     {"recording", result.profile.recording},
                     {"physics_wait", result.profile.physics_wait}};
   nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
-  for (NodeId id = 0; id < spec_.nodes.size(); ++id) {
+  for (NodeId id = 0; id < nodes_.size(); ++id) {
     const Pose2D p = final_poses.at(id);
     nodes.push_back({{"name", Name(id)},
-                     {"model", robots::ModelName(spec_.nodes[id].model.kind)},
-                     {"controller", spec_.nodes[id].controller ? spec_.nodes[id].controller->name : ""},
+                     {"model", robots::ModelName(nodes_[id].model.kind)},
+                     {"controller", nodes_[id].controller ? nodes_[id].controller->name : ""},
                      {"final_pose", {p.x, p.y, p.theta}}});
     if (auto it = spawned_as_.find(id); it != spawned_as_.end()) nodes.back()["spawned_as"] = it->second;
   }

@@ -2,7 +2,8 @@
 
 namespace sanet::sim {
 
-void RouteWatch::Look(double t, Assembly& world, trace::RunTrace& trace) {
+std::vector<RouteChange> RouteWatch::Look(double t, Assembly& world) {
+  std::vector<RouteChange> changes;
   last_.resize(world.size());
   for (NodeId node = 0; node < world.size(); ++node) {
     Table now;
@@ -11,12 +12,14 @@ void RouteWatch::Look(double t, Assembly& world, trace::RunTrace& trace) {
     Table& before = last_[node];
     for (const auto& [destination, route] : now) {
       const auto it = before.find(destination);
-      if (it == before.end() || it->second != route) trace.Route(t, node, destination, route.first, route.second);
+      if (it == before.end() || it->second != route)
+        changes.push_back({t, node, destination, route.first, route.second});
     }
     for (const auto& [destination, route] : before)
-      if (!now.count(destination)) trace.Route(t, node, destination, std::nullopt, 0);
+      if (!now.count(destination)) changes.push_back({t, node, destination, std::nullopt, 0});
     before = std::move(now);
   }
+  return changes;
 }
 
 }  // namespace sanet::sim

@@ -1,4 +1,4 @@
-// Routing-table changes for the run's trace: each look compares every node's valid routes with
+// Routing-table changes for the run's trace and its observers: each look compares every node's valid routes with
 // those of the last look and records the routes that appeared, changed or went away. ns-3's
 // routing protocols offer no trace of their tables, so the stepper looks at every recording
 // sample (outputs.trajectory_interval).
@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "sim/assembly.h"
-#include "trace/run_trace.h"
+#include "sim/run_observer.h"
 
 namespace sanet::sim {
 
 class RouteWatch {
  public:
-  void Look(double t, Assembly& world, trace::RunTrace& trace);
+  std::vector<RouteChange> Look(double t, Assembly& world);
 
  private:
   using Table = std::map<NodeId, std::pair<NodeId, int>>;  // destination -> (next hop, hops)

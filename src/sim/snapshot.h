@@ -64,11 +64,4 @@ class WorldSnapshot {
   mutable std::optional<std::vector<std::string>> states_;
 };
 
-class StepObserver {
- public:
-  virtual ~StepObserver() = default;
-  // After every physics step (or, in a world without moving bodies, every recording interval).
-  virtual void AfterStep(const WorldSnapshot& snapshot) = 0;
-};
-
 }  // namespace sanet::sim

@@ -28,16 +28,37 @@ class StageTimer {
 
 }  // namespace
 
-Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers)
+Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<RunObserver*>& observers)
     : world_(world), outputs_(outputs), observers_(observers) {
   world_.SetEvents(this);
   world_.poses().SetCatchUp([this] { CatchUp(); });
   for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
   moving_.assign(world_.size(), 0);
   if (!observers_.empty()) world_.transport().Watch();
-  if (trace::RunTrace* trace = outputs_.trace())
-    world_.transport().ObserveFrames(
-        [trace](const net::FrameEvent& f) { trace->Frame(f.t, f.node, f.sent, f.peer, f.kind, f.bytes); });
+  for (RunObserver* o : observers_) {
+    frame_watchers_ += o->Wants().frames;
+    route_watchers_ += o->Wants().routes;
+  }
+  if (outputs_.trace() || frame_watchers_ > 0)
+    world_.transport().ObserveFrames([this](const net::FrameEvent& f) { SeeFrame(f); });
+}
+
+void Stepper::SeeFrame(const net::FrameEvent& f) {
+  if (trace::RunTrace* trace = outputs_.trace()) trace->Frame(f.t, f.node, f.sent, f.peer, f.kind, f.bytes);
+  if (frame_watchers_ > 0)
+    for (RunObserver* o : observers_)
+      if (o->Wants().frames) o->Frame(f);
+}
+
+void Stepper::LookAtRoutes() {
+  trace::RunTrace* trace = outputs_.trace();
+  if (!trace && route_watchers_ == 0) return;
+  for (const RouteChange& r : routes_.Look(Now(), world_)) {
+    if (trace) trace->Route(r.time, r.node, r.destination, r.next_hop, r.hops);
+    if (route_watchers_ > 0)
+      for (RunObserver* o : observers_)
+        if (o->Wants().routes) o->RouteChanged(r);
+  }
 }
 
 Stepper::~Stepper() {
@@ -226,7 +247,7 @@ void Stepper::CollectMoving() {
 void Stepper::Notify() {
   if (observers_.empty()) return;
   const WorldSnapshot snapshot(world_, Now(), physics_steps_);
-  for (StepObserver* o : observers_) o->AfterStep(snapshot);
+  for (RunObserver* o : observers_) o->AfterStep(snapshot);
 }
 
 void Stepper::Record() {
@@ -234,7 +255,7 @@ void Stepper::Record() {
   {
     StageTimer timer(profile_.recording);
     outputs_.Sample(Now(), false, Poses());
-    if (trace::RunTrace* trace = outputs_.trace()) routes_.Look(Now(), world_, *trace);
+    LookAtRoutes();
   }
   if (vehicles_.empty()) Notify();  // no physics steps: observers see the world at each sample
   ns3::Simulator::Schedule(Period(world_.spec().trajectory_interval), &Stepper::Record, this);
@@ -251,16 +272,19 @@ void Stepper::SwitchOff(NodeId node) {
 
 void Stepper::Log(NodeId node, const std::string& text) {
   outputs_.Log(Now(), node, text);
+  for (RunObserver* o : observers_) o->Log(Now(), node, text);
   CountTowardsEnd(world_.spec().end_when_logged, text, "'" + text + "' logged by " + world_.NameOf(node));
 }
 
 void Stepper::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
   outputs_.Transition(Now(), node, from, to, why);
+  for (RunObserver* o : observers_) o->Transition(Now(), node, from, to, why);
   CountTowardsEnd(world_.spec().end_when_transition, to, world_.NameOf(node) + " entered '" + to + "'");
 }
 
 void Stepper::Metric(NodeId node, const std::string& name, double value) {
   outputs_.Metric(Now(), node, name, value);
+  for (RunObserver* o : observers_) o->Metric(Now(), node, name, value);
   CountTowardsEnd(world_.spec().end_when_metric, name, world_.NameOf(node) + " reported '" + name + "'");
 }
 
@@ -275,7 +299,19 @@ void Stepper::CountTowardsEnd(const std::vector<std::string>& watched, const std
   ns3::Simulator::Stop(Period(world_.spec().end_grace));
 }
 
-void Stepper::Delivered(NodeId to, const Message& message) { outputs_.Delivered(to, message); }
+void Stepper::Delivered(NodeId to, const Message& message) {
+  outputs_.Delivered(to, message);
+  for (RunObserver* o : observers_) o->Delivered(to, message);
+}
+
+// The message's row, then a line in the addressee's log saying why.
+void Stepper::Lost(NodeId to, const Message& message, const std::string& why) {
+  outputs_.Lost(to, message);
+  for (RunObserver* o : observers_) o->Lost(to, message, why);
+  const std::string text = "message from " + world_.NameOf(message.from) + " lost: " + why;
+  outputs_.Log(message.time_received, to, text);
+  for (RunObserver* o : observers_) o->Log(message.time_received, to, text);
+}
 
 void Stepper::Failed(const std::string& why) {
   outputs_.Failed(why);

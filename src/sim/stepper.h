@@ -21,13 +21,14 @@
 #include "sim/outputs.h"
 #include "sim/route_watch.h"
 #include "sim/run_events.h"
+#include "sim/run_observer.h"
 #include "sim/snapshot.h"
 
 namespace sanet::sim {
 
 class Stepper : public RunEvents {
  public:
-  Stepper(Assembly& world, Outputs& outputs, const std::vector<StepObserver*>& observers);
+  Stepper(Assembly& world, Outputs& outputs, const std::vector<RunObserver*>& observers);
   ~Stepper() override;
 
   // A run in three parts: Begin schedules it (`progress`, if given, hears where the run is;
@@ -53,7 +54,7 @@ class Stepper : public RunEvents {
   void Metric(NodeId node, const std::string& name, double value) override;
   void Delivered(NodeId to, const Message& message) override;
   void DroppedByImpairment(NodeId, const Message&) override { outputs_.DroppedByImpairment(); }
-  void Lost(NodeId to, const Message& message, const std::string& why) override { outputs_.Lost(to, message, why); }
+  void Lost(NodeId to, const Message& message, const std::string& why) override;
   void Failed(const std::string& why) override;
   void Spawned(NodeId node, const std::string& spawned_as) override;
 
@@ -72,6 +73,8 @@ class Stepper : public RunEvents {
   void CatchUp();
   void Record();
   void Notify();
+  void SeeFrame(const net::FrameEvent& frame);
+  void LookAtRoutes();
   void CollectMoving();
   void TellProgress();
   void SwitchOff(NodeId node);
@@ -81,7 +84,7 @@ class Stepper : public RunEvents {
 
   Assembly& world_;
   Outputs& outputs_;
-  std::vector<StepObserver*> observers_;
+  std::vector<RunObserver*> observers_;
   std::vector<NodeId> vehicles_, motes_;
   std::map<std::int64_t, std::vector<NodeId>> control_rounds_;  // period (ns) -> nodes, in node order
   std::deque<StepOutcome> steps_;                               // started, and not yet published to the radios
@@ -90,6 +93,7 @@ class Stepper : public RunEvents {
   std::vector<NodeId> moved_;  // bodies awake before or after the step in flight (physics thread)
   std::vector<char> moving_;   // per node: listed in moved_
   RouteWatch routes_;
+  int frame_watchers_ = 0, route_watchers_ = 0;  // observers that want frames, route changes
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   std::uint64_t quiet_physics_steps_ = 0, events_at_last_step_ = 0;

@@ -12,7 +12,7 @@
 namespace sanet::sim {
 namespace {
 
-class FunctionObserver : public StepObserver {
+class FunctionObserver : public RunObserver {
  public:
   explicit FunctionObserver(std::function<void(const WorldSnapshot&)> f) : f_(std::move(f)) {}
   void AfterStep(const WorldSnapshot& snapshot) override { f_(snapshot); }
@@ -32,8 +32,8 @@ void World::Observe(std::function<void(const WorldSnapshot&)> observer) {
   AddObserver(*owned_observers_.back());
 }
 
-World::World(const RunSpec& spec, agents::Registry& registry)
-    : parts_(std::make_unique<Assembly>(spec, registry)), driver_(std::make_unique<Driver>(*parts_)) {}
+World::World(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers)
+    : parts_(std::make_unique<Assembly>(spec, registry, drivers)), driver_(std::make_unique<Driver>(*parts_)) {}
 World::~World() = default;
 
 const RunSpec& World::spec() const { return parts_->spec(); }
@@ -47,7 +47,7 @@ void World::Stop() { driver_->Stop(); }
 struct World::Running {
   Running(World& world, const RunOptions& run_options)
       : options(run_options),
-        outputs(world.spec(), options.output_dir, options.force),
+        outputs(world.spec(), world.parts_->run_nodes(), options.output_dir, options.force),
         stepper(*world.parts_, outputs, world.driver_->observers()) {}
   RunOptions options;
   Outputs outputs;

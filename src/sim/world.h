@@ -44,7 +44,8 @@ class Assembly;
 
 class World {
  public:
-  World(const RunSpec& spec, agents::Registry& registry);
+  // `drivers`: kFrontEnds for a world whose robots a front end drives (`sanet serve`).
+  World(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers = RobotDrivers::kScenarioControllers);
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;
@@ -76,7 +77,7 @@ class World {
   std::string NameOf(NodeId id) const;
 
   // Observers see a snapshot after every step; add them before Run. The world does not own them.
-  void AddObserver(StepObserver& observer) { driver_->AddObserver(observer); }
+  void AddObserver(RunObserver& observer) { driver_->AddObserver(observer); }
   // The same for a function (tests).
   void Observe(std::function<void(const WorldSnapshot&)> observer);
 
@@ -89,7 +90,7 @@ class World {
  private:
   std::unique_ptr<Assembly> parts_;
   std::unique_ptr<Driver> driver_;
-  std::vector<std::unique_ptr<StepObserver>> owned_observers_;
+  std::vector<std::unique_ptr<RunObserver>> owned_observers_;
   bool ran_ = false, interrupted_ = false;
   struct Running;  // between Start and Finish
   std::unique_ptr<Running> running_;

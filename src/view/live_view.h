@@ -16,8 +16,8 @@
 #include <string>
 #include <thread>
 
+#include "sim/run_observer.h"
 #include "sim/run_spec.h"
-#include "sim/snapshot.h"
 
 namespace httplib {
 class Server;
@@ -32,7 +32,7 @@ struct LiveSettings {
   std::string javascript = "/usr/share/javascript";
 };
 
-class LiveView : public sim::StepObserver {
+class LiveView : public sim::RunObserver {
  public:
   // Listens (throws std::runtime_error if it cannot) and serves from its own thread.
   LiveView(const sim::RunSpec& spec, LiveSettings settings);

@@ -30,7 +30,11 @@ std::optional<std::vector<std::uint16_t>> Ports(const std::string& text) {
 
 WssServer::WssServer(sim::Driver& driver, WssSettings settings) : driver_(driver), settings_(std::move(settings)) {
   LineServer::Events events;
-  events.connected = [this](ConnectionId id) { robots_[id] = Robot{id, lines_->PeerHost(id)}; };
+  events.connected = [this](ConnectionId id) {
+    Robot& robot = robots_[id] = Robot{};
+    robot.id = id;
+    robot.host = lines_->PeerHost(id);
+  };
   events.line = [this](ConnectionId id, const std::string& line) {
     std::string error;
     if (auto m = ParseLine(line, &error)) Handle(robots_.at(id), *m);  // WSS has no word for a malformed line

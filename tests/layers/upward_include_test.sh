@@ -30,6 +30,8 @@ expect_not_found sanet_upward_include_probe net sim/world.h net/transport.h
 # The agent's layer cannot include the robot server's headers (nor does it link its library:
 # checked when configuring).
 expect_not_found sanet_agent_server_probe remote_agent robot_server/sim_server.h remote_agent/remote_node.h
+# sim never sees the scenario's sections for front ends (loop, spawn).
+expect_not_found sanet_sim_section_probe sim sections/spawn_section.h sim/driver.h
 
 # Front ends reach a running world through sim/driver.h only: none includes the assembly, nor
 # World and the stepper and outputs behind it.

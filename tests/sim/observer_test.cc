@@ -35,7 +35,7 @@ struct Seen {
   std::vector<std::string> states;
 };
 
-class Recorder : public sim::StepObserver {
+class Recorder : public sim::RunObserver {
  public:
   void AfterStep(const sim::WorldSnapshot& s) override {
     Seen seen{s.time(), s.step(), {}, s.radio_neighbours(), s.messages_in_flight().size(), s.controller_states()};

@@ -1,13 +1,29 @@
 #include "agents/controller_host.h"
 
+#include "core/closest_names.h"
 #include "core/exception_text.h"
 
 namespace sanet::agents {
+namespace {
+
+// "unknown controller 'x'", with the closest names and every one the registry knows.
+std::string UnknownController(const std::string& name, const Registry& registry) {
+  std::vector<std::string> known;
+  for (const ControllerInfo* c : registry.List()) known.push_back(c->name);
+  std::string text = "unknown controller '" + name + "'";
+  if (const auto close = ClosestNames(name, known); !close.empty()) text += "; did you mean " + OrList(close) + "?";
+  std::string list;
+  for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+  return text + " (known here: " + (list.empty() ? "none" : list) +
+         "; a controller of your own comes from its library, named in `library:`; `sanet list` shows them all)";
+}
+
+}  // namespace
 
 std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, Registry& registry) {
   if (!spec.library.empty()) registry.LoadLibrary(spec.library);
   const ControllerInfo* info = registry.Find(spec.name);
-  if (!info) throw RegistryError("unknown controller '" + spec.name + "'");
+  if (!info) throw RegistryError(UnknownController(spec.name, registry));
   std::unique_ptr<Controller> controller;
   try {
     controller = info->create(spec.params);

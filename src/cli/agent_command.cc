@@ -116,11 +116,11 @@ Command AddAgent(CLI::App& app) {
                 "The server runs on this machine: take its clock exactly instead of estimating it");
   cmd->add_option("--test-clock-offset", a->test_clock_offset,
                   "For tests: add this many seconds to this computer's clock (the estimate must find it)")
-      ->group("Testing");
+      ->group("");  // for tests: not in --help
   cmd->add_option("--test-protocol-version", a->test_protocol,
                   "For tests: claim this version of sanet's protocol (the server must refuse another)")
       ->check(CLI::Range(1, 1000000))
-      ->group("Testing");
+      ->group("");  // for tests: not in --help
   return {cmd, [a](agents::Registry& r) { return Agent(*a, r); }};
 }
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "agents/controller_registry.h"
 #include "builtin.h"
 #include "core/atomic_file.h"
+#include "core/closest_names.h"
 #include "core/version.h"
 #include "interruption.h"
 #include "launch/launch.h"
@@ -93,8 +95,13 @@ struct RunArgs {
   ViewArgs view;
 };
 
-sim::Provenance ProvenanceOf(const scenario::Scenario& sc) {
-  return {scenario::EffectiveScenarioYaml(sc), scenario::ScenarioFingerprint(sc), CommandLine()};
+// What the run's reader should know although nothing failed (also in summary.json).
+void PrintWarnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::fprintf(stderr, "sanet: warning: %s\n", w.c_str());
+}
+
+sim::Provenance ProvenanceOf(const scenario::EffectiveScenario& effective) {
+  return {effective.yaml, effective.fingerprint, CommandLine()};
 }
 
 // Before anything is built: the folder must be free for the run (trace/earlier_run.h).
@@ -112,6 +119,7 @@ scenario::Scenario LoadChecked(const std::string& file, const std::vector<std::s
                                agents::Registry& registry) {
   scenario::Scenario sc = scenario::LoadScenario(file, sets);
   scenario::CheckControllers(sc, registry);
+  for (const std::string& warning : sc.warnings) std::fprintf(stderr, "sanet: warning: %s\n", warning.c_str());
   return sc;
 }
 
@@ -126,7 +134,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   options.scenario_file = args.file;
   options.stop_requested = InterruptReason;
   options.force = args.force;
-  options.provenance = ProvenanceOf(sc);
+  options.provenance = ProvenanceOf(scenario::Effective(sc));
   ClaimFolder(options.output_dir, args.force);
   if (!args.quiet)
     std::printf("sanet: running %s (%zu node%s, %.1f s simulated, seed %llu%s)\n", sc.run.name.c_str(),
@@ -143,6 +151,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
     r = world.Run(options);
   }
   if (live) live->Finish();
+  PrintWarnings(r.warnings);
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s simulated; the results so far are in %s/ (status: interrupted)\n",
                  world.ended_by().c_str(), world.ended_at(), options.output_dir.c_str());
@@ -220,13 +229,15 @@ std::unique_ptr<hil::WssServer> StartWss(sim::World& world, const ServeArgs& a) 
   return wss;
 }
 
-hil::ServerSettings ServerSettingsFor(const ServeArgs& a, const scenario::Scenario& sc,
+// `yaml`: the effective scenario the server runs; `fingerprint`: that of the scenario as loaded
+// (agents compare theirs with it; how long the server runs is its own affair).
+hil::ServerSettings ServerSettingsFor(const ServeArgs& a, const scenario::Scenario& sc, const std::string& yaml,
                                       const std::string& fingerprint) {
   hil::ServerSettings settings;
   settings.bind = a.bind;
   settings.port = static_cast<std::uint16_t>(a.port);
   settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
-  settings.scenario_yaml = scenario::EffectiveScenarioYaml(sc);
+  settings.scenario_yaml = yaml;
   settings.scenario_fingerprint = fingerprint;
   settings.spawn = sc.spawn;
   settings.announce = !a.quiet;
@@ -261,14 +272,19 @@ void PrintServed(const hil::SimServer& server, const sim::RunResult& r, const st
 int Serve(const ServeArgs& a, agents::Registry& registry) {
   scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
   // Agents with their own copy of the file compare this; how long the server runs is its own affair.
-  const std::string fingerprint = scenario::ScenarioFingerprint(sc);
-  if (a.duration) sc.run.duration = *a.duration;
+  scenario::EffectiveScenario effective = scenario::Effective(sc);
+  const std::string fingerprint = effective.fingerprint;
+  if (a.duration && *a.duration != sc.run.duration) {
+    sc.run.duration = *a.duration;
+    effective = scenario::Effective(sc);
+  }
   const std::string results = a.output.empty() ? sc.output_folder : a.output;
   ClaimFolder(results, a.force);
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
   const std::string scheduling = hil::UseRealTimePriority();
   sim::World world(sc.run, registry, sim::RobotDrivers::kFrontEnds);
-  const std::unique_ptr<hil::SimServer> listening = StartServer(world, ServerSettingsFor(a, sc, fingerprint));
+  const std::unique_ptr<hil::SimServer> listening =
+      StartServer(world, ServerSettingsFor(a, sc, effective.yaml, fingerprint));
   hil::SimServer& server = *listening;
   JoinTaps(world, a.taps);
   const std::unique_ptr<hil::WssServer> wss = StartWss(world, a);
@@ -283,7 +299,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   options.output_dir = results;
   options.scenario_file = a.file;
   options.force = a.force;
-  options.provenance = ProvenanceOf(sc);
+  options.provenance = ProvenanceOf(effective);
   options.stop_requested = InterruptReason;
   options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
     j["real_time_lag"] = server.LagSummary();
@@ -295,6 +311,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   };
   const sim::RunResult r = world.Run(options);
   if (live) live->Finish();
+  PrintWarnings(r.warnings);
   if (!a.quiet) PrintServed(server, r, results);
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s; the results so far are in %s/ (status: interrupted)\n",
@@ -533,6 +550,20 @@ int Perform(const Command& command, agents::Registry& registry) {
   }
 }
 
+// `sanet runn x`: CLI11 would only say that a subcommand is required; say which one was meant.
+bool UnknownCommand(int argc, char** argv, CLI::App& app) {
+  if (argc < 2 || argv[1][0] == '-') return false;
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) names.push_back(sub->get_name());
+  const std::string wanted = argv[1];
+  if (std::find(names.begin(), names.end(), wanted) != names.end()) return false;
+  const std::vector<std::string> close = ClosestNames(wanted, names);
+  std::fprintf(stderr, "sanet: '%s' is not a command%s; the commands are %s (sanet --help says what each does)\n",
+               wanted.c_str(), close.empty() ? "" : ("; did you mean " + OrList(close) + "?").c_str(),
+               OrList(names).c_str());
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -544,6 +575,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("sanet ") + SanetVersion() + " (" + SanetCommit() + ")");
   const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddReport(app), AddServe(app),
                                          AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app)};
+  if (UnknownCommand(argc, argv, app)) return kExitScenarioError;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sanet/geometry.h"
@@ -41,6 +42,9 @@ struct StaticBox {
   Vec3 size;    // m: length (along yaw), width, height
   double yaw = 0;
 };
+
+// The distance from `p` to the box, seen from above (0 inside it).
+double DistanceFromAbove(Vec2 p, const StaticBox& box);
 
 // Robertino-like omnidirectional robot: two stacked cylinders, three sphere wheels on radial
 // hinges; anisotropic friction (grip along the rolling direction, slip along the wheel axis)
@@ -105,6 +109,21 @@ class Vehicle : public virtual Body {
   virtual double wheel_angle(std::size_t wheel) const = 0;
 };
 
+// A message the engine printed (ODE's "LCP internal error" and the like), kept for the run's
+// warnings instead of going to the terminal unexplained.
+struct EngineMessage {
+  std::string kind;  // the same for every message of one kind (the engine's format)
+  std::string text;  // as the engine formatted it
+  // What touched what just after the first message of its kind (later ones leave it empty):
+  // two bodies, or a body and the static box `obstacle` (in add_static_box order).
+  struct Contact {
+    const Body* a = nullptr;
+    const Body* b = nullptr;  // null: an obstacle
+    int obstacle = -1;
+  };
+  std::vector<Contact> contacts;
+};
+
 class PhysicsWorld {
  public:
   virtual ~PhysicsWorld() = default;
@@ -130,6 +149,8 @@ class PhysicsWorld {
   // Returns once no step is under way (a world whose steps may run on another thread waits for
   // them): for state a step updates outside the engine, such as odometry.
   virtual void Settle() {}
+  // The engine's messages since the last call (on the thread that steps).
+  virtual std::vector<EngineMessage> TakeMessages() { return {}; }
 };
 
 std::unique_ptr<PhysicsWorld> CreateOdeWorld(const WorldSettings& settings);

@@ -63,13 +63,16 @@ Vehicle* PipelinedWorld::add_diffdrive(const DiffDriveSpec& spec, const Pose2D& 
 Vehicle* PipelinedWorld::Gate(Vehicle* engine_vehicle) {
   auto vehicle = std::make_unique<GatedVehicle>(*this, *engine_vehicle);
   Vehicle* handle = vehicle.get();
+  outer_[engine_vehicle] = handle;
   bodies_.push_back(std::move(vehicle));
   return handle;
 }
 
 Body* PipelinedWorld::add_mote(const MoteSpec& spec, const Pose2D& pose) {
   Settle();
-  bodies_.push_back(std::make_unique<GatedBody>(*this, *engine_->add_mote(spec, pose)));
+  const Body* engine_mote = engine_->add_mote(spec, pose);
+  bodies_.push_back(std::make_unique<GatedBody>(*this, *engine_mote));
+  outer_[engine_mote] = bodies_.back().get();
   return bodies_.back().get();
 }
 
@@ -93,6 +96,16 @@ std::vector<double> PipelinedWorld::cast_rays(const std::vector<Ray>& rays, doub
 void PipelinedWorld::step(double dt) {
   Settle();
   engine_->step(dt);
+}
+
+std::vector<EngineMessage> PipelinedWorld::TakeMessages() {
+  std::vector<EngineMessage> messages = engine_->TakeMessages();
+  for (EngineMessage& m : messages)
+    for (EngineMessage::Contact& c : m.contacts) {
+      if (const auto a = outer_.find(c.a); a != outer_.end()) c.a = a->second;
+      if (const auto b = outer_.find(c.b); c.b && b != outer_.end()) c.b = b->second;
+    }
+  return messages;
 }
 
 std::size_t PipelinedWorld::awake_body_count() const {

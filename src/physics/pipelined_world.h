@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "physics/physics_world.h"
@@ -40,6 +41,8 @@ class PipelinedWorld : public PhysicsWorld {
   std::vector<double> cast_rays(const std::vector<Ray>& rays, double max_range, const Body* ignore) const override;
   void step(double dt) override;
   std::size_t awake_body_count() const override;
+  // The engine's messages, their bodies the ones handed out here.
+  std::vector<EngineMessage> TakeMessages() override;
 
  private:
   class GatedBody;
@@ -50,7 +53,8 @@ class PipelinedWorld : public PhysicsWorld {
 
   std::unique_ptr<PhysicsWorld> engine_;
   std::vector<std::unique_ptr<Body>> bodies_;
-  StepWorker worker_;  // last: it stops before the engine goes
+  std::unordered_map<const Body*, const Body*> outer_;  // the engine's body -> the one handed out
+  StepWorker worker_;                                   // last: it stops before the engine goes
 };
 
 }  // namespace sanet::physics

@@ -108,7 +108,7 @@ class SimServer : public sim::RunObserver {
   void Refuse(Client& c, const std::string& why);
   sim::InboxResult Forward(NodeId to, const Message& message);
   Client* ClientOf(NodeId robot);
-  Node& NodeOf(const Client& c) { return driver_.NodeOf(*c.robot); }
+  Node& NodeOf(const Client& c) { return driver_.NodeOf(*c.robot, Owner(c)); }
   std::string Owner(const Client& c) const { return "client " + c.peer; }
   void SendSensors(Client& c, double now);
   static std::vector<ProtocolMessage> SensorLines(const sim::SensorReadings& readings);

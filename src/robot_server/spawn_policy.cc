@@ -35,16 +35,6 @@ std::string NewName(const sim::Driver& world, const std::string& usarsim_class) 
     if (!world.Lookup(stem + "-" + std::to_string(k))) return stem + "-" + std::to_string(k);
 }
 
-// The distance from `p` to the box, seen from above (0 inside it).
-double DistanceToBox(Vec2 p, const physics::StaticBox& box) {
-  const double dx = p.x - box.center.x, dy = p.y - box.center.y;
-  const double c = std::cos(box.yaw), s = std::sin(box.yaw);
-  const double along = c * dx + s * dy, across = -s * dx + c * dy;
-  const double out_along = std::max(0.0, std::fabs(along) - box.size.x / 2);
-  const double out_across = std::max(0.0, std::fabs(across) - box.size.y / 2);
-  return std::hypot(out_along, out_across);
-}
-
 const SpawnClass* FindClass(const SpawnSpec& spawn, const std::string& name) {
   for (const SpawnClass& c : spawn.classes)
     if (sections::SameClass(c.usarsim_class, name)) return &c;
@@ -69,7 +59,7 @@ std::string PlaceRefusal(const sim::Driver& world, const SpawnSpec& spawn, const
   const double radius = robots::FootprintRadius(model);
   const std::vector<sim::Obstacle>& obstacles = world.spec().obstacles;
   for (std::size_t i = 0; i < obstacles.size(); ++i)
-    if (DistanceToBox(p, obstacles[i].box) < radius)
+    if (physics::DistanceFromAbove(p, obstacles[i].box) < radius)
       return Point(p) + " is inside world.obstacles[" + std::to_string(i) + "], a " + obstacles[i].kind +
              " (a body of radius " + Metres(radius) + " m does not fit there)";
   for (NodeId id = 0; id < world.NodeCount(); ++id) {

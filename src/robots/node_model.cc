@@ -57,6 +57,19 @@ double FootprintRadius(const ModelSpec& m) {
   return 0;
 }
 
+double InscribedRadius(const ModelSpec& m) {
+  switch (m.kind) {
+    case ModelKind::kOmni3:
+      return m.omni3.body_radius;
+    case ModelKind::kDiffDrive:  // the chassis's centre is a quarter of the caster offset behind the pose's point
+      return std::max(
+          0.0, std::min(m.diffdrive.body_width / 2, m.diffdrive.body_length / 2 - m.diffdrive.caster_offset / 4));
+    case ModelKind::kMote:
+      return m.mote.size / 2;
+  }
+  return 0;
+}
+
 ModelSpec ModelSpec::Defaults(ModelKind kind) {
   ModelSpec s;
   s.kind = kind;

@@ -47,6 +47,9 @@ RangeSensorSpec DefaultIr(const ModelSpec& model);
 RangeSensorSpec DefaultLaser(const ModelSpec& model);
 // The radius of the circle about the pose's point that holds the whole body, seen from above.
 double FootprintRadius(const ModelSpec& model);
+// The radius of the largest circle about the pose's point that lies inside the body, seen from
+// above: two bodies whose inscribed circles meet certainly overlap.
+double InscribedRadius(const ModelSpec& model);
 
 // No NaN and no infinity among `values`: a command the motors can take.
 bool Finite(const std::vector<double>& values);

@@ -84,20 +84,29 @@ std::string EffectiveBody(const Scenario& sc) {
   return std::string(out.c_str()) + "\n";
 }
 
-}  // namespace
-
-std::string EffectiveScenarioYaml(const Scenario& sc) {
+std::string Head(const Scenario& sc) {
   std::string head = "# The effective scenario of " + sc.file;
   for (const Override& o : sc.overrides) head += " --set " + o.text;
   for (char& c : head)
     if (c == '\n' || c == '\r') c = ' ';  // one comment line, whatever the values hold
-  return head + ": every default of the format filled in.\n" + EffectiveBody(sc);
+  return head + ": every default of the format filled in.\n";
 }
 
-std::string ScenarioFingerprint(const Scenario& sc) {
+std::string FingerprintOf(const std::string& body) {
   Fingerprint f;
-  f.Add(EffectiveBody(sc));
+  f.Add(body);
   return f.Hex();
 }
+
+}  // namespace
+
+EffectiveScenario Effective(const Scenario& sc) {
+  const std::string body = EffectiveBody(sc);
+  return {Head(sc) + body, FingerprintOf(body)};
+}
+
+std::string EffectiveScenarioYaml(const Scenario& sc) { return Head(sc) + EffectiveBody(sc); }
+
+std::string ScenarioFingerprint(const Scenario& sc) { return FingerprintOf(EffectiveBody(sc)); }
 
 }  // namespace sanet::scenario

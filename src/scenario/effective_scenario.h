@@ -10,10 +10,18 @@
 
 namespace sanet::scenario {
 
-std::string EffectiveScenarioYaml(const Scenario& scenario);
+struct EffectiveScenario {
+  std::string yaml;  // with a first comment line naming the file and the --set given
+  // A hash of the effective scenario (16 hex digits, the comment left out): two scenarios with
+  // the same fingerprint describe the same run, whatever their files looked like and whatever
+  // --set gave.
+  std::string fingerprint;
+};
 
-// A hash of the effective scenario (16 hex digits): two scenarios with the same fingerprint
-// describe the same run, whatever their files looked like and whatever --set gave.
+// Both at once: printing a scenario of 10 000 nodes takes seconds, so it is printed once.
+EffectiveScenario Effective(const Scenario& scenario);
+
+std::string EffectiveScenarioYaml(const Scenario& scenario);
 std::string ScenarioFingerprint(const Scenario& scenario);
 
 }  // namespace sanet::scenario

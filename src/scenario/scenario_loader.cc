@@ -9,6 +9,7 @@
 #include <map>
 
 #include "scenario/declarations.h"
+#include "scenario/placement.h"
 #include "sim/world.h"
 
 namespace sanet::scenario {
@@ -188,17 +189,21 @@ void ReadWorld(const Field& world, sim::RunSpec& run) { WorldFields().Read(world
 class NodeList {
  public:
   explicit NodeList(Scenario& sc) : sc_(sc) {}
-  void Add(const Field& where, sim::NodeSpec node, int controller_line) {
+  // `where`: the node's name; `place`: its pose, or its grid.
+  void Add(const Field& where, const Field& place, sim::NodeSpec node, int controller_line) {
     auto [it, fresh] = names_.emplace(node.name, where.line());
     if (!fresh) where.Fail("node name '" + node.name + "' is already used on line " + std::to_string(it->second));
+    places_.push_back({place.line(), place.path()});
     sc_.run.nodes.push_back(std::move(node));
     sc_.controller_lines.push_back(controller_line);
     sc_.controller_fields.push_back(controller_line ? where.path().substr(0, where.path().find(']') + 1) + ".controller"
                                                     : "");
   }
+  const std::vector<NodePlace>& places() const { return places_; }
 
  private:
   Scenario& sc_;
+  std::vector<NodePlace> places_;
   std::map<std::string, int> names_;  // name -> line where it was defined
 };
 
@@ -229,7 +234,7 @@ void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& l
   const NodeTemplate t = ReadNodeTemplate(n, dir, has_network);
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c)
-      list.Add(n.Require("grid").Require("name"),
+      list.Add(n.Require("grid").Require("name"), n.Require("grid"),
                {prefix + std::to_string(r * cols + c),
                 t.model,
                 {origin.x + c * spacing.x, origin.y + r * spacing.y, heading},
@@ -238,7 +243,7 @@ void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& l
                t.controller_line);
 }
 
-void ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
+std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
   sim::RunSpec& run = sc.run;
   NodeList list(sc);
   for (const Field& n : nodes.Items()) {
@@ -250,7 +255,7 @@ void ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
     const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
     const auto pose = n.Require("pose").Numbers(3);
     CheckPlace(n.Require("pose"), {pose[0], pose[1]});
-    list.Add(n.Require("name"),
+    list.Add(n.Require("name"), n.Require("pose"),
              {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
              t.controller_line);
   }
@@ -260,6 +265,17 @@ void ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
                std::to_string(run.nodes.size()));
   if (run.network && run.nodes.size() > 65534)
     nodes.Fail("a network has room for 65534 nodes (10.0.0.0/16), not " + std::to_string(run.nodes.size()));
+  return list.places();
+}
+
+// No body starts inside another or inside an obstacle; nodes far outside the field are a warning.
+void CheckWhereNodesStart(const Field& root, const std::vector<NodePlace>& places, Scenario& sc) {
+  std::vector<int> obstacle_lines;
+  if (const auto world = root.Get("world"))
+    if (const auto obstacles = world->Get("obstacles"); obstacles && !obstacles->node().IsNull())
+      for (const Field& o : obstacles->Items()) obstacle_lines.push_back(o.line());
+  CheckPlacement(sc.file, sc.run, places, obstacle_lines);
+  sc.warnings = FieldWarnings(sc.file, sc.run, places);
 }
 
 void ReadMessages(const Field& messages, sim::RunSpec& run) { MessagesFields().Read(messages, run); }
@@ -370,7 +386,7 @@ void Read(const Field& root, Scenario& sc) {
   if (!root.Get("name")) run.name = fs::path(path).stem().string();
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   if (auto world = root.Get("world")) ReadWorld(*world, run);
-  ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc);
+  CheckWhereNodesStart(root, ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc), sc);
   if (auto messages = root.Get("messages")) ReadMessages(*messages, run);
   if (auto events = root.Get("events")) ReadEvents(*events, run);
   if (auto loop = root.Get("loop")) ReadLoop(*loop, sc);

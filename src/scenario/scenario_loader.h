@@ -25,6 +25,7 @@ struct Scenario {
   std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"
   std::optional<bool> trace;                   // outputs.trace as given (run.trace is the effective one)
   std::vector<Override> overrides;             // --set, in the order given
+  std::vector<std::string> warnings;           // "file:line: 'field': ..." for the command to print
 };
 
 // Reads and checks the file with `overrides` (--set) applied (structure, types, ranges, names).

@@ -167,6 +167,12 @@ void Assembly::FollowBody(NodeId id, net::BodyMobilityModel* mobility) {
   poses_->Add(mobility, PosePipeline::Of(id, models_.at(id)->body()));
 }
 
+std::string Assembly::NameOfBody(const physics::Body* body) const {
+  for (NodeId id = 0; id < models_.size(); ++id)
+    if (&models_[id]->body() == body) return NameOf(id);
+  return "a body";
+}
+
 std::vector<RadioPose> Assembly::RadioPoses(const std::vector<NodeId>& moved) const {
   std::vector<RadioPose> poses;
   poses.reserve(moved.size());

@@ -57,6 +57,8 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   PosePipeline& poses() { return *poses_; }
   // The poses of `moved` bodies now, for PosePipeline::Publish (on the physics thread, after its step).
   std::vector<RadioPose> RadioPoses(const std::vector<NodeId>& moved) const;
+  // The node whose body `body` is ("a body" if none is).
+  std::string NameOfBody(const physics::Body* body) const;
 
   void SetEvents(RunEvents* events) { events_ = events; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }

@@ -31,7 +31,10 @@ void Driver::Every(double period, std::function<void()> action) {
   repeaters_.push_back(std::make_unique<Repeater>(period, std::move(action)));
 }
 
-void Driver::Stop() { ns3::Simulator::Stop(); }
+void Driver::Stop(const std::string& why) {
+  if (!stop_) stop_ = why;
+  ns3::Simulator::Stop();
+}
 
 const RunSpec& Driver::spec() const { return parts_.spec(); }
 double Driver::Now() const { return ns3::Simulator::Now().GetSeconds(); }
@@ -45,7 +48,16 @@ RobotDrivers Driver::drivers() const { return parts_.drivers(); }
 std::size_t Driver::SpawnedCount() const { return parts_.run_nodes().spawned(); }
 Pose2D Driver::PoseOf(NodeId id) const { return parts_.TruePose(id); }
 
+// A wrong id is a front end's bug, not a client's mistake: it throws, naming the id.
+void Driver::CheckId(NodeId id) const {
+  if (id >= NodeCount())
+    throw std::out_of_range("no node " + std::to_string(id) + ": the run has " + std::to_string(NodeCount()));
+}
+
 std::optional<std::string> Driver::Claim(NodeId robot, const std::string& owner) {
+  CheckId(robot);
+  if (parts_.host(robot).has_controller())
+    return "'" + NameOf(robot) + "' is driven by its scenario controller (" + Spec(robot).controller->name + ")";
   owners_.resize(NodeCount());
   const std::string& held_by = owners_.at(robot);
   if (!held_by.empty() && held_by != owner) return "robot '" + NameOf(robot) + "' is already driven by " + held_by;
@@ -62,15 +74,28 @@ std::optional<std::string> Driver::OwnerOf(NodeId robot) const {
   return owners_[robot];
 }
 
-Node& Driver::NodeOf(NodeId robot) { return parts_.node(robot); }
-bool Driver::SwitchedOff(NodeId robot) const { return parts_.node(robot).switched_off(); }
+void Driver::CheckOwner(NodeId robot, const std::string& owner, const char* what) const {
+  CheckId(robot);
+  if (OwnerOf(robot) != owner)
+    throw std::logic_error(owner + " " + what + " " + NameOf(robot) + ", which it does not drive (Claim it first)");
+}
+
+Node& Driver::NodeOf(NodeId robot, const std::string& owner) {
+  CheckOwner(robot, owner, "drove");
+  return parts_.node(robot);
+}
+
+bool Driver::SwitchedOff(NodeId robot) const {
+  CheckId(robot);
+  return parts_.node(robot).switched_off();
+}
 
 const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owner) {
-  if (OwnerOf(robot) != owner)
-    throw std::logic_error(owner + " read the sensors of " + NameOf(robot) + ", which it does not drive");
+  CheckOwner(robot, owner, "read the sensors of");
   readings_.resize(NodeCount());
-  robots::NodeModel& model = parts_.model(robot);
   SensorReadings& r = readings_[robot];
+  if (r.time == Now()) return r;  // read already at this instant: a second read would draw noise again
+  robots::NodeModel& model = parts_.model(robot);
   r.time = Now();
   r.ground_truth = model.GroundTruth();
   r.height = model.body().position3().z;

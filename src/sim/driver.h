@@ -54,15 +54,20 @@ class Driver {
   // Where the body stands now (the truth, not a sensor read: it draws no noise).
   Pose2D PoseOf(NodeId id) const;
 
-  // Ownership. Claim returns nothing when granted (or already held by `owner`), or the refusal.
+  // Ownership. Claim returns nothing when granted (or already held by `owner`), or the refusal:
+  // another front end drives it, or its scenario controller runs here (a world built with
+  // RobotDrivers::kScenarioControllers, or a mote's controller). Every call that takes a node id
+  // throws std::out_of_range for an id the run does not have.
   std::optional<std::string> Claim(NodeId robot, const std::string& owner);
   void Release(NodeId robot, const std::string& owner);
   std::optional<std::string> OwnerOf(NodeId robot) const;
 
-  // The node a front end drives through, as a controller would: every Node check applies.
-  Node& NodeOf(NodeId robot);
+  // The node its owner drives through, as a controller would: every Node check applies. Throws
+  // std::logic_error for anyone but the owner.
+  Node& NodeOf(NodeId robot, const std::string& owner);
   bool SwitchedOff(NodeId robot) const;
-  // The owner's read of every sensor; throws std::logic_error for anyone else.
+  // The owner's read of every sensor; throws std::logic_error for anyone else. A second read at
+  // the same simulated time gives the first (noisy sensors draw once).
   const SensorReadings& TakeReadings(NodeId robot, const std::string& owner);
   // What the owner read last (time -1 if it never read), for everyone else.
   const SensorReadings& LastReadings(NodeId robot) const;
@@ -82,22 +87,27 @@ class Driver {
   // front end decided it may: where it stands, its name); `why` goes to its log. Returns its id.
   NodeId Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why);
 
-  // On the run's clock (add before the run starts): `action` at t = 0 and then every `period` s
-  // of simulated time (a front end's socket polling), and observers of the run's typed event
-  // streams (sim/run_observer.h).
+  // On the run's clock: `action` now (t = 0 before the run starts) and then every `period` s of
+  // simulated time (a front end's socket polling). Observers of the run's typed event streams
+  // (sim/run_observer.h) are added before the run starts.
   void Every(double period, std::function<void()> action);
   void AddObserver(RunObserver& observer) { observers_.push_back(&observer); }
   const std::vector<RunObserver*>& observers() const { return observers_; }
-  // Ends the run now, as if its duration were over (results are written as usual).
-  void Stop();
+  // Ends the run at once (from inside it) or before its next piece (between World::RunUntil
+  // calls); results are written as usual and summary.json's ended_by says `why`.
+  void Stop(const std::string& why = "stopped by a front end");
+  const std::optional<std::string>& stop_requested() const { return stop_; }
 
  private:
   class Repeater;
+  void CheckId(NodeId id) const;
+  void CheckOwner(NodeId robot, const std::string& owner, const char* what) const;
   Assembly& parts_;
   std::vector<RunObserver*> observers_;
   std::vector<std::unique_ptr<Repeater>> repeaters_;
   std::vector<std::string> owners_;  // per node; "" for none
   std::vector<SensorReadings> readings_;
+  std::optional<std::string> stop_;
 };
 
 }  // namespace sanet::sim

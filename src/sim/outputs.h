@@ -16,6 +16,7 @@
 #include "net/network_traces.h"
 #include "sim/run_nodes.h"
 #include "sim/run_spec.h"
+#include "sim/run_warnings.h"
 #include "trace/figures.h"
 #include "trace/results_folder.h"
 #include "trace/run_trace.h"
@@ -49,6 +50,9 @@ struct RunResult {
   std::string fingerprint;
   Profile profile;
   std::vector<std::string> files;  // written into the output folder
+  // What the reader should know although nothing failed (sim/run_warnings.h): the command
+  // prints them; summary.json lists them.
+  std::vector<std::string> warnings;
 };
 
 // What the outputs read of the world when they sample it.
@@ -92,6 +96,11 @@ class Outputs {
   void Interrupted(const std::string& by, double at);
   bool interrupted() const { return interrupted_; }
   void Failed(const std::string& why);  // the first failure is kept
+  // A message of the physics engine (sim/run_warnings.h).
+  void EngineMessage(double t, const std::string& kind, const std::string& text,
+                     const std::vector<std::string>& contacts) {
+    warnings_.EngineMessage(t, kind, text, contacts);
+  }
   const std::string& failure() const { return failure_; }
   const std::string& ended_by() const { return ended_by_; }
   double ended_at() const { return ended_at_; }
@@ -119,6 +128,7 @@ class Outputs {
 
   const RunSpec& spec_;
   const RunNodes& nodes_;
+  RunWarnings warnings_;
   trace::ResultsFolder folder_;
   std::string scenario_fingerprint_;  // with a provenance
   trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;

@@ -147,6 +147,10 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
     if (!taps.empty()) extra["network"]["taps"] = taps;
   }
   result.fingerprint = fp.Hex();
+  const nlohmann::ordered_json moved_motes = RunWarnings::MovedMotes(nodes_, final_poses);
+  result.warnings = warnings_.Sentences(moved_motes);
+  if (!moved_motes.empty()) extra["motes_moved"] = moved_motes;
+  extra["warnings"] = result.warnings;
   if (!folder_.writes()) return;
   if (spec_.figures) {
     WriteFigures(final_poses, network);

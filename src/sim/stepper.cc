@@ -99,6 +99,11 @@ bool Stepper::Advance(double until) {
   return !ended_;
 }
 
+void Stepper::StopNow(const std::string& why) {
+  if (outputs_.ended_by().empty()) outputs_.Ended(why, Now());
+  stopped_ = ended_ = true;
+}
+
 void Stepper::End() {
   profile_.physics_wait = world_.physics().waited();
   world_.transport().Close();
@@ -198,6 +203,7 @@ void Stepper::PhysicsStep() {
   if (Period(Now() + dt) > Period(world_.spec().duration)) return;
   StepOutcome& outcome = steps_.emplace_back();
   outcome.dt = dt;
+  outcome.end = Now() + dt;
   outcome.number = world_.physics().StepAsync([this, &outcome] { Integrate(outcome); });
   ++launched_;
   ns3::Simulator::Schedule(Period(dt), &Stepper::PhysicsStep, this);
@@ -221,6 +227,7 @@ void Stepper::Integrate(StepOutcome& outcome) {
       if (world_.model(id).mobile()) world_.model(id).AfterPhysicsStep();
   }
   outcome.poses = world_.RadioPoses(moved_);
+  outcome.messages = world_.physics().TakeMessages();
   for (NodeId id : moved_) moving_[id] = 0;
   moved_.clear();
 }
@@ -231,8 +238,17 @@ void Stepper::CatchUp() {
   for (; due_ > 0; --due_) {
     world_.physics().SettleStep(steps_.front().number);
     world_.poses().Publish(steps_.front().poses);
+    for (const physics::EngineMessage& m : steps_.front().messages) ReportEngineMessage(steps_.front().end, m);
     steps_.pop_front();
   }
+}
+
+void Stepper::ReportEngineMessage(double t, const physics::EngineMessage& m) {
+  std::vector<std::string> contacts;
+  for (const physics::EngineMessage::Contact& c : m.contacts)
+    contacts.push_back(world_.NameOfBody(c.a) + " and " +
+                       (c.b ? world_.NameOfBody(c.b) : "world.obstacles[" + std::to_string(c.obstacle) + "]"));
+  outputs_.EngineMessage(t, m.kind, m.text, contacts);
 }
 
 void Stepper::CollectMoving() {

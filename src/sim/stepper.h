@@ -39,6 +39,9 @@ class Stepper : public RunEvents {
   void Begin(std::function<void(const RunProgress&)> progress, std::function<std::string()> stop_requested);
   bool Advance(double until);
   void End();
+  bool ended() const { return ended_; }
+  // Ends the run here, before its duration: the outputs say `why` (unless something ended it first).
+  void StopNow(const std::string& why);
   // Events the run's own (the scheduler also counts the stops that end each Advance but the last).
   std::uint64_t events() const;
   const Profile& profile() const { return profile_; }
@@ -65,15 +68,18 @@ class Stepper : public RunEvents {
   void ControlRound(std::int64_t period_ns);
   void PhysicsStep();
   struct StepOutcome {
-    double dt = 0;                 // s
-    std::uint64_t number = 0;      // the physics world's
-    std::vector<RadioPose> poses;  // of the bodies that moved, at its end
+    double dt = 0;                                 // s
+    std::uint64_t number = 0;                      // the physics world's
+    std::vector<RadioPose> poses;                  // of the bodies that moved, at its end
+    double end = 0;                                // s, simulated
+    std::vector<physics::EngineMessage> messages;  // the engine's, during it
   };
   void Integrate(StepOutcome& outcome);
   void CatchUp();
   void Record();
   void Notify();
   void SeeFrame(const net::FrameEvent& frame);
+  void ReportEngineMessage(double t, const physics::EngineMessage& message);
   void LookAtRoutes();
   void CollectMoving();
   void TellProgress();

@@ -42,7 +42,7 @@ std::size_t World::NodeCount() const { return parts_->NodeCount(); }
 std::optional<NodeId> World::Lookup(const std::string& name) const { return parts_->Lookup(name); }
 std::string World::NameOf(NodeId id) const { return parts_->NameOf(id); }
 double World::Now() const { return ns3::Simulator::Now().GetSeconds(); }
-void World::Stop() { driver_->Stop(); }
+void World::Stop(const std::string& why) { driver_->Stop(why); }
 
 struct World::Running {
   Running(World& world, const RunOptions& run_options)
@@ -70,7 +70,11 @@ void World::Start(const RunOptions& options) {
 
 bool World::RunUntil(double t) {
   if (!running_) throw WorldError("RunUntil before Start, or after Finish");
-  return running_->stepper.Advance(t);
+  Stepper& stepper = running_->stepper;
+  if (const auto& why = driver_->stop_requested()) return stepper.StopNow(*why), false;
+  const bool goes_on = stepper.Advance(t);
+  if (const auto& why = driver_->stop_requested()) return stepper.StopNow(*why), false;
+  return goes_on;
 }
 
 RunResult World::Finish() {
@@ -78,6 +82,7 @@ RunResult World::Finish() {
   const std::unique_ptr<Running> run = std::move(running_);
   Stepper& stepper = run->stepper;
   Outputs& outputs = run->outputs;
+  if (!stepper.ended()) stepper.StopNow("finished early by whoever stepped it (World::Finish)");
   stepper.End();
   RunResult result;
   result.simulated = std::min(stepper.Now(), spec().duration);

@@ -81,11 +81,11 @@ class World {
   // The same for a function (tests).
   void Observe(std::function<void(const WorldSnapshot&)> observer);
 
-  // `action` runs at t = 0 and then every `period` s of simulated time. Add before Run.
+  // `action` runs now (t = 0 before the run) and then every `period` s of simulated time.
   void Every(double period, std::function<void()> action) { driver_->Every(period, std::move(action)); }
   double Now() const;  // s, simulated
-  // Ends the run now, as if its duration were over (results are written as usual).
-  void Stop();
+  // Ends the run at once (from inside it) or before its next piece; results are written as usual.
+  void Stop(const std::string& why = "stopped");
 
  private:
   std::unique_ptr<Assembly> parts_;

@@ -142,7 +142,8 @@ std::vector<PreparedRun> Prepare(const SweepSettings& s, agents::Registry& regis
       checked = combination;
     }
     sc.run.seed = point.seed;
-    prepared.push_back({point, scenario::ScenarioFingerprint(sc), scenario::EffectiveScenarioYaml(sc)});
+    scenario::EffectiveScenario effective = scenario::Effective(sc);
+    prepared.push_back({point, std::move(effective.fingerprint), std::move(effective.yaml)});
   }
   return prepared;
 }

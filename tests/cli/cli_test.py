@@ -29,6 +29,24 @@ class Cli(unittest.TestCase):
         for option in ("--seed", "--duration", "--output", "--quiet", "--no-progress"):
             self.assertIn(option, run_help)
 
+    def test_a_mistyped_command_is_told_the_closest_one(self):
+        out = sanet("runn", SCENARIO)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("'runn' is not a command; did you mean run?", out.stderr)
+        self.assertIn("validate", out.stderr, "the commands are listed")
+        self.assertNotIn("subcommand is required", out.stderr)
+
+    def test_test_only_options_stay_out_of_help(self):
+        agent_help = sanet("agent", "--help").stdout
+        self.assertIn("--shared-clock", agent_help)
+        for hidden in ("--test-clock-offset", "--test-protocol-version"):
+            self.assertNotIn(hidden, agent_help)
+
+    def test_version_names_the_release_and_commit(self):
+        out = sanet("--version")
+        self.assertEqual(out.returncode, 0)
+        self.assertRegex(out.stdout, r"^sanet \d+\.\d+\.\d+ \(")
+
     def test_validate_accepts_the_shipped_scenario(self):
         out = sanet("validate", SCENARIO)
         self.assertEqual(out.returncode, 0, out.stderr)

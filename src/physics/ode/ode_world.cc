@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <limits>
 #include <mutex>
 
@@ -16,9 +18,25 @@ namespace {
 
 constexpr int kMaxContactsPerPair = 4;
 
+// ODE prints its messages (dMessage: "LCP internal error" when bodies start inside each other)
+// to stderr from whichever thread steps; they are kept here, process-wide as ODE's handler is,
+// until the world that steps takes them.
+std::mutex g_messages_mutex;
+std::vector<std::pair<std::string, std::string>> g_messages;  // (format, text)
+
+void KeepMessage(int number, const char* format, va_list args) {
+  char text[512];
+  std::vsnprintf(text, sizeof text, format, args);
+  const std::lock_guard<std::mutex> lock(g_messages_mutex);
+  if (g_messages.size() < 10000) g_messages.emplace_back(format, "ODE message " + std::to_string(number) + ": " + text);
+}
+
 void InitOdeOnce() {
   static std::once_flag once;
-  std::call_once(once, [] { dInitODE2(0); });
+  std::call_once(once, [] {
+    dInitODE2(0);
+    dSetMessageHandler(&KeepMessage);
+  });
 }
 
 // ODE keeps data per thread for collision detection: a thread that steps or casts rays (the
@@ -119,7 +137,7 @@ void OdeWorld::add_static_box(const StaticBox& box) {
   dMatrix3 r;
   dRFromAxisAndAngle(r, 0, 0, 1, box.yaw);
   dGeomSetRotation(g, r);
-  dGeomSetData(g, make_info({Part::kStatic, nullptr, nullptr, settings_.ground_friction, 0}));
+  dGeomSetData(g, make_info({Part::kStatic, nullptr, nullptr, settings_.ground_friction, 0, static_boxes_++}));
 }
 
 Pose2D OdeMote::pose() const {
@@ -193,6 +211,7 @@ void OdeWorld::Collide(dGeomID a, dGeomID b) {
   dContact contact[kMaxContactsPerPair];
   const int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
   if (n == 0) return;
+  if (listing_) return List(ia, ib);
   for (const GeomInfo* info : {&ia, &ib})
     if (info->part == Part::kMote) WakeMote(info->index);
   ba = dGeomGetBody(a);  // a mote touched just now has a body from here on
@@ -313,6 +332,48 @@ void OdeWorld::step(double dt) {
     }
   }
   awake_motes_.resize(kept);
+}
+
+// A pair in contact, while ContactsNow lists them (the ground does not count).
+void OdeWorld::List(const GeomInfo& a, const GeomInfo& b) {
+  if (a.part == Part::kGround || b.part == Part::kGround) return;
+  const GeomInfo& body = a.owner ? a : b;
+  const GeomInfo& other = a.owner ? b : a;
+  EngineMessage::Contact c{body.owner, other.owner, other.owner ? -1 : other.index};
+  for (const EngineMessage::Contact& seen : listed_)
+    if (seen.a == c.a && seen.b == c.b && seen.obstacle == c.obstacle) return;
+  listed_.push_back(c);
+}
+
+// The pairs touching now, found as a step finds them but creating no contact joints.
+std::vector<EngineMessage::Contact> OdeWorld::ContactsNow() {
+  listing_ = true;
+  listed_.clear();
+  dSpaceCollide(moving_, this, &NearCallback);
+  dSpaceCollide2(reinterpret_cast<dGeomID>(moving_), reinterpret_cast<dGeomID>(still_), this, &NearCallback);
+  if (!motes_.empty())
+    for (int i = 0, n = dSpaceGetNumGeoms(moving_); i < n; ++i) CollideWithMotes(dSpaceGetGeom(moving_, i), -1);
+  for (int mote : awake_motes_) {
+    dSpaceCollide2(mote_geoms_[mote], reinterpret_cast<dGeomID>(still_), this, &NearCallback);
+    CollideWithMotes(mote_geoms_[mote], mote);
+  }
+  listing_ = false;
+  return std::move(listed_);
+}
+
+// The first message of each kind comes with the pairs in contact just after it.
+std::vector<EngineMessage> OdeWorld::TakeMessages() {
+  std::vector<std::pair<std::string, std::string>> raw;
+  {
+    const std::lock_guard<std::mutex> lock(g_messages_mutex);
+    raw.swap(g_messages);
+  }
+  std::vector<EngineMessage> messages;
+  for (auto& [kind, text] : raw) {
+    messages.push_back({kind, std::move(text), {}});
+    if (kinds_seen_.insert(kind).second) messages.back().contacts = ContactsNow();
+  }
+  return messages;
 }
 
 std::size_t OdeWorld::awake_body_count() const { return vehicles_.size() + awake_motes_.size(); }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -31,7 +32,7 @@ struct GeomInfo {
   dJointID hinge = nullptr;     // omni wheels: the hinge whose axis slips
   double friction = 1.0;        // mu (grip direction for omni wheels)
   double slip_friction = 0.0;   // omni wheels: mu2 along the axis
-  int index = -1;               // motes: index into the world's mote lists
+  int index = -1;               // motes: index into the world's mote lists; static boxes: their number
 };
 
 class OdeWorld;
@@ -100,6 +101,7 @@ class OdeWorld : public PhysicsWorld {
   double cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const override;
   void step(double dt) override;
   std::size_t awake_body_count() const override;
+  std::vector<EngineMessage> TakeMessages() override;
 
   // Used by the vehicle builders.
   dWorldID world() const { return world_; }
@@ -114,6 +116,8 @@ class OdeWorld : public PhysicsWorld {
   static std::int64_t CellKey(std::int64_t cx, std::int64_t cy);
   void PlaceInGrid(int mote);
   void CollideWithMotes(dGeomID geom, int self);
+  void List(const GeomInfo& a, const GeomInfo& b);
+  std::vector<EngineMessage::Contact> ContactsNow();
 
   WorldSettings settings_;
   dWorldID world_;
@@ -134,6 +138,10 @@ class OdeWorld : public PhysicsWorld {
   std::vector<char> mote_awake_;   // per mote: listed in awake_motes_
   std::vector<int> awake_motes_;   // motes awake or touched this step, in the order they woke
   mutable dGeomID ray_ = nullptr;  // reused by cast_ray, in no space
+  int static_boxes_ = 0;
+  bool listing_ = false;  // Collide lists the pairs that touch instead of joining them
+  std::vector<EngineMessage::Contact> listed_;
+  std::set<std::string> kinds_seen_;  // of the engine's messages
 };
 
 }  // namespace sanet::physics::ode

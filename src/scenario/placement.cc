@@ -1,0 +1,103 @@
+#include "scenario/placement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <unordered_map>
+
+#include "scenario/yaml_reader.h"
+#include "sections/spawn_section.h"
+
+namespace sanet::scenario {
+namespace {
+
+std::string Metres(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", std::fabs(v) < 0.005 ? 0.0 : v);  // never "-0.00"
+  return text;
+}
+
+std::string At(const sim::NodeSpec& n) { return n.name + " at (" + Metres(n.pose.x) + ", " + Metres(n.pose.y) + ")"; }
+
+void CheckObstacles(const std::string& file, const sim::RunSpec& run, const std::vector<NodePlace>& places,
+                    const std::vector<int>& obstacle_lines) {
+  for (NodeId id = 0; id < run.nodes.size(); ++id) {
+    const sim::NodeSpec& n = run.nodes[id];
+    const double radius = robots::InscribedRadius(n.model);
+    for (std::size_t i = 0; i < run.obstacles.size(); ++i) {
+      const double gap = physics::DistanceFromAbove(n.pose.position(), run.obstacles[i].box);
+      if (gap >= radius) continue;
+      throw ScenarioError(file, places[id].line, places[id].field,
+                          At(n) + " is inside world.obstacles[" + std::to_string(i) + "], a " + run.obstacles[i].kind +
+                              " (line " + std::to_string(obstacle_lines.at(i)) + "): its body reaches " +
+                              Metres(radius) + " m around its pose, and the " + run.obstacles[i].kind + " is " +
+                              Metres(gap) + " m away; move one of them");
+    }
+  }
+}
+
+// Pairs within reach of each other, found through a grid of cells as wide as the largest reach.
+void CheckPairs(const std::string& file, const sim::RunSpec& run, const std::vector<NodePlace>& places) {
+  std::vector<double> radius(run.nodes.size());
+  double widest = 0;
+  for (NodeId id = 0; id < run.nodes.size(); ++id)
+    widest = std::max(widest, radius[id] = robots::InscribedRadius(run.nodes[id].model));
+  const double cell = std::max(2 * widest, 1e-3);
+  const auto key = [&](long long cx, long long cy) { return cx * 4000003LL + cy; };
+  std::unordered_map<long long, std::vector<NodeId>> cells;
+  for (NodeId id = 0; id < run.nodes.size(); ++id) {
+    const sim::NodeSpec& n = run.nodes[id];
+    const long long cx = std::llround(std::floor(n.pose.x / cell)), cy = std::llround(std::floor(n.pose.y / cell));
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        const auto near = cells.find(key(cx + dx, cy + dy));
+        if (near == cells.end()) continue;
+        for (NodeId other : near->second) {
+          const double gap = Norm(run.nodes[other].pose.position() - n.pose.position());
+          if (gap >= radius[id] + radius[other]) continue;
+          throw ScenarioError(file, places[id].line, places[id].field,
+                              At(n) + " overlaps " + At(run.nodes[other]) + " (line " +
+                                  std::to_string(places[other].line) + "): their bodies reach " + Metres(radius[id]) +
+                                  " and " + Metres(radius[other]) + " m around their poses, which are " + Metres(gap) +
+                                  " m apart");
+        }
+      }
+    cells[key(cx, cy)].push_back(id);
+  }
+}
+
+}  // namespace
+
+void CheckPlacement(const std::string& file, const sim::RunSpec& run, const std::vector<NodePlace>& places,
+                    const std::vector<int>& obstacle_lines) {
+  CheckObstacles(file, run, places, obstacle_lines);
+  CheckPairs(file, run, places);
+}
+
+std::vector<std::string> FieldWarnings(const std::string& file, const sim::RunSpec& run,
+                                       const std::vector<NodePlace>& places) {
+  const auto [low, high] = sections::DefaultSpawnRegion(run);
+  const Vec2 margin = run.world_size * 0.5;  // "far": more than half the field beyond its edge
+  NodeId farthest = 0;
+  double worst = 0;
+  std::size_t outside = 0;
+  for (NodeId id = 0; id < run.nodes.size(); ++id) {
+    const Vec2 p = run.nodes[id].pose.position();
+    const double beyond_x = std::max(low.x - p.x, p.x - high.x), beyond_y = std::max(low.y - p.y, p.y - high.y);
+    if (beyond_x <= margin.x && beyond_y <= margin.y) continue;
+    const double beyond = std::max(beyond_x, beyond_y);
+    ++outside;
+    if (beyond > worst) worst = beyond, farthest = id;
+  }
+  if (outside == 0) return {};
+  return {ScenarioError(
+              file, places[farthest].line, places[farthest].field,
+              std::to_string(outside) + " node" + (outside == 1 ? "" : "s") +
+                  " lie far outside the field of world.size (" + Metres(run.world_size.x) + " x " +
+                  Metres(run.world_size.y) + " m, centred on the nodes and obstacles), " + At(run.nodes[farthest]) +
+                  " the farthest, " + Metres(worst) +
+                  " m beyond it: plots and spawn.region use the field; give world.size the extent of the scenario")
+              .what()};
+}
+
+}  // namespace sanet::scenario

@@ -14,7 +14,9 @@ second each) run as `sanet run` runs them, for a few simulated seconds each:
 It prints wall time, real-time factor, the profile's stages ("physics" is physics plus sensing,
 "control" the controllers, "other" the rest: the network), the ratio of each case to its
 baseline, the cost per robot-second, and peak memory per robot (summary.json's peak_memory_mb,
-the process's peak resident set).
+the process's peak resident set), and the start-up: the process's own wall time less the run's
+(loading and checking the scenario, printing the effective scenario once, building the world,
+writing the results).
 
   bench/swarm_bench.py [--sanet build/sanet] [--seconds 10] [--seconds-10k 3]
 """
@@ -24,6 +26,7 @@ import os
 import re
 import subprocess
 import tempfile
+import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -47,10 +50,14 @@ def with_yans(text):
 
 
 def run(sanet, scenario, seconds, out, threads=1):
+    start = time.monotonic()
     subprocess.run([sanet, "run", scenario, "--duration", str(seconds), "-q", "-o", out, "--threads", str(threads)],
                    check=True)
+    process = time.monotonic() - start
     with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+        summary = json.load(f)
+    summary["outside_run_s"] = process - summary["wall_time_s"]
+    return summary
 
 
 def main():
@@ -59,8 +66,8 @@ def main():
     parser.add_argument("--seconds", type=float, default=10, help="simulated seconds per 1k case")
     parser.add_argument("--seconds-10k", type=float, default=3, help="simulated seconds per 10k case")
     args = parser.parse_args()
-    print("%-28s %8s %7s %9s %9s %9s %12s %9s %10s" % (
-        "case", "wall s", "RTF", "physics", "control", "other", "us/robot-s", "vs base", "MB/robot"))
+    print("%-28s %8s %7s %9s %9s %9s %12s %9s %10s %9s" % (
+        "case", "wall s", "RTF", "physics", "control", "other", "us/robot-s", "vs base", "MB/robot", "start-up"))
     with tempfile.TemporaryDirectory() as tmp:
         for name, seconds, robots, extra in (("swarm-1k", args.seconds, 1000, True),
                                              ("swarm-10k", args.seconds_10k, 10000, False)):
@@ -78,10 +85,10 @@ def main():
                 physics = p["physics"] + p["sensing"] if threads == 1 else p["physics_wait"]
                 other = wall - physics - p["controllers"] - p["recording"]
                 base = base or wall
-                print("%-28s %8.2f %7.2f %9.2f %9.2f %9.2f %12.1f %8.2fx %10.3f" % (
+                print("%-28s %8.2f %7.2f %9.2f %9.2f %9.2f %12.1f %8.2fx %10.3f %8.2fs" % (
                     name + ", " + label, wall, s["real_time_factor"], p["physics"] + p["sensing"],
                     p["controllers"], other, wall / (robots * seconds) * 1e6, wall / base,
-                    s["peak_memory_mb"] / robots), flush=True)
+                    s["peak_memory_mb"] / robots, s["outside_run_s"]), flush=True)
 
 
 if __name__ == "__main__":

@@ -481,7 +481,7 @@ const Fields<Scenario>& OutputsFields() {
         "between trajectory samples; at least `world.physics_step`", true);
     f.Flag(
         "figures", [](Scenario& s) -> bool& { return s.run.figures; },
-        "draw `map.svg`, `packets.svg`, `trajectory-3d.svg` (and PNG copies); see [figures](#figures)");
+        "draw `map.svg` and `packets.svg` (and PNG copies); see [figures](#figures)");
     f.Number(
         "figure_tick", [](Scenario& s) -> double& { return s.run.figure_tick; }, "s", 0.1, 1e9,
         "between time marks on trajectories");

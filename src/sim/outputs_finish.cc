@@ -181,10 +181,6 @@ void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::op
     for (const net::PacketCounts& c : network->counts) in.received.push_back(c.received);
   std::vector<std::string> figures = {"map"};
   folder_.WriteWhole("map.svg", trace::MapSvg(in, spec_.figure_tick));
-  if (!in.tracks.empty()) {
-    folder_.WriteWhole("trajectory-3d.svg", trace::Trajectory3dSvg(in));
-    figures.push_back("trajectory-3d");
-  }
   if (!min_distances_.empty()) {
     folder_.WriteWhole("min_distance.svg", trace::LineSvg(spec_.name + ": smallest distance between robots", "time (s)",
                                                           "distance (m)", min_distances_, spec_.distance_reference));

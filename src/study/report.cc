@@ -164,6 +164,25 @@ std::vector<Series> Summarise(const StudyReader& study, const std::string& metri
   return series;
 }
 
+// Below this many runs a group's 95 % interval is too wide, and too dependent on the runs being
+// near normal, to mean much.
+constexpr int kFewRuns = 5;
+
+std::string FewRunsWarning(const std::vector<Series>& series) {
+  int few = 0, groups = 0, fewest = 1 << 30;
+  for (const Series& s : series)
+    for (const Point& p : s.points) {
+      ++groups;
+      if (p.stats.count < kFewRuns) ++few, fewest = std::min(fewest, p.stats.count);
+    }
+  if (few == 0) return "";
+  return "warning: " + std::to_string(few) + " of " + std::to_string(groups) + " groups " +
+         (few == 1 ? "has" : "have") + " fewer than " + std::to_string(kFewRuns) +
+         " runs (the fewest: " + std::to_string(fewest) +
+         "); their intervals are wide and lean on the values being near normal: " +
+         "give the sweep more seeds (--seeds 1-10)\n";
+}
+
 std::string FormatTable(const std::string& metric, const std::string& by, const std::vector<Series>& series) {
   std::ostringstream out;
   char line[256];
@@ -181,6 +200,7 @@ std::string FormatTable(const std::string& metric, const std::string& by, const 
       out << line;
     }
   }
+  out << FewRunsWarning(series);
   return out.str();
 }
 

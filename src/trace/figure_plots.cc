@@ -1,4 +1,4 @@
-// The figures that are plots rather than maps: a time series, and trajectories over time.
+// The figures that are plots rather than maps: a time series.
 #include <algorithm>
 #include <cmath>
 
@@ -55,45 +55,6 @@ std::string LineSvg(const std::string& title, const std::string& x_label, const 
   s << "<polyline fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.2\" points=\"";
   for (const auto& [x, y] : points) s << Num(px(x)) << "," << Num(py(y)) << " ";
   s << "\"/>\n</svg>\n";
-  return s.str();
-}
-
-// x and y on the ground, time upwards, seen obliquely: each robot's track is a curve rising
-// with time, as in the formation paper's figure.
-std::string Trajectory3dSvg(const FigureInput& in) {
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300, t1 = 1e-9;
-  for (const Track& t : in.tracks)
-    for (std::size_t i = 0; i < t.x.size(); ++i)
-      x0 = std::min(x0, t.x[i]), x1 = std::max(x1, t.x[i]), y0 = std::min(y0, t.y[i]), y1 = std::max(y1, t.y[i]),
-      t1 = std::max(t1, t.t[i]);
-  if (x0 > x1) x0 = x1 = y0 = y1 = 0;
-  const double w = 820, h = 620, span = std::max({x1 - x0, y1 - y0, 1.0});
-  const double k = 440 / span, kt = 380 / t1;  // px per metre, px per second
-  // Oblique projection: x to the right, y into the page (up and right), t straight up.
-  const auto P = [&](double x, double y, double t) {
-    return Num(80 + (x - x0) * k + (y - y0) * k * 0.45) + "," + Num(h - 60 - (y - y0) * k * 0.3 - t * kt);
-  };
-  std::ostringstream s;
-  Document(s, w, h, in.title + ": trajectories over time");
-  const auto axis = [&](double xa, double ya, double ta, double xb, double yb, double tb, const std::string& label) {
-    s << "<polyline fill=\"none\" stroke=\"#000000\" points=\"" << P(xa, ya, ta) << " " << P(xb, yb, tb) << "\"/>\n";
-    const std::string end = P(xb, yb, tb);
-    s << "<text x=\"" << end.substr(0, end.find(',')) << "\" y=\"" << end.substr(end.find(',') + 1)
-      << "\" font-size=\"12\" dx=\"6\" dy=\"4\">" << Escape(label) << "</text>\n";
-  };
-  const auto range = [](double a, double b) { return Num(a) + " to " + Num(b); };
-  axis(x0, y0, 0, x1, y0, 0, "x (m), " + range(x0, x1));
-  axis(x0, y0, 0, x0, y1, 0, "y (m), " + range(y0, y1));
-  axis(x0, y0, 0, x0, y0, t1, "time (s), " + range(0, t1));
-  for (std::size_t c = 0; c < in.tracks.size(); ++c) {
-    const Track& t = in.tracks[c];
-    s << "<polyline fill=\"none\" stroke=\"" << kColors[c % 6] << "\" stroke-width=\"1.3\" points=\"";
-    for (std::size_t i = 0; i < t.x.size(); ++i) s << P(t.x[i], t.y[i], t.t[i]) << " ";
-    s << "\"/>\n<line x1=\"" << w - 150 << "\" y1=\"" << 50 + 18 * c << "\" x2=\"" << w - 130 << "\" y2=\""
-      << 50 + 18 * c << "\" stroke=\"" << kColors[c % 6] << "\" stroke-width=\"2\"/><text x=\"" << w - 124 << "\" y=\""
-      << 54 + 18 * c << "\" font-size=\"11\">" << Escape(t.node) << "</text>\n";
-  }
-  s << "</svg>\n";
   return s.str();
 }
 

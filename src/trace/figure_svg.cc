@@ -53,10 +53,11 @@ Frame Frame::Around(const FigureInput& in) {
   for (const FigureNode& n : in.nodes) grow(n.final_pose.x, n.final_pose.y), grow(n.start.x, n.start.y);
   for (const Track& t : in.tracks)
     for (std::size_t i = 0; i < t.x.size(); ++i) grow(t.x[i], t.y[i]);
-  for (const FigureObstacle& o : in.obstacles) {
-    const double r = std::hypot(o.size.x, o.size.y) / 2;
-    grow(o.center.x - r, o.center.y - r), grow(o.center.x + r, o.center.y + r);
-  }
+  for (const FigureObstacle& o : in.obstacles)  // its corners: a long wall widens only its own way
+    for (auto [u, v] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+      const Vec2 corner = Rotate({u * o.size.x / 2, v * o.size.y / 2}, o.yaw);
+      grow(o.center.x + corner.x, o.center.y + corner.y);
+    }
   const double pad = 0.06 * std::max({x1 - x0, y1 - y0, 1.0});
   return Frame(x0 - pad, x1 + pad, y0 - pad, y1 + pad);
 }

@@ -29,9 +29,21 @@ void Obstacles(std::ostringstream& s, const svg::Frame& f, const FigureInput& in
   }
 }
 
+// A mote that was pushed (more than 5 cm) shows where it stood, hollow, and its way to where it
+// ended.
+void PushedMote(std::ostringstream& s, const svg::Frame& f, const FigureNode& n) {
+  const Pose2D &a = n.start, &b = n.final_pose;
+  if (Norm(b.position() - a.position()) <= 0.05) return;
+  s << "<rect x=\"" << Num(f.X(a.x) - 3) << "\" y=\"" << Num(f.Y(a.y) - 3)
+    << "\" width=\"6\" height=\"6\" fill=\"none\" stroke=\"" << kMote << "\"/>\n<line x1=\"" << Num(f.X(a.x))
+    << "\" y1=\"" << Num(f.Y(a.y)) << "\" x2=\"" << Num(f.X(b.x)) << "\" y2=\"" << Num(f.Y(b.y)) << "\" stroke=\""
+    << kMote << "\" stroke-dasharray=\"3,2\"/>\n";
+}
+
 void Motes(std::ostringstream& s, const svg::Frame& f, const FigureInput& in, svg::Labels& labels) {
   for (const FigureNode& n : in.nodes) {
     if (!n.mote) continue;
+    PushedMote(s, f, n);
     const Pose2D& p = n.final_pose;
     s << "<rect x=\"" << Num(f.X(p.x) - 3) << "\" y=\"" << Num(f.Y(p.y) - 3) << "\" width=\"6\" height=\"6\" fill=\""
       << kMote << "\"/>\n";
@@ -93,14 +105,16 @@ std::string PacketsSvg(const FigureInput& in) {
   const svg::Frame f = svg::Frame::Around(in);
   std::ostringstream s;
   svg::Labels labels;
-  const bool motes = std::any_of(in.nodes.begin(), in.nodes.end(), [](const FigureNode& n) { return n.mote; });
-  f.Open(s, in.title + (motes ? ": IP packets received per mote" : ": IP packets received per robot"));
+  f.Open(s, in.title + ": IP packets received per node");
   Obstacles(s, f, in);
   const auto [few_it, most_it] = std::minmax_element(in.received.begin(), in.received.end());
   const double few = in.received.empty() ? 0 : *few_it, most = in.received.empty() ? 0 : *most_it;
-  // With motes the map is theirs (a robot ends on top of one); without, robots where they ended.
-  for (std::size_t i = 0; i < in.nodes.size() && i < in.received.size(); ++i) {
-    if (motes && !in.nodes[i].mote) continue;
+  // Motes first, robots (where they ended, smaller) over them: a robot often ends on a mote.
+  std::vector<std::size_t> order;
+  for (bool motes : {true, false})
+    for (std::size_t i = 0; i < in.nodes.size() && i < in.received.size(); ++i)
+      if (in.nodes[i].mote == motes) order.push_back(i);
+  for (std::size_t i : order) {
     const Pose2D& p = in.nodes[i].final_pose;
     const double share = most > few ? (in.received[i] - few) / (most - few) : 1;
     const bool mote = in.nodes[i].mote;

@@ -40,7 +40,6 @@ struct FigureInput {
 
 std::string MapSvg(const FigureInput& in, double tick);
 std::string PacketsSvg(const FigureInput& in);
-std::string Trajectory3dSvg(const FigureInput& in);
 // A time series as a line, with a dashed horizontal reference line when `reference` > 0.
 std::string LineSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
                     const std::vector<std::pair<double, double>>& points, double reference);

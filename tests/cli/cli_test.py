@@ -3,6 +3,7 @@
 import csv
 import json
 import os
+import shutil
 import sqlite3
 import subprocess
 import sys
@@ -112,6 +113,11 @@ class Cli(unittest.TestCase):
             self.assertEqual(out.returncode, 0, out.stderr)
             log = open(os.path.join(tmp, "log.csv")).read()
             self.assertIn("robot,arrived", log)
+            # The first run shows something: the map, whose PNG the README says to open.
+            self.assertIn("map.svg", json.load(open(os.path.join(tmp, "summary.json")))["files"])
+            if shutil.which("rsvg-convert"):
+                with open(os.path.join(tmp, "map.png"), "rb") as png:
+                    self.assertEqual(png.read(8), b"\x89PNG\r\n\x1a\n")
 
     def test_the_sensor_network_scenario_carries_messages_over_many_hops(self):
         with tempfile.TemporaryDirectory() as tmp:

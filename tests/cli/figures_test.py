@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The figures render alike in rsvg-convert and ImageMagick: converted with both, every disc of
 the packets map has its fill colour at its centre, the title strip is white, and the map has axes
-with units, a scale bar and a legend. A run with figures also writes trajectory-3d.svg and PNG
-copies. Needs rsvg-convert and ImageMagick (./setup installs them); skipped, saying so, without."""
+with units, framed on what is drawn, a scale bar and a legend; the packets map shows robots as
+well as motes. A run with figures also writes PNG copies. Needs rsvg-convert and ImageMagick (./setup installs them); skipped, saying so, without."""
 import os
 import re
 import shutil
@@ -53,7 +53,7 @@ class Figures(unittest.TestCase):
     def test_every_disc_is_drawn_in_both_renderers(self):
         document = xml.dom.minidom.parse(os.path.join(self.out, "packets.svg"))
         discs = document.getElementsByTagName("circle")
-        self.assertEqual(len(discs), 25, "one per mote (the robot's count is in packets.csv)")
+        self.assertEqual(len(discs), 26, "one per mote and one for the robot, where it ended")
         for k, disc in enumerate(discs):
             self.assertEqual(disc.childNodes.length, 0, "nothing nested in a shape")
             x, y = float(disc.getAttribute("cx")), float(disc.getAttribute("cy"))
@@ -79,13 +79,32 @@ class Figures(unittest.TestCase):
         self.assertGreater(len(labels), 10, "time marks are labelled")
         self.assertEqual(len(labels), len(set(labels)), "no two labels in the same place")
 
-    def test_png_copies_and_trajectories_over_time(self):
-        for name in ("map", "packets", "trajectory-3d"):
+    def test_png_copies(self):
+        for name in ("map", "packets"):
             self.assertTrue(os.path.exists(os.path.join(self.out, name + ".png")), name)
-        with open(os.path.join(self.out, "trajectory-3d.svg")) as f:
-            text = f.read()
-        self.assertIn("time (s)", text)
-        self.assertIn(">robot<", text)
+
+    def test_the_map_is_framed_on_what_it_draws(self):
+        """A long wall widens the frame only along itself; the axes cover the nodes, tracks and
+        obstacles and not much more."""
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = os.path.join(tmp, "wall.yaml")
+            with open(scenario, "w") as f:
+                f.write("duration: 5\nworld:\n  size: [30, 30]\n  obstacles:\n"
+                        "    - wall: {from: [0, 0], to: [30, 0]}\n"
+                        "nodes:\n  - {name: m0, model: mote, pose: [0, 2, 0]}\n"
+                        "  - {name: m1, model: mote, pose: [30, 4, 0]}\n"
+                        "outputs: {figures: true}\n")
+            subprocess.run([SANET, "run", scenario, "-q", "-o", os.path.join(tmp, "out")], check=True)
+            with open(os.path.join(tmp, "out", "map.svg")) as f:
+                text = f.read()
+        # x ticks sit under the plot (font-size 11, anchored middle); their values are the axis.
+        xs = [float(v) for v in re.findall(r'font-size="11" text-anchor="middle">(-?[\d.]+)</text>', text)]
+        ys = [float(v) for v in re.findall(r'font-size="11" text-anchor="end">(-?[\d.]+)</text>', text)]
+        self.assertTrue(xs and ys, "the axes have ticks")
+        self.assertGreaterEqual(min(xs), -3), self.assertLessEqual(max(xs), 33)
+        self.assertGreaterEqual(max(xs), 25, "the axis reaches the wall's far end")
+        self.assertGreaterEqual(min(ys), -5, "the wall along x does not stretch y by half its length")
+        self.assertLessEqual(max(ys), 8)
 
 
 if __name__ == "__main__":

@@ -207,6 +207,8 @@ class Report(unittest.TestCase):
         mean_28 = sum(v for p, v in values if p == 28) / 2
         line = [l for l in out.stdout.splitlines() if l.split()[:2] == ["28", "2"]][0]
         self.assertAlmostEqual(float(line.split()[2]), mean_28, places=3)
+        # Two seeds a group: the report says the intervals mean little.
+        self.assertIn("warning: 4 of 4 groups have fewer than 5 runs (the fewest: 2)", out.stdout)
 
     def test_plots_and_csv(self):
         svg = os.path.join(self.tmp.name, "plot.svg")

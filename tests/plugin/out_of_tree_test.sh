@@ -44,6 +44,13 @@ assert [m["name"] for m in metrics] == ["travel_time"] and float(metrics[0]["val
 print(f"robot ended at ({x:.2f}, {y:.2f})")
 PY
 
+# The same library built without installing sanet, against its build folder's package.
+cmake -S "$source_dir/examples/plugin" -B "$tmp/plugin-uninstalled" -Dsanet_DIR="$build_dir" > /dev/null
+cmake --build "$tmp/plugin-uninstalled" > /dev/null
+"$build_dir/sanet" list --library "$tmp/plugin-uninstalled/libdrive_to.so" > "$tmp/list-uninstalled.txt"
+grep -q "drive_to" "$tmp/list-uninstalled.txt" ||
+  { echo "the library built against the build folder does not load"; exit 1; }
+
 # An unknown parameter of the library's controller is reported with its line.
 sed 's/speed: 0.5}/speed: 0.5, sped: 1}/' "$tmp/scenario.yaml" > "$tmp/bad.yaml"
 set +e

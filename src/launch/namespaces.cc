@@ -6,10 +6,10 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "launch/shell.h"
+
 namespace sanet::hil {
 namespace {
-
-int Quiet(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
 
 std::string Millis(double seconds) { return std::to_string(seconds * 1000) + "ms"; }
 
@@ -17,27 +17,27 @@ std::string Millis(double seconds) { return std::to_string(seconds * 1000) + "ms
 
 bool NetworkNamespaces::Permitted(std::string* why) {
   const std::string probe = "sanetprobe" + std::to_string(::getpid());
-  if (Quiet("ip netns add " + probe) != 0) {
-    *why =
-        Quiet("command -v ip") != 0 ? "the ip command (iproute2) is missing" : "'ip netns add' is not permitted here";
+  if (RunQuietly("ip netns add " + probe) != 0) {
+    *why = RunQuietly("command -v ip") != 0 ? "the ip command (iproute2) is missing"
+                                            : "'ip netns add' is not permitted here";
     return false;
   }
-  Quiet("ip netns del " + probe);
+  RunQuietly("ip netns del " + probe);
   return true;
 }
 
 bool NetworkNamespaces::ShapingPermitted(std::string* why) {
   const std::string probe = "sanetprobe" + std::to_string(::getpid());
-  if (Quiet("ip netns add " + probe) != 0) {
+  if (RunQuietly("ip netns add " + probe) != 0) {
     *why = "no network namespaces";
     return false;
   }
-  const bool ok = Quiet("ip netns exec " + probe + " ip link add sanetdummy type dummy") == 0 &&
-                  Quiet("ip netns exec " + probe + " tc qdisc add dev sanetdummy root netem delay 1ms") == 0;
-  Quiet("ip netns del " + probe);
+  const bool ok = RunQuietly("ip netns exec " + probe + " ip link add sanetdummy type dummy") == 0 &&
+                  RunQuietly("ip netns exec " + probe + " tc qdisc add dev sanetdummy root netem delay 1ms") == 0;
+  RunQuietly("ip netns del " + probe);
   if (!ok)
-    *why = Quiet("command -v tc") != 0 ? "the tc command (iproute2) is missing"
-                                       : "this kernel has no netem queueing discipline (sch_netem)";
+    *why = RunQuietly("command -v tc") != 0 ? "the tc command (iproute2) is missing"
+                                            : "this kernel has no netem queueing discipline (sch_netem)";
   return ok;
 }
 
@@ -79,16 +79,17 @@ NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, co
 NetworkNamespaces::~NetworkNamespaces() { Remove(); }
 
 void NetworkNamespaces::Remove() {
-  for (const std::string& ns : made_) Quiet("ip netns del " + ns);  // takes its veth pair along
+  for (const std::string& ns : made_) RunQuietly("ip netns del " + ns);  // takes its veth pair along
   made_.clear();
-  if (bridge_) Quiet("ip link del " + tag_ + "br");
+  if (bridge_) RunQuietly("ip link del " + tag_ + "br");
   bridge_ = false;
 }
 
 std::string NetworkNamespaces::Namespace(std::uint32_t node) const { return tag_ + "-" + std::to_string(node); }
 
 void NetworkNamespaces::Run(const std::string& command) {
-  if (Quiet(command) != 0) throw std::runtime_error("could not set up the agents' network: '" + command + "' failed");
+  if (RunQuietly(command) != 0)
+    throw std::runtime_error("could not set up the agents' network: '" + command + "' failed");
 }
 
 }  // namespace sanet::hil

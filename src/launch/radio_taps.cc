@@ -12,13 +12,14 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "launch/shell.h"
+
 namespace sanet::hil {
 namespace {
 
-int Quiet(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
-
 void Run(const std::string& command) {
-  if (Quiet(command) != 0) throw std::runtime_error("could not set up the simulated radio: '" + command + "' failed");
+  if (RunQuietly(command) != 0)
+    throw std::runtime_error("could not set up the simulated radio: '" + command + "' failed");
 }
 
 // A tap in this namespace, named `name`; its descriptor, or -1 with errno set.
@@ -46,7 +47,7 @@ bool RadioTapsPermitted(std::string* why) {
   const int fd = OpenTap(probe);
   if (fd < 0) return *why = std::string("cannot create a tap device: ") + std::strerror(errno) + how, false;
   ::close(fd);
-  if (Quiet("command -v ip") != 0) return *why = "the ip command (iproute2) is missing", false;
+  if (RunQuietly("command -v ip") != 0) return *why = "the ip command (iproute2) is missing", false;
   return true;
 }
 

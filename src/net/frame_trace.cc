@@ -13,7 +13,6 @@ namespace sanet::net {
 namespace {
 
 constexpr std::uint16_t kArp = 0x0806, kIpv4 = 0x0800;
-constexpr std::uint8_t kUdp = 17;
 
 // What a data frame carries, from its LLC/SNAP, IP and UDP headers.
 const char* DataKind(const ns3::WifiMacHeader& mac, ns3::Ptr<ns3::Packet> body) {
@@ -21,7 +20,7 @@ const char* DataKind(const ns3::WifiMacHeader& mac, ns3::Ptr<ns3::Packet> body) 
   if (body->RemoveHeader(llc) == 0) return "data";
   if (llc.GetType() == kArp) return "arp";
   ns3::Ipv4Header ip;
-  if (llc.GetType() == kIpv4 && body->RemoveHeader(ip) != 0 && ip.GetProtocol() == kUdp) {
+  if (llc.GetType() == kIpv4 && body->RemoveHeader(ip) != 0 && ip.GetProtocol() == kUdpProtocol) {
     ns3::UdpHeader udp;
     if (body->PeekHeader(udp) != 0) {
       const std::uint16_t port = udp.GetDestinationPort();

@@ -20,6 +20,7 @@ enum class ChannelModel { kYans, kIndexed };
 enum class Routing { kNone, kAodv, kOlsr, kDsdv, kDsr };
 // The UDP ports of ns-3's routing protocols.
 constexpr std::uint16_t kAodvPort = 654, kOlsrPort = 698, kDsdvPort = 269;
+constexpr std::uint8_t kUdpProtocol = 17;  // IP protocol number
 
 const char* RoutingName(Routing routing);
 const char* ChannelName(ChannelModel model);

@@ -9,10 +9,10 @@
 
 #include <cstdio>
 
+#include "net/network_spec.h"
+
 namespace sanet::net {
 namespace {
-
-constexpr std::uint8_t kUdp = 17;
 
 const char* EventName(int e) {
   static const char* names[] = {"sent", "received", "forwarded", "dropped"};
@@ -99,7 +99,7 @@ void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {
 }
 
 std::string PacketTrace::Protocol(const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) const {
-  if (ip.GetProtocol() != kUdp) return ip.GetProtocol() == 48 ? "dsr" : "ip";
+  if (ip.GetProtocol() != kUdpProtocol) return ip.GetProtocol() == 48 ? "dsr" : "ip";
   ns3::UdpHeader udp;
   if (packet->PeekHeader(udp) == 0) return "udp";
   const std::uint16_t port = udp.GetDestinationPort();
@@ -155,7 +155,7 @@ void PacketTrace::RouteNeeded(NodeId node, NodeId destination, double now) {
 
 // A route reply addressed to the node that asked ends that node's discovery.
 void PacketTrace::CheckRouteReply(NodeId node, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) {
-  if (ip.GetProtocol() != kUdp || pending_.empty()) return;
+  if (ip.GetProtocol() != kUdpProtocol || pending_.empty()) return;
   ns3::Ptr<ns3::Packet> p = packet->Copy();
   ns3::UdpHeader udp;
   p->RemoveHeader(udp);

@@ -18,8 +18,9 @@ namespace sanet::sim {
 
 class RunWarnings {
  public:
-  // A mote that ends farther than this from its start was pushed (m).
-  static constexpr double kMoteMoved = 0.05;
+  // A mote that ends farther than this from its start was pushed (m): less, a robot brushing past,
+  // changes no radio link's length that matters.
+  static constexpr double kMoteMoved = 0.25;
 
   // The engine's message `text` of kind `kind` at simulated time `t`; `contacts` names the bodies
   // touching then ("r1 and world.obstacles[0]"), for the first of its kind.

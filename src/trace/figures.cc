@@ -29,11 +29,10 @@ void Obstacles(std::ostringstream& s, const svg::Frame& f, const FigureInput& in
   }
 }
 
-// A mote that was pushed (more than 5 cm) shows where it stood, hollow, and its way to where it
-// ended.
+// A mote that was pushed shows where it stood, hollow, and its way to where it ended.
 void PushedMote(std::ostringstream& s, const svg::Frame& f, const FigureNode& n) {
   const Pose2D &a = n.start, &b = n.final_pose;
-  if (Norm(b.position() - a.position()) <= 0.05) return;
+  if (!n.pushed) return;
   s << "<rect x=\"" << Num(f.X(a.x) - 3) << "\" y=\"" << Num(f.Y(a.y) - 3)
     << "\" width=\"6\" height=\"6\" fill=\"none\" stroke=\"" << kMote << "\"/>\n<line x1=\"" << Num(f.X(a.x))
     << "\" y1=\"" << Num(f.Y(a.y)) << "\" x2=\"" << Num(f.X(b.x)) << "\" y2=\"" << Num(f.Y(b.y)) << "\" stroke=\""

@@ -28,6 +28,7 @@ struct FigureNode {
   std::string name;
   bool mote = false;
   Pose2D start, final_pose;
+  bool pushed = false;  // a mote that robots pushed away (the run warns of it): drawn with its way
 };
 
 struct FigureInput {

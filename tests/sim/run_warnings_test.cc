@@ -86,7 +86,7 @@ TEST(RunWarnings, AMotePushedAwayIsListed) {
   EXPECT_EQ(summary["motes_moved"][0]["node"], "m0");
   EXPECT_GT(summary["motes_moved"][0]["moved_m"].get<double>(), 0.3) << "the robot shoved it towards the wall";
   ASSERT_EQ(summary["warnings"].size(), 1u);
-  EXPECT_NE(summary["warnings"][0].get<std::string>().find("1 mote was pushed more than 0.05 m"), std::string::npos);
+  EXPECT_NE(summary["warnings"][0].get<std::string>().find("1 mote was pushed more than 0.25 m"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,9 @@
+#include "launch/shell.h"
+
+#include <cstdlib>
+
+namespace sanet::hil {
+
+int RunQuietly(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
+
+}  // namespace sanet::hil

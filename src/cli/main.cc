@@ -134,6 +134,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   options.scenario_file = args.file;
   options.stop_requested = InterruptReason;
   options.force = args.force;
+  options.warnings = sc.warnings;
   options.provenance = ProvenanceOf(scenario::Effective(sc));
   ClaimFolder(options.output_dir, args.force);
   if (!args.quiet)
@@ -299,6 +300,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   options.output_dir = results;
   options.scenario_file = a.file;
   options.force = a.force;
+  options.warnings = sc.warnings;
   options.provenance = ProvenanceOf(effective);
   options.stop_requested = InterruptReason;
   options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
@@ -558,9 +560,9 @@ bool UnknownCommand(int argc, char** argv, CLI::App& app) {
   const std::string wanted = argv[1];
   if (std::find(names.begin(), names.end(), wanted) != names.end()) return false;
   const std::vector<std::string> close = ClosestNames(wanted, names);
-  std::fprintf(stderr, "sanet: '%s' is not a command%s; the commands are %s (sanet --help says what each does)\n",
-               wanted.c_str(), close.empty() ? "" : ("; did you mean " + OrList(close) + "?").c_str(),
-               OrList(names).c_str());
+  std::fprintf(
+      stderr, "sanet: error: '%s' is not a command.%s The commands are %s (sanet --help says what each does).\n",
+      wanted.c_str(), close.empty() ? "" : (" Did you mean " + OrList(close) + "?").c_str(), OrList(names).c_str());
   return true;
 }
 

@@ -30,7 +30,8 @@ std::vector<std::string> ClosestNames(const std::string& wanted, const std::vect
   const std::size_t limit = std::max<std::size_t>(3, wanted.size() / 2);
   std::vector<std::string> close;
   for (const auto& [distance, name] : ranked)
-    if (distance <= limit && close.size() < count) close.push_back(name);
+    if (distance <= limit && close.size() < count && std::find(close.begin(), close.end(), name) == close.end())
+      close.push_back(name);
   return close;
 }
 

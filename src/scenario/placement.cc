@@ -30,8 +30,10 @@ void CheckObstacles(const std::string& file, const sim::RunSpec& run, const std:
       throw ScenarioError(file, places[id].line, places[id].field,
                           At(n) + " is inside world.obstacles[" + std::to_string(i) + "], a " + run.obstacles[i].kind +
                               " (line " + std::to_string(obstacle_lines.at(i)) + "): its body reaches " +
-                              Metres(radius) + " m around its pose, and the " + run.obstacles[i].kind + " is " +
-                              Metres(gap) + " m away; move one of them");
+                              Metres(radius) + " m around its pose, and " +
+                              (gap > 0 ? "the " + run.obstacles[i].kind + " is " + Metres(gap) + " m away"
+                                       : "its pose is inside the " + run.obstacles[i].kind) +
+                              "; move one of them");
     }
   }
 }
@@ -59,7 +61,7 @@ void CheckPairs(const std::string& file, const sim::RunSpec& run, const std::vec
                               At(n) + " overlaps " + At(run.nodes[other]) + " (line " +
                                   std::to_string(places[other].line) + "): their bodies reach " + Metres(radius[id]) +
                                   " and " + Metres(radius[other]) + " m around their poses, which are " + Metres(gap) +
-                                  " m apart");
+                                  " m apart; move one of them");
         }
       }
     cells[key(cx, cy)].push_back(id);
@@ -76,8 +78,14 @@ void CheckPlacement(const std::string& file, const sim::RunSpec& run, const std:
 
 std::vector<std::string> FieldWarnings(const std::string& file, const sim::RunSpec& run,
                                        const std::vector<NodePlace>& places) {
-  const auto [low, high] = sections::DefaultSpawnRegion(run);
+  // Centred on the nodes' median, not their middle, so that one node far away is the one named.
+  std::vector<double> xs, ys;
+  for (const sim::NodeSpec& n : run.nodes) xs.push_back(n.pose.x), ys.push_back(n.pose.y);
+  std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
+  std::nth_element(ys.begin(), ys.begin() + ys.size() / 2, ys.end());
+  const Vec2 centre{xs[xs.size() / 2], ys[ys.size() / 2]};
   const Vec2 margin = run.world_size * 0.5;  // "far": more than half the field beyond its edge
+  const Vec2 low = centre - margin, high = centre + margin;
   NodeId farthest = 0;
   double worst = 0;
   std::size_t outside = 0;
@@ -90,13 +98,13 @@ std::vector<std::string> FieldWarnings(const std::string& file, const sim::RunSp
     if (beyond > worst) worst = beyond, farthest = id;
   }
   if (outside == 0) return {};
-  return {ScenarioError(
-              file, places[farthest].line, places[farthest].field,
-              std::to_string(outside) + " node" + (outside == 1 ? "" : "s") +
-                  " lie far outside the field of world.size (" + Metres(run.world_size.x) + " x " +
-                  Metres(run.world_size.y) + " m, centred on the nodes and obstacles), " + At(run.nodes[farthest]) +
-                  " the farthest, " + Metres(worst) +
-                  " m beyond it: plots and spawn.region use the field; give world.size the extent of the scenario")
+  return {ScenarioError(file, places[farthest].line, places[farthest].field,
+                        std::to_string(outside) + (outside == 1 ? " node lies" : " nodes lie") +
+                            " far outside the field of world.size (" + Metres(run.world_size.x) + " x " +
+                            Metres(run.world_size.y) + " m around the nodes), " + At(run.nodes[farthest]) +
+                            (outside == 1 ? ", " : " the farthest, ") + Metres(worst) +
+                            " m beyond it: spawn.region and the viewer's ground use the field; give world.size the "
+                            "extent of the scenario")
               .what()};
 }
 

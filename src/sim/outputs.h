@@ -50,8 +50,8 @@ struct RunResult {
   std::string fingerprint;
   Profile profile;
   std::vector<std::string> files;  // written into the output folder
-  // What the reader should know although nothing failed (sim/run_warnings.h): the command
-  // prints them; summary.json lists them.
+  // What the reader should know although nothing failed, found by the run (sim/run_warnings.h):
+  // the command prints them; summary.json lists them after RunOptions::warnings.
   std::vector<std::string> warnings;
 };
 
@@ -75,6 +75,8 @@ class Outputs {
   // `nodes` grows while the run goes (robots spawned by front ends).
   Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force = false);
   void Begin(const Provenance& provenance);
+  // Warnings said before the run (the command printed them): summary.json lists them first.
+  void Warned(std::vector<std::string> warnings) { said_before_ = std::move(warnings); }
   trace::ResultsFolder& folder() { return folder_; }
   // The run's trace, when the scenario asks for one and the results are written.
   trace::RunTrace* trace() { return trace_.get(); }
@@ -129,6 +131,7 @@ class Outputs {
   const RunSpec& spec_;
   const RunNodes& nodes_;
   RunWarnings warnings_;
+  std::vector<std::string> said_before_;
   trace::ResultsFolder folder_;
   std::string scenario_fingerprint_;  // with a provenance
   trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;

@@ -150,7 +150,9 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
   const nlohmann::ordered_json moved_motes = RunWarnings::MovedMotes(nodes_, final_poses);
   result.warnings = warnings_.Sentences(moved_motes);
   if (!moved_motes.empty()) extra["motes_moved"] = moved_motes;
-  extra["warnings"] = result.warnings;
+  std::vector<std::string> all = said_before_;
+  all.insert(all.end(), result.warnings.begin(), result.warnings.end());
+  extra["warnings"] = all;
   if (!folder_.writes()) return;
   if (spec_.figures) {
     WriteFigures(final_poses, network);

@@ -65,6 +65,7 @@ void World::Start(const RunOptions& options) {
   ran_ = true;
   running_ = std::make_unique<Running>(*this, options);
   if (options.provenance) running_->outputs.Begin(*options.provenance);
+  running_->outputs.Warned(options.warnings);
   running_->stepper.Begin(options.progress, options.stop_requested);
 }
 

@@ -179,8 +179,8 @@ std::string FewRunsWarning(const std::vector<Series>& series) {
   return "warning: " + std::to_string(few) + " of " + std::to_string(groups) + " groups " +
          (few == 1 ? "has" : "have") + " fewer than " + std::to_string(kFewRuns) +
          " runs (the fewest: " + std::to_string(fewest) +
-         "); their intervals are wide and lean on the values being near normal: " +
-         "give the sweep more seeds (--seeds 1-10)\n";
+         "); an interval from so few runs means little (wide, or narrow only by chance, and leaning on " +
+         "the values being near normal): give the sweep more seeds (--seeds 1-10)\n";
 }
 
 std::string FormatTable(const std::string& metric, const std::string& by, const std::vector<Series>& series) {

@@ -61,6 +61,9 @@ void TrackWithTicks(std::ostringstream& s, const svg::Frame& f, const Track& t, 
   s << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\" points=\"";
   for (std::size_t i = 0; i < t.x.size(); ++i) s << f.Point(t.x[i], t.y[i]) << " ";
   s << "\"/>\n";
+  if (!t.x.empty())  // the start, ringed: a robot that never moved is seen too
+    s << "<circle cx=\"" << Num(f.X(t.x.front())) << "\" cy=\"" << Num(f.Y(t.y.front()))
+      << "\" r=\"5\" fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\"/>\n";
   if (named && !t.x.empty())
     labels.Place(s, f.X(t.x.front()) + 6, f.Y(t.y.front()) + 14, t.node + " (start)", 12, color);
   double next_tick = tick;

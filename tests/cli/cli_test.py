@@ -33,7 +33,7 @@ class Cli(unittest.TestCase):
     def test_a_mistyped_command_is_told_the_closest_one(self):
         out = sanet("runn", SCENARIO)
         self.assertEqual(out.returncode, 2)
-        self.assertIn("'runn' is not a command; did you mean run?", out.stderr)
+        self.assertIn("sanet: error: 'runn' is not a command. Did you mean run?", out.stderr)
         self.assertIn("validate", out.stderr, "the commands are listed")
         self.assertNotIn("subcommand is required", out.stderr)
 

@@ -181,5 +181,33 @@ class Spawning(unittest.TestCase):
         self.assertTrue(any(r["node"] == "Probe2" and "spawned as USARBot.P2AT" in r["text"] for r in self.rows["log"]))
 
 
+class StockClientOnAShippedLoopScenario(unittest.TestCase):
+    """A stock USARSim client starts by spawning its robot with INIT: the shipped loop scenarios
+    allow it (their spawn sections offer the default classes)."""
+
+    def test_init_by_class_spawns_a_robot_that_drives(self):
+        source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios")
+        for name in ("formation-hil.yaml", "formation-radio.yaml"):
+            with self.subTest(scenario=name), tempfile.TemporaryDirectory() as tmp:
+                with open(os.path.join(source, name)) as f:
+                    server, port, out = serve(SANET, f.read(), tmp, "--duration", "6")
+                c = Client(port)
+                c.send("INIT {ClassName USARBot.P2DX} {Location 10,10,0.2} {Rotation 0,0,0}")
+                first = c.sensor("GroundTruth")
+                self.assertAlmostEqual(location(first)[0], 10, delta=0.1)
+                self.assertAlmostEqual(location(first)[1], 10, delta=0.1)
+                c.send("DRIVE {Left 4} {Right 4}")
+                last = first
+                deadline = time.time() + 4
+                while time.time() < deadline and location(last)[0] - location(first)[0] < 0.5:
+                    last = c.sensor("GroundTruth")
+                self.assertGreater(location(last)[0] - location(first)[0], 0.5, "the spawned robot drives")
+                c.close()
+                server.wait(timeout=60)
+                with open(os.path.join(out, "summary.json")) as f:
+                    nodes = {n["name"]: n for n in json.load(f)["nodes"]}
+                self.assertEqual(nodes["P2DX-1"].get("spawned_as"), "USARBot.P2DX")
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

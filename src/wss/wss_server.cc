@@ -103,10 +103,12 @@ void WssServer::GetSignal(Robot& r, const ProtocolMessage& m) {
   const std::string* other = m.Get("Robot");
   ProtocolMessage reply("SS");
   reply.Add("Robot", other ? *other : "");
-  Robot* o = other ? Registered(*other) : nullptr;
-  if (o == &r) return Send(r, reply.Add("Strength", "INF").Add("Error", "SS.To.Self"));
+  // Any node of the world answers, registered or not, as USARSim's WSS answers for any robot in
+  // the game.
+  const std::optional<NodeId> o = other ? driver_.Lookup(*other) : std::nullopt;
+  if (o == r.node) return Send(r, reply.Add("Strength", "INF").Add("Error", "SS.To.Self"));
   if (!o) return Send(r, reply.Add("Strength", "NaN").Add("Error", "Robot.Does.Not.Exist"));
-  const auto signal = driver_.SignalBetween(o->node, r.node);
+  const auto signal = driver_.SignalBetween(*o, r.node);
   Send(r, signal ? reply.Add("Strength", FormatNumber(signal->received_dbm))
                  : reply.Add("Strength", "NaN").Add("Error", "No.Simulated.Radio"));
 }
@@ -116,6 +118,10 @@ void WssServer::Dns(Robot& r, const ProtocolMessage& m) {
   ProtocolMessage reply("DNSREPLY");
   reply.Add("Robot", other ? *other : "");
   Robot* o = other ? Registered(*other) : nullptr;
+  // A robot of the world that has not registered has no ports to relay to: WSS's NoSuchRobot,
+  // with sanet's reason beside it.
+  if (!o && other && driver_.Lookup(*other))
+    return Send(r, reply.Add("Port", "-1").Add("Error", "NoSuchRobot").Add("Why", "Not.Registered.With.WSS"));
   if (!o || o == &r) return Send(r, reply.Add("Port", "-1").Add("Error", "NoSuchRobot"));
   if (!driver_.SignalBetween(r.node, o->node))
     return Send(r, reply.Add("Port", "-1").Add("Error", "No.Simulated.Radio"));

@@ -93,7 +93,10 @@ class WirelessSimulationServer(unittest.TestCase):
     @classmethod
     def run_the_story(cls):
         w1, w2 = Wss(cls.wss_port), Wss(cls.wss_port)
-        cls.init = [w1.ask("INIT {Robot r1} {Port 4999}"), w2.ask(f"INIT {{Robot r2}} {{Port {cls.r2_port}}}")]
+        cls.init = [w1.ask("INIT {Robot r1} {Port 4999}")]
+        # r2 is in the world but not yet registered: GETSS answers from the radio, DNS cannot.
+        cls.errors.update({"unregistered": w1.ask("GETSS {Robot r2}"), "dns unregistered": w1.ask("DNS {Robot r2}")})
+        cls.init.append(w2.ask(f"INIT {{Robot r2}} {{Port {cls.r2_port}}}"))
         cls.errors.update({"taken": Wss(cls.wss_port).ask("INIT {Robot r1} {Port 5000}"),
                            "self": w1.ask("GETSS {Robot r1}"), "unknown": w1.ask("GETSS {Robot nobody}"),
                            "dns unknown": w1.ask("DNS {Robot nobody}"), "dns self": w1.ask("DNS {Robot r1}"),
@@ -150,6 +153,10 @@ class WirelessSimulationServer(unittest.TestCase):
         self.assertEqual(e["taken"], "ERROR {Reason Robot.Alread.Exists}")
         self.assertEqual(e["self"], "SS {Robot r1} {Strength INF} {Error SS.To.Self}")
         self.assertEqual(e["unknown"], "SS {Robot nobody} {Strength NaN} {Error Robot.Does.Not.Exist}")
+        self.assertAlmostEqual(float(field(e["unregistered"], "Strength")), model_dbm(8), delta=0.5,
+                               msg="a robot of the world answers whether or not it registered: " + e["unregistered"])
+        self.assertEqual(e["dns unregistered"],
+                         "DNSREPLY {Robot r2} {Port -1} {Error NoSuchRobot} {Why Not.Registered.With.WSS}")
         self.assertEqual(e["dns unknown"], "DNSREPLY {Robot nobody} {Port -1} {Error NoSuchRobot}")
         self.assertEqual(e["dns self"], "DNSREPLY {Robot r1} {Port -1} {Error NoSuchRobot}")
         self.assertEqual(e["dns port"], "DNSREPLY {Robot r2} {Port -1} {Error RobotDoesNotListenOnThisPort}")

@@ -270,7 +270,27 @@ void RemoteNode::TakeSensor(const ProtocolMessage& m) {
         scan.ranges.push_back(at == std::string::npos ? 0 : std::atof(value.c_str() + at + 1));
       }
     if (scan.ranges.size() == scan.angles.size()) ir_ = scan;
+  } else if (*type == "Bearing") {
+    TakeBearings(m);
   }
+}
+
+// {Name R Distance d Bearing b} per node in range; b in USARSim's frame (clockwise).
+void RemoteNode::TakeBearings(const ProtocolMessage& m) {
+  bearings_.clear();
+  for (const auto& [key, value] : m.fields) {
+    if (key != "Name") continue;
+    char name[128];
+    double distance = 0, angle = 0;
+    if (std::sscanf(value.c_str(), "%127s Distance %lf Bearing %lf", name, &distance, &angle) != 3) continue;
+    if (const auto node = Lookup(name)) bearings_[*node] = BearingReading{distance, -angle};
+  }
+}
+
+std::optional<BearingReading> RemoteNode::Bearing(NodeId target) {
+  const auto it = bearings_.find(target);
+  if (it == bearings_.end()) return std::nullopt;
+  return it->second;
 }
 
 bool RemoteNode::ApplyDrive(const Twist2D& v) {

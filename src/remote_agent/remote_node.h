@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -83,7 +84,8 @@ class RemoteNode : public Node {
   std::optional<RangeScan> Laser() override { return laser_; }
   std::optional<Pose2D> Odometry() override { return odometry_; }
   std::optional<Pose2D> GroundTruth() override { return truth_; }
-  std::optional<BearingReading> Bearing(NodeId) override { return std::nullopt; }  // not served
+  // From the server's last bearing line (nodes within the sensor's range then).
+  std::optional<BearingReading> Bearing(NodeId target) override;
   bool Holonomic() const override { return spec_.nodes[id_].model.kind == robots::ModelKind::kOmni3; }
   void Send(NodeId to, const Bytes& payload) override;
   void Broadcast(const Bytes& payload) override;
@@ -102,6 +104,7 @@ class RemoteNode : public Node {
   void Command(const ProtocolMessage& m);
   void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
   void TakeSensor(const ProtocolMessage& m);
+  void TakeBearings(const ProtocolMessage& m);
   void ReadUdp(const std::function<void(const Message&)>& deliver);
   void TakeDatagram(const Bytes& datagram, const std::function<void(const Message&)>& deliver);
   void Reject(const std::string& why);
@@ -128,6 +131,7 @@ class RemoteNode : public Node {
   std::uint64_t next_sequence_ = 1;                // of this agent's datagrams
   std::vector<ReplayWindow> replays_;              // per sender
   std::optional<Pose2D> truth_, odometry_;
+  std::map<NodeId, BearingReading> bearings_;
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;
   std::uint64_t messages_sent_ = 0;

@@ -275,7 +275,7 @@ void SimServer::Drive(Client& c, const ProtocolMessage& m) {
 void SimServer::SendSensors(Client& c, double now) {
   if (now + 1e-9 >= c.next_sensors) {
     c.next_sensors = now + settings_.sensor_period;
-    for (const ProtocolMessage& line : SensorLines(driver_.TakeReadings(*c.robot, Owner(c)))) Send(c, line);
+    for (const ProtocolMessage& line : SensorLines(driver_.TakeReadings(*c.robot, Owner(c)), c.sanet)) Send(c, line);
   }
   if (now + 1e-9 >= c.next_status) {
     c.next_status = now + settings_.status_period;
@@ -292,7 +292,18 @@ void SimServer::SendSensors(Client& c, double now) {
   }
 }
 
-std::vector<ProtocolMessage> SimServer::SensorLines(const sim::SensorReadings& r) {
+// sanet extension: SEN {Time t} {Type Bearing} {Name R Distance d Bearing b} ..., one Name per
+// node within the sensor's range, the angle in USARSim's frame (clockwise: left is negative).
+ProtocolMessage SimServer::BearingLine(const sim::SensorReadings& r) const {
+  ProtocolMessage line{"SEN"};
+  line.Add("Time", FormatNumber(r.time)).Add("Type", "Bearing");
+  for (const auto& [node, b] : *r.bearings)
+    line.Add("Name",
+             driver_.NameOf(node) + " Distance " + FormatNumber(b.distance) + " Bearing " + FormatNumber(-b.bearing));
+  return line;
+}
+
+std::vector<ProtocolMessage> SimServer::SensorLines(const sim::SensorReadings& r, bool sanet) const {
   std::vector<ProtocolMessage> lines;
   const std::string time = FormatNumber(r.time);
   const auto p = ToUsarsim(r.ground_truth);
@@ -327,6 +338,7 @@ std::vector<ProtocolMessage> SimServer::SensorLines(const sim::SensorReadings& r
       sonar.Add("Name", "IR" + std::to_string(i) + " Range " + FormatNumber(r.ir->ranges[i]));
     lines.push_back(sonar);
   }
+  if (sanet && r.bearings) lines.push_back(BearingLine(r));
   return lines;
 }
 

@@ -111,7 +111,9 @@ class SimServer : public sim::RunObserver {
   Node& NodeOf(const Client& c) { return driver_.NodeOf(*c.robot, Owner(c)); }
   std::string Owner(const Client& c) const { return "client " + c.peer; }
   void SendSensors(Client& c, double now);
-  static std::vector<ProtocolMessage> SensorLines(const sim::SensorReadings& readings);
+  // `sanet`: the client understands sanet's extension lines (the bearing sensor's).
+  std::vector<ProtocolMessage> SensorLines(const sim::SensorReadings& readings, bool sanet) const;
+  ProtocolMessage BearingLine(const sim::SensorReadings& readings) const;
   void Send(Client& c, const ProtocolMessage& m);
   void Error(Client& c, const std::string& why);
   void Drop(Client& c, const std::string& why);

@@ -103,6 +103,13 @@ const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owne
   r.odometry = model.Odometry();
   r.laser = model.Laser();
   r.ir = model.Ir();
+  r.bearings.reset();
+  if (model.spec().sensors.bearing) {
+    r.bearings.emplace();
+    for (NodeId other = 0; other < NodeCount(); ++other)
+      if (other != robot)
+        if (const auto b = model.Bearing(parts_.TruePose(other))) r.bearings->push_back({other, *b});
+  }
   return r;
 }
 

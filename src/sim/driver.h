@@ -30,6 +30,8 @@ struct SensorReadings {
   Twist2D velocity;   // world frame
   std::optional<Pose2D> odometry;
   std::optional<RangeScan> laser, ir;
+  // With a bearing sensor: every other node within its range, as Node::Bearing would give it.
+  std::optional<std::vector<std::pair<NodeId, BearingReading>>> bearings;
 };
 
 class Driver {

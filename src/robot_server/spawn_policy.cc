@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/metres.h"
+
 namespace sanet::hil {
 namespace {
 
@@ -17,12 +19,6 @@ bool SafeName(const std::string& name) {
   return std::all_of(name.begin(), name.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
   });
-}
-
-std::string Metres(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", std::fabs(v) < 0.005 ? 0.0 : v);  // never "-0.00"
-  return text;
 }
 
 std::string Point(Vec2 p) { return "(" + Metres(p.x) + ", " + Metres(p.y) + ")"; }

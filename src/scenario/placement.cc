@@ -5,17 +5,12 @@
 #include <cstdio>
 #include <unordered_map>
 
+#include "core/metres.h"
 #include "scenario/yaml_reader.h"
 #include "sections/spawn_section.h"
 
 namespace sanet::scenario {
 namespace {
-
-std::string Metres(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", std::fabs(v) < 0.005 ? 0.0 : v);  // never "-0.00"
-  return text;
-}
 
 std::string At(const sim::NodeSpec& n) { return n.name + " at (" + Metres(n.pose.x) + ", " + Metres(n.pose.y) + ")"; }
 

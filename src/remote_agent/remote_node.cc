@@ -75,6 +75,9 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
     if (const auto node = Lookup(p.robot); node && !p.address.empty())
       peers_[*node] = Ipv4Endpoint(p.address, PortOf(*node));
   OpenPeerSocket();
+  LoopNetworkView::Hooks hooks{[this] { return Now(); }, [this] { return PeerAddresses(); },
+                               [this](const std::string& text) { Log(text); }};
+  view_ = std::make_unique<LoopNetworkView>(spec_, id_, *link_, std::move(hooks));
   ProtocolMessage init("INIT");
   init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());
   Command(init);
@@ -236,6 +239,18 @@ void RemoteNode::TakePeer(const ProtocolMessage& m) {
     std::fprintf(stderr, "sanet agent %s: the server gave %s a peer address that is none: %s\n", Name().c_str(),
                  name->c_str(), address->c_str());
   }
+}
+
+// Where each node's agent listens for the others, as far as this agent knows: the network
+// view's map from the kernel's addresses to nodes.
+std::vector<std::optional<Ipv4>> RemoteNode::PeerAddresses() const {
+  std::vector<std::optional<Ipv4>> addresses(spec_.nodes.size());
+  for (NodeId id = 0; id < spec_.nodes.size(); ++id)
+    if (peers_[id])
+      addresses[id] = peers_[id]->sin_addr.s_addr;
+    else if (!settings_.udp_subnet.empty() && IsAgent(id))
+      addresses[id] = Ipv4Endpoint(HostOf(id), 0).sin_addr.s_addr;
+  return addresses;
 }
 
 void RemoteNode::TakeSensor(const ProtocolMessage& m) {

@@ -2,7 +2,8 @@
 // robot protocol (a TCP client of `sanet serve`), messages to other agents over real UDP
 // sockets (one port per node of the scenario), messages to and from the nodes that live in the
 // server (motes) over the protocol connection, through the robot's own node in the server's
-// ns-3 network. The controller cannot tell it from the simulated node.
+// ns-3 network; its network view is that node's over the simulated radio, the host kernel's over
+// real networks (loop_network_view.h). The controller cannot tell it from the simulated node.
 #pragma once
 
 #include <netinet/in.h>
@@ -16,8 +17,8 @@
 #include <vector>
 
 #include "core/random_stream.h"
-#include "net/empty_view.h"
 #include "remote_agent/clock_sync.h"
+#include "remote_agent/loop_network_view.h"
 #include "remote_agent/server_link.h"
 #include "sanet/node.h"
 #include "sections/loop_section.h"
@@ -90,7 +91,7 @@ class RemoteNode : public Node {
   void Send(NodeId to, const Bytes& payload) override;
   void Broadcast(const Bytes& payload) override;
   void Flood(const Bytes& payload) override;
-  NetworkView& Network() override { return view_; }
+  NetworkView& Network() override { return *view_; }
   double Random() override { return random_.Uniform(); }
   void Log(const std::string& text) override;
   void Transition(const std::string& from, const std::string& to, const std::string& why) override;
@@ -114,13 +115,14 @@ class RemoteNode : public Node {
   std::uint16_t PortOf(NodeId node) const;
   void OpenPeerSocket();
   void TakePeer(const ProtocolMessage& m);
+  std::vector<std::optional<Ipv4>> PeerAddresses() const;
 
   const sim::RunSpec& spec_;
   NodeId id_;
   AgentSettings settings_;
   std::unique_ptr<ServerLink> link_;
   int udp_ = -1;
-  net::EmptyView view_{"udp"};
+  std::unique_ptr<LoopNetworkView> view_;
   RandomStream random_;
   std::optional<double> clock_origin_;             // a shared clock: the server's monotonic clock at time 0
   std::unique_ptr<ClockSync> clock_sync_;          // otherwise

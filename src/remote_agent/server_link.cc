@@ -121,29 +121,54 @@ bool ServerLink::Read(std::vector<ProtocolMessage>& lines) {
   return fd_ >= 0 || !lines.empty();
 }
 
+// Waits up to `timeout` s for the first line that `answers`; the others wait for Read. Nothing
+// when the time is up or the server has closed.
+std::optional<ProtocolMessage> ServerLink::WaitFor(const std::function<bool(const ProtocolMessage&)>& answers,
+                                                   double timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
+  std::vector<ProtocolMessage> kept;
+  std::optional<ProtocolMessage> answer;
+  bool open = true;
+  while (!answer && open && std::chrono::steady_clock::now() < deadline) {
+    std::vector<ProtocolMessage> lines;
+    open = Read(lines);
+    for (ProtocolMessage& line : lines)
+      if (!answer && answers(line))
+        answer = std::move(line);
+      else
+        kept.push_back(std::move(line));
+    if (answer || !open) break;
+    pollfd p{fd_, POLLIN, 0};
+    ::poll(&p, 1, std::max(1, static_cast<int>(timeout * 1000 / 20)));
+  }
+  kept.insert(kept.end(), std::make_move_iterator(waiting_.begin()), std::make_move_iterator(waiting_.end()));
+  waiting_ = std::move(kept);
+  return answer;
+}
+
 // Waits for the first line of `type`; other lines wait for Read. An ERR is the server's answer.
 ProtocolMessage ServerLink::Await(const std::string& type, const std::string& request) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kReplyWait);
-  std::vector<ProtocolMessage> kept;
-  while (std::chrono::steady_clock::now() < deadline) {
-    std::vector<ProtocolMessage> lines;
-    const bool open = Read(lines);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-      if (lines[i].type == type || lines[i].type == "ERR") {
-        kept.insert(kept.end(), std::make_move_iterator(lines.begin() + i + 1), std::make_move_iterator(lines.end()));
-        waiting_ = std::move(kept);
-        if (lines[i].type == type) return lines[i];
-        const std::string* text = lines[i].Get("Message");
-        throw std::runtime_error("the server at " + address_ + " says: " + (text ? *text : "error"));
-      }
-      kept.push_back(std::move(lines[i]));
-    }
-    if (!open) throw std::runtime_error("the server at " + address_ + " closed the connection");
-    pollfd p{fd_, POLLIN, 0};
-    ::poll(&p, 1, 50);
+  const auto line = WaitFor([&](const ProtocolMessage& m) { return m.type == type || m.type == "ERR"; }, kReplyWait);
+  if (line && line->type == type) return *line;
+  if (line) {
+    const std::string* text = line->Get("Message");
+    throw std::runtime_error("the server at " + address_ + " says: " + (text ? *text : "error"));
   }
+  if (fd_ < 0) throw std::runtime_error("the server at " + address_ + " closed the connection");
   throw std::runtime_error("the server at " + address_ + " did not answer" + (request.empty() ? "" : " " + request) +
                            " within " + std::to_string(static_cast<int>(kReplyWait)) + " s");
+}
+
+std::optional<ProtocolMessage> ServerLink::Ask(const ProtocolMessage& request, const std::string& reply_type,
+                                               double timeout) {
+  Send(request);
+  return WaitFor(
+      [&](const ProtocolMessage& m) {
+        if (m.type == reply_type) return true;
+        const std::string* text = m.Get("Message");
+        return m.type == "ERR" && text && text->find(request.type) != std::string::npos;
+      },
+      timeout);
 }
 
 ServerHello ServerLink::Handshake(int protocol, const std::string& fingerprint) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,11 +45,15 @@ class ServerLink {
   PluginIdentity FetchPlugin(const std::string& robot);
 
   void Send(const ProtocolMessage& m);
+  // Sends `request` and waits up to `timeout` s for its answer, a line of `reply_type` or an ERR
+  // that names the request; lines that come meanwhile wait for Read. Nothing on a timeout.
+  std::optional<ProtocolMessage> Ask(const ProtocolMessage& request, const std::string& reply_type, double timeout);
   // The lines that have arrived, without waiting; false once the server has closed.
   bool Read(std::vector<ProtocolMessage>& lines);
 
  private:
   ProtocolMessage Await(const std::string& type, const std::string& request);
+  std::optional<ProtocolMessage> WaitFor(const std::function<bool(const ProtocolMessage&)>& answers, double timeout);
   std::string host_, address_;
   int fd_ = -1;
   LineReader reader_{1 << 20};

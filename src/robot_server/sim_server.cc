@@ -101,6 +101,7 @@ void SimServer::Poll() {
     time_service_ = std::make_unique<TimeService>(settings_.bind, lines_->port(), wall_start_);
   }
   lines_->Read();
+  AnswerNetworkQueries(now);
   for (auto& [id, c] : clients_)
     if (c.open && c.robot) SendSensors(c, now);
   lines_->Write();
@@ -145,6 +146,8 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "STATS") return TakeStats(c, m);
   if (m.type == "PEER") return TakePeer(c, m);
   if (m.type == "CLOCK") return TakeClock(c, m);
+  if (m.type == "GETNET") return AskNetwork(c);
+  if (m.type == "INVALIDATEROUTE" || m.type == "REQUESTROUTE") return ChangeRoute(c, m);
   if (m.type == "RECV") {
     const std::string* from = m.Get("From");
     std::string error;

@@ -35,6 +35,7 @@ struct ServerSettings {
   double sensor_period = 0.1;          // s between SEN lines per sensor
   double status_period = 0.2;          // s between STA lines
   double poll_period = 0.005;          // s between socket polls
+  double net_period = 0.02;            // s of simulated time between two NET answers to one client
   std::size_t max_line = 4096;         // bytes; a longer line closes the connection
   std::size_t max_backlog = 1 << 20;   // bytes waiting for a client that does not read: then it is dropped
   double stall_timeout = 2.0;          // s a client may leave its lines unread before it is dropped
@@ -87,6 +88,8 @@ class SimServer : public sim::RunObserver {
     bool told_off = false;  // told once that its robot is switched off
     bool agent = false;     // it has sent STATS: a sanet agent, which speaks five times a second
     bool sanet = false;     // it has said SANET: it understands sanet's extension lines
+    bool net_asked = false;  // it has sent GETNET, not answered yet
+    double next_net = 0;     // the rate limit's: no NET answer before this time
   };
   void Poll();
   void Greet(ConnectionId id);
@@ -105,6 +108,11 @@ class SimServer : public sim::RunObserver {
   void SendPlugin(Client& c, const ProtocolMessage& m);
   void TakePeer(Client& c, const ProtocolMessage& m);
   void TakeClock(Client& c, const ProtocolMessage& m);
+  // The routing view in the loop (robot_server/network_lines.cc).
+  void AskNetwork(Client& c);
+  void AnswerNetworkQueries(double now);
+  ProtocolMessage NetworkLine(NodeId robot, double now) const;
+  void ChangeRoute(Client& c, const ProtocolMessage& m);
   void Refuse(Client& c, const std::string& why);
   sim::InboxResult Forward(NodeId to, const Message& message);
   Client* ClientOf(NodeId robot);

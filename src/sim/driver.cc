@@ -2,6 +2,7 @@
 
 #include <ns3/simulator.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "sim/assembly.h"
@@ -119,7 +120,20 @@ const SensorReadings& Driver::LastReadings(NodeId robot) const {
 }
 
 std::optional<Signal> Driver::SignalBetween(NodeId from, NodeId to) const { return parts_.SignalBetween(from, to); }
-void Driver::JoinTap(NodeId id, int fd, const std::string& tap_mac) { parts_.JoinTap(id, fd, tap_mac); }
+void Driver::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
+  parts_.JoinTap(id, fd, tap_mac);
+  tapped_.push_back(id);
+}
+
+bool Driver::HasTap(NodeId id) const {
+  CheckId(id);
+  return std::find(tapped_.begin(), tapped_.end(), id) != tapped_.end();
+}
+
+const NetworkView& Driver::NetworkOf(NodeId id) const {
+  CheckId(id);
+  return parts_.transport().View(id);
+}
 void Driver::SetRemoteInbox(RemoteInbox inbox) { parts_.SetRemoteInbox(std::move(inbox)); }
 void Driver::RecordDelivery(NodeId to, const Message& message) { parts_.RecordDelivery(to, message); }
 void Driver::Log(NodeId node, const std::string& text) { parts_.Log(node, text); }

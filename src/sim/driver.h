@@ -78,6 +78,11 @@ class Driver {
   std::optional<Signal> SignalBetween(NodeId from, NodeId to) const;
   // Joins a real IP stack (a network namespace's tap `fd`, MAC `tap_mac`) to node `id`'s radio.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
+  // Whether a real IP stack is joined to the node's radio: its programs' traffic crosses it.
+  bool HasTap(NodeId id) const;
+  // What the node's network layer knows now (routing table, neighbours), for anyone to read;
+  // changing it (invalidate, request) is its owner's, through NodeOf.
+  const NetworkView& NetworkOf(NodeId id) const;
   // Messages that reach a node driven from outside go to `inbox` (nullptr: none).
   void SetRemoteInbox(RemoteInbox inbox);
   // A message that reached `to` outside the run's own transport, recorded as delivered.
@@ -109,6 +114,7 @@ class Driver {
   std::vector<std::unique_ptr<Repeater>> repeaters_;
   std::vector<std::string> owners_;  // per node; "" for none
   std::vector<SensorReadings> readings_;
+  std::vector<NodeId> tapped_;
   std::optional<std::string> stop_;
 };
 

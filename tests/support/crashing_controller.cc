@@ -2,7 +2,8 @@
 // a broken plugin would (`how`: segfault, abort or exit) after `after` seconds; `wander` drives
 // with the node's random numbers, logs, reports a metric and reads its sensors, so that a run
 // with and without isolation can be compared byte for byte; `nan_driver` gives its node commands
-// that are not numbers during its first second, between ones that are (the Node contract).
+// that are not numbers during its first second, between ones that are (the Node contract);
+// `network_probe` logs its node's network view at every step.
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -56,6 +57,39 @@ class NanDriver : public sanet::Controller {
   }
 };
 
+// Logs its network view at every step: "net PROTOCOL routes D>N/H/V ... neighbours A,B", after
+// sending a byte to `towards` at every step (its route discovery); at `invalidate_at` s it drops
+// its route there and logs what InvalidateRoute said, and the view just after.
+class NetworkProbe : public sanet::Controller {
+ public:
+  explicit NetworkProbe(const sanet::Params& p)
+      : towards_(p.Text("towards", "")), invalidate_at_(p.Number("invalidate_at", -1)) {}
+  void ControlStep(sanet::Node& node) override {
+    const auto target = node.Lookup(towards_);
+    if (target) node.Send(*target, {1});
+    if (target && invalidate_at_ >= 0 && node.Now() >= invalidate_at_) {
+      invalidate_at_ = -1;
+      node.Log(std::string("invalidated ") + (node.Network().InvalidateRoute(*target) ? "true" : "false"));
+    }
+    node.Log(View(node));
+  }
+
+ private:
+  static std::string View(sanet::Node& node) {
+    sanet::NetworkView& net = node.Network();
+    std::string line = "net " + net.Protocol() + " routes";
+    for (const sanet::RouteEntry& r : net.RoutingTable())
+      line += " " + node.NameOf(r.destination) + ">" + node.NameOf(r.next_hop) + "/" + std::to_string(r.hops) + "/" +
+              (r.valid ? "1" : "0");
+    line += " neighbours ";
+    std::string names;
+    for (sanet::NodeId n : net.Neighbours()) names += (names.empty() ? "" : ",") + node.NameOf(n);
+    return line + names;
+  }
+  std::string towards_;
+  double invalidate_at_;
+};
+
 }  // namespace
 
 SANET_CONTROLLER_PLUGIN(registry) {
@@ -63,6 +97,8 @@ SANET_CONTROLLER_PLUGIN(registry) {
                 [](const sanet::Params& p) { return std::make_unique<CrashAfter>(p); }});
   registry.Add({"nan_driver", "gives its node commands that are not numbers, between ones that are",
                 [](const sanet::Params&) { return std::make_unique<NanDriver>(); }});
+  registry.Add({"network_probe", "logs its network view at every step, sending to `towards`",
+                [](const sanet::Params& p) { return std::make_unique<NetworkProbe>(p); }});
   registry.Add({"wander", "drives at random, logs, reports and broadcasts",
                 [](const sanet::Params&) { return std::make_unique<Wander>(); }});
 }

@@ -136,9 +136,9 @@ KernelTables MapToNodes(NodeId self, const std::vector<std::optional<Ipv4>>& add
     tables.routes.push_back({*destination, *next, r.gateway ? 2 : 1, true, 0});
   }
   for (const KernelNeighbour& n : neighbours)
-    if (const auto node = node_at(n.address); node && *node != self &&
-                                              std::find(tables.neighbours.begin(), tables.neighbours.end(), *node) ==
-                                                  tables.neighbours.end())
+    if (const auto node = node_at(n.address);
+        node && *node != self &&
+        std::find(tables.neighbours.begin(), tables.neighbours.end(), *node) == tables.neighbours.end())
       tables.neighbours.push_back(*node);
   std::sort(tables.neighbours.begin(), tables.neighbours.end());
   return tables;

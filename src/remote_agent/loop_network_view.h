@@ -57,8 +57,8 @@ class LoopNetworkView : public NetworkView {
   Hooks hooks_;
   mutable Source source_ = Source::kUnknown;
   mutable Snapshot snapshot_{"none", {}, {}};  // until the server's first answer
-  mutable std::optional<double> fetched_at_;  // the node's Now() at the last fetch
-  mutable bool said_no_answer_ = false;  // a failed fetch is logged once
+  mutable std::optional<double> fetched_at_;   // the node's Now() at the last fetch
+  mutable bool said_no_answer_ = false;        // a failed fetch is logged once
 };
 
 }  // namespace sanet::hil

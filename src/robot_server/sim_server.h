@@ -85,9 +85,9 @@ class SimServer : public sim::RunObserver {
     bool open = true;  // until the line server says it is gone
     std::optional<NodeId> robot;
     double next_sensors = 0, next_status = 0;
-    bool told_off = false;  // told once that its robot is switched off
-    bool agent = false;     // it has sent STATS: a sanet agent, which speaks five times a second
-    bool sanet = false;     // it has said SANET: it understands sanet's extension lines
+    bool told_off = false;   // told once that its robot is switched off
+    bool agent = false;      // it has sent STATS: a sanet agent, which speaks five times a second
+    bool sanet = false;      // it has said SANET: it understands sanet's extension lines
     bool net_asked = false;  // it has sent GETNET, not answered yet
     double next_net = 0;     // the rate limit's: no NET answer before this time
   };

@@ -31,7 +31,7 @@ struct RunOptions {
   std::function<std::string()> stop_requested = nullptr;
   bool force = false;  // write beside files that no sanet run wrote (trace/earlier_run.h)
   // Said before the run (the scenario's warnings): listed first in summary.json's "warnings".
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings = {};
   std::optional<Provenance> provenance = std::nullopt;  // written first into the folder
   // Adds fields of its own to summary.json and files of its own to the results folder (the
   // server adds its lag and the agents' reports), once the run has ended.

@@ -21,6 +21,7 @@ PINNED = {
     "formation-hil": (60, "f47b34c507c2329d"),
     "help-request": (300, "637c11bdfbd6668c"),
     "help-request-team": (300, "5dd2651b767b1e68"),
+    "help-request-loop": (120, "fb23174b03599c8a"),  # ends at the robot's arrival, 97 s
     "sensor-network": (60, "ca79ea1813db313a"),
     "swarm-1k": (5, "b78520b232205dd8"),
     "swarm-10k": (2, "f810a237f894a049"),  # 0.16x real time: a few seconds are enough

@@ -187,7 +187,7 @@ class StockClientOnAShippedLoopScenario(unittest.TestCase):
 
     def test_init_by_class_spawns_a_robot_that_drives(self):
         source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios")
-        for name in ("formation-hil.yaml", "formation-radio.yaml"):
+        for name in ("formation-hil.yaml", "formation-radio.yaml", "help-request-loop.yaml"):
             with self.subTest(scenario=name), tempfile.TemporaryDirectory() as tmp:
                 with open(os.path.join(source, name)) as f:
                     server, port, out = serve(SANET, f.read(), tmp, "--duration", "6")

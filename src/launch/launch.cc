@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -185,6 +186,16 @@ int WaitForServer(pid_t server) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }
 
+// The server runs quietly: its summary says when and why the run ended.
+void SayHowTheRunEnded(const std::string& results) {
+  std::ifstream in(results + "/summary.json");
+  const auto summary = nlohmann::json::parse(in, nullptr, false);
+  if (summary.is_discarded() || !summary.contains("ended_at_s")) return;
+  const std::string why = summary.value("ended_by", std::string("duration"));
+  std::printf("  ended at %.1f s: %s\n", summary["ended_at_s"].get<double>(),
+              why == "duration" ? "its duration" : why.c_str());
+}
+
 }  // namespace
 
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
@@ -222,6 +233,7 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
     ::waitpid(a, &ended, 0);
     if (exec_robot && a == children.back()) ReportProgram(settings.exec_command.front(), ended);
   }
+  SayHowTheRunEnded(settings.output);
   std::printf("  results in %s/\n", settings.output.c_str());
   return status;
 }

@@ -31,14 +31,14 @@ void SimServer::AnswerNetworkQueries(double now) {
 // {Source Kernel}, and the agent reads its own host's tables.
 ProtocolMessage SimServer::NetworkLine(NodeId robot, double now) const {
   ProtocolMessage line{"NET"};
-  line.Add("Time", FormatPrecise(now));
+  line.Add("Time", FormatNumber(now));
   if (!driver_.HasTap(robot)) return line.Add("Source", "Kernel");
   const NetworkView& view = driver_.NetworkOf(robot);
   line.Add("Source", "Simulated").Add("Protocol", view.Protocol());
   for (const RouteEntry& r : view.RoutingTable())
     line.Add("Route", driver_.NameOf(r.destination) + " Next " + driver_.NameOf(r.next_hop) + " Hops " +
                           std::to_string(r.hops) + " Valid " + Truth(r.valid) + " Expires " +
-                          FormatPrecise(r.expires_in));
+                          FormatNumber(r.expires_in));
   for (NodeId n : view.Neighbours()) line.Add("Neighbour", driver_.NameOf(n));
   return line;
 }
@@ -51,6 +51,7 @@ void SimServer::ChangeRoute(Client& c, const ProtocolMessage& m) {
   const auto target = to ? driver_.Lookup(*to) : std::nullopt;
   if (!target)
     return Error(c, m.type + " needs {To node}, a node of this world" + (to ? ": there is no '" + *to + "'" : ""));
+  if (*target == *c.robot) return Error(c, m.type + " {To " + *to + "}: that is this robot");
   NetworkView& view = NodeOf(c).Network();
   if (m.type == "REQUESTROUTE") return view.RequestRoute(*target);
   ProtocolMessage reply{"INVALIDATED"};

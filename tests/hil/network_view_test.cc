@@ -196,6 +196,10 @@ TEST(NetworkView, InvalidateRouteDropsTheNodesRouteAndRequestRouteFindsOne) {
   const auto refused = s.RunUntilLine("ERR", 5);
   ASSERT_TRUE(refused);
   EXPECT_NE(refused->Get("Message")->find("INVALIDATEROUTE"), std::string::npos);
+  s.client.Say("REQUESTROUTE {To r}");
+  const auto itself = s.RunUntilLine("ERR", 6);
+  ASSERT_TRUE(itself);
+  EXPECT_EQ(*itself->Get("Message"), "REQUESTROUTE (To r): that is this robot");
   s.world.Finish();
 }
 

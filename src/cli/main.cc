@@ -28,6 +28,7 @@
 #include "remote_agent/remote_node.h"
 #include "robot_server/sim_server.h"
 #include "robots/node_model.h"
+#include "ros2_options.h"
 #include "scenario/catalogue.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
@@ -177,6 +178,7 @@ struct ServeArgs {
   std::optional<double> duration;
   std::vector<std::string> taps;  // ROBOT=NAMESPACE
   ViewArgs view;
+  Ros2Args ros2;
 };
 
 // --tap ROBOT=NAMESPACE: the robot's radio reaches a real IP stack in that namespace.
@@ -258,7 +260,9 @@ std::unique_ptr<hil::SimServer> StartServer(sim::World& world, const hil::Server
   }
 }
 
-void PrintServed(const hil::SimServer& server, const sim::RunResult& r, const std::string& results) {
+// `over_ros2`: robots the ROS 2 face drove, which no protocol client needed to.
+void PrintServed(const hil::SimServer& server, const sim::RunResult& r, const std::string& results,
+                 const std::vector<std::string>& over_ros2) {
   const auto lag = server.LagSummary();
   std::printf(
       "  served %.1f s; lag behind the wall clock p50 %.4f s, p99 %.4f s, max %.4f s, %lld missed deadlines\n"
@@ -266,7 +270,9 @@ void PrintServed(const hil::SimServer& server, const sim::RunResult& r, const st
       r.simulated, lag["p50_s"].get<double>(), lag["p99_s"].get<double>(), lag["max_s"].get<double>(),
       static_cast<long long>(lag["missed_deadlines"].get<std::int64_t>()), results.c_str());
   std::string idle;
-  for (const std::string& name : server.NeverDriven()) idle += (idle.empty() ? "" : ", ") + name;
+  for (const std::string& name : server.NeverDriven())
+    if (std::find(over_ros2.begin(), over_ros2.end(), name) == over_ros2.end())
+      idle += (idle.empty() ? "" : ", ") + name;
   if (!idle.empty()) std::printf("  no client drove %s: their controllers never ran\n", idle.c_str());
 }
 
@@ -289,6 +295,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   hil::SimServer& server = *listening;
   JoinTaps(world, a.taps);
   const std::unique_ptr<hil::WssServer> wss = StartWss(world, a);
+  const std::unique_ptr<ros2face::Ros2Face> ros2 = StartRos2Face(world, a.ros2);
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, a.view);
   WritePortFile(a.port_file, server.port(), "--port-file");
   server.Start();
@@ -309,12 +316,13 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
     j["agents"] = server.AgentStats();
     j["clock"] = server.ClockSummary();
     if (wss) j["wss"] = wss->Summary();
+    if (ros2) j["ros2"] = ros2->Summary();
     server.WriteAgentTable(folder);
   };
   const sim::RunResult r = world.Run(options);
   if (live) live->Finish();
   PrintWarnings(r.warnings);
-  if (!a.quiet) PrintServed(server, r, results);
+  if (!a.quiet) PrintServed(server, r, results, ros2 ? ros2->Driven() : std::vector<std::string>{});
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s; the results so far are in %s/ (status: interrupted)\n",
                  world.ended_by().c_str(), world.ended_at(), results.c_str());
@@ -457,6 +465,7 @@ Command AddServe(CLI::App& app) {
                   "more is answered ERROR and closed")
       ->check(CLI::Range(1, 10000));
   AddViewOptions(cmd, a->view);
+  AddRos2Options(cmd, a->ros2);
   return {cmd, [a](agents::Registry& r) { return Serve(*a, r); }};
 }
 

@@ -8,6 +8,13 @@ void CdrWriter::PutString(const std::string& s) {
   out_.push_back(0);
 }
 
+Bytes CdrWriter::Take() {
+  const std::size_t padding = (4 - out_.size() % 4) % 4;
+  out_.resize(out_.size() + padding, 0);
+  out_[3] = static_cast<std::uint8_t>(padding);
+  return std::move(out_);
+}
+
 CdrReader::CdrReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {
   if (size < 4) {
     Fail("encapsulation", "fewer than the 4 bytes of the encapsulation header");

@@ -1,8 +1,10 @@
 // CDR as ROS 2 puts it on DDS (XCDR1, "plain CDR"; rmw_cyclonedds): a 4-byte encapsulation
-// header (00 01 00 00 for little endian), then the fields in order, each primitive aligned to its
-// size (at most 8) counted from the end of the header; strings as a uint32 length that counts a
-// closing NUL, the bytes and the NUL; sequences as a uint32 count and the elements; fixed arrays
-// as their elements. The writer writes little endian; the reader takes either byte order and
+// header (00 01 for little endian, then two bytes of options), then the fields in order, each
+// primitive aligned to its size (at most 8) counted from the end of the header; strings as a
+// uint32 length that counts a closing NUL, the bytes and the NUL; sequences as a uint32 count
+// and the elements; fixed arrays as their elements. The payload is padded to a multiple of 4,
+// the options' last two bits saying by how many bytes (DDS-XTypes 7.6.3.1.2), as Cyclone DDS
+// writes it. The writer writes little endian; the reader takes either byte order and
 // says which field failed and why (a count larger than the bytes left, a string without its NUL,
 // a bound exceeded), never reading past the end.
 #pragma once
@@ -31,7 +33,7 @@ class CdrWriter {
   void Put(bool value) { out_.push_back(value ? 1 : 0); }
   void PutString(const std::string& s);
   void PutCount(std::size_t n) { Put(static_cast<std::uint32_t>(n)); }
-  Bytes Take() { return std::move(out_); }
+  Bytes Take();
 
  private:
   void Align(std::size_t n) {

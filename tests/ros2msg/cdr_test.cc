@@ -100,6 +100,15 @@ TEST(Cdr, EveryTypeOfTheFaceRoundTrips) {
   EXPECT_EQ(Decode<geometry_msgs::TwistStamped>(Encode(twist))->twist.linear.x, 0.3);
 }
 
+TEST(Cdr, ThePayloadIsPaddedToFourAndTheOptionsSayByHowMuch) {
+  std_msgs::Header h;
+  h.stamp.sec = 7;
+  h.stamp.nanosec = 9;
+  h.frame_id = "world";  // 8 + 4 + 6 = 18 bytes: two of padding
+  EXPECT_EQ(Encode(h), Cat({{0, 1, 0, 2}, Le32(7), Le32(9), Le32(6), {'w', 'o', 'r', 'l', 'd', 0, 0, 0}}));
+  EXPECT_EQ(Decode<std_msgs::Header>(Encode(h))->frame_id, "world");
+}
+
 TEST(Cdr, BigEndianMessagesDecodeToo) {
   const Bytes big = {0, 0, 0, 0, 0, 0, 0, 7, 0, 0, 0, 9};
   const auto t = Decode<builtin_interfaces::Time>(big);

@@ -1,0 +1,56 @@
+#include "ros2_options.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace sanet::cli {
+namespace {
+
+// ROS 2 takes the domain from ROS_DOMAIN_ID (0 when unset); an invalid one is an error here.
+int DomainOf(const Ros2Args& args) {
+  if (args.domain) return *args.domain;
+  const char* env = std::getenv("ROS_DOMAIN_ID");
+  if (!env || !*env) return 0;
+  char* end = nullptr;
+  const long id = std::strtol(env, &end, 10);
+  if (*end || id < 0 || id > 232)
+    throw CLI::ValidationError("--ros2-domain",
+                               std::string("ROS_DOMAIN_ID='") + env + "' is not a domain from 0 to 232");
+  return static_cast<int>(id);
+}
+
+}  // namespace
+
+void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
+  cmd->add_flag("--ros2", args.on,
+                "Make every robot no client drives a ROS 2 robot over DDS: /ROBOT/odom, scan, ir/I, ground_truth, "
+                "cmd_vel, and /tf, /tf_static, /clock (docs/ros2.md)");
+  cmd->add_option("--ros2-domain", args.domain, "DDS domain of the ROS 2 face (default: ROS_DOMAIN_ID, else 0)")
+      ->check(CLI::Range(0, 232));
+  cmd->add_option("--ros2-rate", args.rate, "Hz of each robot's sensor messages on the ROS 2 face")
+      ->check(CLI::Range(0.1, 1000.0))
+      ->capture_default_str();
+  cmd->add_flag("--ros2-cmd-vel-stamped", args.stamped,
+                "Take cmd_vel as geometry_msgs/TwistStamped (as ROS 2 Jazzy's controllers publish it), not Twist");
+}
+
+std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args) {
+  if (!args.on) return nullptr;
+  ros2face::Ros2Settings settings;
+  settings.domain = static_cast<std::uint32_t>(DomainOf(args));
+  settings.sensor_period = 1.0 / args.rate;
+  settings.twist_stamped = args.stamped;
+  std::unique_ptr<ros2face::Ros2Face> face;
+  try {
+    face = std::make_unique<ros2face::Ros2Face>(world.driver(), settings);
+  } catch (const std::runtime_error& e) {
+    throw CLI::ValidationError("--ros2", e.what());
+  }
+  face->Start();
+  std::printf("sanet: ROS 2 face on DDS domain %u: its robots' topics under /ROBOT/, /tf, /tf_static, /clock\n",
+              settings.domain);
+  return face;
+}
+
+}  // namespace sanet::cli

@@ -1,0 +1,72 @@
+#include "ros2_face/dds_domain.h"
+
+#include <dds/dds.h>
+
+#include <stdexcept>
+
+#include "ros2_face/raw_cdr_type.h"
+
+namespace sanet::ros2face {
+namespace {
+
+std::string Why(dds_return_t code) { return dds_strretcode(code); }
+
+// The QoS of a ROS 2 profile; the caller deletes it.
+dds_qos_t* QosOf(Qos profile) {
+  dds_qos_t* q = dds_create_qos();
+  const bool reliable = profile == Qos::kDefault || profile == Qos::kTf || profile == Qos::kTfStatic;
+  dds_qset_reliability(q, reliable ? DDS_RELIABILITY_RELIABLE : DDS_RELIABILITY_BEST_EFFORT, DDS_MSECS(100));
+  dds_qset_durability(q, profile == Qos::kTfStatic ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
+  const int depth = profile == Qos::kDefault ? 10 : profile == Qos::kSensorData ? 5 : profile == Qos::kTf ? 100 : 1;
+  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
+  return q;
+}
+
+}  // namespace
+
+DdsDomain::DdsDomain(std::uint32_t domain)
+    : domain_(domain), participant_(dds_create_participant(domain, nullptr, nullptr)) {
+  if (participant_ < 0)
+    throw std::runtime_error("cannot join DDS domain " + std::to_string(domain) + " (ROS_DOMAIN_ID): " +
+                             Why(participant_) + " (CYCLONEDDS_URI may name an interface this machine lacks)");
+}
+
+DdsDomain::~DdsDomain() { dds_delete(participant_); }
+
+DdsDomain::Entity DdsDomain::Topic(const std::string& ros_topic, const std::string& dds_type) {
+  ddsi_sertype* type = MakeRawCdrType(dds_type);
+  const dds_entity_t topic =
+      dds_create_topic_sertype(participant_, ("rt" + ros_topic).c_str(), &type, nullptr, nullptr, nullptr);
+  if (topic < 0) throw std::runtime_error("cannot create DDS topic rt" + ros_topic + ": " + Why(topic));
+  return topic;
+}
+
+DdsDomain::Entity DdsDomain::Writer(const std::string& ros_topic, const std::string& dds_type, Qos qos) {
+  dds_qos_t* q = QosOf(qos);
+  const dds_entity_t w = dds_create_writer(participant_, Topic(ros_topic, dds_type), q, nullptr);
+  dds_delete_qos(q);
+  if (w < 0) throw std::runtime_error("cannot publish " + ros_topic + ": " + Why(w));
+  return w;
+}
+
+DdsDomain::Entity DdsDomain::Reader(const std::string& ros_topic, const std::string& dds_type, Qos qos) {
+  dds_qos_t* q = QosOf(qos);
+  const dds_entity_t r = dds_create_reader(participant_, Topic(ros_topic, dds_type), q, nullptr);
+  dds_delete_qos(q);
+  if (r < 0) throw std::runtime_error("cannot subscribe to " + ros_topic + ": " + Why(r));
+  return r;
+}
+
+void DdsDomain::Write(Entity writer, const ros2msg::Bytes& sample) { dds_write(writer, &sample); }
+
+std::vector<DdsDomain::Sample> DdsDomain::Take(Entity reader, std::size_t most) {
+  std::vector<Sample> taken;
+  ros2msg::Bytes bytes;
+  void* buffer = &bytes;
+  dds_sample_info_t info;
+  while (taken.size() < most && dds_take(reader, &buffer, &info, 1, 1) > 0)
+    if (info.valid_data) taken.push_back({std::move(bytes), info.publication_handle});
+  return taken;
+}
+
+}  // namespace sanet::ros2face

@@ -1,0 +1,51 @@
+// sanet's DDS participant, as a ROS 2 node's is: a ROS 2 topic /a/b is the DDS topic rt/a/b
+// (rmw_cyclonedds namespace_prefix.hpp), its type the ROS 2 type's DDS name, its samples the
+// CDR bytes of ros2msg's encoders (raw_cdr_type.h), its QoS one of the profiles ROS 2 uses.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ros2msg/cdr.h"
+
+namespace sanet::ros2face {
+
+// ROS 2's QoS profiles (rclcpp qos.hpp; tf2_ros qos.hpp).
+enum class Qos {
+  kDefault,     // reliable, volatile, keep last 10: cmd_vel, odom
+  kSensorData,  // best effort, volatile, keep last 5: scan, ranges, ground truth
+  kTf,          // reliable, volatile, keep last 100: /tf
+  kTfStatic,    // reliable, transient local, keep last 1: /tf_static
+  kClock,       // best effort, volatile, keep last 1: /clock
+};
+
+class DdsDomain {
+ public:
+  // Joins DDS domain `domain` (ROS_DOMAIN_ID). Throws std::runtime_error saying why not.
+  explicit DdsDomain(std::uint32_t domain);
+  ~DdsDomain();
+  DdsDomain(const DdsDomain&) = delete;
+  DdsDomain& operator=(const DdsDomain&) = delete;
+
+  using Entity = std::int32_t;
+  // `ros_topic`: "/r1/odom"; `dds_type`: "nav_msgs::msg::dds_::Odometry_".
+  Entity Writer(const std::string& ros_topic, const std::string& dds_type, Qos qos);
+  Entity Reader(const std::string& ros_topic, const std::string& dds_type, Qos qos);
+  void Write(Entity writer, const ros2msg::Bytes& sample);
+
+  // A sample taken from a reader, and the writer it came from (DDS's publication handle).
+  struct Sample {
+    ros2msg::Bytes bytes;
+    std::uint64_t writer = 0;
+  };
+  std::vector<Sample> Take(Entity reader, std::size_t most = 64);
+  std::uint32_t domain() const { return domain_; }
+
+ private:
+  Entity Topic(const std::string& ros_topic, const std::string& dds_type);
+  std::uint32_t domain_;
+  Entity participant_;
+};
+
+}  // namespace sanet::ros2face

@@ -1,0 +1,46 @@
+// A robot's readings as the ROS 2 messages a ROS 2 robot publishes (REP 103 axes: x forward,
+// y left, z up, angles counter-clockwise, as sanet's; REP 105 frames): pure functions of what
+// the robot's owner read, so that the face, the run's log and a stream publish the same.
+//
+// Frames, per robot R: R/odom (fixed in the world at R's start pose, the origin of its
+// odometry), R/base_link (the body), R/laser and R/ir_<i> (the sensors where they are mounted);
+// world for ground truth, motes and the start poses.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ros2msg/messages.h"
+#include "sim/driver.h"
+
+namespace sanet::ros2face {
+
+namespace msg = ros2msg;
+
+struct RobotFrames {
+  std::string odom, base, laser;
+  std::vector<std::string> ir;
+};
+RobotFrames FramesOf(const std::string& robot, const robots::ModelSpec& model);
+
+msg::builtin_interfaces::Time StampOf(double t);  // s of simulated time
+
+// Wheel odometry in R/odom (relative to the start pose), with the body's velocity in R/base_link.
+msg::nav_msgs::Odometry OdometryOf(const sim::SensorReadings& r, const Pose2D& start, const RobotFrames& frames);
+// The true pose in world, child R/base_link.
+msg::nav_msgs::Odometry GroundTruthOf(const sim::SensorReadings& r, const RobotFrames& frames);
+msg::sensor_msgs::LaserScan ScanOf(const RangeScan& scan, double t, const std::string& frame);
+// IR sensor `i`: one ray (field of view 0), its noise's variance.
+msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, const std::string& frame, double noise);
+
+// R/odom -> R/base_link now.
+msg::geometry_msgs::TransformStamped OdomToBase(const sim::SensorReadings& r, const Pose2D& start,
+                                                const RobotFrames& frames);
+// What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor, for every
+// robot; world -> M for every mote.
+msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver);
+
+// `pose` seen from `origin`: both in the same frame.
+Pose2D Relative(const Pose2D& origin, const Pose2D& pose);
+
+}  // namespace sanet::ros2face

@@ -1,0 +1,183 @@
+#include "ros2_face/ros2_face.h"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include "ros2msg/codec.h"
+
+namespace sanet::ros2face {
+namespace {
+
+constexpr const char* kOwner = "ROS 2 face";
+constexpr double kClockPeriod = 0.005;  // s: /clock at 200 Hz at least, at every step when steps are longer
+
+template <typename Message>
+const char* DdsType() {
+  return msg::TypeOf<Message>::kDdsName;
+}
+
+}  // namespace
+
+struct Ros2Face::Robot {
+  NodeId id;
+  std::string name;
+  RobotFrames frames;
+  Pose2D start;
+  DdsDomain::Entity odom = 0, truth = 0, scan = 0, cmd_vel = 0;
+  std::vector<DdsDomain::Entity> ir;
+  double next_sensors = 0;
+  std::uint64_t last_writer = 0;
+  std::set<std::string> said;  // what this robot's log has been told once
+  std::uint64_t published = 0, commands = 0, refused_owned = 0, undecodable = 0, not_finite = 0, writer_switches = 0;
+};
+
+Ros2Face::Ros2Face(sim::Driver& driver, Ros2Settings settings)
+    : driver_(driver), settings_(settings), dds_(settings.domain) {
+  clock_ = dds_.Writer("/clock", DdsType<msg::rosgraph_msgs::Clock>(), Qos::kClock);
+  tf_ = dds_.Writer("/tf", DdsType<msg::tf2_msgs::TFMessage>(), Qos::kTf);
+  tf_static_ = dds_.Writer("/tf_static", DdsType<msg::tf2_msgs::TFMessage>(), Qos::kTfStatic);
+  AddRobots();
+}
+
+Ros2Face::~Ros2Face() = default;
+
+// Topics for every robot the face has not seen yet (spawned ones too); /tf_static again, whole.
+void Ros2Face::AddRobots() {
+  for (NodeId id = static_cast<NodeId>(nodes_seen_); id < driver_.NodeCount(); ++id) {
+    const sim::NodeSpec& node = driver_.Spec(id);
+    if (node.model.kind == robots::ModelKind::kMote) continue;
+    auto r = std::make_unique<Robot>();
+    r->id = id;
+    r->name = node.name;
+    r->frames = FramesOf(node.name, node.model);
+    r->start = node.pose;
+    const std::string ns = "/" + node.name;
+    r->odom = dds_.Writer(ns + "/odom", DdsType<msg::nav_msgs::Odometry>(), Qos::kDefault);
+    r->truth = dds_.Writer(ns + "/ground_truth", DdsType<msg::nav_msgs::Odometry>(), Qos::kSensorData);
+    if (node.model.sensors.laser)
+      r->scan = dds_.Writer(ns + "/scan", DdsType<msg::sensor_msgs::LaserScan>(), Qos::kSensorData);
+    for (std::size_t i = 0; i < r->frames.ir.size(); ++i)
+      r->ir.push_back(
+          dds_.Writer(ns + "/ir/" + std::to_string(i), DdsType<msg::sensor_msgs::Range>(), Qos::kSensorData));
+    r->cmd_vel = dds_.Reader(
+        ns + "/cmd_vel",
+        settings_.twist_stamped ? DdsType<msg::geometry_msgs::TwistStamped>() : DdsType<msg::geometry_msgs::Twist>(),
+        Qos::kDefault);
+    robots_.push_back(std::move(r));
+  }
+  nodes_seen_ = driver_.NodeCount();
+  dds_.Write(tf_static_, ros2msg::Encode(StaticTransforms(driver_)));
+}
+
+void Ros2Face::Start() {
+  driver_.Every(settings_.command_period, [this] { Poll(); });
+  driver_.AddObserver(*this);
+}
+
+void Ros2Face::AfterStep(const sim::WorldSnapshot& snapshot) {
+  if (snapshot.time() + 1e-9 < next_clock_) return;
+  next_clock_ = snapshot.time() + kClockPeriod;
+  msg::rosgraph_msgs::Clock clock;
+  clock.clock = StampOf(snapshot.time());
+  dds_.Write(clock_, ros2msg::Encode(clock));
+  ++clock_messages_;
+}
+
+void Ros2Face::Poll() {
+  if (driver_.NodeCount() != nodes_seen_) AddRobots();
+  const double now = driver_.Now();
+  for (auto& r : robots_) {
+    TakeCommands(*r);
+    if (now + 1e-9 >= r->next_sensors) {
+      r->next_sensors = now + settings_.sensor_period;
+      Publish(*r, now);
+    }
+  }
+}
+
+// The robot's readings: the face's own read when nobody drives it, else its owner's last one.
+void Ros2Face::Publish(Robot& r, double) {
+  const auto owner = driver_.OwnerOf(r.id);
+  const bool mine = !owner && !driver_.Claim(r.id, kOwner);
+  const sim::SensorReadings& readings = mine ? driver_.TakeReadings(r.id, kOwner) : driver_.LastReadings(r.id);
+  if (mine) driver_.Release(r.id, kOwner);
+  if (readings.time < 0) return;  // its owner has read nothing yet
+  dds_.Write(r.odom, ros2msg::Encode(OdometryOf(readings, r.start, r.frames)));
+  dds_.Write(r.truth, ros2msg::Encode(GroundTruthOf(readings, r.frames)));
+  msg::tf2_msgs::TFMessage tf;
+  tf.transforms.push_back(OdomToBase(readings, r.start, r.frames));
+  dds_.Write(tf_, ros2msg::Encode(tf));
+  r.published += 3;
+  if (r.scan && readings.laser) {
+    dds_.Write(r.scan, ros2msg::Encode(ScanOf(*readings.laser, readings.time, r.frames.laser)));
+    ++r.published;
+  }
+  const auto& ir_spec = driver_.Spec(r.id).model.sensors.ir;
+  if (readings.ir && ir_spec)
+    for (std::size_t i = 0; i < r.ir.size() && i < readings.ir->ranges.size(); ++i) {
+      dds_.Write(r.ir[i], ros2msg::Encode(RangeOf(*readings.ir, i, readings.time, r.frames.ir[i], ir_spec->noise)));
+      ++r.published;
+    }
+}
+
+void Ros2Face::TakeCommands(Robot& r) {
+  for (const DdsDomain::Sample& s : dds_.Take(r.cmd_vel)) Apply(r, s);
+}
+
+void Ros2Face::Apply(Robot& r, const DdsDomain::Sample& s) {
+  std::string error;
+  std::optional<msg::geometry_msgs::Twist> twist;
+  if (settings_.twist_stamped) {
+    if (const auto stamped = ros2msg::Decode<msg::geometry_msgs::TwistStamped>(s.bytes, &error)) twist = stamped->twist;
+  } else {
+    twist = ros2msg::Decode<msg::geometry_msgs::Twist>(s.bytes, &error);
+  }
+  if (!twist) {
+    ++r.undecodable;
+    return SayOnce(r, "undecodable", "a cmd_vel sample that does not decode: " + error + " (further ones counted)");
+  }
+  if (r.last_writer && s.writer != r.last_writer) {
+    ++r.writer_switches;
+    SayOnce(r, "writers", "cmd_vel from more than one publisher: the last one wins (switches counted)");
+  }
+  r.last_writer = s.writer;
+  if (const auto owner = driver_.OwnerOf(r.id); owner && *owner != kOwner) {
+    ++r.refused_owned;
+    return SayOnce(r, "owned", "cmd_vel refused: " + *owner + " drives this robot (further ones counted)");
+  }
+  if (driver_.Claim(r.id, kOwner)) return;
+  const Twist2D v{twist->linear.x, twist->linear.y, twist->angular.z};
+  if (!driver_.NodeOf(r.id, kOwner).Drive(v))
+    ++r.not_finite;  // the node logs why
+  else
+    ++r.commands;
+  driver_.Release(r.id, kOwner);
+}
+
+void Ros2Face::SayOnce(Robot& r, const std::string& what, const std::string& text) {
+  if (!r.said.insert(what).second) return;
+  driver_.Log(r.id, "ROS 2: " + text);
+  std::fprintf(stderr, "sanet: ROS 2 %s: %s\n", r.name.c_str(), text.c_str());
+}
+
+std::vector<std::string> Ros2Face::Driven() const {
+  std::vector<std::string> names;
+  for (const auto& r : robots_)
+    if (r->commands > 0) names.push_back(r->name);
+  return names;
+}
+
+nlohmann::ordered_json Ros2Face::Summary() const {
+  nlohmann::ordered_json j = {{"domain", dds_.domain()}, {"clock_messages", clock_messages_}};
+  for (const auto& r : robots_)
+    j["robots"][r->name] = {{"published", r->published},
+                            {"cmd_vel_taken", r->commands},
+                            {"cmd_vel_refused_owned", r->refused_owned},
+                            {"cmd_vel_undecodable", r->undecodable},
+                            {"cmd_vel_not_finite", r->not_finite},
+                            {"cmd_vel_publisher_switches", r->writer_switches}};
+  return j;
+}
+
+}  // namespace sanet::ros2face

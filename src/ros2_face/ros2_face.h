@@ -1,0 +1,66 @@
+// The ROS 2 face of a served world: every robot that no other front end drives is a ROS 2 robot
+// under its name as namespace. It publishes /<robot>/odom, /<robot>/ground_truth, /<robot>/scan
+// (a laser), /<robot>/ir/<i> (each IR sensor), /tf, /tf_static and /clock, and takes
+// /<robot>/cmd_vel (geometry_msgs/Twist, or TwistStamped) to the robot's Node, as a controller
+// would drive it. Over plain DDS as ROS 2 nodes speak it (docs/ros2.md): no ROS install needed.
+//
+// One owner per robot: the face claims a robot only for the moment it reads its sensors or
+// takes a command, so a USARSim client or an agent may claim it at any time; while one does,
+// the face publishes what that owner read, and refuses (counts, and says once) cmd_vel to it.
+// Bad samples, commands that are not finite numbers and publishers taking turns on one cmd_vel
+// are counted and said once per robot; the simulation never waits for DDS.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ros2_face/dds_domain.h"
+#include "ros2_face/robot_messages.h"
+#include "sim/driver.h"
+
+namespace sanet::ros2face {
+
+struct Ros2Settings {
+  std::uint32_t domain = 0;      // ROS_DOMAIN_ID
+  double sensor_period = 0.1;    // s between a robot's sensor messages (odom, scan, ranges, tf)
+  double command_period = 0.01;  // s between takes of cmd_vel
+  bool twist_stamped = false;    // cmd_vel as geometry_msgs/TwistStamped (ROS 2 Jazzy's controllers)
+};
+
+class Ros2Face : public sim::RunObserver {
+ public:
+  // Joins the DDS domain and creates every robot's topics. Throws std::runtime_error.
+  Ros2Face(sim::Driver& driver, Ros2Settings settings);
+  ~Ros2Face() override;
+  void Start();                                                 // schedules the face on the simulation clock
+  void AfterStep(const sim::WorldSnapshot& snapshot) override;  // /clock
+
+  // What the face did, by robot: messages published, commands taken and refused (summary.json).
+  nlohmann::ordered_json Summary() const;
+  // The robots that took at least one cmd_vel.
+  std::vector<std::string> Driven() const;
+
+ private:
+  struct Robot;
+  void AddRobots();
+  void Publish(Robot& robot, double now);
+  void TakeCommands(Robot& robot);
+  void Apply(Robot& robot, const DdsDomain::Sample& sample);
+  void SayOnce(Robot& robot, const std::string& what, const std::string& text);
+  void Poll();
+
+  sim::Driver& driver_;
+  Ros2Settings settings_;
+  DdsDomain dds_;
+  DdsDomain::Entity clock_, tf_, tf_static_;
+  std::vector<std::unique_ptr<Robot>> robots_;
+  std::size_t nodes_seen_ = 0;
+  double next_clock_ = 0;
+  std::uint64_t clock_messages_ = 0;
+};
+
+}  // namespace sanet::ros2face

@@ -42,19 +42,21 @@ DdsDomain::Entity DdsDomain::Topic(const std::string& ros_topic, const std::stri
 }
 
 DdsDomain::Entity DdsDomain::Writer(const std::string& ros_topic, const std::string& dds_type, Qos qos) {
-  dds_qos_t* q = QosOf(qos);
-  const dds_entity_t w = dds_create_writer(participant_, Topic(ros_topic, dds_type), q, nullptr);
-  dds_delete_qos(q);
-  if (w < 0) throw std::runtime_error("cannot publish " + ros_topic + ": " + Why(w));
-  return w;
+  return Endpoint(dds_create_writer, "publish", ros_topic, dds_type, qos);
 }
 
 DdsDomain::Entity DdsDomain::Reader(const std::string& ros_topic, const std::string& dds_type, Qos qos) {
+  return Endpoint(dds_create_reader, "subscribe to", ros_topic, dds_type, qos);
+}
+
+DdsDomain::Entity DdsDomain::Endpoint(Entity (*create)(Entity, Entity, const dds_qos_t*, const dds_listener_t*),
+                                      const char* what, const std::string& ros_topic, const std::string& dds_type,
+                                      Qos qos) {
   dds_qos_t* q = QosOf(qos);
-  const dds_entity_t r = dds_create_reader(participant_, Topic(ros_topic, dds_type), q, nullptr);
+  const dds_entity_t e = create(participant_, Topic(ros_topic, dds_type), q, nullptr);
   dds_delete_qos(q);
-  if (r < 0) throw std::runtime_error("cannot subscribe to " + ros_topic + ": " + Why(r));
-  return r;
+  if (e < 0) throw std::runtime_error(std::string("cannot ") + what + " " + ros_topic + ": " + Why(e));
+  return e;
 }
 
 void DdsDomain::Write(Entity writer, const ros2msg::Bytes& sample) { dds_write(writer, &sample); }

@@ -9,6 +9,9 @@
 
 #include "ros2msg/cdr.h"
 
+struct dds_qos;
+struct dds_listener;
+
 namespace sanet::ros2face {
 
 // ROS 2's QoS profiles (rclcpp qos.hpp; tf2_ros qos.hpp).
@@ -44,6 +47,9 @@ class DdsDomain {
 
  private:
   Entity Topic(const std::string& ros_topic, const std::string& dds_type);
+  // A writer or a reader (`create`), its QoS that of `qos`; throws saying what it could not do.
+  Entity Endpoint(Entity (*create)(Entity, Entity, const ::dds_qos*, const ::dds_listener*), const char* what,
+                  const std::string& ros_topic, const std::string& dds_type, Qos qos);
   std::uint32_t domain_;
   Entity participant_;
 };

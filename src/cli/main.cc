@@ -295,7 +295,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   hil::SimServer& server = *listening;
   JoinTaps(world, a.taps);
   const std::unique_ptr<hil::WssServer> wss = StartWss(world, a);
-  const std::unique_ptr<ros2face::Ros2Face> ros2 = StartRos2Face(world, a.ros2);
+  const std::unique_ptr<ros2face::Ros2Face> ros2 = StartRos2Face(world, a.ros2, sc.ros2);
   const std::unique_ptr<view::LiveView> live = StartLiveView(world, a.view);
   WritePortFile(a.port_file, server.port(), "--port-file");
   server.Start();

@@ -8,8 +8,9 @@ namespace sanet::cli {
 namespace {
 
 // ROS 2 takes the domain from ROS_DOMAIN_ID (0 when unset); an invalid one is an error here.
-int DomainOf(const Ros2Args& args) {
+int DomainOf(const Ros2Args& args, const sections::Ros2Spec& section) {
   if (args.domain) return *args.domain;
+  if (section.domain >= 0) return section.domain;
   const char* env = std::getenv("ROS_DOMAIN_ID");
   if (!env || !*env) return 0;
   char* end = nullptr;
@@ -25,22 +26,28 @@ int DomainOf(const Ros2Args& args) {
 void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
   cmd->add_flag("--ros2", args.on,
                 "Make every robot no client drives a ROS 2 robot over DDS: /ROBOT/odom, scan, ir/I, ground_truth, "
-                "cmd_vel, and /tf, /tf_static, /clock (docs/ros2.md)");
-  cmd->add_option("--ros2-domain", args.domain, "DDS domain of the ROS 2 face (default: ROS_DOMAIN_ID, else 0)")
+                "cmd_vel, and /tf, /tf_static, /clock (docs/ros2.md); on without it when the scenario has a ros2 "
+                "section");
+  cmd->add_flag("--no-ros2", args.off, "No ROS 2 face, even if the scenario has a ros2 section");
+  cmd->add_option("--ros2-domain", args.domain,
+                  "DDS domain of the ROS 2 face (default: the scenario's ros2.domain, else ROS_DOMAIN_ID, else 0)")
       ->check(CLI::Range(0, 232));
-  cmd->add_option("--ros2-rate", args.rate, "Hz of each robot's sensor messages on the ROS 2 face")
-      ->check(CLI::Range(0.1, 1000.0))
-      ->capture_default_str();
+  cmd->add_option("--ros2-rate", args.rate,
+                  "Hz of each robot's sensor messages on the ROS 2 face (default: the scenario's ros2.rate, 10)")
+      ->check(CLI::Range(0.1, 1000.0));
   cmd->add_flag("--ros2-cmd-vel-stamped", args.stamped,
                 "Take cmd_vel as geometry_msgs/TwistStamped (as ROS 2 Jazzy's controllers publish it), not Twist");
 }
 
-std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args) {
-  if (!args.on) return nullptr;
+std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
+                                                  const std::optional<sections::Ros2Spec>& section) {
+  if (args.off || (!args.on && !section)) return nullptr;
+  const sections::Ros2Spec given = section.value_or(sections::Ros2Spec{});
   ros2face::Ros2Settings settings;
-  settings.domain = static_cast<std::uint32_t>(DomainOf(args));
-  settings.sensor_period = 1.0 / args.rate;
-  settings.twist_stamped = args.stamped;
+  settings.domain = static_cast<std::uint32_t>(DomainOf(args, given));
+  settings.sensor_period = 1.0 / args.rate.value_or(given.rate);
+  settings.twist_stamped = args.stamped || given.cmd_vel == sections::CmdVelType::kTwistStamped;
+  settings.robots = given.robots;
   std::unique_ptr<ros2face::Ros2Face> face;
   try {
     face = std::make_unique<ros2face::Ros2Face>(world.driver(), settings);

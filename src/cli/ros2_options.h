@@ -10,16 +10,18 @@
 
 namespace sanet::cli {
 
+// Given on the command line; each overrides the scenario's ros2 section.
 struct Ros2Args {
-  bool on = false;
-  std::optional<int> domain;  // default: ROS_DOMAIN_ID, else 0
-  double rate = 10;           // Hz of each robot's sensor messages
-  bool stamped = false;       // cmd_vel as TwistStamped
+  bool on = false, off = false;  // --ros2, --no-ros2
+  std::optional<int> domain;     // default: the section's, else ROS_DOMAIN_ID, else 0
+  std::optional<double> rate;    // Hz of each robot's sensor messages
+  bool stamped = false;          // cmd_vel as TwistStamped
 };
 
 void AddRos2Options(CLI::App* cmd, Ros2Args& args);
-// Joins the DDS domain and starts the face (nothing without --ros2); a domain that cannot be
-// joined is an error naming the option.
-std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args);
+// Joins the DDS domain and starts the face, when the scenario has a ros2 section or --ros2 is
+// given (and --no-ros2 is not); a domain that cannot be joined is an error naming the option.
+std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
+                                                  const std::optional<sections::Ros2Spec>& section);
 
 }  // namespace sanet::cli

@@ -124,7 +124,7 @@ msg::geometry_msgs::TransformStamped OdomToBase(const sim::SensorReadings& r, co
   return Transform(frames.odom, frames.base, r.time, pose.x, pose.y, 0, pose.theta);
 }
 
-msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver) {
+msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver, const std::map<NodeId, RobotFrames>& frames) {
   msg::tf2_msgs::TFMessage out;
   for (NodeId id = 0; id < driver.NodeCount(); ++id) {
     const sim::NodeSpec& node = driver.Spec(id);
@@ -133,9 +133,10 @@ msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver) {
       out.transforms.push_back(Transform("world", node.name, 0, p.x, p.y, 0, p.theta));
       continue;
     }
-    const RobotFrames frames = FramesOf(node.name, node.model);
-    out.transforms.push_back(Transform("world", frames.odom, 0, p.x, p.y, 0, p.theta));
-    AddSensorMounts(out, node.model, frames);
+    const auto given = frames.find(id);
+    const RobotFrames robot = given != frames.end() ? given->second : FramesOf(node.name, node.model);
+    out.transforms.push_back(Transform("world", robot.odom, 0, p.x, p.y, 0, p.theta));
+    AddSensorMounts(out, node.model, robot);
   }
   return out;
 }

@@ -7,6 +7,7 @@
 // world for ground truth, motes and the start poses.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,8 @@ msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, co
 msg::geometry_msgs::TransformStamped OdomToBase(const sim::SensorReadings& r, const Pose2D& start,
                                                 const RobotFrames& frames);
 // What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor, for every
-// robot; world -> M for every mote.
-msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver);
+// robot (`frames`: each robot's, by node); world -> M for every mote.
+msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver, const std::map<NodeId, RobotFrames>& frames);
 
 // `pose` seen from `origin`: both in the same frame.
 Pose2D Relative(const Pose2D& origin, const Pose2D& pose);

@@ -26,6 +26,7 @@ struct Ros2Face::Robot {
   Pose2D start;
   DdsDomain::Entity odom = 0, truth = 0, scan = 0, cmd_vel = 0;
   std::vector<DdsDomain::Entity> ir;
+  double period = 0.1;  // s between its sensor messages
   double next_sensors = 0;
   std::uint64_t last_writer = 0;
   std::set<std::string> said;  // what this robot's log has been told once
@@ -50,9 +51,16 @@ void Ros2Face::AddRobots() {
     auto r = std::make_unique<Robot>();
     r->id = id;
     r->name = node.name;
-    r->frames = FramesOf(node.name, node.model);
+    r->period = settings_.sensor_period;
+    std::string name = node.name;  // its namespace and frame prefix
+    for (const sections::Ros2Robot& own : settings_.robots)
+      if (own.robot == node.name) {
+        if (!own.ns.empty()) name = own.ns;
+        if (own.rate > 0) r->period = 1 / own.rate;
+      }
+    r->frames = FramesOf(name, node.model);
     r->start = node.pose;
-    const std::string ns = "/" + node.name;
+    const std::string ns = "/" + name;
     r->odom = dds_.Writer(ns + "/odom", DdsType<msg::nav_msgs::Odometry>(), Qos::kDefault);
     r->truth = dds_.Writer(ns + "/ground_truth", DdsType<msg::nav_msgs::Odometry>(), Qos::kSensorData);
     if (node.model.sensors.laser)
@@ -67,7 +75,9 @@ void Ros2Face::AddRobots() {
     robots_.push_back(std::move(r));
   }
   nodes_seen_ = driver_.NodeCount();
-  dds_.Write(tf_static_, ros2msg::Encode(StaticTransforms(driver_)));
+  std::map<NodeId, RobotFrames> frames;
+  for (const auto& r : robots_) frames[r->id] = r->frames;
+  dds_.Write(tf_static_, ros2msg::Encode(StaticTransforms(driver_, frames)));
 }
 
 void Ros2Face::Start() {
@@ -90,7 +100,7 @@ void Ros2Face::Poll() {
   for (auto& r : robots_) {
     TakeCommands(*r);
     if (now + 1e-9 >= r->next_sensors) {
-      r->next_sensors = now + settings_.sensor_period;
+      r->next_sensors = now + r->period;
       Publish(*r, now);
     }
   }

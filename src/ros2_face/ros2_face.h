@@ -20,15 +20,17 @@
 
 #include "ros2_face/dds_domain.h"
 #include "ros2_face/robot_messages.h"
+#include "sections/ros2_section.h"
 #include "sim/driver.h"
 
 namespace sanet::ros2face {
 
 struct Ros2Settings {
-  std::uint32_t domain = 0;      // ROS_DOMAIN_ID
-  double sensor_period = 0.1;    // s between a robot's sensor messages (odom, scan, ranges, tf)
-  double command_period = 0.01;  // s between takes of cmd_vel
-  bool twist_stamped = false;    // cmd_vel as geometry_msgs/TwistStamped (ROS 2 Jazzy's controllers)
+  std::uint32_t domain = 0;                 // ROS_DOMAIN_ID
+  double sensor_period = 0.1;               // s between a robot's sensor messages (odom, scan, ranges, tf)
+  double command_period = 0.01;             // s between takes of cmd_vel
+  bool twist_stamped = false;               // cmd_vel as geometry_msgs/TwistStamped (ROS 2 Jazzy's controllers)
+  std::vector<sections::Ros2Robot> robots;  // robots with a namespace or a rate of their own
 };
 
 class Ros2Face : public sim::RunObserver {

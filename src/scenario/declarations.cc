@@ -400,6 +400,53 @@ const Fields<sections::LoopSpec>& LoopFields() {
   return fields;
 }
 
+const Fields<sections::Ros2Robot>& Ros2RobotFields() {
+  using sections::Ros2Robot;
+  static const Fields<Ros2Robot> fields = [] {
+    Fields<Ros2Robot> f;
+    f.Custom(
+        {"robot", "text", "", kRequired, "a robot of the scenario", "whose topics these are"},
+        [](const Field& v, Ros2Robot& r) { r.robot = v.Text(); },
+        [](const Ros2Robot& r) { return YAML::Node(r.robot); });
+    f.Custom(
+        {"namespace", "text", "", "the robot's name", "letters, digits, `_`, `/` between names",
+         "its topics' namespace and its frames' prefix: `/NS/odom`, frame `NS/base_link`"},
+        [](const Field& v, Ros2Robot& r) { r.ns = v.Text(); },
+        [](const Ros2Robot& r) { return r.ns.empty() ? YAML::Node() : YAML::Node(r.ns); });
+    f.Number("rate", Member(&Ros2Robot::rate), "Hz", 0, 1000, "its sensor messages; 0: the section's `rate`");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<sections::Ros2Spec>& Ros2Fields() {
+  using sections::Ros2Spec;
+  static const Fields<Ros2Spec> fields = [] {
+    Fields<Ros2Spec> f;
+    f.Custom(
+        {"domain", "whole number", "", "`ROS_DOMAIN_ID`, else 0", "[0, 232]", "the DDS domain (ROS_DOMAIN_ID)"},
+        [](const Field& v, Ros2Spec& s) { s.domain = static_cast<int>(v.Integer(0, 232)); },
+        [](const Ros2Spec& s) { return s.domain < 0 ? YAML::Node() : YAML::Node(s.domain); });
+    f.Number("rate", Member(&Ros2Spec::rate), "Hz", 0.1, 1000, "each robot's sensor messages (odom, scan, ranges, tf)");
+    f.Choice<sections::CmdVelType>(
+        "cmd_vel", Member(&Ros2Spec::cmd_vel),
+        {{"twist", sections::CmdVelType::kTwist}, {"twist_stamped", sections::CmdVelType::kTwistStamped}},
+        "the type cmd_vel takes: `geometry_msgs/msg/Twist`, or `TwistStamped` (ROS 2 Jazzy's controllers)");
+    f.Custom(
+        {"robots", "list of mappings", "", "none", "see [ros2](#ros2)", "robots whose namespace or rate differ"},
+        [](const Field& v, Ros2Spec& s) {
+          for (const Field& item : v.Items()) Ros2RobotFields().Read(item, s.robots.emplace_back());
+        },
+        [](const Ros2Spec& s) {
+          YAML::Node items(YAML::NodeType::Sequence);
+          for (const sections::Ros2Robot& r : s.robots) items.push_back(Ros2RobotFields().Print(r));
+          return s.robots.empty() ? YAML::Node() : items;
+        });
+    return f;
+  }();
+  return fields;
+}
+
 // An end condition's list of texts (a single text is a list of one).
 void EndTexts(Fields<sim::RunSpec>& f, const char* key, std::vector<std::string> sim::RunSpec::*member,
               const std::string& what) {
@@ -927,6 +974,8 @@ const Fields<Scenario>& TopLevelFields() {
     section("loop", "mapping", "see [loop](#loop)", "how `sanet launch` links its agents");
     section("spawn", "mapping", "no spawning",
             "robots that clients of `sanet serve` may add with INIT; see [spawn](#spawn)");
+    section("ros2", "mapping", "no ROS 2 face unless `sanet serve --ros2`",
+            "`sanet serve` makes the robots ROS 2 robots over DDS; see [ros2](#ros2)");
     section("outputs", "mapping", "see [outputs](#outputs)", "what is written where");
     return f;
   }();
@@ -1002,6 +1051,8 @@ std::vector<SectionTable> SectionTables() {
       {"loop.peers", PeerFields().Describe(sections::PeerLink{})},
       {"spawn", SpawnFields().Describe(sections::SpawnSpec{})},
       {"spawn.class", SpawnClassFields().Describe(Keys{})},
+      {"ros2", Ros2Fields().Describe(sections::Ros2Spec{})},
+      {"ros2.robots", Ros2RobotFields().Describe(sections::Ros2Robot{})},
       {"outputs", OutputsFields().Describe(Scenario{})},
   };
 }

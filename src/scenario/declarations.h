@@ -25,6 +25,9 @@ const Fields<sections::LinkShaping>& NetemFields();
 const Fields<sim::RunSpec>& EndFields();
 // `spawn:` (max, region; its classes are read by the loader, each as a SpawnClassFields item).
 const Fields<sections::SpawnSpec>& SpawnFields();
+// `ros2:` (domain, rate, cmd_vel, robots: each a Ros2RobotFields item).
+const Fields<sections::Ros2Spec>& Ros2Fields();
+const Fields<sections::Ros2Robot>& Ros2RobotFields();
 const Fields<Scenario>& OutputsFields();
 // A model's `body` keys (with its drive limits for robots).
 const Fields<robots::ModelSpec>& BodyFields(robots::ModelKind kind);

@@ -75,6 +75,7 @@ std::string EffectiveBody(const Scenario& sc) {
   if (run.HasEndCondition()) root["end"] = EndFields().Print(run);
   root["loop"] = LoopFields().Print(sc.loop);
   if (sc.spawn) root["spawn"] = Spawn(*sc.spawn, run.network.has_value());
+  if (sc.ros2) root["ros2"] = Ros2Fields().Print(*sc.ros2);
   root["outputs"] = OutputsFields().Print(sc);
   YAML::Node nodes(YAML::NodeType::Sequence);
   for (const sim::NodeSpec& n : run.nodes) nodes.push_back(Node(n, run.network.has_value()));

@@ -357,6 +357,55 @@ sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool
 }
 
 // After the nodes and the world: the default region is the field around them.
+// A ROS name's part: letters, digits and `_`, not starting with a digit; `/` between parts.
+bool IsRosNamespace(const std::string& ns) {
+  if (ns.empty() || ns.front() == '/' || ns.back() == '/' || ns.find("//") != std::string::npos) return false;
+  for (std::size_t i = 0; i < ns.size(); ++i) {
+    const char c = ns[i];
+    const bool start = i == 0 || ns[i - 1] == '/';
+    if (!(std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '/' ||
+          (!start && std::isdigit(static_cast<unsigned char>(c)))))
+      return false;
+  }
+  return true;
+}
+
+// ros2.robots: robots of the scenario (no motes), each once, namespaces that ROS takes and that
+// no two robots share.
+void ReadRos2(const Field& ros2, Scenario& sc) {
+  sections::Ros2Spec spec;
+  Ros2Fields().Read(ros2, spec);
+  std::map<std::string, int> robots;
+  const auto items = ros2.Get("robots");
+  for (std::size_t i = 0; i < spec.robots.size(); ++i) {
+    const Field item = items->Items()[i];
+    const sections::Ros2Robot& r = spec.robots[i];
+    const auto id = std::find_if(sc.run.nodes.begin(), sc.run.nodes.end(),
+                                 [&](const sim::NodeSpec& n) { return n.name == r.robot; });
+    if (id == sc.run.nodes.end()) item.Require("robot").Fail("no robot named '" + r.robot + "' in this scenario");
+    if (id->model.kind == ModelKind::kMote) item.Require("robot").Fail("'" + r.robot + "' is a mote, not a robot");
+    if (auto [at, fresh] = robots.emplace(r.robot, item.line()); !fresh)
+      item.Require("robot").Fail("given twice (first on line " + std::to_string(at->second) + ")");
+    if (!r.ns.empty() && !IsRosNamespace(r.ns))
+      item.Require("namespace").Fail("'" + r.ns + "' is no ROS name: letters, digits and _, / between names");
+  }
+  std::map<std::string, std::string> holders;  // namespace -> robot
+  for (const sim::NodeSpec& n : sc.run.nodes) {
+    if (n.model.kind == ModelKind::kMote) continue;
+    const auto given = std::find_if(spec.robots.begin(), spec.robots.end(),
+                                    [&](const sections::Ros2Robot& r) { return r.robot == n.name; });
+    const std::string ns = given != spec.robots.end() && !given->ns.empty() ? given->ns : n.name;
+    if (auto [at, fresh] = holders.emplace(ns, n.name); !fresh) {
+      const auto setter = std::find_if(spec.robots.begin(), spec.robots.end(),
+                                       [&](const sections::Ros2Robot& r) { return r.ns == ns; });
+      items->Items()[setter - spec.robots.begin()]
+          .Require("namespace")
+          .Fail("robots " + at->second + " and " + n.name + " would share the namespace '" + ns + "'");
+    }
+  }
+  sc.ros2 = spec;
+}
+
 void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc) {
   const sim::RunSpec& run = sc.run;
   sections::SpawnSpec s;
@@ -395,6 +444,7 @@ void Read(const Field& root, Scenario& sc) {
   if (auto outputs = root.Get("outputs")) ReadOutputs(*outputs, sc);
   run.trace = sc.trace.value_or(run.nodes.size() <= kMaxTracedNodes);
   if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), sc);
+  if (auto ros2 = root.Get("ros2")) ReadRos2(*ros2, sc);
   if (run.trajectory_interval < run.physics_step) {
     const auto outputs = root.Get("outputs");
     const auto interval = outputs ? outputs->Get("trajectory_interval") : std::nullopt;

@@ -9,6 +9,7 @@
 #include "scenario/overrides.h"
 #include "scenario/yaml_reader.h"
 #include "sections/loop_section.h"
+#include "sections/ros2_section.h"
 #include "sections/spawn_section.h"
 #include "sim/run_spec.h"
 
@@ -20,6 +21,7 @@ struct Scenario {
   // Sections for the front ends, which the simulation never sees.
   sections::LoopSpec loop;                     // how `sanet launch` connects the agents
   std::optional<sections::SpawnSpec> spawn;    // robots the server's clients may add with INIT
+  std::optional<sections::Ros2Spec> ros2;      // the ROS 2 face of `sanet serve`
   std::string output_folder;                   // as given, or results/<name>
   std::vector<int> controller_lines;           // per node: line of its controller (0 if none)
   std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"

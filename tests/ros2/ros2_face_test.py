@@ -19,7 +19,7 @@ import threading
 import time
 import unittest
 
-SANET, CLIENT, BAD_CLIENT = sys.argv.pop(1), sys.argv.pop(1), sys.argv.pop(1)
+SANET, CLIENT, BAD_CLIENT, SOURCE = sys.argv.pop(1), sys.argv.pop(1), sys.argv.pop(1), sys.argv.pop(1)
 DOMAIN = 40 + os.getpid() % 150  # apart from other runs on this machine
 
 SCENARIO = """name: ros2-face
@@ -32,14 +32,18 @@ nodes:
 
 
 class Served:
-    def __init__(self, tmp, duration, *extra):
-        path = os.path.join(tmp, "s.yaml")
-        with open(path, "w") as f:
-            f.write(SCENARIO.format(duration=duration))
+    def __init__(self, tmp, duration, *extra, path=None):
+        if path is None:
+            path = os.path.join(tmp, "s.yaml")
+            with open(path, "w") as f:
+                f.write(SCENARIO.format(duration=duration))
+            extra = ("--ros2",) + extra
+        else:
+            extra = ("--duration", str(duration)) + extra
         self.out = os.path.join(tmp, "out")
         port_file = os.path.join(tmp, "port")
         self.process = subprocess.Popen([SANET, "serve", path, "--port", "0", "--port-file", port_file, "-o", self.out,
-                                         "--ros2", "--ros2-domain", str(DOMAIN), *extra],
+                                         "--ros2-domain", str(DOMAIN), *extra],
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         deadline = time.time() + 30
         while not os.path.exists(port_file):
@@ -145,6 +149,24 @@ class Face(unittest.TestCase):
         self.assertGreater(r2["cmd_vel_taken"], 50, "the well-formed ones still drive it")
         self.assertEqual(served.stderr.count("does not decode"), 1, served.stderr)
         self.assertEqual(served.stderr.count("more than one publisher"), 1, served.stderr)
+
+    def test_the_shipped_scenario_turns_the_face_on_with_its_names_and_rates(self):
+        shipped = os.path.join(SOURCE, "scenarios", "ros2-robots.yaml")
+        with tempfile.TemporaryDirectory() as tmp:
+            served = Served(tmp, 6, path=shipped)
+            rover = client("rover", 3, 0.2, 0)  # the omni3 'omni' under its namespace, at 20 Hz
+            summary = served.finish()
+        self.assertEqual(rover["odom_frame"], "rover/odom")
+        self.assertEqual(rover["range_frame"], "rover/ir_0")
+        self.assertGreater(rover["odom"], 45, "20 Hz for about 3 s")
+        self.assertGreater(summary["ros2"]["robots"]["omni"]["cmd_vel_taken"], 50)
+        self.assertGreater(rover["last_x"], 0.3, "driven forward in its odom frame")
+        with tempfile.TemporaryDirectory() as tmp:
+            served = Served(tmp, 4, "--no-ros2", path=shipped)
+            silent = client("rover", 2, 0, 0)
+            summary = served.finish()
+        self.assertEqual(silent["odom"], 0)
+        self.assertNotIn("ros2", summary)
 
     def test_a_domain_out_of_range_is_refused_at_start(self):
         with tempfile.TemporaryDirectory() as tmp:

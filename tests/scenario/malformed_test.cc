@@ -105,6 +105,22 @@ const Case kCases[] = {
     {"odometry_on_a_mote",
      "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {odometry: {noise: 0.1}}\n", 6,
      "nodes[0].sensors.odometry", "no odometry"},
+    {"ros2_unknown_robot",
+     "ros2:\n  robots:\n    - {robot: ghost, rate: 5}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 4,
+     "ros2.robots[0].robot", "no robot named 'ghost'"},
+    {"ros2_mote", "ros2:\n  robots:\n    - {robot: m}\nnodes:\n  - {name: m, model: mote, pose: [0, 0, 0]}\n", 4,
+     "ros2.robots[0].robot", "is a mote"},
+    {"ros2_bad_namespace",
+     "ros2:\n  robots:\n    - {robot: a, namespace: '2fast/'}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n",
+     4, "ros2.robots[0].namespace", "is no ROS name"},
+    {"ros2_shared_namespace",
+     "ros2:\n  robots:\n    - {robot: a, namespace: b}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n"
+     "  - {name: b, model: omni3, pose: [3, 0, 0]}\n",
+     4, "ros2.robots[0].namespace", "robots a and b would share the namespace 'b'"},
+    {"ros2_domain_out_of_range", "ros2: {domain: 300}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 2,
+     "ros2.domain", "between 0 and 232"},
+    {"ros2_cmd_vel_type", "ros2: {cmd_vel: twistt}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 2,
+     "ros2.cmd_vel", "expected one of: twist, twist_stamped"},
 };
 
 class Malformed : public ::testing::TestWithParam<Case> {};

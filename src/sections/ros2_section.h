@@ -1,0 +1,27 @@
+// The scenario's `ros2` section: `sanet serve` makes the world's robots ROS 2 robots over DDS
+// (docs/ros2.md), with these names and rates. A front-end section: the scenario layer reads it,
+// the ROS 2 face applies it, the simulation never sees it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sanet::sections {
+
+enum class CmdVelType { kTwist, kTwistStamped };
+
+// One robot's topics: under /<namespace>/ (its frames <namespace>/odom, ...), at `rate` Hz.
+struct Ros2Robot {
+  std::string robot;
+  std::string ns;   // empty: the robot's name
+  double rate = 0;  // Hz; 0: the section's
+};
+
+struct Ros2Spec {
+  int domain = -1;   // DDS domain; -1: ROS_DOMAIN_ID, else 0
+  double rate = 10;  // Hz of each robot's sensor messages
+  CmdVelType cmd_vel = CmdVelType::kTwist;
+  std::vector<Ros2Robot> robots;  // robots whose names or rates differ
+};
+
+}  // namespace sanet::sections

@@ -16,8 +16,7 @@ int DomainOf(const Ros2Args& args, const sections::Ros2Spec& section) {
   char* end = nullptr;
   const long id = std::strtol(env, &end, 10);
   if (*end || id < 0 || id > 232)
-    throw CLI::ValidationError("--ros2-domain",
-                               std::string("ROS_DOMAIN_ID='") + env + "' is not a domain from 0 to 232");
+    throw CLI::ValidationError("ROS_DOMAIN_ID", std::string("'") + env + "' is not a DDS domain from 0 to 232");
   return static_cast<int>(id);
 }
 
@@ -36,7 +35,8 @@ void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
                   "Hz of each robot's sensor messages on the ROS 2 face (default: the scenario's ros2.rate, 10)")
       ->check(CLI::Range(0.1, 1000.0));
   cmd->add_flag("--ros2-cmd-vel-stamped", args.stamped,
-                "Take cmd_vel as geometry_msgs/TwistStamped (as ROS 2 Jazzy's controllers publish it), not Twist");
+                "Take cmd_vel as geometry_msgs/TwistStamped (as ROS 2 Jazzy's diff_drive_controller subscribes to it), "
+                "not Twist");
 }
 
 std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
@@ -48,6 +48,7 @@ std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2A
   settings.sensor_period = 1.0 / args.rate.value_or(given.rate);
   settings.twist_stamped = args.stamped || given.cmd_vel == sections::CmdVelType::kTwistStamped;
   settings.robots = given.robots;
+  settings.cmd_vel_timeout = given.cmd_vel_timeout;
   std::unique_ptr<ros2face::Ros2Face> face;
   try {
     face = std::make_unique<ros2face::Ros2Face>(world.driver(), settings);

@@ -72,3 +72,13 @@ std::vector<DdsDomain::Sample> DdsDomain::Take(Entity reader, std::size_t most) 
 }
 
 }  // namespace sanet::ros2face
+
+namespace sanet::ros2face {
+
+std::uint32_t DdsDomain::NewIncompatibleWriters(Entity reader) {
+  dds_requested_incompatible_qos_status_t status{};
+  if (dds_get_requested_incompatible_qos_status(reader, &status) != DDS_RETCODE_OK) return 0;
+  return status.total_count_change;
+}
+
+}  // namespace sanet::ros2face

@@ -43,6 +43,8 @@ class DdsDomain {
     std::uint64_t writer = 0;
   };
   std::vector<Sample> Take(Entity reader, std::size_t most = 64);
+  // Writers that asked for this reader but whose QoS cannot match it, since the last call.
+  std::uint32_t NewIncompatibleWriters(Entity reader);
   std::uint32_t domain() const { return domain_; }
 
  private:

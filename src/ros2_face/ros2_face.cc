@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <stdexcept>
 
 #include "ros2msg/codec.h"
 
@@ -29,8 +30,11 @@ struct Ros2Face::Robot {
   double period = 0.1;  // s between its sensor messages
   double next_sensors = 0;
   std::uint64_t last_writer = 0;
-  std::set<std::string> said;  // what this robot's log has been told once
-  std::uint64_t published = 0, commands = 0, refused_owned = 0, undecodable = 0, not_finite = 0, writer_switches = 0;
+  double last_writer_at = -1e9;  // simulated time of its last sample
+  double last_command = -1;      // simulated time of the last cmd_vel taken; -1 once stopped by the timeout
+  std::set<std::string> said;    // what this robot's log has been told once
+  std::uint64_t published = 0, commands = 0, refused_owned = 0, undecodable = 0, not_finite = 0, writer_switches = 0,
+                timeouts = 0, incompatible = 0;
 };
 
 Ros2Face::Ros2Face(sim::Driver& driver, Ros2Settings settings)
@@ -58,6 +62,14 @@ void Ros2Face::AddRobots() {
         if (!own.ns.empty()) name = own.ns;
         if (own.rate > 0) r->period = 1 / own.rate;
       }
+    if (!sections::IsRosName(name)) {
+      const std::string why = "robot '" + node.name +
+                              "': its name is no ROS name (letters, digits, _); give it a namespace in the scenario's "
+                              "ros2.robots";
+      if (nodes_seen_ == 0) throw std::runtime_error(why);  // at start: an error; later (spawned): left out
+      std::fprintf(stderr, "sanet: ROS 2: %s (left out)\n", why.c_str());
+      continue;
+    }
     r->frames = FramesOf(name, node.model);
     r->start = node.pose;
     const std::string ns = "/" + name;
@@ -133,6 +145,24 @@ void Ros2Face::Publish(Robot& r, double) {
 
 void Ros2Face::TakeCommands(Robot& r) {
   for (const DdsDomain::Sample& s : dds_.Take(r.cmd_vel)) Apply(r, s);
+  if (const std::uint32_t n = dds_.NewIncompatibleWriters(r.cmd_vel)) {
+    r.incompatible += n;
+    SayOnce(r, "qos",
+            "a cmd_vel publisher whose QoS cannot reach this robot (best effort? the face takes cmd_vel reliable, as "
+            "ROS 2's default profile)");
+  }
+  StopIfQuiet(r);
+}
+
+// As ROS 2's diff_drive_controller: no cmd_vel for cmd_vel_timeout, and the robot stops.
+void Ros2Face::StopIfQuiet(Robot& r) {
+  if (settings_.cmd_vel_timeout <= 0 || r.last_command < 0) return;
+  if (driver_.Now() - r.last_command < settings_.cmd_vel_timeout) return;
+  r.last_command = -1;
+  if (driver_.OwnerOf(r.id) || driver_.Claim(r.id, kOwner)) return;  // another front end drives it now
+  driver_.NodeOf(r.id, kOwner).Drive({});
+  driver_.Release(r.id, kOwner);
+  ++r.timeouts;
 }
 
 void Ros2Face::Apply(Robot& r, const DdsDomain::Sample& s) {
@@ -147,17 +177,21 @@ void Ros2Face::Apply(Robot& r, const DdsDomain::Sample& s) {
     ++r.undecodable;
     return SayOnce(r, "undecodable", "a cmd_vel sample that does not decode: " + error + " (further ones counted)");
   }
-  if (r.last_writer && s.writer != r.last_writer) {
+  // Publishers taking turns within a second of each other: one after another is no fight.
+  const double now = driver_.Now();
+  if (r.last_writer && s.writer != r.last_writer && now - r.last_writer_at < 1.0) {
     ++r.writer_switches;
-    SayOnce(r, "writers", "cmd_vel from more than one publisher: the last one wins (switches counted)");
+    SayOnce(r, "writers", "cmd_vel from more than one publisher at once: the last one wins (switches counted)");
   }
   r.last_writer = s.writer;
+  r.last_writer_at = now;
   if (const auto owner = driver_.OwnerOf(r.id); owner && *owner != kOwner) {
     ++r.refused_owned;
     return SayOnce(r, "owned", "cmd_vel refused: " + *owner + " drives this robot (further ones counted)");
   }
   if (driver_.Claim(r.id, kOwner)) return;
   const Twist2D v{twist->linear.x, twist->linear.y, twist->angular.z};
+  r.last_command = driver_.Now();
   if (!driver_.NodeOf(r.id, kOwner).Drive(v))
     ++r.not_finite;  // the node logs why
   else
@@ -186,7 +220,9 @@ nlohmann::ordered_json Ros2Face::Summary() const {
                             {"cmd_vel_refused_owned", r->refused_owned},
                             {"cmd_vel_undecodable", r->undecodable},
                             {"cmd_vel_not_finite", r->not_finite},
-                            {"cmd_vel_publisher_switches", r->writer_switches}};
+                            {"cmd_vel_publisher_switches", r->writer_switches},
+                            {"cmd_vel_incompatible_publishers", r->incompatible},
+                            {"stopped_by_cmd_vel_timeout", r->timeouts}};
   return j;
 }
 

@@ -7,8 +7,9 @@
 // One owner per robot: the face claims a robot only for the moment it reads its sensors or
 // takes a command, so a USARSim client or an agent may claim it at any time; while one does,
 // the face publishes what that owner read, and refuses (counts, and says once) cmd_vel to it.
-// Bad samples, commands that are not finite numbers and publishers taking turns on one cmd_vel
-// are counted and said once per robot; the simulation never waits for DDS.
+// Bad samples, commands that are not finite numbers, publishers taking turns on one cmd_vel and
+// publishers whose QoS cannot match are counted and said once per robot; a robot the face drives
+// stops when cmd_vel stays quiet for cmd_vel_timeout; the simulation never waits for DDS.
 #pragma once
 
 #include <cstdint>
@@ -30,6 +31,7 @@ struct Ros2Settings {
   double sensor_period = 0.1;               // s between a robot's sensor messages (odom, scan, ranges, tf)
   double command_period = 0.01;             // s between takes of cmd_vel
   bool twist_stamped = false;               // cmd_vel as geometry_msgs/TwistStamped (ROS 2 Jazzy's controllers)
+  double cmd_vel_timeout = 0.5;             // s without cmd_vel before a robot the face drives stops; 0: never
   std::vector<sections::Ros2Robot> robots;  // robots with a namespace or a rate of their own
 };
 
@@ -51,6 +53,7 @@ class Ros2Face : public sim::RunObserver {
   void AddRobots();
   void Publish(Robot& robot, double now);
   void TakeCommands(Robot& robot);
+  void StopIfQuiet(Robot& robot);
   void Apply(Robot& robot, const DdsDomain::Sample& sample);
   void SayOnce(Robot& robot, const std::string& what, const std::string& text);
   void Poll();

@@ -431,7 +431,11 @@ const Fields<sections::Ros2Spec>& Ros2Fields() {
     f.Choice<sections::CmdVelType>(
         "cmd_vel", Member(&Ros2Spec::cmd_vel),
         {{"twist", sections::CmdVelType::kTwist}, {"twist_stamped", sections::CmdVelType::kTwistStamped}},
-        "the type cmd_vel takes: `geometry_msgs/msg/Twist`, or `TwistStamped` (ROS 2 Jazzy's controllers)");
+        "the type cmd_vel takes: `geometry_msgs/msg/Twist`, or `TwistStamped` (as ROS 2 Jazzy's "
+        "diff_drive_controller subscribes to it)");
+    f.Number("cmd_vel_timeout", Member(&Ros2Spec::cmd_vel_timeout), "s", 0, 3600,
+             "a robot the face drives stops when no cmd_vel came for this long (as ROS 2's diff_drive_controller); "
+             "0: it keeps the last command");
     f.Custom(
         {"robots", "list of mappings", "", "none", "see [ros2](#ros2)", "robots whose namespace or rate differ"},
         [](const Field& v, Ros2Spec& s) {

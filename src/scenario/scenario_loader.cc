@@ -356,25 +356,8 @@ sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool
   return c;
 }
 
-// After the nodes and the world: the default region is the field around them.
-// A ROS name's part: letters, digits and `_`, not starting with a digit; `/` between parts.
-bool IsRosNamespace(const std::string& ns) {
-  if (ns.empty() || ns.front() == '/' || ns.back() == '/' || ns.find("//") != std::string::npos) return false;
-  for (std::size_t i = 0; i < ns.size(); ++i) {
-    const char c = ns[i];
-    const bool start = i == 0 || ns[i - 1] == '/';
-    if (!(std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '/' ||
-          (!start && std::isdigit(static_cast<unsigned char>(c)))))
-      return false;
-  }
-  return true;
-}
-
-// ros2.robots: robots of the scenario (no motes), each once, namespaces that ROS takes and that
-// no two robots share.
-void ReadRos2(const Field& ros2, Scenario& sc) {
-  sections::Ros2Spec spec;
-  Ros2Fields().Read(ros2, spec);
+// ros2.robots: robots of the scenario (no motes), each once, with namespaces that ROS takes.
+void CheckRos2Robots(const Field& ros2, const sections::Ros2Spec& spec, const Scenario& sc) {
   std::map<std::string, int> robots;
   const auto items = ros2.Get("robots");
   for (std::size_t i = 0; i < spec.robots.size(); ++i) {
@@ -386,26 +369,47 @@ void ReadRos2(const Field& ros2, Scenario& sc) {
     if (id->model.kind == ModelKind::kMote) item.Require("robot").Fail("'" + r.robot + "' is a mote, not a robot");
     if (auto [at, fresh] = robots.emplace(r.robot, item.line()); !fresh)
       item.Require("robot").Fail("given twice (first on line " + std::to_string(at->second) + ")");
-    if (!r.ns.empty() && !IsRosNamespace(r.ns))
+    if (!r.ns.empty() && !sections::IsRosName(r.ns))
       item.Require("namespace").Fail("'" + r.ns + "' is no ROS name: letters, digits and _, / between names");
   }
+}
+
+// Every robot's namespace (its name unless an item gives one) is a ROS name, and its own.
+void CheckRos2Namespaces(const Field& ros2, const sections::Ros2Spec& spec, const Scenario& sc) {
+  const auto items = ros2.Get("robots");
+  const auto item = [&](const sections::Ros2Robot& r) { return items->Items()[&r - spec.robots.data()]; };
   std::map<std::string, std::string> holders;  // namespace -> robot
   for (const sim::NodeSpec& n : sc.run.nodes) {
     if (n.model.kind == ModelKind::kMote) continue;
     const auto given = std::find_if(spec.robots.begin(), spec.robots.end(),
                                     [&](const sections::Ros2Robot& r) { return r.robot == n.name; });
-    const std::string ns = given != spec.robots.end() && !given->ns.empty() ? given->ns : n.name;
+    const bool named = given != spec.robots.end() && !given->ns.empty();
+    const std::string ns = named ? given->ns : n.name;
+    if (!named && !sections::IsRosName(ns))
+      (given != spec.robots.end() ? item(*given).Require("robot") : ros2)
+          .Fail("robot '" + n.name +
+                "': its name is no ROS name (letters, digits, _); give it a namespace in ros2.robots");
     if (auto [at, fresh] = holders.emplace(ns, n.name); !fresh) {
-      const auto setter = std::find_if(spec.robots.begin(), spec.robots.end(),
-                                       [&](const sections::Ros2Robot& r) { return r.ns == ns; });
-      items->Items()[setter - spec.robots.begin()]
+      // The item that gave this robot the namespace, or else the one that gave it the other.
+      const auto setter = named ? given
+                                : std::find_if(spec.robots.begin(), spec.robots.end(),
+                                               [&](const sections::Ros2Robot& r) { return r.ns == ns; });
+      item(*setter)
           .Require("namespace")
           .Fail("robots " + at->second + " and " + n.name + " would share the namespace '" + ns + "'");
     }
   }
+}
+
+void ReadRos2(const Field& ros2, Scenario& sc) {
+  sections::Ros2Spec spec;
+  Ros2Fields().Read(ros2, spec);
+  CheckRos2Robots(ros2, spec, sc);
+  CheckRos2Namespaces(ros2, spec, sc);
   sc.ros2 = spec;
 }
 
+// After the nodes and the world: the default region is the field around them.
 void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc) {
   const sim::RunSpec& run = sc.run;
   sections::SpawnSpec s;

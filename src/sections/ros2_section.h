@@ -17,10 +17,15 @@ struct Ros2Robot {
   double rate = 0;  // Hz; 0: the section's
 };
 
+// A name ROS 2 takes for a namespace: parts of letters, digits and `_`, none starting with a
+// digit, joined by single `/` (no leading or trailing one).
+bool IsRosName(const std::string& name);
+
 struct Ros2Spec {
   int domain = -1;   // DDS domain; -1: ROS_DOMAIN_ID, else 0
   double rate = 10;  // Hz of each robot's sensor messages
   CmdVelType cmd_vel = CmdVelType::kTwist;
+  double cmd_vel_timeout = 0.5;   // s without cmd_vel after which a robot the face drives stops; 0: never
   std::vector<Ros2Robot> robots;  // robots whose names or rates differ
 };
 

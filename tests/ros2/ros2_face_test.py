@@ -101,6 +101,17 @@ class Face(unittest.TestCase):
         self.assertGreater(r1["cmd_vel_taken"], 100)
         self.assertEqual(r1["cmd_vel_refused_owned"], 0)
 
+    def test_a_robot_stops_when_cmd_vel_goes_quiet(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            served = Served(tmp, 8)
+            client("r1", 1.5, 0.4, 0)  # drives, then stops publishing
+            time.sleep(2)
+            after = client("r1", 1, 0, 0)  # a still robot reads the same pose throughout
+            summary = served.finish()
+        self.assertGreater(after["last_x"], 0.2, "it had moved")
+        self.assertAlmostEqual(after["last_x"], after["first_x"], delta=0.01, msg="and then stood still")
+        self.assertGreaterEqual(summary["ros2"]["robots"]["r1"]["stopped_by_cmd_vel_timeout"], 1)
+
     def test_ir_ranges_and_twist_stamped(self):
         with tempfile.TemporaryDirectory() as tmp:
             served = Served(tmp, 7, "--ros2-cmd-vel-stamped")
@@ -181,7 +192,13 @@ class Face(unittest.TestCase):
             out = subprocess.run([SANET, "serve", path, "--port", "0", "-o", os.path.join(tmp, "o"), "--ros2"],
                                  capture_output=True, text=True, timeout=30, env=env)
             self.assertNotEqual(out.returncode, 0)
-            self.assertIn("ROS_DOMAIN_ID='banana'", out.stderr)
+            self.assertIn("ROS_DOMAIN_ID: 'banana' is not a DDS domain", out.stderr)
+            with open(path, "w") as f:
+                f.write(SCENARIO.format(duration=1).replace("r1", "r-1"))
+            out = subprocess.run([SANET, "serve", path, "--port", "0", "-o", os.path.join(tmp, "o"), "--ros2"],
+                                 capture_output=True, text=True, timeout=30)
+            self.assertNotEqual(out.returncode, 0)
+            self.assertIn("robot 'r-1': its name is no ROS name", out.stderr)
 
 
 if __name__ == "__main__":

@@ -117,6 +117,8 @@ const Case kCases[] = {
      "ros2:\n  robots:\n    - {robot: a, namespace: b}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n"
      "  - {name: b, model: omni3, pose: [3, 0, 0]}\n",
      4, "ros2.robots[0].namespace", "robots a and b would share the namespace 'b'"},
+    {"ros2_robot_name_no_ros_name", "ros2: {rate: 5}\nnodes:\n  - {name: scout-1, model: omni3, pose: [0, 0, 0]}\n", 2,
+     "ros2", "robot 'scout-1': its name is no ROS name"},
     {"ros2_domain_out_of_range", "ros2: {domain: 300}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 2,
      "ros2.domain", "between 0 and 232"},
     {"ros2_cmd_vel_type", "ros2: {cmd_vel: twistt}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 2,

@@ -100,7 +100,7 @@ def case(count):
 
 
 print(f"sanet ROS 2 face: N robots over DDS and N over the USARSim protocol in one run, sensors 10 Hz, "
-      f"{seconds:.0f} s per case; ms, ratio = ROS 2 / USARSim")
+      f"{seconds:.0f} s per case; ms; robots = both sides; ratio = ROS 2 / USARSim, +ms = ROS 2 - USARSim")
 print(f"{'robots':>6} | {'command p50':>11} {'p99':>7} {'ratio':>6} | {'sensor p50':>10} {'p99':>7} {'+ms':>6} | "
       f"{'USARSim cmd p50':>15} {'p99':>7} | {'sensor p50':>10} {'p99':>7} | {'lag p99':>7} {'missed':>6}")
 for count in (4, 16, 32):

@@ -7,7 +7,8 @@ DDS, types from IDL written from ROS 2's definitions):
 - one owner per robot: a robot a USARSim client claimed does not take cmd_vel (refused, counted);
 - bad input: cmd_vel that is not a number, samples of another type under Twist's name, two
   publishers on one cmd_vel: counted in summary.json, said once, never a crash;
-- a domain that cannot be used is a clear error at start."""
+- a domain that cannot be used (out of range, ROS_DOMAIN_ID not a number, no interface for DDS)
+  and a robot name that is no ROS name are clear errors at start."""
 import json
 import math
 import os
@@ -193,6 +194,12 @@ class Face(unittest.TestCase):
                                  capture_output=True, text=True, timeout=30, env=env)
             self.assertNotEqual(out.returncode, 0)
             self.assertIn("ROS_DOMAIN_ID: 'banana' is not a DDS domain", out.stderr)
+            env = dict(os.environ, CYCLONEDDS_URI="<CycloneDDS><Domain><General><Interfaces>"
+                       "<NetworkInterface name=\"nosuch0\"/></Interfaces></General></Domain></CycloneDDS>")
+            out = subprocess.run([SANET, "serve", path, "--port", "0", "-o", os.path.join(tmp, "o"), "--ros2"],
+                                 capture_output=True, text=True, timeout=30, env=env)
+            self.assertNotEqual(out.returncode, 0)
+            self.assertIn("cannot join DDS domain 0", out.stderr)
             with open(path, "w") as f:
                 f.write(SCENARIO.format(duration=1).replace("r1", "r-1"))
             out = subprocess.run([SANET, "serve", path, "--port", "0", "-o", os.path.join(tmp, "o"), "--ros2"],

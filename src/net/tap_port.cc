@@ -114,6 +114,8 @@ TapPort::TapPort(ns3::Ptr<ns3::Node> node, NodeId id, int fd, ns3::Mac48Address 
   node_->RegisterProtocolHandler(ns3::MakeCallback(&TapPort::FromTap, this), kIpv4, device_, /*promiscuous=*/true);
   auto ip = node_->GetObject<ns3::Ipv4>();
   const auto radio = ip->GetNetDevice(1);  // interface 0 is the loopback
+  radio_ = radio;
+  node_->RegisterProtocolHandler(ns3::MakeCallback(&TapPort::FromRadio, this), kIpv4, radio_, /*promiscuous=*/false);
   for (ns3::Ptr<ns3::Socket>* socket : {&unicast_, &broadcast_}) {
     *socket = ns3::Socket::CreateSocket(node_, ns3::Ipv4RawSocketFactory::GetTypeId());
     (*socket)->SetAttribute("IpHeaderInclude", ns3::BooleanValue(true));
@@ -147,8 +149,9 @@ void TapPort::FromTap(ns3::Ptr<ns3::NetDevice>, ns3::Ptr<const ns3::Packet> pack
   if (p->PeekHeader(header) == 0) return;
   auto ip = node_->GetObject<ns3::Ipv4>();
   const ns3::Ipv4Address to = header.GetDestination();
-  // Only what the node itself could have sent: its own source address, not multicast.
-  if (ip->GetInterfaceForAddress(header.GetSource()) < 0 || to.IsMulticast()) return;
+  // Only what the node itself could have sent: its own source address.
+  if (ip->GetInterfaceForAddress(header.GetSource()) < 0) return;
+  if (to.IsMulticast()) return SendMulticast(p, header);
   const bool broadcast = to.IsBroadcast() || to.IsSubnetDirectedBroadcast(ip->GetAddress(1, 0).GetMask());
   // Unicasts to another real stack can be counted as lost or arrived; those to a mote cannot.
   const std::optional<NodeId> addressee = network_.node_at(to);
@@ -168,6 +171,35 @@ void TapPort::FromTap(ns3::Ptr<ns3::NetDevice>, ns3::Ptr<const ns3::Packet> pack
     network_.entered(id_, header, payload);
   }
   (broadcast ? broadcast_ : unicast_)->SendTo(p, 0, ns3::InetSocketAddress(to, 0));
+}
+
+void TapPort::SendMulticast(ns3::Ptr<ns3::Packet> packet, const ns3::Ipv4Header& header) {
+  TapCounts& mine = ledger_[id_];
+  ++mine.packets_sent;
+  mine.bytes_sent += packet->GetSize();
+  TapEntryTag tag;
+  tag.entered_ns = ns3::Simulator::Now().GetNanoSeconds();
+  tag.origin = id_;
+  tag.unicast = false;
+  packet->AddPacketTag(tag);
+  if (network_.entered) {
+    ns3::Ptr<ns3::Packet> payload = packet->Copy();
+    ns3::Ipv4Header stripped;
+    payload->RemoveHeader(stripped);
+    network_.entered(id_, header, payload);
+  }
+  radio_->Send(packet, ns3::Mac48Address::GetMulticast(header.GetDestination()), kIpv4);
+}
+
+// A multicast frame another node's real stack sent: to this node's real stack. (ns-3's IP layer
+// drops it too: no route, since no routing protocol here routes multicast.)
+void TapPort::FromRadio(ns3::Ptr<ns3::NetDevice>, ns3::Ptr<const ns3::Packet> packet, std::uint16_t protocol,
+                        const ns3::Address&, const ns3::Address&, ns3::NetDevice::PacketType) {
+  if (protocol != kIpv4) return;
+  ns3::Ptr<ns3::Packet> p = packet->Copy();
+  ns3::Ipv4Header header;
+  if (p->RemoveHeader(header) == 0 || !header.GetDestination().IsMulticast()) return;
+  ToTap(p, header);
 }
 
 void TapPort::ToTap(ns3::Ptr<ns3::Packet> packet, ns3::Ipv4Header header) {

@@ -45,6 +45,11 @@ class TapPort {
  private:
   void FromTap(ns3::Ptr<ns3::NetDevice> device, ns3::Ptr<const ns3::Packet> packet, std::uint16_t protocol,
                const ns3::Address& from, const ns3::Address& to, ns3::NetDevice::PacketType type);
+  // IPv4 multicast: one 802.11 group frame from this node's radio, relayed by no one (no routing
+  // protocol of sanet's routes multicast), taken by every node in range that has a tap.
+  void SendMulticast(ns3::Ptr<ns3::Packet> packet, const ns3::Ipv4Header& header);
+  void FromRadio(ns3::Ptr<ns3::NetDevice> device, ns3::Ptr<const ns3::Packet> packet, std::uint16_t protocol,
+                 const ns3::Address& from, const ns3::Address& to, ns3::NetDevice::PacketType type);
   void Divert();
 
   ns3::Ptr<ns3::Node> node_;
@@ -53,6 +58,7 @@ class TapPort {
   ns3::Mac48Address tap_mac_;
   Network network_;
   ns3::Ptr<ns3::Socket> unicast_, broadcast_;  // raw IP, header included; the second bound to the radio
+  ns3::Ptr<ns3::NetDevice> radio_;
   TapLedger& ledger_;
 };
 

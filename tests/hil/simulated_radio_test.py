@@ -5,6 +5,12 @@ tap, radio0, whose packets cross ns-3's 802.11 network between the robots' simul
   comes back; the largest distance at which it got through agrees with the log-distance model;
 - a real UDP datagram from A to C crosses mote B, the only route, and B's forwarded count shows it;
 - a TCP stream (iperf3) carries data at a rate bounded by the simulated 802.11b data rate;
+- IPv4 multicast (what DDS discovery sends) crosses the radio as group frames to the robots in
+  range: heard while near, not while out of range, heard again when back;
+- a ROS 2-style DDS chatter (C, Cyclone) between two robots' namespaces crosses the radio with
+  the shipped configuration (scenarios/cyclonedds/radio0.xml: ROS 2's default multicast
+  discovery) and with unicast peers, stops while out of range and resumes, and none of it
+  crosses the bridge to the server;
 - the formation of case study 2 (scenarios/formation-radio.yaml, shortened) keeps its distances
   while the agents' poses cross the simulated radio.
 Needs root and /dev/net/tun: elsewhere it says why and is skipped (exit 77)."""
@@ -12,14 +18,18 @@ import csv
 import json
 import os
 import re
+import socket
+import struct
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import unittest
 
 SANET = sys.argv.pop(1)
 SOURCE = sys.argv.pop(1)
+CHATTER = sys.argv.pop(1) if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else None
 TX_POWER = 0  # dBm
 RANGE = 10 ** ((TX_POWER - 46.6777 + 82) / 30)  # m: log-distance (exponent 3, 46.6777 dB at 1 m) meets -82 dBm
 
@@ -69,6 +79,72 @@ for i in range(30):
     s.sendto(b"hello %d" % i, ("10.0.0.3", 5000))
     time.sleep(0.1)
 """
+
+
+MULTICAST_LISTEN = """import socket, struct, sys, time
+s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+s.bind(("239.255.0.1", 7400))
+s.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP, socket.inet_aton("239.255.0.1") + socket.inet_aton("10.0.0.1"))
+s.settimeout(14)  # longer than the rover is out of range
+try:
+    while True:
+        data, peer = s.recvfrom(2048)
+        print(peer[0], data.decode(), flush=True)
+except socket.timeout:
+    pass
+"""
+
+MULTICAST_SEND = """import socket, time
+s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+s.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_IF, socket.inet_aton("10.0.0.2"))
+s.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_TTL, 1)
+for i in range(240):
+    s.sendto(b"%d" % i, ("239.255.0.1", 7400))
+    time.sleep(0.1)
+"""
+
+
+# The rover goes out of range (15 m) for about four seconds, shorter than DDS's 10 s lease.
+DDS_TEAM = f"""duration: 26
+network: {{tx_power: {TX_POWER}, routing: aodv}}
+loop: {{network: simulated}}
+nodes:
+  - {{name: base, model: omni3, pose: [0, 0, 0], controller: {{name: constant_velocity, params: {{vx: 0}}}}}}
+  - name: rover
+    model: omni3
+    pose: [10, 0, 0]
+    controller: {{name: waypoint, params: {{waypoints: [[17.5, 0], [10, 0]], speed: 1.0}}}}
+"""
+
+UNICAST_PEERS = """<CycloneDDS><Domain Id="any"><General><Interfaces><NetworkInterface name="radio0" multicast="false"/>
+</Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery><Peers><Peer address="10.0.0.1"/>
+<Peer address="10.0.0.2"/></Peers><ParticipantIndex>auto</ParticipantIndex></Discovery></Domain></CycloneDDS>"""
+
+
+class BridgeSniffer(threading.Thread):
+    """Counts the UDP packets on the launch's bridge that look like DDS (ports 7400 to 9000)."""
+
+    def __init__(self, bridge):
+        super().__init__(daemon=True)
+        self.sock = socket.socket(socket.AF_PACKET, socket.SOCK_RAW, socket.htons(3))
+        self.sock.bind((bridge, 0))
+        self.sock.settimeout(0.2)
+        self.dds, self.frames, self.stop = 0, 0, False
+
+    def run(self):
+        while not self.stop:
+            try:
+                frame = self.sock.recv(65536)
+            except socket.timeout:
+                continue
+            self.frames += 1
+            if len(frame) < 42 or frame[12:14] != b"\x08\x00" or frame[23] != 17:
+                continue
+            ihl = (frame[14] & 15) * 4
+            sport, dport = struct.unpack("!HH", frame[14 + ihl:18 + ihl])
+            if 7400 <= sport <= 9000 or 7400 <= dport <= 9000:
+                self.dds += 1
 
 
 def permitted():
@@ -179,6 +255,55 @@ class SimulatedRadio(unittest.TestCase):
         discoveries = [r for r in rows(out, "routes.csv") if r["node"] == "base" and r["destination"] == "rover"]
         self.assertGreaterEqual(len(discoveries), 2, "one at the start, one when the rover is back")
         self.assertEqual(taps["rover"]["packets_received"], taps["rover"]["packets_sent"], "every request answered")
+
+    def test_multicast_reaches_the_robots_in_range_only(self):
+        run = Launch(self.tmp.name, PING)
+        listener = subprocess.Popen(["ip", "netns", "exec", run.namespaces["base"], sys.executable, "-c",
+                                     MULTICAST_LISTEN], stdout=subprocess.PIPE, text=True)
+        time.sleep(0.5)
+        run.run_in("rover", sys.executable, "-c", MULTICAST_SEND, check=True, timeout=60)
+        heard = [int(line.split()[1]) for line in listener.communicate(timeout=30)[0].splitlines()
+                 if line.startswith("10.0.0.2 ")]
+        out = run.finish()
+        self.assertGreater(len(heard), 50, "heard while the rover is near")
+        gaps = [(a, b) for a, b in zip(heard, heard[1:]) if b - a > 20]
+        self.assertEqual(len(gaps), 1, f"one silence while out of range, not {gaps}")
+        self.assertGreater(heard[-1], gaps[0][1], "heard again once the rover is back")
+        taps = {r["node"]: r for r in rows(out, "taps.csv")}
+        self.assertGreaterEqual(int(taps["base"]["packets_received"]), len(heard))
+        self.assertGreaterEqual(int(taps["rover"]["packets_sent"]), 240)
+
+    def dds_chatter(self, uri):
+        run = Launch(self.tmp.name, DDS_TEAM)
+        sniffer = BridgeSniffer(run.namespaces["base"].split("-")[0] + "br")
+        sniffer.start()
+        env = dict(os.environ, CYCLONEDDS_URI=uri)
+        env.pop("ROS_LOCALHOST_ONLY", None)
+        sub = subprocess.Popen(["ip", "netns", "exec", run.namespaces["base"], CHATTER, "sub", "5", "22"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+        run.run_in("rover", CHATTER, "pub", "5", "20", env=env, check=True, timeout=60)
+        heard = [int(line) for line in sub.communicate(timeout=60)[0].split()]
+        sniffer.stop = True
+        sniffer.join()
+        sniffer.sock.close()
+        out = run.finish()
+        self.assertGreater(len(heard), 80, "heard while the rover is near")
+        self.assertTrue(all(b > a for a, b in zip(heard, heard[1:])), "in order, each once")
+        gaps = [(a, b) for a, b in zip(heard, heard[1:]) if b - a > 15]
+        self.assertEqual(len(gaps), 1, f"one silence while out of range, not {gaps}")
+        self.assertGreater(heard[-1], gaps[0][1] + 40, "heard again once the rover is back")
+        self.assertGreater(sniffer.frames, 100, "the sniffer saw the bridge's traffic (the agents' connections)")
+        self.assertEqual(sniffer.dds, 0, "the team's DDS traffic never crossed the bridge")
+        taps = {r["node"]: r for r in rows(out, "taps.csv")}
+        self.assertGreater(int(taps["rover"]["packets_sent"]), 100)
+
+    @unittest.skipUnless(CHATTER, "give the ros2_chatter program")
+    def test_dds_with_ros2s_default_discovery_crosses_the_radio_only(self):
+        self.dds_chatter("file://" + os.path.join(SOURCE, "scenarios", "cyclonedds", "radio0.xml"))
+
+    @unittest.skipUnless(CHATTER, "give the ros2_chatter program")
+    def test_dds_with_unicast_peers_crosses_the_radio_only(self):
+        self.dds_chatter(UNICAST_PEERS)
 
     def test_a_datagram_crosses_a_mote_that_is_the_only_route(self):
         self.assertGreater(24, RANGE * 1.2)

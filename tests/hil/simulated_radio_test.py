@@ -8,7 +8,7 @@ tap, radio0, whose packets cross ns-3's 802.11 network between the robots' simul
 - IPv4 multicast (what DDS discovery sends) crosses the radio as group frames to the robots in
   range: heard while near, not while out of range, heard again when back;
 - a ROS 2-style DDS chatter (C, Cyclone) between two robots' namespaces crosses the radio with
-  the shipped configuration (scenarios/cyclonedds/radio0.xml: ROS 2's default multicast
+  the shipped configuration (examples/ros2/cyclonedds-radio0.xml: ROS 2's default multicast
   discovery) and with unicast peers, stops while out of range and resumes, and none of it
   crosses the bridge to the server;
 - the formation of case study 2 (scenarios/formation-radio.yaml, shortened) keeps its distances
@@ -299,7 +299,7 @@ class SimulatedRadio(unittest.TestCase):
 
     @unittest.skipUnless(CHATTER, "give the ros2_chatter program")
     def test_dds_with_ros2s_default_discovery_crosses_the_radio_only(self):
-        self.dds_chatter("file://" + os.path.join(SOURCE, "scenarios", "cyclonedds", "radio0.xml"))
+        self.dds_chatter("file://" + os.path.join(SOURCE, "examples", "ros2", "cyclonedds-radio0.xml"))
 
     @unittest.skipUnless(CHATTER, "give the ros2_chatter program")
     def test_dds_with_unicast_peers_crosses_the_radio_only(self):

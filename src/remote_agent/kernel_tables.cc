@@ -66,6 +66,14 @@ Ipv4 AddressIn(const rtattr* a) {
   return address;
 }
 
+// How many nodes hold each address: one makes it that node's, more make it none's.
+std::map<Ipv4, int> Holders(const std::vector<std::optional<Ipv4>>& addresses) {
+  std::map<Ipv4, int> holders;
+  for (const auto& a : addresses)
+    if (a) ++holders[*a];
+  return holders;
+}
+
 }  // namespace
 
 std::optional<KernelRoute> KernelRouteTo(Ipv4 destination) {
@@ -119,9 +127,7 @@ std::vector<KernelNeighbour> KernelNeighbours() {
 
 KernelTables MapToNodes(NodeId self, const std::vector<std::optional<Ipv4>>& addresses,
                         const std::vector<KernelRoute>& routes, const std::vector<KernelNeighbour>& neighbours) {
-  std::map<Ipv4, int> holders;
-  for (const auto& a : addresses)
-    if (a) ++holders[*a];
+  std::map<Ipv4, int> holders = Holders(addresses);
   const auto node_at = [&](Ipv4 address) -> std::optional<NodeId> {
     if (holders[address] != 1) return std::nullopt;  // no node's, or several nodes'
     for (NodeId id = 0; id < addresses.size(); ++id)
@@ -145,9 +151,7 @@ KernelTables MapToNodes(NodeId self, const std::vector<std::optional<Ipv4>>& add
 }
 
 KernelTables ReadKernelTables(NodeId self, const std::vector<std::optional<Ipv4>>& addresses) {
-  std::map<Ipv4, int> holders;
-  for (const auto& a : addresses)
-    if (a) ++holders[*a];
+  std::map<Ipv4, int> holders = Holders(addresses);
   std::vector<KernelRoute> routes;
   for (NodeId id = 0; id < addresses.size(); ++id)
     if (id != self && addresses[id] && holders[*addresses[id]] == 1)

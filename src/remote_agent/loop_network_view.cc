@@ -58,7 +58,7 @@ void LoopNetworkView::TakeNetLine(const ProtocolMessage& line) const {
     if (key == "Route")
       if (const auto r = ParseRoute(value)) s.routes.push_back(*r);
     if (key == "Neighbour")
-      if (const auto n = Lookup(value)) s.neighbours.push_back(*n);
+      if (const auto n = hooks_.lookup(value)) s.neighbours.push_back(*n);
   }
   snapshot_ = std::move(s);
 }
@@ -72,18 +72,12 @@ std::optional<RouteEntry> LoopNetworkView::ParseRoute(const std::string& text) c
   if (!(in >> destination >> k1 >> next >> k2 >> r.hops >> k3 >> valid >> k4 >> r.expires_in) || k1 != "Next" ||
       k2 != "Hops" || k3 != "Valid" || k4 != "Expires")
     return std::nullopt;
-  const auto d = Lookup(destination), n = Lookup(next);
+  const auto d = hooks_.lookup(destination), n = hooks_.lookup(next);
   if (!d || !n) return std::nullopt;
   r.destination = *d;
   r.next_hop = *n;
   r.valid = valid == "True";
   return r;
-}
-
-std::optional<NodeId> LoopNetworkView::Lookup(const std::string& name) const {
-  for (NodeId i = 0; i < spec_.nodes.size(); ++i)
-    if (spec_.nodes[i].name == name) return i;
-  return std::nullopt;
 }
 
 bool LoopNetworkView::InvalidateRoute(NodeId destination) {

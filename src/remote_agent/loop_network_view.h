@@ -25,9 +25,10 @@ class LoopNetworkView : public NetworkView {
   static constexpr double kWait = 1.0;    // s of wall-clock time for the server's answer
 
   struct Hooks {
-    std::function<double()> now;                                  // the node's Now()
-    std::function<std::vector<std::optional<Ipv4>>()> addresses;  // where each node's agent listens
-    std::function<void(const std::string&)> log;                  // the node's log
+    std::function<double()> now;                                      // the node's Now()
+    std::function<std::vector<std::optional<Ipv4>>()> addresses;      // where each node's agent listens
+    std::function<void(const std::string&)> log;                      // the node's log
+    std::function<std::optional<NodeId>(const std::string&)> lookup;  // the node's Lookup
   };
   LoopNetworkView(const sim::RunSpec& spec, NodeId self, ServerLink& link, Hooks hooks);
 
@@ -49,7 +50,6 @@ class LoopNetworkView : public NetworkView {
   void FetchFromKernel() const;
   void TakeNetLine(const ProtocolMessage& line) const;
   std::optional<RouteEntry> ParseRoute(const std::string& text) const;
-  std::optional<NodeId> Lookup(const std::string& name) const;
 
   const sim::RunSpec& spec_;
   NodeId self_;

@@ -76,7 +76,8 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
       peers_[*node] = Ipv4Endpoint(p.address, PortOf(*node));
   OpenPeerSocket();
   LoopNetworkView::Hooks hooks{[this] { return Now(); }, [this] { return PeerAddresses(); },
-                               [this](const std::string& text) { Log(text); }};
+                               [this](const std::string& text) { Log(text); },
+                               [this](const std::string& name) { return Lookup(name); }};
   view_ = std::make_unique<LoopNetworkView>(spec_, id_, *link_, std::move(hooks));
   ProtocolMessage init("INIT");
   init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());

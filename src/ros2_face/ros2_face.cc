@@ -113,13 +113,13 @@ void Ros2Face::Poll() {
     TakeCommands(*r);
     if (now + 1e-9 >= r->next_sensors) {
       r->next_sensors = now + r->period;
-      Publish(*r, now);
+      Publish(*r);
     }
   }
 }
 
 // The robot's readings: the face's own read when nobody drives it, else its owner's last one.
-void Ros2Face::Publish(Robot& r, double) {
+void Ros2Face::Publish(Robot& r) {
   const auto owner = driver_.OwnerOf(r.id);
   const bool mine = !owner && !driver_.Claim(r.id, kOwner);
   const sim::SensorReadings& readings = mine ? driver_.TakeReadings(r.id, kOwner) : driver_.LastReadings(r.id);

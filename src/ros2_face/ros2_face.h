@@ -51,7 +51,7 @@ class Ros2Face : public sim::RunObserver {
  private:
   struct Robot;
   void AddRobots();
-  void Publish(Robot& robot, double now);
+  void Publish(Robot& robot);
   void TakeCommands(Robot& robot);
   void StopIfQuiet(Robot& robot);
   void Apply(Robot& robot, const DdsDomain::Sample& sample);

@@ -343,14 +343,15 @@ struct LaunchArgs {
 int Launch(const LaunchArgs& a, agents::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
   if (!a.command.empty() && a.exec_robot.empty())
-    throw CLI::ValidationError("--exec", "a command after -- runs in a robot's namespace: name it with --exec ROBOT");
+    throw CLI::ValidationError("--exec", "a command after -- runs in robots' namespaces: name them with --exec ROBOT");
   if (!a.exec_robot.empty() && a.command.empty())
     throw CLI::ValidationError("--exec", "give the program to run after --, e.g. --exec r1 -- ping 10.0.0.2");
-  const auto exec = sc.run.nodes.end() != std::find_if(sc.run.nodes.begin(), sc.run.nodes.end(), [&](const auto& n) {
-                      return n.name == a.exec_robot && sim::RunsAsAgent(n);
-                    });
-  if (!a.exec_robot.empty() && !exec)
-    throw CLI::ValidationError("--exec", a.exec_robot + " is not a robot with a controller (only those run as agents)");
+  std::vector<NodeId> exec_robots;
+  try {
+    if (!a.exec_robot.empty()) exec_robots = hil::ExecRobots(sc.run, sc.ros2.has_value(), a.exec_robot);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--exec", e.what());
+  }
   const int udp_base = a.udp_base.value_or(sc.loop.udp_port);
   if (sc.loop.network == sections::LoopNetwork::kSimulated && sc.run.network &&
       (udp_base == sc.run.network->port || udp_base == net::kAodvPort || udp_base == net::kOlsrPort ||
@@ -366,7 +367,8 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
   settings.loop = sc.loop;
   settings.udp_base = udp_base;
   settings.duration = a.duration;
-  settings.exec_robot = a.exec_robot;
+  settings.ros2_face = sc.ros2.has_value();
+  settings.exec_robots = exec_robots;
   settings.exec_command = a.command;
   return hil::Launch(sc.run, settings);
 }
@@ -481,8 +483,9 @@ Command AddLaunch(CLI::App& app) {
   cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
   cmd->add_option("--exec", a->exec_robot,
-                  "Run the program given after -- beside the agents, in this robot's network namespace (with "
-                  "loop.namespaces or loop.network: simulated); it is stopped when the run ends");
+                  "Run the program given after -- beside the agents, once per robot named (ROBOT,ROBOT... or all), "
+                  "in its network namespace (with loop.namespaces or loop.network: simulated), with SANET_ROBOT, "
+                  "SANET_SERVER and SANET_RADIO_ADDRESS set; stopped when the run ends");
   cmd->add_option("command", a->command, "The program and its arguments for --exec, after --");
   AddForce(cmd, a->force);
   return {cmd, [a](agents::Registry& r) { return Launch(*a, r); }};

@@ -37,6 +37,10 @@ void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
   cmd->add_flag("--ros2-cmd-vel-stamped", args.stamped,
                 "Take cmd_vel as geometry_msgs/TwistStamped (as ROS 2 Jazzy's diff_drive_controller subscribes to it), "
                 "not Twist");
+  cmd->add_option(
+      "--ros2-interface", args.interface,
+      "The network interface (name or IPv4 address) of the ROS 2 face's DDS traffic; other Cyclone settings "
+      "still come from CYCLONEDDS_URI (sanet launch gives its namespaces' bridge)");
 }
 
 std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
@@ -45,6 +49,7 @@ std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2A
   const sections::Ros2Spec given = section.value_or(sections::Ros2Spec{});
   ros2face::Ros2Settings settings;
   settings.domain = static_cast<std::uint32_t>(DomainOf(args, given));
+  settings.interface = args.interface;
   settings.sensor_period = 1.0 / args.rate.value_or(given.rate);
   settings.twist_stamped = args.stamped || given.cmd_vel == sections::CmdVelType::kTwistStamped;
   settings.robots = given.robots;
@@ -56,8 +61,8 @@ std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2A
     throw CLI::ValidationError("--ros2", e.what());
   }
   face->Start();
-  std::printf("sanet: ROS 2 face on DDS domain %u: its robots' topics under /ROBOT/, /tf, /tf_static, /clock\n",
-              settings.domain);
+  std::printf("sanet: ROS 2 face on DDS domain %u%s: its robots' topics under /ROBOT/, /tf, /tf_static, /clock\n",
+              settings.domain, settings.interface.empty() ? "" : (", interface " + settings.interface).c_str());
   return face;
 }
 

@@ -16,6 +16,7 @@ struct Ros2Args {
   std::optional<int> domain;     // default: the section's, else ROS_DOMAIN_ID, else 0
   std::optional<double> rate;    // Hz of each robot's sensor messages
   bool stamped = false;          // cmd_vel as TwistStamped
+  std::string interface;         // --ros2-interface: the face's network interface
 };
 
 void AddRos2Options(CLI::App* cmd, Ros2Args& args);

@@ -4,12 +4,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -33,25 +35,6 @@ volatile std::sig_atomic_t g_interrupted = 0;
   argv.push_back(nullptr);
   ::execvp(program.c_str(), argv.data());  // searches PATH for a bare name
   std::_Exit(127);
-}
-
-std::vector<NodeId> RobotsWithControllers(const sim::RunSpec& spec) {
-  std::vector<NodeId> robots;
-  for (NodeId i = 0; i < spec.nodes.size(); ++i)
-    if (sim::RunsAsAgent(spec.nodes[i])) robots.push_back(i);
-  return robots;
-}
-
-// --exec ROBOT: one of the robots that run as agents.
-std::optional<NodeId> ExecRobot(const sim::RunSpec& spec, const LaunchSettings& settings,
-                                const std::vector<NodeId>& robots) {
-  if (settings.exec_command.empty()) return std::nullopt;
-  for (NodeId id : robots)
-    if (spec.nodes[id].name == settings.exec_robot) return id;
-  std::string names;
-  for (NodeId id : robots) names += (names.empty() ? "" : ", ") + spec.nodes[id].name;
-  throw std::runtime_error("--exec " + settings.exec_robot + ": not one of the robots that run as agents (" + names +
-                           ")");
 }
 
 bool SimulatedRadio(const sections::LoopSpec& loop) { return loop.network == sections::LoopNetwork::kSimulated; }
@@ -115,7 +98,8 @@ std::optional<int> WaitForPort(const std::string& path, pid_t server) {
 // Starts `sanet serve` and returns its process and address. The server tells its port through
 // a file, not through text meant for people.
 std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchSettings& settings,
-                                          const std::string& bind, const std::vector<std::string>& taps) {
+                                          const std::string& bind, const std::vector<std::string>& taps,
+                                          bool namespaces) {
   char port_dir[] = "/tmp/sanet-launch-XXXXXX";
   if (!::mkdtemp(port_dir)) throw std::runtime_error("cannot create a temporary folder for the server's port");
   const std::string port_file = std::string(port_dir) + "/port";
@@ -127,6 +111,13 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
     for (const std::string& set : settings.sets) args.insert(args.end(), {"--set", set});
     if (settings.force) args.push_back("--force");
     for (const std::string& tap : taps) args.insert(args.end(), {"--tap", tap});
+    // The face's DDS on the bridge, where the robots' namespaces reach it; not on the host's
+    // other interfaces, and never on the robots' radio. CYCLONEDDS_URI is for the programs in the
+    // namespaces (sim0, radio0), which the server's namespace does not have.
+    if (settings.ros2_face && namespaces) {
+      args.insert(args.end(), {"--ros2-interface", bind});
+      ::unsetenv("CYCLONEDDS_URI");
+    }
     Exec(self, args);
   }
   const std::optional<int> port = WaitForPort(port_file, server);
@@ -153,23 +144,55 @@ pid_t StartAgent(const std::string& self, const LaunchSettings& settings, const 
   Exec("ip", args);
 }
 
-// The user's program, in the robot's namespace when it has one.
-pid_t StartProgram(const std::vector<std::string>& command, const std::string& namespace_name) {
+// The user's program, in `robot`'s namespace when it has one, told where it runs through its
+// environment: SANET_ROBOT (the robot's name), SANET_SERVER (the server's host:port) and, over
+// the simulated radio, SANET_RADIO_ADDRESS (the robot's address on it).
+pid_t StartProgram(const std::vector<std::string>& command, const std::string& robot, NodeId id,
+                   const std::string& server, bool radio, const std::string& namespace_name) {
   const pid_t program = ::fork();
   if (program != 0) return program;
+  ::setenv("SANET_ROBOT", robot.c_str(), 1);
+  ::setenv("SANET_SERVER", server.c_str(), 1);
+  if (radio) ::setenv("SANET_RADIO_ADDRESS", RadioAddress(id).c_str(), 1);
   if (namespace_name.empty()) Exec(command.front(), command);
   std::vector<std::string> args = {"ip", "netns", "exec", namespace_name};
   args.insert(args.end(), command.begin(), command.end());
   Exec("ip", args);
 }
 
-void ReportProgram(const std::string& program, int status) {
+void ReportProgram(const std::string& program, const std::string& robot, int status) {
   if (WIFEXITED(status))
-    std::printf("  program %s exited with status %d%s\n", program.c_str(), WEXITSTATUS(status),
+    std::printf("  program %s (%s) exited with status %d%s\n", program.c_str(), robot.c_str(), WEXITSTATUS(status),
                 WEXITSTATUS(status) == 127 ? " (could not be started)" : "");
   else if (WIFSIGNALED(status))
-    std::printf("  program %s was stopped by signal %d%s\n", program.c_str(), WTERMSIG(status),
-                WTERMSIG(status) == SIGTERM ? " at the end of the run" : "");
+    std::printf("  program %s (%s) was stopped by signal %d%s\n", program.c_str(), robot.c_str(), WTERMSIG(status),
+                WTERMSIG(status) == SIGTERM   ? " at the end of the run"
+                : WTERMSIG(status) == SIGKILL ? " (it had not ended 5 s after SIGTERM)"
+                                              : "");
+}
+
+// Asks every child to end (SIGTERM) and kills (SIGKILL) those that have not 5 s later, so that
+// a program that ignores SIGTERM or hangs on its way out never keeps launch from ending. Returns
+// each child's wait status, in order.
+std::vector<int> StopChildren(const std::vector<pid_t>& children) {
+  std::vector<int> status(children.size(), 0);
+  std::vector<bool> ended(children.size(), false);
+  for (pid_t c : children) ::kill(c, SIGTERM);
+  for (int waited = 0; waited <= 5000; waited += 20) {
+    bool all = true;
+    for (std::size_t i = 0; i < children.size(); ++i) {
+      if (!ended[i]) ended[i] = ::waitpid(children[i], &status[i], WNOHANG) == children[i];
+      all = all && ended[i];
+    }
+    if (all) return status;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  for (std::size_t i = 0; i < children.size(); ++i)
+    if (!ended[i]) {
+      ::kill(children[i], SIGKILL);
+      ::waitpid(children[i], &status[i], 0);
+    }
+  return status;
 }
 
 // Waits for the server's run to end; Ctrl-C asks it to end the run and write its results.
@@ -198,9 +221,36 @@ void SayHowTheRunEnded(const std::string& results) {
 
 }  // namespace
 
+std::vector<NodeId> LaunchedRobots(const sim::RunSpec& spec, bool ros2_face) {
+  std::vector<NodeId> robots;
+  for (NodeId i = 0; i < spec.nodes.size(); ++i)
+    if (sim::RunsAsAgent(spec.nodes[i]) || (ros2_face && spec.nodes[i].model.kind != robots::ModelKind::kMote))
+      robots.push_back(i);
+  return robots;
+}
+
+std::vector<NodeId> ExecRobots(const sim::RunSpec& spec, bool ros2_face, const std::string& which) {
+  const std::vector<NodeId> robots = LaunchedRobots(spec, ros2_face);
+  if (which == "all") return robots;
+  std::vector<NodeId> chosen;
+  std::stringstream names(which);
+  for (std::string name; std::getline(names, name, ',');) {
+    const auto id = std::find_if(robots.begin(), robots.end(), [&](NodeId r) { return spec.nodes[r].name == name; });
+    if (id != robots.end()) {
+      chosen.push_back(*id);
+      continue;
+    }
+    std::string choices;
+    for (NodeId r : robots) choices += (choices.empty() ? "" : ", ") + spec.nodes[r].name;
+    throw std::invalid_argument("'" + name + "' is not a robot with a process of its own here (" +
+                                (choices.empty() ? "none" : choices) +
+                                "): robots with controllers, and with a ros2 section the others too; or 'all'");
+  }
+  return chosen;
+}
+
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
-  const std::vector<NodeId> robots = RobotsWithControllers(spec);
-  const std::optional<NodeId> exec_robot = ExecRobot(spec, settings, robots);
+  const std::vector<NodeId> robots = LaunchedRobots(spec, settings.ros2_face);
   const std::unique_ptr<NetworkNamespaces> namespaces = MakeNamespaces(settings.loop, robots);
   const std::string bind = namespaces ? NetworkNamespaces::ServerAddress() : "127.0.0.1";
   const std::string self = std::filesystem::read_symlink("/proc/self/exe");
@@ -209,30 +259,35 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
   std::vector<std::string> taps;
   if (SimulatedRadio(settings.loop))
     for (NodeId id : robots) taps.push_back(spec.nodes[id].name + "=" + namespaces->Namespace(id));
-  const auto [server, address] = StartServer(self, settings, bind, taps);
+  const auto [server, address] = StartServer(self, settings, bind, taps, namespaces != nullptr);
   const std::string subnet = SimulatedRadio(settings.loop) ? kRadioSubnet : NetworkNamespaces::Subnet();
-  std::vector<pid_t> children;
+  std::vector<pid_t> agents, programs;
   for (NodeId id : robots) {
     const std::string& name = spec.nodes[id].name;
     const std::string where = namespaces ? namespaces->Namespace(id) : "";
-    children.push_back(StartAgent(self, settings, name, address, where, subnet));
-    std::printf("  agent %s: process %d%s\n", name.c_str(), children.back(),
+    if (!sim::RunsAsAgent(spec.nodes[id])) {
+      std::printf("  robot %s: driven over ROS 2%s\n", name.c_str(),
+                  where.empty() ? "" : (", namespace " + where).c_str());
+      continue;
+    }
+    agents.push_back(StartAgent(self, settings, name, address, where, subnet));
+    std::printf("  agent %s: process %d%s\n", name.c_str(), agents.back(),
                 where.empty() ? "" : (" in namespace " + where).c_str());
   }
-  if (exec_robot) {
-    const std::string where = namespaces ? namespaces->Namespace(*exec_robot) : "";
-    children.push_back(StartProgram(settings.exec_command, where));
-    std::printf("  program %s: process %d%s\n", settings.exec_command.front().c_str(), children.back(),
-                where.empty() ? "" : (" in namespace " + where).c_str());
+  for (NodeId id : settings.exec_robots) {
+    const std::string where = namespaces ? namespaces->Namespace(id) : "";
+    programs.push_back(
+        StartProgram(settings.exec_command, spec.nodes[id].name, id, address, SimulatedRadio(settings.loop), where));
+    std::printf("  program %s (%s): process %d%s\n", settings.exec_command.front().c_str(), spec.nodes[id].name.c_str(),
+                programs.back(), where.empty() ? "" : (" in namespace " + where).c_str());
   }
   std::fflush(stdout);
   const int status = WaitForServer(server);
-  for (pid_t a : children) ::kill(a, SIGTERM);
-  for (pid_t a : children) {
-    int ended = 0;
-    ::waitpid(a, &ended, 0);
-    if (exec_robot && a == children.back()) ReportProgram(settings.exec_command.front(), ended);
-  }
+  std::vector<pid_t> children = programs;
+  children.insert(children.end(), agents.begin(), agents.end());
+  const std::vector<int> ended = StopChildren(children);
+  for (std::size_t i = 0; i < programs.size(); ++i)
+    ReportProgram(settings.exec_command.front(), spec.nodes[settings.exec_robots[i]].name, ended[i]);
   SayHowTheRunEnded(settings.output);
   std::printf("  results in %s/\n", settings.output.c_str());
   return status;

@@ -20,11 +20,22 @@ struct LaunchSettings {
   sections::LoopSpec loop;        // the scenario's loop section
   int udp_base = 47000;
   std::optional<double> duration;  // overrides the scenario's
-  // A program to run beside the agents, in `exec_robot`'s network namespace when there is one
-  // (ended when the run ends).
-  std::string exec_robot;
+  // The scenario has a ros2 section: the server's ROS 2 face drives the robots without
+  // controllers, which get namespaces (and radio taps) too; the face's DDS uses the bridge.
+  bool ros2_face = false;
+  // A program to run beside the agents, once in each of these robots' network namespaces when
+  // there are namespaces (ended when the run ends).
+  std::vector<NodeId> exec_robots;
   std::vector<std::string> exec_command;
 };
+
+// The robots a launch gives processes of their own, and namespaces where it makes them: those
+// with controllers (run as agents) and, with the ROS 2 face on, every other robot too.
+std::vector<NodeId> LaunchedRobots(const sim::RunSpec& spec, bool ros2_face);
+
+// --exec WHICH: "all", or robot names separated by commas, each one of LaunchedRobots. Throws
+// std::invalid_argument saying which name is not and what the choices are.
+std::vector<NodeId> ExecRobots(const sim::RunSpec& spec, bool ros2_face, const std::string& which);
 
 // Returns the server's exit code.
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings);

@@ -57,12 +57,14 @@ NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, co
       made_.push_back(ns);
       Run("ip link add " + host + " type veth peer name " + inside);
       Run("ip link set " + inside + " netns " + ns);
+      Run("ip -n " + ns + " link set dev " + inside + " name " + kSimulatorInterface);
       Run("ip link set " + host + " master " + tag_ + "br up");
-      Run("ip netns exec " + ns + " ip addr add " + Subnet() + "." + std::to_string(node + 1) + "/24 dev " + inside);
-      Run("ip netns exec " + ns + " ip link set " + inside + " up");
+      Run("ip -n " + ns + " addr add " + Subnet() + "." + std::to_string(node + 1) + "/24 dev " + kSimulatorInterface);
+      Run("ip -n " + ns + " link set " + kSimulatorInterface + " up");
       Run("ip netns exec " + ns + " ip link set lo up");
       if (shape_ && (shaping.delay > 0 || shaping.jitter > 0 || shaping.loss > 0 || shaping.rate > 0)) {
-        std::string netem = "ip netns exec " + ns + " tc qdisc add dev " + inside + " root netem";
+        std::string netem =
+            "ip netns exec " + ns + " tc qdisc add dev " + std::string(kSimulatorInterface) + " root netem";
         if (shaping.delay > 0 || shaping.jitter > 0)
           netem += " delay " + Millis(shaping.delay) + " " + Millis(shaping.jitter);
         if (shaping.loss > 0) netem += " loss " + std::to_string(shaping.loss * 100) + "%";

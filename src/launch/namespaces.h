@@ -23,6 +23,9 @@ class NetworkNamespaces {
   ~NetworkNamespaces();
 
   std::string Namespace(std::uint32_t node) const;
+  // Every namespace's link to the bridge has this one name, so that configurations (Cyclone DDS's
+  // interface for the ROS 2 face's domain) name it alike in every namespace and every launch.
+  static constexpr const char* kSimulatorInterface = "sim0";
   static std::string Subnet() { return "10.77.0"; }  // node i is Subnet().(i+1)
   static std::string ServerAddress() { return "10.77.0.254"; }
 

@@ -1,7 +1,12 @@
 #include "ros2_face/dds_domain.h"
 
+#include <arpa/inet.h>
 #include <dds/dds.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "ros2_face/raw_cdr_type.h"
@@ -22,16 +27,49 @@ dds_qos_t* QosOf(Qos profile) {
   return q;
 }
 
-}  // namespace
-
-DdsDomain::DdsDomain(std::uint32_t domain)
-    : domain_(domain), participant_(dds_create_participant(domain, nullptr, nullptr)) {
-  if (participant_ < 0)
-    throw std::runtime_error("cannot join DDS domain " + std::to_string(domain) + " (ROS_DOMAIN_ID): " +
-                             Why(participant_) + " (CYCLONEDDS_URI may name an interface this machine lacks)");
+// Cyclone's configuration for `domain` on `interface`, after the user's own (CYCLONEDDS_URI, whose
+// other settings still apply): a name or an address of letters, digits and . : _ - only, since it
+// goes into XML.
+std::string InterfaceConfig(const std::string& interface) {
+  const bool plain = std::all_of(interface.begin(), interface.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr(".:_-", c);
+  });
+  if (!plain) throw std::runtime_error("'" + interface + "' is not a network interface's name or address");
+  in_addr address{};
+  const char* attribute = ::inet_pton(AF_INET, interface.c_str(), &address) == 1 ? "address" : "name";
+  const std::string own = std::string("<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface ") +
+                          attribute + "=\"" + interface + "\"/></Interfaces></General></Domain></CycloneDDS>";
+  const char* user = std::getenv("CYCLONEDDS_URI");
+  return user && *user ? std::string(user) + "," + own : own;
 }
 
-DdsDomain::~DdsDomain() { dds_delete(participant_); }
+// A domain of this process's own, configured for `interface`; 0 when none is asked.
+dds_entity_t MakeDomain(std::uint32_t domain, const std::string& interface) {
+  if (interface.empty()) return 0;
+  const dds_entity_t made = dds_create_domain(domain, InterfaceConfig(interface).c_str());
+  if (made < 0)
+    throw std::runtime_error("cannot join DDS domain " + std::to_string(domain) + " on interface " + interface + ": " +
+                             Why(made) + " (is there an interface of that name or address here?)");
+  return made;
+}
+
+}  // namespace
+
+DdsDomain::DdsDomain(std::uint32_t domain, const std::string& interface)
+    : domain_(domain),
+      domain_entity_(MakeDomain(domain, interface)),
+      participant_(dds_create_participant(domain, nullptr, nullptr)) {
+  if (participant_ < 0) {
+    if (domain_entity_ > 0) dds_delete(domain_entity_);
+    throw std::runtime_error("cannot join DDS domain " + std::to_string(domain) + " (ROS_DOMAIN_ID): " +
+                             Why(participant_) + " (CYCLONEDDS_URI may name an interface this machine lacks)");
+  }
+}
+
+DdsDomain::~DdsDomain() {
+  dds_delete(participant_);
+  if (domain_entity_ > 0) dds_delete(domain_entity_);
+}
 
 DdsDomain::Entity DdsDomain::Topic(const std::string& ros_topic, const std::string& dds_type) {
   ddsi_sertype* type = MakeRawCdrType(dds_type);

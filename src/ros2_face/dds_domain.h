@@ -25,8 +25,10 @@ enum class Qos {
 
 class DdsDomain {
  public:
-  // Joins DDS domain `domain` (ROS_DOMAIN_ID). Throws std::runtime_error saying why not.
-  explicit DdsDomain(std::uint32_t domain);
+  // Joins DDS domain `domain` (ROS_DOMAIN_ID), on the network interface `interface` (a name or
+  // an IPv4 address) when one is given, else on those CYCLONEDDS_URI or Cyclone's own choice
+  // give. Throws std::runtime_error saying why not.
+  explicit DdsDomain(std::uint32_t domain, const std::string& interface = "");
   ~DdsDomain();
   DdsDomain(const DdsDomain&) = delete;
   DdsDomain& operator=(const DdsDomain&) = delete;
@@ -53,6 +55,7 @@ class DdsDomain {
   Entity Endpoint(Entity (*create)(Entity, Entity, const ::dds_qos*, const ::dds_listener*), const char* what,
                   const std::string& ros_topic, const std::string& dds_type, Qos qos);
   std::uint32_t domain_;
+  Entity domain_entity_ = 0;  // the domain this process made, when it chose the interface
   Entity participant_;
 };
 

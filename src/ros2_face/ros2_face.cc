@@ -38,7 +38,7 @@ struct Ros2Face::Robot {
 };
 
 Ros2Face::Ros2Face(sim::Driver& driver, Ros2Settings settings)
-    : driver_(driver), settings_(settings), dds_(settings.domain) {
+    : driver_(driver), settings_(settings), dds_(settings.domain, settings.interface) {
   clock_ = dds_.Writer("/clock", DdsType<msg::rosgraph_msgs::Clock>(), Qos::kClock);
   tf_ = dds_.Writer("/tf", DdsType<msg::tf2_msgs::TFMessage>(), Qos::kTf);
   tf_static_ = dds_.Writer("/tf_static", DdsType<msg::tf2_msgs::TFMessage>(), Qos::kTfStatic);

@@ -28,6 +28,7 @@ namespace sanet::ros2face {
 
 struct Ros2Settings {
   std::uint32_t domain = 0;                 // ROS_DOMAIN_ID
+  std::string interface;                    // network interface (name or address); empty: Cyclone's choice
   double sensor_period = 0.1;               // s between a robot's sensor messages (odom, scan, ranges, tf)
   double command_period = 0.01;             // s between takes of cmd_vel
   bool twist_stamped = false;               // cmd_vel as geometry_msgs/TwistStamped (ROS 2 Jazzy's controllers)

@@ -18,14 +18,13 @@ import csv
 import json
 import os
 import re
-import socket
-import struct
 import subprocess
 import sys
 import tempfile
-import threading
 import time
 import unittest
+
+from dds_ports import BridgeSniffer
 
 SANET = sys.argv.pop(1)
 SOURCE = sys.argv.pop(1)
@@ -122,31 +121,6 @@ UNICAST_PEERS = """<CycloneDDS><Domain Id="any"><General><Interfaces><NetworkInt
 <Peer address="10.0.0.2"/></Peers><ParticipantIndex>auto</ParticipantIndex></Discovery></Domain></CycloneDDS>"""
 
 
-class BridgeSniffer(threading.Thread):
-    """Counts the UDP packets on the launch's bridge that look like DDS (ports 7400 to 9000)."""
-
-    def __init__(self, bridge):
-        super().__init__(daemon=True)
-        self.sock = socket.socket(socket.AF_PACKET, socket.SOCK_RAW, socket.htons(3))
-        self.sock.bind((bridge, 0))
-        self.sock.settimeout(0.2)
-        self.dds, self.frames, self.stop = 0, 0, False
-
-    def run(self):
-        while not self.stop:
-            try:
-                frame = self.sock.recv(65536)
-            except socket.timeout:
-                continue
-            self.frames += 1
-            if len(frame) < 42 or frame[12:14] != b"\x08\x00" or frame[23] != 17:
-                continue
-            ihl = (frame[14] & 15) * 4
-            sport, dport = struct.unpack("!HH", frame[14 + ihl:18 + ihl])
-            if 7400 <= sport <= 9000 or 7400 <= dport <= 9000:
-                self.dds += 1
-
-
 def permitted():
     if os.geteuid() != 0:
         return "not root"
@@ -212,7 +186,7 @@ class Refusal(unittest.TestCase):
             path = os.path.join(tmp, "s.yaml")
             with open(path, "w") as f:
                 f.write(RELAY)
-            for args, says in [(["--exec", "b", "--", "true"], "b is not a robot with a controller"),
+            for args, says in [(["--exec", "b", "--", "true"], "'b' is not a robot with a process of its own here (a, c)"),
                                (["--exec", "a"], "give the program to run after --"),
                                (["--udp-base", "9000"], "9000 is network.port")]:
                 out = subprocess.run([SANET, "launch", path, "-o", os.path.join(tmp, "out"), *args],
@@ -283,9 +257,7 @@ class SimulatedRadio(unittest.TestCase):
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
         run.run_in("rover", CHATTER, "pub", "5", "20", env=env, check=True, timeout=60)
         heard = [int(line) for line in sub.communicate(timeout=60)[0].split()]
-        sniffer.stop = True
-        sniffer.join()
-        sniffer.sock.close()
+        sniffer.finish()
         out = run.finish()
         self.assertGreater(len(heard), 80, "heard while the rover is near")
         self.assertTrue(all(b > a for a, b in zip(heard, heard[1:])), "in order, each once")

@@ -200,6 +200,12 @@ class Face(unittest.TestCase):
                                  capture_output=True, text=True, timeout=30, env=env)
             self.assertNotEqual(out.returncode, 0)
             self.assertIn("cannot join DDS domain 0", out.stderr)
+            for interface, says in [("nosuch0", "cannot join DDS domain 0 on interface nosuch0"),
+                                    ('lo"/><x', "is not a network interface's name or address")]:
+                out = subprocess.run([SANET, "serve", path, "--port", "0", "-o", os.path.join(tmp, "o"), "--ros2",
+                                      "--ros2-interface", interface], capture_output=True, text=True, timeout=30)
+                self.assertEqual(out.returncode, 2, out.stderr)
+                self.assertIn(says, out.stderr)
             with open(path, "w") as f:
                 f.write(SCENARIO.format(duration=1).replace("r1", "r-1"))
             out = subprocess.run([SANET, "serve", path, "--port", "0", "-o", os.path.join(tmp, "o"), "--ros2"],

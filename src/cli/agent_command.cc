@@ -71,11 +71,11 @@ int Agent(const AgentArgs& a, agents::Registry& registry) {
   const std::string differs = hil::PluginDifference(link->FetchPlugin(a.robot), hil::IdentifyPlugin(controller));
   if (!differs.empty()) throw std::runtime_error("this robot's controller is not the server's: " + differs);
   hil::AgentSettings settings;
-  settings.udp_base_port = static_cast<std::uint16_t>(a.udp_base.value_or(sc.loop.udp_port));
-  settings.udp_subnet = a.subnet;
-  settings.peer_address = a.peer_address;
-  settings.peer_interface = a.peer_interface;
-  settings.peers = sc.loop.peers;
+  settings.peer.udp_base_port = static_cast<std::uint16_t>(a.udp_base.value_or(sc.loop.udp_port));
+  settings.peer.udp_subnet = a.subnet;
+  settings.peer.peer_address = a.peer_address;
+  settings.peer.peer_interface = a.peer_interface;
+  settings.peer.peers = sc.loop.peers;
   settings.shared_clock = a.shared_clock;
   settings.clock_skew = a.test_clock_offset;
   settings.time_port = link->time_port();

@@ -26,30 +26,6 @@
 namespace sanet::hil {
 namespace {
 
-constexpr std::uint8_t kUnicast = AgentDatagram::kUnicast, kBroadcast = AgentDatagram::kBroadcast;
-constexpr std::size_t kMostHeldEarly = 1024;  // datagrams kept until the agent has its clock and key
-
-// A network interface as the peer socket needs it: its first IPv4 address ("" if none), and
-// whether it is up and running.
-struct InterfaceState {
-  std::string address;
-  bool up = false;
-};
-
-InterfaceState LookUpInterface(const std::string& interface) {
-  ifaddrs* all = nullptr;
-  if (::getifaddrs(&all) != 0) throw std::runtime_error(std::string("cannot list interfaces: ") + std::strerror(errno));
-  InterfaceState state;
-  for (const ifaddrs* a = all; a; a = a->ifa_next) {
-    if (interface != a->ifa_name) continue;
-    state.up = state.up || ((a->ifa_flags & IFF_UP) && (a->ifa_flags & IFF_RUNNING));
-    if (state.address.empty() && a->ifa_addr && a->ifa_addr->sa_family == AF_INET)
-      state.address = AddressText(a->ifa_addr);
-  }
-  ::freeifaddrs(all);
-  return state;
-}
-
 // USARSim frame (y right, yaw clockwise) back to sanet's.
 Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
 
@@ -60,9 +36,7 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
       id_(robot),
       settings_(std::move(settings)),
       link_(std::move(link)),
-      random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller"),
-      peers_(spec.nodes.size()),
-      replays_(spec.nodes.size()) {
+      random_(spec.seed, "node/" + spec.nodes.at(robot).name + "/controller") {
   // The clock first: everything the agent stamps is on it.
   if (settings_.shared_clock) {
     clock_origin_ = link_->clock_origin();
@@ -71,60 +45,23 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   } else {
     clock_sync_ = std::make_unique<ClockSync>(link_->host(), settings_.time_port, settings_.clock_skew);
   }
-  for (const sections::PeerLink& p : settings_.peers)
-    if (const auto node = Lookup(p.robot); node && !p.address.empty())
-      peers_[*node] = Ipv4Endpoint(p.address, PortOf(*node));
-  OpenPeerSocket();
-  LoopNetworkView::Hooks hooks{[this] { return Now(); }, [this] { return PeerAddresses(); },
+  peer_socket_ = std::make_unique<PeerSocket>(spec_, id_, settings_.peer, [this] { return ClockNow(); });
+  LoopNetworkView::Hooks hooks{[this] { return Now(); }, [this] { return peer_socket_->Addresses(); },
                                [this](const std::string& text) { Log(text); },
                                [this](const std::string& name) { return Lookup(name); }};
   view_ = std::make_unique<LoopNetworkView>(spec_, id_, *link_, std::move(hooks));
   ProtocolMessage init("INIT");
   init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());
   Command(init);
-  Command(ProtocolMessage{"PEER"}.Add("Address", peer_address_).Add("Port", std::to_string(PortOf(id_))));
+  Command(ProtocolMessage{"PEER"}
+              .Add("Address", peer_socket_->address())
+              .Add("Port", std::to_string(peer_socket_->port())));
 }
 
 RemoteNode::~RemoteNode() {
   ProtocolMessage stop("DRIVE");
   Holonomic() ? stop.Add("LinearVelocity", 0.0) : stop.Add("Left", 0.0).Add("Right", 0.0);
   Command(stop);
-  if (udp_ >= 0) ::close(udp_);
-}
-
-// The robot's peer socket: on the address and interface its peer link gives (the command line
-// over the scenario's loop.peers), else on the one-machine rule's address.
-void RemoteNode::OpenPeerSocket() {
-  const auto link = std::find_if(settings_.peers.begin(), settings_.peers.end(),
-                                 [&](const sections::PeerLink& p) { return p.robot == Name(); });
-  const bool linked = link != settings_.peers.end();
-  const std::string interface = !settings_.peer_interface.empty() ? settings_.peer_interface
-                                : linked                          ? link->interface
-                                                                  : "";
-  std::string address = !settings_.peer_address.empty() ? settings_.peer_address : linked ? link->address : "";
-  const InterfaceState state = interface.empty() ? InterfaceState{"", true} : LookUpInterface(interface);
-  if (address.empty() && !interface.empty() && state.address.empty())
-    throw std::runtime_error("interface " + interface + " has no IPv4 address (or does not exist)");
-  if (address.empty()) address = interface.empty() ? HostOf(id_) : state.address;
-  udp_ = ::socket(AF_INET, SOCK_DGRAM, 0);
-  if (!interface.empty() &&
-      ::setsockopt(udp_, SOL_SOCKET, SO_BINDTODEVICE, interface.c_str(), static_cast<socklen_t>(interface.size())) != 0)
-    throw std::runtime_error(
-        "cannot bind the peer socket to interface " + interface + ": " + std::strerror(errno) +
-        (errno == EPERM ? " (before Linux 5.7, binding to an interface needs root or CAP_NET_RAW)" : ""));
-  const sockaddr_in mine = Ipv4Endpoint(address, PortOf(id_));
-  if (::bind(udp_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
-    throw std::runtime_error("cannot bind UDP " + address + ":" + std::to_string(PortOf(id_)) + ": " +
-                             std::strerror(errno));
-  ::fcntl(udp_, F_SETFL, O_NONBLOCK);
-  peers_[id_] = mine;
-  peer_address_ = address;
-  peer_endpoint_ = address + ":" + std::to_string(PortOf(id_)) + (interface.empty() ? "" : " on " + interface);
-  if (!state.up)
-    std::fprintf(stderr,
-                 "sanet agent %s: warning: interface %s is down: datagrams to and from the other robots "
-                 "will not get through until it is up\n",
-                 Name().c_str(), interface.c_str());
 }
 
 void RemoteNode::Command(const ProtocolMessage& m) { link_->Send(m); }
@@ -153,57 +90,8 @@ bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
   std::vector<ProtocolMessage> lines;
   const bool open = link_->Read(lines);
   for (const ProtocolMessage& m : lines) Take(m, deliver);
-  ReadUdp(deliver);
+  peer_socket_->Read(deliver);
   return open;
-}
-
-// A datagram from a peer is checked and stamped with this agent's clock when it is read; one
-// that comes before the agent has the run's key (a peer that started sooner) waits.
-void RemoteNode::ReadUdp(const std::function<void(const Message&)>& deliver) {
-  const bool ready = key_.has_value();
-  if (ready) {
-    for (const Bytes& d : early_) TakeDatagram(d, deliver);
-    early_.clear();
-  }
-  std::uint8_t buffer[65536];
-  while (true) {
-    const ssize_t n = ::recv(udp_, buffer, sizeof buffer, 0);
-    if (n <= 0) break;
-    Bytes datagram(buffer, buffer + n);
-    if (ready)
-      TakeDatagram(datagram, deliver);
-    else if (early_.size() < kMostHeldEarly)
-      early_.push_back(std::move(datagram));
-    else
-      Reject("more than " + std::to_string(kMostHeldEarly) + " datagrams before the agent had the run's key");
-  }
-}
-
-void RemoteNode::TakeDatagram(const Bytes& datagram, const std::function<void(const Message&)>& deliver) {
-  std::string why;
-  const auto d = OpenDatagram(datagram.data(), datagram.size(), *key_, &why);
-  if (!d) return Reject(why);
-  if (d->from >= spec_.nodes.size() || d->from == id_) return Reject("from no other node of the scenario");
-  if (d->kind == kUnicast ? d->to != id_ : d->to != AgentDatagram::kToAll) return Reject("not for this robot");
-  if (!replays_[d->from].Take(d->sequence))
-    return Reject("sequence number " + std::to_string(d->sequence) + " of " + NameOf(d->from) + " seen before");
-  Message m;
-  m.from = d->from;
-  m.to = d->kind == kUnicast ? id_ : sanet::kBroadcast;
-  m.delivery = d->kind == kUnicast ? Delivery::kUnicast : Delivery::kBroadcast;
-  m.time_sent = d->time_sent;
-  m.time_received = ClockNow();
-  m.hops = 1;
-  m.payload = d->payload;
-  ++datagrams_.received;
-  deliver(m);
-}
-
-// The first rejection is said on stderr; all are counted (STATS, agents.csv).
-void RemoteNode::Reject(const std::string& why) {
-  if (datagrams_.rejected++ == 0)
-    std::fprintf(stderr, "sanet agent %s: rejected a datagram: %s (further ones are only counted)\n", Name().c_str(),
-                 why.c_str());
 }
 
 // Lines from the server: sensors, status, messages from its nodes, errors.
@@ -224,7 +112,8 @@ void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const M
   }
   if (m.type == "SEN") TakeSensor(m);
   if (m.type == "KEY")
-    if (const std::string* hex = m.Get("Datagrams")) key_ = DatagramKey::FromHex(*hex);
+    if (const std::string* hex = m.Get("Datagrams"))
+      if (const auto key = DatagramKey::FromHex(*hex)) peer_socket_->SetKey(*key);
   if (m.type == "PEER") TakePeer(m);
 }
 
@@ -235,23 +124,11 @@ void RemoteNode::TakePeer(const ProtocolMessage& m) {
   const auto port = m.Count("Port", 65535);
   if (!node || !address || !port || *node == id_) return;
   try {
-    peers_[*node] = Ipv4Endpoint(*address, static_cast<std::uint16_t>(*port));
+    peer_socket_->SetPeer(*node, *address, static_cast<std::uint16_t>(*port));
   } catch (const std::runtime_error&) {
     std::fprintf(stderr, "sanet agent %s: the server gave %s a peer address that is none: %s\n", Name().c_str(),
                  name->c_str(), address->c_str());
   }
-}
-
-// Where each node's agent listens for the others, as far as this agent knows: the network
-// view's map from the kernel's addresses to nodes.
-std::vector<std::optional<Ipv4>> RemoteNode::PeerAddresses() const {
-  std::vector<std::optional<Ipv4>> addresses(spec_.nodes.size());
-  for (NodeId id = 0; id < spec_.nodes.size(); ++id)
-    if (peers_[id])
-      addresses[id] = peers_[id]->sin_addr.s_addr;
-    else if (!settings_.udp_subnet.empty() && IsAgent(id))
-      addresses[id] = Ipv4Endpoint(HostOf(id), 0).sin_addr.s_addr;
-  return addresses;
 }
 
 void RemoteNode::TakeSensor(const ProtocolMessage& m) {
@@ -338,33 +215,6 @@ bool RemoteNode::ApplyWheelSpeeds(const std::vector<double>& w) {
   return true;
 }
 
-void RemoteNode::SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload) {
-  if (!key_) {  // a server that gave no key: the peers would reject what this agent sends
-    ++datagrams_.send_errors;
-    return;
-  }
-  AgentDatagram d;
-  d.from = id_;
-  d.to = kind == kUnicast ? to : AgentDatagram::kToAll;
-  d.kind = static_cast<AgentDatagram::Kind>(kind);
-  d.sequence = next_sequence_++;
-  d.time_sent = ClockNow();
-  d.payload = payload;
-  const Bytes datagram = SealDatagram(d, *key_);
-  const sockaddr_in peer = peers_[to] ? *peers_[to] : Ipv4Endpoint(HostOf(to), PortOf(to));
-  const ssize_t n =
-      ::sendto(udp_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
-  ++(n < 0 ? datagrams_.send_errors : datagrams_.sent);
-}
-
-std::string RemoteNode::HostOf(NodeId node) const {
-  return settings_.udp_subnet.empty() ? settings_.udp_host : settings_.udp_subnet + "." + std::to_string(node + 1);
-}
-
-std::uint16_t RemoteNode::PortOf(NodeId node) const {
-  return static_cast<std::uint16_t>(settings_.udp_base_port + (settings_.udp_subnet.empty() ? node : 0));
-}
-
 bool RemoteNode::IsAgent(NodeId node) const { return sim::RunsAsAgent(spec_.nodes.at(node)); }
 
 void RemoteNode::SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload) {
@@ -380,7 +230,7 @@ void RemoteNode::Send(NodeId to, const Bytes& payload) {
   if (to >= spec_.nodes.size() || to == id_) return;
   ++messages_sent_;
   if (IsAgent(to))
-    SendUdp(to, kUnicast, payload);
+    peer_socket_->Send(to, AgentDatagram::kUnicast, payload);
   else
     SendThroughServer(Delivery::kUnicast, to, payload);
 }
@@ -388,14 +238,14 @@ void RemoteNode::Send(NodeId to, const Bytes& payload) {
 void RemoteNode::Broadcast(const Bytes& payload) {
   ++messages_sent_;
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
-    if (to != id_ && IsAgent(to)) SendUdp(to, kBroadcast, payload);
+    if (to != id_ && IsAgent(to)) peer_socket_->Send(to, AgentDatagram::kBroadcast, payload);
   SendThroughServer(Delivery::kBroadcast, std::nullopt, payload);
 }
 
 void RemoteNode::Flood(const Bytes& payload) {
   ++messages_sent_;
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
-    if (to != id_ && IsAgent(to)) SendUdp(to, kBroadcast, payload);
+    if (to != id_ && IsAgent(to)) peer_socket_->Send(to, AgentDatagram::kBroadcast, payload);
   SendThroughServer(Delivery::kFlood, std::nullopt, payload);
 }
 

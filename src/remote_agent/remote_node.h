@@ -6,8 +6,6 @@
 // real networks (loop_network_view.h). The controller cannot tell it from the simulated node.
 #pragma once
 
-#include <netinet/in.h>
-
 #include <chrono>
 #include <functional>
 #include <map>
@@ -19,27 +17,21 @@
 #include "core/random_stream.h"
 #include "remote_agent/clock_sync.h"
 #include "remote_agent/loop_network_view.h"
+#include "remote_agent/peer_socket.h"
 #include "remote_agent/server_link.h"
 #include "sanet/node.h"
 #include "sections/loop_section.h"
 #include "sim/run_spec.h"
-#include "wire/agent_datagram.h"
 #include "wire/protocol.h"
 
 namespace sanet::hil {
 
 struct AgentSettings {
-  std::string udp_host = "127.0.0.1";   // where every node's UDP socket lives (one machine)
-  std::uint16_t udp_base_port = 47000;  // node i listens on base + i
-  std::string udp_subnet;               // instead: node i listens on <subnet>.(i+1), port udp_base_port (namespaces)
-  // This robot's link to the other agents, over the scenario's loop.peers: the address its peer
-  // socket takes, and the interface it is bound to (robot-to-robot datagrams leave through it only).
-  std::string peer_address, peer_interface;
-  std::vector<sections::PeerLink> peers;  // the scenario's loop.peers: where each robot's agent listens
-  bool shared_clock = false;              // the server runs on this machine: take its clock origin
-  std::uint16_t time_port = 0;            // otherwise: the server's time service, for the clock estimate
-  double clock_skew = 0;                  // tests: added to this computer's clock, which the estimate must find
-  bool quiet = false;                     // no progress lines on stdout
+  PeerSettings peer;            // where the agents listen for each other
+  bool shared_clock = false;    // the server runs on this machine: take its clock origin
+  std::uint16_t time_port = 0;  // otherwise: the server's time service, for the clock estimate
+  double clock_skew = 0;        // tests: added to this computer's clock, which the estimate must find
+  bool quiet = false;           // no progress lines on stdout
 };
 
 class RemoteNode : public Node {
@@ -61,15 +53,10 @@ class RemoteNode : public Node {
   // How well that clock agrees with the server's (all zero but the offset with a shared clock).
   ClockFigures clock_figures() const;
   std::uint64_t messages_sent() const { return messages_sent_; }
-  // The robot's own packets between agents (UDP datagrams): sent, refused by the sender's
-  // stack (sendto failed) or not sent for want of the run's key, received whole from a known
-  // node with a valid MAC, and rejected (malformed, forged, replayed, or not for this robot).
-  struct Datagrams {
-    std::uint64_t sent = 0, send_errors = 0, received = 0, rejected = 0;
-  };
-  const Datagrams& datagrams() const { return datagrams_; }
+  using Datagrams = PeerSocket::Datagrams;
+  const Datagrams& datagrams() const { return peer_socket_->datagrams(); }
   // Where this robot listens for the other agents: "address:port", and " on IF" when bound to one.
-  const std::string& peer_endpoint() const { return peer_endpoint_; }
+  const std::string& peer_endpoint() const { return peer_socket_->endpoint(); }
   // A robot whose controller runs as an agent: reached over UDP, not through the server.
   bool IsAgent(NodeId node) const;
   // Reports to the server (a sanet extension line), e.g. the agent's STATS.
@@ -106,38 +93,23 @@ class RemoteNode : public Node {
   void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
   void TakeSensor(const ProtocolMessage& m);
   void TakeBearings(const ProtocolMessage& m);
-  void ReadUdp(const std::function<void(const Message&)>& deliver);
-  void TakeDatagram(const Bytes& datagram, const std::function<void(const Message&)>& deliver);
-  void Reject(const std::string& why);
   void SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload);
-  void SendUdp(NodeId to, std::uint8_t kind, const Bytes& payload);
-  std::string HostOf(NodeId node) const;
-  std::uint16_t PortOf(NodeId node) const;
-  void OpenPeerSocket();
   void TakePeer(const ProtocolMessage& m);
-  std::vector<std::optional<Ipv4>> PeerAddresses() const;
 
   const sim::RunSpec& spec_;
   NodeId id_;
   AgentSettings settings_;
   std::unique_ptr<ServerLink> link_;
-  int udp_ = -1;
+  std::optional<double> clock_origin_;     // a shared clock: the server's monotonic clock at time 0
+  std::unique_ptr<ClockSync> clock_sync_;  // otherwise
+  std::unique_ptr<PeerSocket> peer_socket_;
   std::unique_ptr<LoopNetworkView> view_;
   RandomStream random_;
-  std::optional<double> clock_origin_;             // a shared clock: the server's monotonic clock at time 0
-  std::unique_ptr<ClockSync> clock_sync_;          // otherwise
-  std::vector<std::optional<sockaddr_in>> peers_;  // where each agent listens, when known
-  std::vector<Bytes> early_;                       // peers' datagrams that came before this agent had the run's key
-  std::string peer_address_, peer_endpoint_;       // where it listens; and that with port and interface
-  std::optional<DatagramKey> key_;                 // the run's, from the server's KEY line
-  std::uint64_t next_sequence_ = 1;                // of this agent's datagrams
-  std::vector<ReplayWindow> replays_;              // per sender
   std::optional<Pose2D> truth_, odometry_;
   std::map<NodeId, BearingReading> bearings_;
   std::optional<RangeScan> laser_, ir_;
   std::optional<double> step_time_;
   std::uint64_t messages_sent_ = 0;
-  Datagrams datagrams_;
 };
 
 }  // namespace sanet::hil

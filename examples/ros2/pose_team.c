@@ -66,11 +66,14 @@ static void on_signal(int signal_number) {
   stopping = 1;
 }
 
-static void usage(void) {
-  fprintf(stderr,
+static void usage(FILE *to, int status) {
+  fprintf(to,
           "usage: pose_team --team a,b,c [--robot R] [--leader a] [--route X,Y:X,Y...] [--face-domain 0] "
-          "[--team-domain 1] [--log DIR]\n");
-  exit(2);
+          "[--team-domain 1] [--log DIR]\n"
+          "One robot of a ROS 2 team over sanet's simulated radio (docs/ros2.md, \"A worked example\"): it\n"
+          "publishes /R/pose in the team's domain and reads /R/ground_truth, writes /R/cmd_vel in the face's.\n"
+          "R defaults to $SANET_ROBOT (sanet launch --exec sets it), the leader to the team's first.\n");
+  exit(status);
 }
 
 static int parse_route(Options *o, char *text) {
@@ -86,8 +89,9 @@ static int parse_route(Options *o, char *text) {
 static Options parse(int argc, char **argv) {
   Options o = {getenv("SANET_ROBOT"), NULL, NULL, {NULL}, 0, {{0}}, 0, 0, 1};
   static const struct option options[] = {
-      {"robot", 1, NULL, 'r'},       {"team", 1, NULL, 't'},        {"leader", 1, NULL, 'l'}, {"route", 1, NULL, 'p'},
-      {"face-domain", 1, NULL, 'f'}, {"team-domain", 1, NULL, 'd'}, {"log", 1, NULL, 'o'},    {NULL, 0, NULL, 0}};
+      {"robot", 1, NULL, 'r'}, {"team", 1, NULL, 't'},        {"leader", 1, NULL, 'l'},
+      {"route", 1, NULL, 'p'}, {"face-domain", 1, NULL, 'f'}, {"team-domain", 1, NULL, 'd'},
+      {"log", 1, NULL, 'o'},   {"help", 0, NULL, 'h'},        {NULL, 0, NULL, 0}};
   for (int c; (c = getopt_long(argc, argv, "", options, NULL)) != -1;) {
     switch (c) {
       case 'r':
@@ -113,11 +117,14 @@ static Options parse(int argc, char **argv) {
         if (parse_route(&o, strdup(optarg))) break; /* strtok cuts a copy: ps shows argv whole */
         fprintf(stderr, "pose_team: --route: give up to %d points as X,Y:X,Y...\n", MAX_ROUTE);
         exit(2);
+      case 'h':
+        usage(stdout, 0);
+        break;
       default:
-        usage();
+        usage(stderr, 2);
     }
   }
-  if (!o.robot || !o.team_size) usage();
+  if (!o.robot || !o.team_size) usage(stderr, 2);
   if (!o.leader) o.leader = o.team[0];
   return o;
 }

@@ -176,12 +176,12 @@ struct ServeArgs {
   std::optional<int> max_clients, wss_max_clients;
   bool quiet = false, force = false;
   std::optional<double> duration;
-  std::vector<std::string> taps;  // ROBOT=NAMESPACE
+  std::vector<std::string> taps;  // NODE=NAMESPACE
   ViewArgs view;
   Ros2Args ros2;
 };
 
-// --tap ROBOT=NAMESPACE: the robot's radio reaches a real IP stack in that namespace.
+// --tap NODE=NAMESPACE: the node's radio reaches a real IP stack in that namespace.
 void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
   if (taps.empty()) return;
   std::string why;
@@ -190,7 +190,7 @@ void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
   for (const std::string& t : taps) {
     const auto equals = t.find('=');
     if (equals == std::string::npos || equals == 0 || equals + 1 == t.size())
-      throw CLI::ValidationError("--tap", "expected ROBOT=NAMESPACE, not '" + t + "'");
+      throw CLI::ValidationError("--tap", "expected NODE=NAMESPACE, not '" + t + "'");
     pairs.emplace_back(t.substr(0, equals), t.substr(equals + 1));
   }
   try {
@@ -454,8 +454,9 @@ Command AddServe(CLI::App& app) {
   AddForce(cmd, a->force);
   AddDuration(cmd, a->duration);
   cmd->add_option("--tap", a->taps,
-                  "ROBOT=NAMESPACE: give the network namespace an interface radio0 with the robot's address on the "
-                  "simulated radio, carried by ns-3 (needs root and /dev/net/tun; sanet launch does this for "
+                  "NODE=NAMESPACE: give the network namespace an interface radio0 with the node's (a robot's or a "
+                  "mote's) address on the simulated radio, carried by ns-3 (needs root and /dev/net/tun; sanet launch "
+                  "does this for "
                   "loop.network: simulated)");
   cmd->add_option("--wss-port", a->wss_port,
                   "Also serve USARSim's Wireless Simulation Server protocol on this TCP port (its default is 50000; "
@@ -483,9 +484,10 @@ Command AddLaunch(CLI::App& app) {
   cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
       ->check(CLI::Range(1024, 60000));
   cmd->add_option("--exec", a->exec_robot,
-                  "Run the program given after -- beside the agents, once per robot named (ROBOT,ROBOT... or all), "
-                  "in its network namespace (with loop.namespaces or loop.network: simulated), with SANET_ROBOT, "
-                  "SANET_SERVER and SANET_RADIO_ADDRESS set; stopped when the run ends");
+                  "Run the program given after -- beside the agents, once per robot named (ROBOT,ROBOT... or all: "
+                  "robots with controllers and, with a ros2 section, the others too), in its network namespace "
+                  "(with loop.namespaces or loop.network: simulated), with SANET_ROBOT, SANET_SERVER and "
+                  "SANET_RADIO_ADDRESS set; stopped when the run ends");
   cmd->add_option("command", a->command, "The program and its arguments for --exec, after --");
   AddForce(cmd, a->force);
   return {cmd, [a](agents::Registry& r) { return Launch(*a, r); }};

@@ -49,7 +49,9 @@ std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2A
   const sections::Ros2Spec given = section.value_or(sections::Ros2Spec{});
   ros2face::Ros2Settings settings;
   settings.domain = static_cast<std::uint32_t>(DomainOf(args, given));
-  settings.interface = args.interface;
+  if (args.interface && args.interface->empty())
+    throw CLI::ValidationError("--ros2-interface", "give an interface's name or IPv4 address (ip -br addr lists them)");
+  settings.interface = args.interface.value_or("");
   settings.sensor_period = 1.0 / args.rate.value_or(given.rate);
   settings.twist_stamped = args.stamped || given.cmd_vel == sections::CmdVelType::kTwistStamped;
   settings.robots = given.robots;

@@ -12,11 +12,11 @@ namespace sanet::cli {
 
 // Given on the command line; each overrides the scenario's ros2 section.
 struct Ros2Args {
-  bool on = false, off = false;  // --ros2, --no-ros2
-  std::optional<int> domain;     // default: the section's, else ROS_DOMAIN_ID, else 0
-  std::optional<double> rate;    // Hz of each robot's sensor messages
-  bool stamped = false;          // cmd_vel as TwistStamped
-  std::string interface;         // --ros2-interface: the face's network interface
+  bool on = false, off = false;          // --ros2, --no-ros2
+  std::optional<int> domain;             // default: the section's, else ROS_DOMAIN_ID, else 0
+  std::optional<double> rate;            // Hz of each robot's sensor messages
+  bool stamped = false;                  // cmd_vel as TwistStamped
+  std::optional<std::string> interface;  // --ros2-interface: the face's network interface
 };
 
 void AddRos2Options(CLI::App* cmd, Ros2Args& args);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "core/closest_names.h"
 #include "launch/namespaces.h"
 #include "launch/radio_taps.h"
 
@@ -232,19 +233,24 @@ std::vector<NodeId> LaunchedRobots(const sim::RunSpec& spec, bool ros2_face) {
 std::vector<NodeId> ExecRobots(const sim::RunSpec& spec, bool ros2_face, const std::string& which) {
   const std::vector<NodeId> robots = LaunchedRobots(spec, ros2_face);
   if (which == "all") return robots;
+  std::vector<std::string> choices;
+  for (NodeId r : robots) choices.push_back(spec.nodes[r].name);
   std::vector<NodeId> chosen;
   std::stringstream names(which);
   for (std::string name; std::getline(names, name, ',');) {
-    const auto id = std::find_if(robots.begin(), robots.end(), [&](NodeId r) { return spec.nodes[r].name == name; });
-    if (id != robots.end()) {
-      chosen.push_back(*id);
-      continue;
+    if (name == "all") throw std::invalid_argument("'all' stands alone: it already names every robot");
+    const auto at = std::find(choices.begin(), choices.end(), name);
+    if (at == choices.end()) {
+      const std::vector<std::string> close = ClosestNames(name, choices);
+      throw std::invalid_argument("'" + name + "' is not a robot with a process of its own here (" +
+                                  (choices.empty() ? std::string("none") : OrList(choices)) +
+                                  "): robots with controllers, and with a ros2 section the others too; or 'all'" +
+                                  (close.empty() ? "" : "; did you mean " + OrList(close) + "?"));
     }
-    std::string choices;
-    for (NodeId r : robots) choices += (choices.empty() ? "" : ", ") + spec.nodes[r].name;
-    throw std::invalid_argument("'" + name + "' is not a robot with a process of its own here (" +
-                                (choices.empty() ? "none" : choices) +
-                                "): robots with controllers, and with a ros2 section the others too; or 'all'");
+    const NodeId id = robots[static_cast<std::size_t>(at - choices.begin())];
+    if (std::find(chosen.begin(), chosen.end(), id) != chosen.end())
+      throw std::invalid_argument("'" + name + "' is named twice: one program per robot");
+    chosen.push_back(id);
   }
   return chosen;
 }

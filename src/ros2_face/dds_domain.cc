@@ -2,6 +2,8 @@
 
 #include <arpa/inet.h>
 #include <dds/dds.h>
+#include <ifaddrs.h>
+#include <netinet/in.h>
 
 #include <algorithm>
 #include <cctype>
@@ -43,13 +45,29 @@ std::string InterfaceConfig(const std::string& interface) {
   return user && *user ? std::string(user) + "," + own : own;
 }
 
+// "lo (127.0.0.1), eth0 (10.0.2.15)": this machine's interfaces with IPv4 addresses, for errors.
+std::string InterfacesHere() {
+  ifaddrs* all = nullptr;
+  if (::getifaddrs(&all) != 0) return "none listed";
+  std::string list;
+  for (const ifaddrs* a = all; a; a = a->ifa_next) {
+    if (!a->ifa_addr || a->ifa_addr->sa_family != AF_INET) continue;
+    char text[INET_ADDRSTRLEN] = "";
+    ::inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(a->ifa_addr)->sin_addr, text, sizeof text);
+    list += (list.empty() ? "" : ", ") + std::string(a->ifa_name) + " (" + text + ")";
+  }
+  ::freeifaddrs(all);
+  return list.empty() ? "none with an IPv4 address" : list;
+}
+
 // A domain of this process's own, configured for `interface`; 0 when none is asked.
 dds_entity_t MakeDomain(std::uint32_t domain, const std::string& interface) {
   if (interface.empty()) return 0;
   const dds_entity_t made = dds_create_domain(domain, InterfaceConfig(interface).c_str());
   if (made < 0)
-    throw std::runtime_error("cannot join DDS domain " + std::to_string(domain) + " on interface " + interface + ": " +
-                             Why(made) + " (is there an interface of that name or address here?)");
+    throw std::runtime_error("cannot join DDS domain " + std::to_string(domain) + " on interface " + interface +
+                             (made == DDS_RETCODE_ERROR ? "" : ": " + Why(made)) +
+                             "; the interfaces here: " + InterfacesHere());
   return made;
 }
 

@@ -186,7 +186,10 @@ class Refusal(unittest.TestCase):
             path = os.path.join(tmp, "s.yaml")
             with open(path, "w") as f:
                 f.write(RELAY)
-            for args, says in [(["--exec", "b", "--", "true"], "'b' is not a robot with a process of its own here (a, c)"),
+            for args, says in [(["--exec", "b", "--", "true"], "'b' is not a robot with a process of its own here (a or c)"),
+                               (["--exec", "A", "--", "true"], "did you mean a"),
+                               (["--exec", "a,a", "--", "true"], "'a' is named twice"),
+                               (["--exec", "all,c", "--", "true"], "'all' stands alone"),
                                (["--exec", "a"], "give the program to run after --"),
                                (["--udp-base", "9000"], "9000 is network.port")]:
                 out = subprocess.run([SANET, "launch", path, "-o", os.path.join(tmp, "out"), *args],

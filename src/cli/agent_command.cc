@@ -5,6 +5,7 @@
 
 #include "remote_agent/agent.h"
 #include "remote_agent/server_link.h"
+#include "ros2_agent_options.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "wire/plugin_identity.h"
@@ -16,6 +17,7 @@ struct AgentArgs {
   std::string file, robot, server = "127.0.0.1:3000", subnet, peer_address, peer_interface, library;
   std::optional<int> udp_base;
   bool shared_clock = false, quiet = false;
+  Ros2AgentArgs ros2;
   double test_clock_offset = 0;
   int test_protocol = hil::kSanetProtocol;
 };
@@ -62,7 +64,29 @@ NodeId RobotOf(const scenario::Scenario& sc, const std::string& robot) {
                                             " (those are: " + (robots.empty() ? "none" : robots) + ")");
 }
 
+hil::PeerSettings PeerSettingsOf(const AgentArgs& a, const scenario::Scenario& sc) {
+  hil::PeerSettings peer;
+  peer.udp_base_port = static_cast<std::uint16_t>(a.udp_base.value_or(sc.loop.udp_port));
+  peer.udp_subnet = a.subnet;
+  peer.peer_address = a.peer_address;
+  peer.peer_interface = a.peer_interface;
+  peer.peers = sc.loop.peers;
+  return peer;
+}
+
+// --ros2: no server; the team from the scenario file, the robot from its ROS 2 topics.
+int Ros2Agent(const AgentArgs& a, agents::Registry& registry) {
+  if (a.file.empty())
+    throw CLI::ValidationError("--scenario", "--ros2 runs without a server: give the team's scenario file");
+  scenario::Scenario sc = scenario::LoadScenario(a.file);
+  const NodeId id = RobotOf(sc, a.robot);
+  sim::ControllerSpec& controller = *sc.run.nodes[id].controller;
+  if (!a.library.empty()) controller.library = a.library;
+  return StartRos2Agent(sc, id, a.ros2, PeerSettingsOf(a, sc), a.quiet, registry);
+}
+
 int Agent(const AgentArgs& a, agents::Registry& registry) {
+  if (a.ros2.on) return Ros2Agent(a, registry);
   std::unique_ptr<hil::ServerLink> link = Connect(a.server);
   scenario::Scenario sc = ScenarioOf(a, *link);
   const NodeId id = RobotOf(sc, a.robot);
@@ -71,11 +95,7 @@ int Agent(const AgentArgs& a, agents::Registry& registry) {
   const std::string differs = hil::PluginDifference(link->FetchPlugin(a.robot), hil::IdentifyPlugin(controller));
   if (!differs.empty()) throw std::runtime_error("this robot's controller is not the server's: " + differs);
   hil::AgentSettings settings;
-  settings.peer.udp_base_port = static_cast<std::uint16_t>(a.udp_base.value_or(sc.loop.udp_port));
-  settings.peer.udp_subnet = a.subnet;
-  settings.peer.peer_address = a.peer_address;
-  settings.peer.peer_interface = a.peer_interface;
-  settings.peer.peers = sc.loop.peers;
+  settings.peer = PeerSettingsOf(a, sc);
   settings.shared_clock = a.shared_clock;
   settings.clock_skew = a.test_clock_offset;
   settings.time_port = link->time_port();
@@ -121,6 +141,7 @@ Command AddAgent(CLI::App& app) {
                   "For tests: claim this version of sanet's protocol (the server must refuse another)")
       ->check(CLI::Range(1, 1000000))
       ->group("");  // for tests: not in --help
+  AddRos2AgentOptions(cmd, a->ros2);
   return {cmd, [a](agents::Registry& r) { return Agent(*a, r); }};
 }
 

@@ -5,12 +5,9 @@
 #include <string>
 
 namespace sanet::cli {
-namespace {
-
-// ROS 2 takes the domain from ROS_DOMAIN_ID (0 when unset); an invalid one is an error here.
-int DomainOf(const Ros2Args& args, const sections::Ros2Spec& section) {
-  if (args.domain) return *args.domain;
-  if (section.domain >= 0) return section.domain;
+int Ros2Domain(std::optional<int> given, int section) {
+  if (given) return *given;
+  if (section >= 0) return section;
   const char* env = std::getenv("ROS_DOMAIN_ID");
   if (!env || !*env) return 0;
   char* end = nullptr;
@@ -19,8 +16,6 @@ int DomainOf(const Ros2Args& args, const sections::Ros2Spec& section) {
     throw CLI::ValidationError("ROS_DOMAIN_ID", std::string("'") + env + "' is not a DDS domain from 0 to 232");
   return static_cast<int>(id);
 }
-
-}  // namespace
 
 void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
   cmd->add_flag("--ros2", args.on,
@@ -48,7 +43,7 @@ std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2A
   if (args.off || (!args.on && !section)) return nullptr;
   const sections::Ros2Spec given = section.value_or(sections::Ros2Spec{});
   ros2face::Ros2Settings settings;
-  settings.domain = static_cast<std::uint32_t>(DomainOf(args, given));
+  settings.domain = static_cast<std::uint32_t>(Ros2Domain(args.domain, given.domain));
   if (args.interface && args.interface->empty())
     throw CLI::ValidationError("--ros2-interface", "give an interface's name or IPv4 address (ip -br addr lists them)");
   settings.interface = args.interface.value_or("");

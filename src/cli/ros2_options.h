@@ -20,6 +20,9 @@ struct Ros2Args {
 };
 
 void AddRos2Options(CLI::App* cmd, Ros2Args& args);
+// The DDS domain: the option's, else the scenario section's (>= 0), else ROS_DOMAIN_ID, else 0;
+// an invalid ROS_DOMAIN_ID is an error naming it.
+int Ros2Domain(std::optional<int> given, int section);
 // Joins the DDS domain and starts the face, when the scenario has a ros2 section or --ros2 is
 // given (and --no-ros2 is not); a domain that cannot be joined is an error naming the option.
 std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,

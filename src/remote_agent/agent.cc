@@ -14,26 +14,6 @@
 namespace sanet::hil {
 namespace {
 
-// The agent's estimate of the simulation clock (the remote node's), with the delayed actions the
-// host asks for, run as the agent's loop polls.
-class AgentClock : public agents::HostClock {
- public:
-  explicit AgentClock(const RemoteNode& node) : node_(node) {}
-  double Now() const override { return node_.Now(); }
-  void After(double delay, std::function<void()> action) override { due_.emplace(Now() + delay, std::move(action)); }
-  void RunDue() {
-    while (!due_.empty() && due_.begin()->first <= Now()) {
-      auto action = std::move(due_.begin()->second);
-      due_.erase(due_.begin());
-      action();
-    }
-  }
-
- private:
-  const RemoteNode& node_;
-  std::multimap<double, std::function<void()>> due_;  // in time order, then in order asked
-};
-
 // What the agent tells the server about its steps and messages (summary.json's `agents`).
 ProtocolMessage Stats(const StepGrid& grid, const RemoteNode& node, std::uint64_t received) {
   ProtocolMessage m("STATS");
@@ -112,7 +92,7 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
              agents::Registry& registry) {
   const sim::ControllerSpec& controller = *spec.nodes.at(robot).controller;
   RemoteNode node(spec, robot, settings, std::move(link));
-  AgentClock clock(node);
+  AgentClock clock([&node] { return node.Now(); });
   std::string failure;
   agents::ControllerHost::Hooks hooks;
   hooks.failed = [&](const std::string& why) { failure = why; };

@@ -31,4 +31,12 @@ StepGrid::Lateness StepGrid::lateness() const {
   return {at(0.5), at(0.99), sorted.back()};
 }
 
+void AgentClock::RunDue() {
+  while (!due_.empty() && due_.begin()->first <= Now()) {
+    auto action = std::move(due_.begin()->second);
+    due_.erase(due_.begin());
+    action();
+  }
+}
+
 }  // namespace sanet::hil

@@ -5,10 +5,28 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <vector>
 
+#include "agents/host_clock.h"
+
 namespace sanet::hil {
+
+// An agent's clock as its controller's host sees it (`now`: the node's Now()), with the delayed
+// actions the host asks for, run as the agent's loop calls RunDue.
+class AgentClock : public agents::HostClock {
+ public:
+  explicit AgentClock(std::function<double()> now) : now_(std::move(now)) {}
+  double Now() const override { return now_(); }
+  void After(double delay, std::function<void()> action) override { due_.emplace(Now() + delay, std::move(action)); }
+  void RunDue();
+
+ private:
+  std::function<double()> now_;
+  std::multimap<double, std::function<void()>> due_;  // in time order, then in order asked
+};
 
 class StepGrid {
  public:

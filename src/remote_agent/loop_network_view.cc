@@ -7,8 +7,12 @@
 
 namespace sanet::hil {
 
-LoopNetworkView::LoopNetworkView(const sim::RunSpec& spec, NodeId self, ServerLink& link, Hooks hooks)
-    : spec_(spec), self_(self), link_(link), hooks_(std::move(hooks)) {}
+LoopNetworkView::LoopNetworkView(const sim::RunSpec& spec, NodeId self, ServerLink* link, Hooks hooks)
+    : spec_(spec),
+      self_(self),
+      link_(link),
+      hooks_(std::move(hooks)),
+      source_(link ? Source::kUnknown : Source::kKernel) {}
 
 std::string LoopNetworkView::Protocol() const { return Current().protocol; }
 std::vector<RouteEntry> LoopNetworkView::RoutingTable() const { return Current().routes; }
@@ -23,7 +27,7 @@ const LoopNetworkView::Snapshot& LoopNetworkView::Current() const {
 void LoopNetworkView::Fetch() const {
   fetched_at_ = hooks_.now();
   if (source_ == Source::kKernel) return FetchFromKernel();
-  const auto line = link_.Ask(ProtocolMessage{"GETNET"}, "NET", kWait);
+  const auto line = link_->Ask(ProtocolMessage{"GETNET"}, "NET", kWait);
   if (line && line->type == "NET") return TakeNetLine(*line);
   if (said_no_answer_) return;  // the last snapshot stays
   said_no_answer_ = true;
@@ -85,7 +89,7 @@ bool LoopNetworkView::InvalidateRoute(NodeId destination) {
   if (source_ == Source::kUnknown) Current();
   if (source_ != Source::kSimulated) return false;  // the kernel's routes are not the controller's to drop
   ProtocolMessage ask{"INVALIDATEROUTE"};
-  const auto answer = link_.Ask(ask.Add("To", spec_.nodes[destination].name), "INVALIDATED", kWait);
+  const auto answer = link_->Ask(ask.Add("To", spec_.nodes[destination].name), "INVALIDATED", kWait);
   fetched_at_.reset();  // the next read asks again
   const std::string* done = answer ? answer->Get("Done") : nullptr;
   return done && *done == "True";
@@ -96,7 +100,7 @@ void LoopNetworkView::RequestRoute(NodeId destination) {
   if (source_ == Source::kUnknown) Current();
   if (source_ != Source::kSimulated) return;  // the kernel finds its neighbours when traffic goes
   ProtocolMessage ask{"REQUESTROUTE"};
-  link_.Send(ask.Add("To", spec_.nodes[destination].name));
+  link_->Send(ask.Add("To", spec_.nodes[destination].name));
   fetched_at_.reset();
 }
 

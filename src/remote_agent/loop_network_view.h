@@ -30,7 +30,8 @@ class LoopNetworkView : public NetworkView {
     std::function<void(const std::string&)> log;                      // the node's log
     std::function<std::optional<NodeId>(const std::string&)> lookup;  // the node's Lookup
   };
-  LoopNetworkView(const sim::RunSpec& spec, NodeId self, ServerLink& link, Hooks hooks);
+  // Without a server (`link` null: a robot driven over ROS 2), the view is the kernel's.
+  LoopNetworkView(const sim::RunSpec& spec, NodeId self, ServerLink* link, Hooks hooks);
 
   std::string Protocol() const override;
   std::vector<RouteEntry> RoutingTable() const override;
@@ -53,9 +54,9 @@ class LoopNetworkView : public NetworkView {
 
   const sim::RunSpec& spec_;
   NodeId self_;
-  ServerLink& link_;
+  ServerLink* link_;
   Hooks hooks_;
-  mutable Source source_ = Source::kUnknown;
+  mutable Source source_;
   mutable Snapshot snapshot_{"none", {}, {}};  // until the server's first answer
   mutable std::optional<double> fetched_at_;   // the node's Now() at the last fetch
   mutable bool said_no_answer_ = false;        // a failed fetch is logged once

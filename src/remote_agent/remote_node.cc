@@ -49,7 +49,7 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
   LoopNetworkView::Hooks hooks{[this] { return Now(); }, [this] { return peer_socket_->Addresses(); },
                                [this](const std::string& text) { Log(text); },
                                [this](const std::string& name) { return Lookup(name); }};
-  view_ = std::make_unique<LoopNetworkView>(spec_, id_, *link_, std::move(hooks));
+  view_ = std::make_unique<LoopNetworkView>(spec_, id_, link_.get(), std::move(hooks));
   ProtocolMessage init("INIT");
   init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());
   Command(init);

@@ -7,6 +7,7 @@
 
 #include "core/delivery.h"
 #include "core/statistics.h"
+#include "trace/result_headers.h"
 
 namespace sanet::sim {
 namespace {
@@ -33,10 +34,10 @@ Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& 
       nodes_(nodes),
       folder_(dir, force),
       trajectories_(folder_.Csv("trajectories.csv", "time,node,x,y,theta")),
-      log_(folder_.Csv("log.csv", "time,node,text")),
-      messages_(folder_.Csv("messages.csv", "time_sent,from,to,delivery,bytes,time_received,delay,hops")),
-      transitions_(folder_.Csv("transitions.csv", "time,node,from,to,why")),
-      metric_rows_(folder_.Csv("metrics.csv", "time,node,name,value")),
+      log_(folder_.Csv("log.csv", trace::kLogHeader)),
+      messages_(folder_.Csv("messages.csv", trace::kMessagesHeader)),
+      transitions_(folder_.Csv("transitions.csv", trace::kTransitionsHeader)),
+      metric_rows_(folder_.Csv("metrics.csv", trace::kMetricsHeader)),
       last_recorded_(nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
   if (spec_.trace && folder_.writes()) StartTrace();

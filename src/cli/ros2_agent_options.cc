@@ -1,0 +1,112 @@
+#include "ros2_agent_options.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "interruption.h"
+#include "ros2_agent/ros2_agent.h"
+#include "ros2_options.h"
+#include "scenario/yaml_reader.h"
+
+namespace sanet::cli {
+namespace {
+
+constexpr const char* kKeyHow = " (64 hex digits, the same for the whole team; make one with: openssl rand -hex 32)";
+
+// The team's datagram key: --key-file, else SANET_TEAM_KEY.
+hil::DatagramKey TeamKey(const Ros2AgentArgs& args) {
+  std::string hex;
+  if (!args.key_file.empty()) {
+    std::ifstream in(args.key_file);
+    if (!in) throw CLI::ValidationError("--key-file", "cannot read " + args.key_file);
+    in >> hex;
+    if (const auto key = hil::DatagramKey::FromHex(hex)) return *key;
+    throw CLI::ValidationError("--key-file", args.key_file + " holds no key" + kKeyHow);
+  }
+  const char* env = std::getenv("SANET_TEAM_KEY");
+  if (!env || !*env)
+    throw CLI::ValidationError("--key-file", std::string("--ros2 needs the team's key for the datagrams between "
+                                                         "robots: --key-file FILE or SANET_TEAM_KEY") +
+                                                 kKeyHow);
+  if (const auto key = hil::DatagramKey::FromHex(env)) return *key;
+  throw CLI::ValidationError("SANET_TEAM_KEY", std::string("holds no key") + kKeyHow);
+}
+
+ros2agent::RobotTopics TopicsOf(const sim::NodeSpec& node, const Ros2AgentArgs& args) {
+  const auto& ir = node.model.sensors.ir;
+  ros2agent::RobotTopics topics = ros2agent::DefaultTopics(node.name, ir ? ir->angles.size() : 0);
+  if (!args.robot_file.empty()) ros2agent::ReadRobotFile(args.robot_file, topics);
+  for (const std::string& remap : args.remaps) try {
+      ros2agent::Remap(remap, topics);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("--ros2-remap", e.what());
+    }
+  if (args.use_sim_time) topics.use_sim_time = true;
+  if (args.stamped) topics.cmd_vel_type = ros2agent::CmdVelType::kTwistStamped;
+  return topics;
+}
+
+}  // namespace
+
+void AddRos2AgentOptions(CLI::App* cmd, Ros2AgentArgs& args) {
+  const char* group = "ROS 2 robot (--ros2)";
+  cmd->add_flag("--ros2", args.on,
+                "Drive a ROS 2 robot through its topics, with no server: the team from --scenario, messages between "
+                "robots over UDP with the team's key (docs/ros2-robots.md)")
+      ->group(group);
+  cmd->add_option("--ros2-domain", args.domain,
+                  "DDS domain of the robot (default: the scenario's ros2.domain, else ROS_DOMAIN_ID, else 0)")
+      ->check(CLI::Range(0, 232))
+      ->group(group);
+  cmd->add_option("--ros2-interface", args.interface, "The network interface (name or IPv4 address) of the robot's DDS")
+      ->group(group);
+  cmd->add_option("--ros2-robot", args.robot_file,
+                  "A YAML file naming and typing the robot's topics (namespace, odom, scan, ir, ground_truth, "
+                  "cmd_vel, clock, use_sim_time, odom_timeout); the defaults are the ROS 2 face's")
+      ->check(CLI::ExistingFile)
+      ->group(group);
+  cmd->add_option("--ros2-remap", args.remaps, "KEY=TOPIC: odom, scan, ground_truth (or none), cmd_vel, clock, ir/I")
+      ->group(group);
+  cmd->add_flag("--use-sim-time", args.use_sim_time, "Now() from /clock (a simulator's), not from this computer")
+      ->group(group);
+  cmd->add_flag("--ros2-cmd-vel-stamped", args.stamped, "Publish cmd_vel as geometry_msgs/TwistStamped")->group(group);
+  cmd->add_option("--key-file", args.key_file,
+                  "The team's datagram key (64 hex digits); default: the environment's SANET_TEAM_KEY")
+      ->group(group);
+  cmd->add_option("-o,--output", args.output, "The agent's results folder (default: results/SCENARIO-ROBOT)")
+      ->group(group);
+  cmd->add_flag("--force", args.force, "Write into a folder that holds files no sanet agent wrote")->group(group);
+  cmd->add_option("--start-at", args.start_at,
+                  "The team's time 0 as Unix time (s): every agent given the same value starts then and agrees on "
+                  "Now() as far as the computers' clocks do (NTP, PTP); default: when this agent starts")
+      ->group(group);
+  cmd->add_option("--duration", args.duration,
+                  "s of the robot's clock after which the agent ends (default: the "
+                  "scenario's duration)")
+      ->check(CLI::PositiveNumber)
+      ->group(group);
+}
+
+int StartRos2Agent(const scenario::Scenario& sc, NodeId id, const Ros2AgentArgs& args, hil::PeerSettings peer,
+                   bool quiet, agents::Registry& registry) {
+  ros2agent::Ros2AgentSettings settings;
+  settings.robot.domain = static_cast<std::uint32_t>(Ros2Domain(args.domain, sc.ros2 ? sc.ros2->domain : -1));
+  settings.robot.interface = args.interface;
+  settings.robot.topics = TopicsOf(sc.run.nodes[id], args);
+  settings.robot.model = sc.run.nodes[id].model;
+  settings.robot.start = sc.run.nodes[id].pose;
+  settings.peer = std::move(peer);
+  settings.key = TeamKey(args);
+  settings.output = args.output.empty() ? "results/" + sc.run.name + "-" + sc.run.nodes[id].name : args.output;
+  settings.force = args.force;
+  settings.start_at = args.start_at;
+  settings.quiet = quiet;
+  InstallStopHandlers();
+  settings.stop_requested = [] { return InterruptSignal() != 0; };
+  sim::RunSpec spec = sc.run;
+  if (args.duration) spec.duration = *args.duration;
+  return ros2agent::RunRos2Agent(spec, id, settings, registry);
+}
+
+}  // namespace sanet::cli

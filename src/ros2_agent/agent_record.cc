@@ -1,0 +1,63 @@
+#include "ros2_agent/agent_record.h"
+
+#include <cstdio>
+
+#include "core/delivery.h"
+#include "trace/result_headers.h"
+
+namespace sanet::ros2agent {
+namespace {
+
+std::string Fixed(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6f", value);
+  return text;
+}
+
+}  // namespace
+
+AgentRecord::AgentRecord(const std::string& dir, const sim::RunSpec& spec, NodeId robot, bool force)
+    : spec_(spec),
+      robot_(robot),
+      folder_(dir, force),
+      log_(folder_.Csv("log.csv", trace::kLogHeader)),
+      transitions_(folder_.Csv("transitions.csv", trace::kTransitionsHeader)),
+      metrics_(folder_.Csv("metrics.csv", trace::kMetricsHeader)),
+      messages_(folder_.Csv("messages.csv", trace::kMessagesHeader)),
+      sent_(folder_.Csv("sent.csv", "time_sent,from,to,delivery,bytes")) {}
+
+std::string AgentRecord::NameOf(NodeId node) const {
+  return node < spec_.nodes.size() ? spec_.nodes[node].name : "all";
+}
+
+std::string AgentRecord::Stamp(double t) const { return Fixed(t) + "," + NameOf(robot_) + ","; }
+
+void AgentRecord::Log(double t, const std::string& text) { log_.Row(Stamp(t) + trace::CsvField(text)); }
+
+void AgentRecord::Transition(double t, const std::string& from, const std::string& to, const std::string& why) {
+  transitions_.Row(Stamp(t) + trace::CsvField(from) + "," + trace::CsvField(to) + "," + trace::CsvField(why));
+}
+
+void AgentRecord::Metric(double t, const std::string& name, double value) {
+  char number[64];
+  std::snprintf(number, sizeof number, "%.9g", value);
+  metrics_.Row(Stamp(t) + trace::CsvField(name) + "," + number);
+}
+
+void AgentRecord::Received(const Message& m) {
+  messages_.Row(Fixed(m.time_sent) + "," + NameOf(m.from) + "," + NameOf(robot_) + "," + DeliveryName(m.delivery) +
+                "," + std::to_string(m.payload.size()) + "," + Fixed(m.time_received) + "," +
+                Fixed(m.time_received - m.time_sent) + "," + (m.hops ? std::to_string(*m.hops) : ""));
+}
+
+void AgentRecord::Sent(double t, NodeId to, Delivery delivery, std::size_t bytes) {
+  sent_.Row(Fixed(t) + "," + NameOf(robot_) + "," + NameOf(to) + "," + DeliveryName(delivery) + "," +
+            std::to_string(bytes));
+}
+
+void AgentRecord::Finish(const nlohmann::ordered_json& summary) {
+  folder_.WriteWhole("summary.json", summary.dump(2) + "\n");
+  folder_.Commit();
+}
+
+}  // namespace sanet::ros2agent

@@ -1,0 +1,167 @@
+#include "ros2_agent/ros2_agent.h"
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "agents/controller_host.h"
+#include "remote_agent/agent_steps.h"
+#include "ros2_agent/agent_record.h"
+#include "ros2_agent/ros2_node.h"
+#include "wire/time_service.h"
+
+namespace sanet::ros2agent {
+namespace {
+
+double UnixNow() { return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count(); }
+
+// The robot's clock: its /clock with use_sim_time, else this computer's from the team's start.
+std::function<double()> RobotClock(const Ros2Robot& robot, const Ros2AgentSettings& settings) {
+  if (settings.robot.topics.use_sim_time) return [&robot] { return robot.SimTime().value_or(0); };
+  const double origin = hil::MonotonicSeconds() + (settings.start_at ? *settings.start_at - UnixNow() : 0);
+  return [origin] { return hil::MonotonicSeconds() - origin; };
+}
+
+// How the run went, for summary.json.
+struct Ending {
+  std::string by = "duration";
+  double at = 0;
+  std::uint64_t odometry_stops = 0;
+};
+
+nlohmann::ordered_json Summary(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& settings,
+                               const Ending& ending, const hil::StepGrid& grid, const Ros2Node& node,
+                               const Ros2Robot& robot, const hil::PeerSocket& peers) {
+  const Ros2Robot::Counts& c = robot.counts();
+  const hil::PeerSocket::Datagrams& d = peers.datagrams();
+  nlohmann::ordered_json j;
+  j["scenario"] = spec.name;
+  j["robot"] = spec.nodes[id].name;
+  j["mode"] = "ros2";
+  j["clock"] = settings.robot.topics.use_sim_time ? "/clock (use_sim_time)" : "this computer's";
+  if (settings.start_at) j["start_at_unix_s"] = *settings.start_at;
+  j["ended_by"] = ending.by;
+  j["ended_at_s"] = ending.at;
+  j["steps"] = {{"run", grid.run()}, {"missed", grid.missed()}, {"achieved_rate_hz", grid.achieved_rate()}};
+  j["messages"] = {{"sent", node.messages_sent()}, {"to_nodes_without_agents", node.messages_to_nowhere()}};
+  j["datagrams"] = {
+      {"sent", d.sent}, {"received", d.received}, {"rejected", d.rejected}, {"send_errors", d.send_errors}};
+  j["ros2"] = {{"odometry", c.odometry}, {"scans", c.scans},
+               {"ranges", c.ranges},     {"ground_truth", c.ground_truth},
+               {"clock", c.clock},       {"undecodable", c.undecodable},
+               {"cmd_vel", c.cmd_vel},   {"odometry_stops", ending.odometry_stops}};
+  return j;
+}
+
+// Polls until the robot's first odometry (and /clock with use_sim_time) and the team's start.
+bool WaitForTheRobot(Ros2Robot& robot, const Ros2AgentSettings& settings, const std::function<double()>& clock) {
+  const RobotTopics& t = settings.robot.topics;
+  if (!settings.quiet)
+    std::printf("sanet agent: waiting for %s%s\n", FullName(t, t.odom).c_str(),
+                t.use_sim_time ? (" and " + FullName(t, t.clock)).c_str() : "");
+  std::fflush(stdout);
+  while (!settings.stop_requested || !settings.stop_requested()) {
+    robot.Poll(hil::MonotonicSeconds());
+    if (robot.Odometry() && (!t.use_sim_time || robot.SimTime()) && clock() >= 0) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return false;
+}
+
+// The robot's motion is stopped while odometry is older than the topics' odom_timeout: a robot
+// whose driver or link fails must not go on with its last command. Returns whether steps may run.
+class OdometryWatch {
+ public:
+  OdometryWatch(Ros2Robot& robot, Ros2Node& node, double timeout) : robot_(robot), node_(node), timeout_(timeout) {}
+  bool Fresh(double monotonic) {
+    const auto at = robot_.OdometryAt();
+    const bool fresh = at && monotonic - *at <= timeout_;
+    if (!fresh && !stopped_) {
+      robot_.Drive({}, node_.ClockNow());
+      const std::string why = "no odometry for " + std::to_string(timeout_) + " s: the robot is stopped";
+      std::fprintf(stderr, "sanet agent %s: %s\n", node_.Name().c_str(), why.c_str());
+      node_.Log(why);
+      ++stops_;
+    }
+    if (fresh && stopped_) node_.Log("odometry is back: the controller drives again");
+    stopped_ = !fresh;
+    return fresh;
+  }
+  std::uint64_t stops() const { return stops_; }
+
+ private:
+  Ros2Robot& robot_;
+  Ros2Node& node_;
+  double timeout_;
+  bool stopped_ = false;
+  std::uint64_t stops_ = 0;
+};
+
+struct Loop {
+  Ros2Robot& robot;
+  Ros2Node& node;
+  hil::PeerSocket& peers;
+  agents::ControllerHost& host;
+  hil::AgentClock& clock;
+  hil::StepGrid& grid;
+};
+
+// Control steps on the robot's clock until the scenario's duration, a stop or a failure.
+void RunSteps(const Loop& l, const sim::RunSpec& spec, const Ros2AgentSettings& settings, Ending& ending) {
+  OdometryWatch watch(l.robot, l.node, settings.robot.topics.odom_timeout);
+  const auto deliver = [&](const Message& m) { l.host.Receive(m); };
+  while (l.host.running() && l.node.ClockNow() < spec.duration) {
+    if (settings.stop_requested && settings.stop_requested()) {
+      ending.by = "interrupted";
+      break;
+    }
+    l.robot.Poll(hil::MonotonicSeconds());
+    l.peers.Read(deliver);
+    l.clock.RunDue();
+    const bool fresh = watch.Fresh(hil::MonotonicSeconds());
+    if (const auto t = l.grid.Due(l.node.ClockNow()); t && fresh) {
+      l.node.SetStepTime(*t);
+      if (l.grid.run() == 1) l.host.Start();
+      l.host.Step();
+      l.node.SetStepTime(std::nullopt);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ending.odometry_stops = watch.stops();
+}
+
+}  // namespace
+
+int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& settings, agents::Registry& registry) {
+  const sim::ControllerSpec& controller = *spec.nodes.at(id).controller;
+  Ros2Robot robot(settings.robot);
+  AgentRecord record(settings.output, spec, id, settings.force);
+  const std::function<double()> now = RobotClock(robot, settings);
+  hil::PeerSocket peers(spec, id, settings.peer, now);
+  peers.SetKey(settings.key);
+  Ros2Node node(spec, id, robot, peers, record, now);
+  hil::AgentClock clock([&node] { return node.Now(); });
+  Ending ending;
+  agents::ControllerHost::Hooks hooks;
+  hooks.failed = [&](const std::string& why) { ending.by = "controller failed: " + why; };
+  hooks.delivered = [&](const Message& m) { record.Received(m); };
+  agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
+                              {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
+  hil::StepGrid grid(controller.rate);
+  if (WaitForTheRobot(robot, settings, now))
+    RunSteps({robot, node, peers, host, clock, grid}, spec, settings, ending);
+  else
+    ending.by = "interrupted";
+  robot.Drive({}, now());  // whatever ended the run, the robot stops
+  ending.at = now();
+  record.Finish(Summary(spec, id, settings, ending, grid, node, robot, peers));
+  if (!settings.quiet)
+    std::printf(
+        "sanet agent %s: ended at %.1f s (%s): %llu steps, %llu datagrams sent, %llu received; results in %s/\n",
+        spec.nodes[id].name.c_str(), ending.at, ending.by.c_str(), static_cast<unsigned long long>(grid.run()),
+        static_cast<unsigned long long>(peers.datagrams().sent),
+        static_cast<unsigned long long>(peers.datagrams().received), record.dir().c_str());
+  return ending.by.rfind("controller failed", 0) == 0 ? 1 : 0;
+}
+
+}  // namespace sanet::ros2agent

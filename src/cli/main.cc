@@ -24,6 +24,7 @@
 #include "launch/launch.h"
 #include "launch/namespaces.h"
 #include "launch/radio_taps.h"
+#include "merge_command.h"
 #include "options.h"
 #include "remote_agent/remote_node.h"
 #include "robot_server/sim_server.h"
@@ -590,7 +591,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("sanet ") + SanetVersion() + " (" + SanetCommit() + ")");
   const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddReport(app), AddServe(app),
-                                         AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app)};
+                                         AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app),
+                                         AddMerge(app)};
   if (UnknownCommand(argc, argv, app)) return kExitScenarioError;
   try {
     app.parse(argc, argv);

@@ -55,9 +55,12 @@ void AgentRecord::Sent(double t, NodeId to, Delivery delivery, std::size_t bytes
             std::to_string(bytes));
 }
 
-void AgentRecord::Finish(const nlohmann::ordered_json& summary) {
-  folder_.WriteWhole("summary.json", summary.dump(2) + "\n");
+void AgentRecord::Finish(nlohmann::ordered_json summary) {
   folder_.Commit();
+  std::vector<std::string> files = folder_.files();
+  files.push_back("summary.json");
+  summary["files"] = files;  // what the next agent writing here clears (trace/earlier_run.h)
+  folder_.WriteWhole("summary.json", summary.dump(2) + "\n");
 }
 
 }  // namespace sanet::ros2agent

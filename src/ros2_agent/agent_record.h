@@ -24,8 +24,8 @@ class AgentRecord {
   void Metric(double t, const std::string& name, double value);
   void Received(const Message& m);
   void Sent(double t, NodeId to, Delivery delivery, std::size_t bytes);
-  // Writes summary.json and moves every file into place.
-  void Finish(const nlohmann::ordered_json& summary);
+  // Moves every file into place, then writes summary.json (with the list of files).
+  void Finish(nlohmann::ordered_json summary);
   const std::string& dir() const { return folder_.dir(); }
 
  private:

@@ -15,15 +15,23 @@ namespace {
 
 double UnixNow() { return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count(); }
 
-// The robot's clock: its /clock with use_sim_time, else this computer's from the team's start.
-std::function<double()> RobotClock(const Ros2Robot& robot, const Ros2AgentSettings& settings) {
-  if (settings.robot.topics.use_sim_time) return [&robot] { return robot.SimTime().value_or(0); };
-  const double origin = hil::MonotonicSeconds() + (settings.start_at ? *settings.start_at - UnixNow() : 0);
+// The Unix time of the agent's time 0 on this computer's clock: the team's start, else now. None
+// on /clock (use_sim_time), which every agent reads alike.
+std::optional<double> TimeZeroUnix(const Ros2AgentSettings& settings) {
+  if (settings.robot.topics.use_sim_time) return std::nullopt;
+  return settings.start_at ? *settings.start_at : UnixNow();
+}
+
+// The robot's clock: its /clock with use_sim_time, else this computer's (monotonic) from time 0.
+std::function<double()> RobotClock(const Ros2Robot& robot, std::optional<double> time_zero_unix) {
+  if (!time_zero_unix) return [&robot] { return robot.SimTime().value_or(0); };
+  const double origin = hil::MonotonicSeconds() + (*time_zero_unix - UnixNow());
   return [origin] { return hil::MonotonicSeconds() - origin; };
 }
 
 // How the run went, for summary.json.
 struct Ending {
+  std::optional<double> time_zero_unix;
   std::string by = "duration";
   double at = 0;
   std::uint64_t odometry_stops = 0;
@@ -40,6 +48,7 @@ nlohmann::ordered_json Summary(const sim::RunSpec& spec, NodeId id, const Ros2Ag
   j["mode"] = "ros2";
   j["clock"] = settings.robot.topics.use_sim_time ? "/clock (use_sim_time)" : "this computer's";
   if (settings.start_at) j["start_at_unix_s"] = *settings.start_at;
+  if (ending.time_zero_unix) j["time_zero_unix_s"] = *ending.time_zero_unix;  // for sanet merge
   j["ended_by"] = ending.by;
   j["ended_at_s"] = ending.at;
   j["steps"] = {{"run", grid.run()}, {"missed", grid.missed()}, {"achieved_rate_hz", grid.achieved_rate()}};
@@ -78,8 +87,9 @@ class OdometryWatch {
     const bool fresh = at && monotonic - *at <= timeout_;
     if (!fresh && !stopped_) {
       robot_.Drive({}, node_.ClockNow());
-      const std::string why = "no odometry for " + std::to_string(timeout_) + " s: the robot is stopped";
-      std::fprintf(stderr, "sanet agent %s: %s\n", node_.Name().c_str(), why.c_str());
+      char why[128];
+      std::snprintf(why, sizeof why, "no odometry for %.2g s: the robot is stopped", timeout_);
+      std::fprintf(stderr, "sanet agent %s: %s\n", node_.Name().c_str(), why);
       node_.Log(why);
       ++stops_;
     }
@@ -118,8 +128,9 @@ void RunSteps(const Loop& l, const sim::RunSpec& spec, const Ros2AgentSettings& 
     l.robot.Poll(hil::MonotonicSeconds());
     l.peers.Read(deliver);
     l.clock.RunDue();
+    // Steps that fall while odometry is missing are not taken: the grid counts them missed.
     const bool fresh = watch.Fresh(hil::MonotonicSeconds());
-    if (const auto t = l.grid.Due(l.node.ClockNow()); t && fresh) {
+    if (const auto t = fresh ? l.grid.Due(l.node.ClockNow()) : std::nullopt) {
       l.node.SetStepTime(*t);
       if (l.grid.run() == 1) l.host.Start();
       l.host.Step();
@@ -136,12 +147,13 @@ int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& s
   const sim::ControllerSpec& controller = *spec.nodes.at(id).controller;
   Ros2Robot robot(settings.robot);
   AgentRecord record(settings.output, spec, id, settings.force);
-  const std::function<double()> now = RobotClock(robot, settings);
+  Ending ending;
+  ending.time_zero_unix = TimeZeroUnix(settings);
+  const std::function<double()> now = RobotClock(robot, ending.time_zero_unix);
   hil::PeerSocket peers(spec, id, settings.peer, now);
   peers.SetKey(settings.key);
   Ros2Node node(spec, id, robot, peers, record, now);
   hil::AgentClock clock([&node] { return node.Now(); });
-  Ending ending;
   agents::ControllerHost::Hooks hooks;
   hooks.failed = [&](const std::string& why) { ending.by = "controller failed: " + why; };
   hooks.delivered = [&](const Message& m) { record.Received(m); };

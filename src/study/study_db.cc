@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "study/csv_rows.h"
+#include "trace/csv_rows.h"
 
 namespace sanet::study {
 namespace {
@@ -240,7 +240,7 @@ void StudyDb::Scalars(long run, const nlohmann::json& summary) {
 }
 
 void StudyDb::ImportCsv(long run, const std::string& table, const std::string& path) {
-  CsvRows rows(path);
+  trace::CsvRows rows(path);
   if (!rows.ok()) return;  // this run wrote no such file (no network, no packet log)
   std::string columns = "run INTEGER", marks = "?";
   for (const std::string& c : rows.header()) columns += ", " + Quoted(c), marks += ", ?";

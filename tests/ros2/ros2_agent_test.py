@@ -5,8 +5,14 @@ team and peers from the scenario file, sensors and motion over DDS, messages bet
 over UDP with the team's key, every agent with its own results folder.
 - the formation (scenarios/formation.yaml, shortened) keeps its distances, with the same plugin
   as `sanet run`;
-- an agent whose odometry stops stops its robot and says why;
-- mistakes (no key, no scenario, a bad remapping) are refused with the option named."""
+- an agent whose odometry stops, or whose controller fails, stops its robot (a zero cmd_vel) and
+  says why; its Network() is the kernel's; all against a robot's
+  driver written from ROS 2's definitions (ros2_driver.c), as is the remapping test: topics under
+  other names, read reliable, and cmd_vel as TwistStamped;
+- `sanet merge` puts a team's folders on one time line: on /clock as they are, on computers'
+  clocks each moved from its time 0 (agents started 1.5 s apart);
+- mistakes (no key, no scenario, a bad remapping, folders of no team) are refused, named."""
+import csv
 import json
 import os
 import signal
@@ -16,7 +22,7 @@ import tempfile
 import time
 import unittest
 
-SANET, SOURCE = sys.argv.pop(1), sys.argv.pop(1)
+SANET, DRIVER, LIBRARY, SOURCE = sys.argv.pop(1), sys.argv.pop(1), os.path.abspath(sys.argv.pop(1)), sys.argv.pop(1)
 DOMAIN = 100 + os.getpid() % 100
 KEY = "5a" * 32
 FORMATION = os.path.join(SOURCE, "scenarios", "formation.yaml")
@@ -95,6 +101,197 @@ class FormationOverRos2(unittest.TestCase):
         delays = sorted(float(r[6]) for r in from_leader)
         self.assertLess(delays[len(delays) // 2], 0.05, "the same /clock on both sides: small delays")
 
+    def test_merge_takes_one_clock_as_it_is_and_counts_every_link(self):
+        folders = [os.path.join(self.tmp.name, r) for r in ("leader", "f1", "f2", "f3")]
+        team = os.path.join(self.tmp.name, "team")
+        done = merge(team, *folders)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        s = summary(team)
+        self.assertEqual(s["clocks"]["moved_by_s"], {"leader": 0, "f1": 0, "f2": 0, "f3": 0})
+        links = {(r["from"], r["to"]): r for r in csv_rows(os.path.join(team, "links.csv"))}
+        self.assertEqual(set(links), {("leader", "f1"), ("leader", "f2"), ("f1", "f3")})
+        for link in links.values():
+            self.assertGreater(int(link["sent"]), 300)
+            self.assertGreaterEqual(int(link["received"]), int(link["sent"]) - 5, link)
+        received = csv_rows(os.path.join(team, "messages.csv"))
+        self.assertEqual(len(received), s["messages"]["received"])
+        each = sum(len(csv_rows(os.path.join(f, "messages.csv"))) for f in folders)
+        self.assertEqual(len(received), each, "every agent's messages, none lost or doubled")
+        times = [float(r["time_received"]) for r in received]
+        self.assertEqual(times, sorted(times))
+
+
+def merge(out, *folders):
+    return subprocess.run([SANET, "merge", *folders, "-o", out], capture_output=True, text=True, timeout=60)
+
+
+def csv_rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+ONE_ROBOT = """name: one
+duration: 60
+world: {size: [20, 20]}
+nodes:
+  - name: r1
+    model: diffdrive
+    pose: [0, 0, 0]
+    controller: {name: constant_velocity, rate: 10, params: {vx: 0.2}}
+"""
+
+
+def driver(odom, cmd_vel, kind, seconds, *silent):
+    return subprocess.Popen([DRIVER, str(DOMAIN), odom, cmd_vel, kind, str(seconds), *map(str, silent)],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+
+
+def driven(said):
+    """The driver's commands as (time, vx) and its last values."""
+    commands = [(float(w[1]), float(w[2])) for w in (line.split() for line in said.splitlines()) if w[0] == "cmd_vel"]
+    last = dict(line.split() for line in said.splitlines() if line.split()[0] in ("x", "y", "yaw", "commands"))
+    return commands, {k: float(v) for k, v in last.items()}
+
+
+def written(tmp, name, text):
+    path = os.path.join(tmp, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def one_robot(tmp):
+    return written(tmp, "one.yaml", ONE_ROBOT)
+
+
+class Safety(unittest.TestCase):
+    def test_an_agent_whose_odometry_stops_stops_its_robot_and_says_why(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            robot = driver("/r1/odom", "/r1/cmd_vel", "twist", 12, 4, 7)  # the driver hangs from 4 s to 7 s
+            controller = agent(one_robot(tmp), "r1", os.path.join(tmp, "r1"), "--duration", "9")
+            said = controller.communicate(timeout=60)[0]
+            commands, _ = driven(robot.communicate(timeout=60)[0])
+            self.assertEqual(controller.returncode, 0, said)
+            self.assertIn("no odometry for 0.5 s: the robot is stopped", said)
+            stop = next(t for t, vx in commands if t > 4 and vx == 0)
+            self.assertLess(stop, 4 + 0.5 + 0.3, "stopped within odom_timeout (and a step) of the last odometry")
+            self.assertTrue(all(vx == 0 for t, vx in commands if stop <= t < 7), "no motion while odometry is missing")
+            self.assertTrue(any(vx == 0.2 for t, vx in commands if t < 4), "it drove before")
+            self.assertTrue(any(vx == 0.2 for t, vx in commands if 7 < t < 8), "and drives again once odometry is back")
+            self.assertEqual(commands[-1][1], 0, "and stops the robot at its end")
+            log = csv_rows(os.path.join(tmp, "r1", "log.csv"))
+            self.assertIn("no odometry for 0.5 s: the robot is stopped", [r["text"] for r in log])
+            self.assertIn("odometry is back: the controller drives again", [r["text"] for r in log])
+            s = summary(os.path.join(tmp, "r1"))
+            self.assertEqual(s["ros2"]["odometry_stops"], 1)
+            self.assertGreater(s["steps"]["missed"], 20, "no control step while odometry was missing (2.5 s at 10 Hz)")
+
+
+def one_robot_with(tmp, controller):
+    return written(tmp, "one.yaml", ONE_ROBOT.replace(
+        "{name: constant_velocity, rate: 10, params: {vx: 0.2}}", controller))
+
+
+class Failure(unittest.TestCase):
+    def test_a_controller_that_fails_stops_its_robot_and_says_why(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = one_robot_with(tmp, f"{{name: crash_after, library: {LIBRARY}, params: {{after: 2, how: throw}}}}")
+            robot = driver("/r1/odom", "/r1/cmd_vel", "twist", 6)
+            controller = agent(scenario, "r1", os.path.join(tmp, "r1"))
+            said = controller.communicate(timeout=60)[0]
+            commands, _ = driven(robot.communicate(timeout=60)[0])
+            self.assertEqual(controller.returncode, 1, said)
+            self.assertIn("controller failed", said)
+            self.assertIn("crash_after: thrown at 2", said)
+            self.assertTrue(any(vx == 0.2 for _, vx in commands), "it drove until it failed")
+            self.assertEqual(commands[-1][1], 0, "then the robot was stopped")
+            self.assertIn("controller failed", summary(os.path.join(tmp, "r1"))["ended_by"])
+
+
+class NetworkView(unittest.TestCase):
+    def test_on_a_ros2_robot_network_is_the_kernels(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = one_robot_with(tmp, f"{{name: network_probe, library: {LIBRARY}, params: {{towards: r1}}}}")
+            robot = driver("/r1/odom", "/r1/cmd_vel", "twist", 5)
+            controller = agent(scenario, "r1", os.path.join(tmp, "r1"), "--duration", "2")
+            said = controller.communicate(timeout=60)[0]
+            robot.communicate(timeout=60)
+            self.assertEqual(controller.returncode, 0, said)
+            views = {r["text"].strip() for r in csv_rows(os.path.join(tmp, "r1", "log.csv"))}
+            self.assertEqual(views, {"net kernel routes neighbours"}, "docs/controllers.md: loopback, empty tables")
+
+
+TB4 = """# a robot whose driver names its topics otherwise
+namespace: tb4_1
+odom: {topic: wheel/odom, qos: reliable}
+ground_truth: none
+"""
+
+
+class Remapping(unittest.TestCase):
+    def test_a_robot_under_other_names_with_twist_stamped(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            robot_file = written(tmp, "tb4_1.yaml", TB4)
+            robot = driver("/tb4_1/wheel/odom", "/tb4_1/base/cmd_vel_in", "stamped", 10)
+            controller = agent(one_robot(tmp), "r1", os.path.join(tmp, "r1"), "--duration", "7", "--ros2-robot",
+                               robot_file, "--ros2-remap", "cmd_vel=base/cmd_vel_in", "--ros2-cmd-vel-stamped")
+            said = controller.communicate(timeout=60)[0]
+            commands, last = driven(robot.communicate(timeout=60)[0])
+            self.assertEqual(controller.returncode, 0, said)
+            self.assertGreater(len(commands), 50, said)
+            self.assertGreater(last["x"], 0.2 * 5, "the robot drove at 0.2 m/s for most of 7 s")
+            s = summary(os.path.join(tmp, "r1"))
+            self.assertGreater(s["ros2"]["odometry"], 100)
+            self.assertEqual(s["ros2"]["ground_truth"], 0)
+
+
+PAIR = """name: pair
+duration: 60
+loop: {udp_port: 47610}
+nodes:
+  - name: r1
+    model: diffdrive
+    pose: [0, 0, 0]
+    controller: {name: pinger, rate: 10, params: {to: r2, interval: 0.1, start: 0.5}}
+  - name: r2
+    model: diffdrive
+    pose: [3, 0, 0]
+    controller: {name: echo, rate: 10}
+"""
+
+
+class ComputersClocks(unittest.TestCase):
+    """Two agents on their computers' clocks, the second started 1.5 s after the first."""
+
+    def test_merge_moves_each_agent_from_its_time_zero(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = written(tmp, "pair.yaml", PAIR)
+            robots = [driver(f"/{r}/odom", f"/{r}/cmd_vel", "twist", 12) for r in ("r1", "r2")]
+            first = agent(scenario, "r1", os.path.join(tmp, "r1"), "--duration", "8")
+            time.sleep(1.5)
+            second = agent(scenario, "r2", os.path.join(tmp, "r2"), "--duration", "6.5")
+            for process in (first, second, *robots):
+                process.communicate(timeout=60)
+            raw = [float(r["delay"]) for r in csv_rows(os.path.join(tmp, "r2", "messages.csv"))]
+            self.assertGreater(len(raw), 40)
+            self.assertLess(max(raw), -1.0, "on its own clock, r2 hears r1's pings before they were sent")
+            done = merge(os.path.join(tmp, "team"), os.path.join(tmp, "r1"), os.path.join(tmp, "r2"))
+            self.assertEqual(done.returncode, 0, done.stderr)
+            s = summary(os.path.join(tmp, "team"))
+            self.assertAlmostEqual(s["clocks"]["moved_by_s"]["r2"], 1.5, delta=0.4)
+            self.assertEqual(s["clocks"]["moved_by_s"]["r1"], 0)
+            delays = [float(r["delay"]) for r in csv_rows(os.path.join(tmp, "team", "messages.csv"))]
+            self.assertEqual(len(delays), len(raw) + len(csv_rows(os.path.join(tmp, "r1", "messages.csv"))))
+            self.assertGreater(min(delays), -0.005, "on one time line no message arrives before it is sent")
+            self.assertLess(sorted(delays)[len(delays) // 2], 0.02)
+            both_ways = [p for p in s["clocks"]["from_messages"] if "to_clock_ahead_by_s" in p]
+            self.assertEqual(len(both_ways), 2)
+            for p in both_ways:
+                self.assertLess(abs(p["to_clock_ahead_by_s"]), 0.01, "one computer: the clocks agree")
+            self.assertIn("r2's clock is ahead of r1's", done.stdout)
+            again = merge(os.path.join(tmp, "team"), os.path.join(tmp, "r1"), os.path.join(tmp, "r2"))
+            self.assertEqual(again.returncode, 0, "a team folder is written again in place: " + again.stderr)
+
 
 class Refusals(unittest.TestCase):
     def test_mistakes_are_refused_naming_the_option(self):
@@ -109,6 +306,32 @@ class Refusals(unittest.TestCase):
                                  timeout=30)
             self.assertNotEqual(out.returncode, 0)
             self.assertIn("--scenario", out.stderr)
+
+    def test_folders_of_no_team_are_refused_naming_them(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            empty = os.path.join(tmp, "empty")
+            os.mkdir(empty)
+            out = merge(os.path.join(tmp, "team"), empty)
+            self.assertEqual(out.returncode, 2)
+            self.assertIn(empty + "/summary.json: cannot read it", out.stderr)
+            run = subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "around-the-wall.yaml"), "-q",
+                                  "-o", os.path.join(tmp, "run"), "--duration", "1"], capture_output=True, timeout=60)
+            self.assertEqual(run.returncode, 0)
+            out = merge(os.path.join(tmp, "team"), os.path.join(tmp, "run"))
+            self.assertIn("not an agent's summary", out.stderr)
+            twice = os.path.join(tmp, "twice")
+            os.mkdir(twice)
+            with open(os.path.join(twice, "summary.json"), "w") as f:
+                json.dump({"mode": "ros2", "robot": "r1", "scenario": "one", "clock": "/clock (use_sim_time)",
+                           "ended_by": "duration"}, f)
+            for name in ("log.csv", "transitions.csv", "metrics.csv", "messages.csv", "sent.csv"):
+                with open(os.path.join(twice, name), "w") as f:
+                    f.write("x\n")
+            out = merge(os.path.join(tmp, "team"), twice, twice)
+            self.assertIn("robot 'r1' again", out.stderr)
+            out = merge(os.path.join(tmp, "team"), twice)
+            self.assertIn(twice + "/sent.csv: header 'x', expected 'time_sent,from,to,delivery,bytes'", out.stderr)
+            self.assertFalse(os.path.exists(os.path.join(tmp, "team", "summary.json")), "nothing half-written")
 
 
 if __name__ == "__main__":

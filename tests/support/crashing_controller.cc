@@ -1,5 +1,5 @@
 // A controller library for tests: `crash_after` drives forward and then ends its process the way
-// a broken plugin would (`how`: segfault, abort or exit) after `after` seconds; `wander` drives
+// a broken plugin would (`how`: segfault, abort or exit; or throws, `how: throw`) after `after` seconds; `wander` drives
 // with the node's random numbers, logs, reports a metric and reads its sensors, so that a run
 // with and without isolation can be compared byte for byte; `nan_driver` gives its node commands
 // that are not numbers during its first second, between ones that are (the Node contract);
@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "sanet/plugin.h"
@@ -22,6 +23,7 @@ class CrashAfter : public sanet::Controller {
     if (node.Now() < after_) return;
     if (how_ == "abort") std::abort();
     if (how_ == "exit") std::exit(3);
+    if (how_ == "throw") throw std::runtime_error("crash_after: thrown at " + std::to_string(node.Now()) + " s");
     std::raise(SIGSEGV);
   }
 

@@ -1,6 +1,6 @@
-#include "study/csv_rows.h"
+#include "trace/csv_rows.h"
 
-namespace sanet::study {
+namespace sanet::trace {
 
 CsvRows::CsvRows(const std::string& path) : in_(path) { ok_ = in_ && Next(header_) && !header_.empty(); }
 
@@ -33,4 +33,4 @@ bool CsvRows::Next(std::vector<std::string>& row) {
   return true;
 }
 
-}  // namespace sanet::study
+}  // namespace sanet::trace

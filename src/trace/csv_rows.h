@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace sanet::study {
+namespace sanet::trace {
 
 class CsvRows {
  public:
@@ -20,4 +20,4 @@ class CsvRows {
   std::vector<std::string> header_;
 };
 
-}  // namespace sanet::study
+}  // namespace sanet::trace

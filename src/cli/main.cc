@@ -591,8 +591,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("sanet ") + SanetVersion() + " (" + SanetCommit() + ")");
   const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddReport(app), AddServe(app),
-                                         AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app),
-                                         AddMerge(app)};
+                                         AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app),   AddMerge(app)};
   if (UnknownCommand(argc, argv, app)) return kExitScenarioError;
   try {
     app.parse(argc, argv);

@@ -25,7 +25,7 @@ void PrintLinks(const nlohmann::ordered_json& summary) {
     if (p.contains("to_clock_ahead_by_s")) {
       if (p["from"] < p["to"])  // each pair once
         std::printf("  messages say %s's clock is ahead of %s's by %+.4f s\n", p["to"].get<std::string>().c_str(),
-                  p["from"].get<std::string>().c_str(), p["to_clock_ahead_by_s"].get<double>());
+                    p["from"].get<std::string>().c_str(), p["to_clock_ahead_by_s"].get<double>());
     } else if (p["smallest_delay_s"].get<double>() < 0)
       std::printf("  %s -> %s: a message arrived %.4f s before it was sent: the clocks disagree by at least that\n",
                   p["from"].get<std::string>().c_str(), p["to"].get<std::string>().c_str(),

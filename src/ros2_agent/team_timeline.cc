@@ -48,10 +48,15 @@ AgentFolder ReadAgentFolder(const std::string& dir) {
     throw TeamFolderError(where + ": not JSON: " + e.what());
   }
   if (!j.is_object() || j.value("mode", "") != "ros2")
-    throw TeamFolderError(where + ": not an agent's summary ('mode' is not \"ros2\"): sanet merge takes the folders "
-                                  "of sanet agent --ros2");
-  AgentFolder a{dir, Field(j, "robot", where), Field(j, "scenario", where), Field(j, "clock", where),
-                Field(j, "ended_by", where), std::nullopt};
+    throw TeamFolderError(where +
+                          ": not an agent's summary ('mode' is not \"ros2\"): sanet merge takes the folders "
+                          "of sanet agent --ros2");
+  AgentFolder a{dir,
+                Field(j, "robot", where),
+                Field(j, "scenario", where),
+                Field(j, "clock", where),
+                Field(j, "ended_by", where),
+                std::nullopt};
   if (j.contains("time_zero_unix_s") && j["time_zero_unix_s"].is_number())
     a.time_zero_unix = j["time_zero_unix_s"].get<double>();
   else if (a.clock == "this computer's")
@@ -191,8 +196,8 @@ void WriteLinks(trace::ResultsFolder& folder, const std::map<LinkKey, Link>& lin
   trace::CsvSink& sink = folder.Csv("links.csv", "from,to,delivery,sent,received,delay_min,delay_median,delay_max");
   for (const auto& [key, link] : links) {
     const auto& [from, to, way] = key;
-    std::string line = from + "," + to + "," + way + "," + std::to_string(link.sent) + "," +
-                       std::to_string(link.delays.size());
+    std::string line =
+        from + "," + to + "," + way + "," + std::to_string(link.sent) + "," + std::to_string(link.delays.size());
     const nlohmann::ordered_json q = Quartiles(link.delays);
     for (const char* k : {"min", "median", "max"}) line += "," + (link.delays.empty() ? "" : Fixed(q[k].get<double>()));
     sink.Row(line);

@@ -1,9 +1,8 @@
 // A controller library for tests: `crash_after` drives forward and then ends its process the way
-// a broken plugin would (`how`: segfault, abort or exit; or throws, `how: throw`) after `after` seconds; `wander` drives
-// with the node's random numbers, logs, reports a metric and reads its sensors, so that a run
-// with and without isolation can be compared byte for byte; `nan_driver` gives its node commands
-// that are not numbers during its first second, between ones that are (the Node contract);
-// `network_probe` logs its node's network view at every step.
+// a broken plugin would (`how`: segfault, abort or exit; or throws, `how: throw`) after `after` seconds; `wander`
+// drives with the node's random numbers, logs, reports a metric and reads its sensors, so that a run with and without
+// isolation can be compared byte for byte; `nan_driver` gives its node commands that are not numbers during its first
+// second, between ones that are (the Node contract); `network_probe` logs its node's network view at every step.
 #include <cmath>
 #include <csignal>
 #include <cstdlib>

@@ -127,6 +127,14 @@ class Params {
     return out;
   }
 
+  // A read of any kind, for controllers in other languages that convert values themselves
+  // (Python's): noted as the getters note theirs (`kind`, `fallback` as `sanet list` shows them);
+  // the value as written, or null when absent.
+  const ParamValue* Read(const std::string& key, std::string kind, std::string fallback) const {
+    Note(key, std::move(kind), std::move(fallback));
+    return Find(key);
+  }
+
   // Every read so far, in order, each key once.
   const std::vector<ParamRead>& Reads() const { return reads_; }
 

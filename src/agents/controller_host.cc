@@ -22,6 +22,7 @@ std::string UnknownController(const std::string& name, const Registry& registry)
 
 std::unique_ptr<Controller> MakeController(const ControllerSpec& spec, Registry& registry) {
   if (!spec.library.empty()) registry.LoadLibrary(spec.library);
+  if (!spec.python.empty()) registry.LoadPython(spec);
   const ControllerInfo* info = registry.Find(spec.name);
   if (!info) throw RegistryError(UnknownController(spec.name, registry));
   std::unique_ptr<Controller> controller;

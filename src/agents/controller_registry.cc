@@ -56,4 +56,15 @@ std::vector<std::string> Registry::LoadLibrary(const std::string& path) {
   return added;
 }
 
+void Registry::LoadPython(const ControllerSpec& spec) {
+  if (controllers_.count(spec.name)) return;
+  if (!python_.load)
+    throw RegistryError("Python controller '" + spec.python + "': this sanet was built without Python support");
+  Add(python_.load(spec));
+}
+
+void Registry::StartRun(std::uint64_t seed) const {
+  if (python_.start_run) python_.start_run(seed);
+}
+
 }  // namespace sanet::agents

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "sanet/params.h"
 
@@ -10,7 +11,11 @@ namespace sanet::agents {
 struct ControllerSpec {
   std::string name;     // registered name
   std::string library;  // shared library to load first ("" for built-in controllers)
-  double rate = 10;     // Hz, control steps per second
+  // A Python controller: "module:Class" (then `name` is the same text), the module found on
+  // `python_path` (the scenario's folder, then --python-path's).
+  std::string python;
+  std::vector<std::string> python_path;
+  double rate = 10;  // Hz, control steps per second
   Params params;
 };
 

@@ -117,6 +117,7 @@ Command AddAgent(CLI::App& app) {
   cmd->add_option("--scenario", a->file,
                   "This computer's copy of the scenario, which must be the server's (same fingerprint); without "
                   "it the agent fetches the server's");
+  AddPythonPath(cmd);
   cmd->add_option("--library", a->library,
                   "Where this computer keeps the robot's controller library (default: the scenario's path); it "
                   "must be the server's build (same SHA-256)");

@@ -26,6 +26,7 @@
 #include "launch/radio_taps.h"
 #include "merge_command.h"
 #include "options.h"
+#include "python/python_controller.h"
 #include "remote_agent/remote_node.h"
 #include "robot_server/sim_server.h"
 #include "robots/node_model.h"
@@ -371,6 +372,8 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
   settings.ros2_face = sc.ros2.has_value();
   settings.exec_robots = exec_robots;
   settings.exec_command = a.command;
+  settings.python_path = {std::filesystem::absolute(a.file).parent_path().string()};
+  for (const std::string& folder : PythonPathArgs()) settings.python_path.push_back(folder);
   return hil::Launch(sc.run, settings);
 }
 
@@ -392,6 +395,15 @@ int Validate(const std::string& file, const std::vector<std::string>& sets, bool
   return 0;
 }
 
+// `sanet list --python MODULE:CLASS`: the module in --python-path's folders or the current one.
+agents::ControllerSpec PythonSpec(const std::string& module_class) {
+  agents::ControllerSpec spec;
+  spec.name = spec.python = module_class;
+  spec.python_path = PythonPathArgs();
+  spec.python_path.push_back(std::filesystem::current_path().string());
+  return spec;
+}
+
 int List(agents::Registry& registry, bool markdown) {
   std::fputs((markdown ? scenario::ReferenceMarkdown() : scenario::Catalogue(registry)).c_str(), stdout);
   return 0;
@@ -404,6 +416,7 @@ Command AddRun(CLI::App& app) {
                                      "log.csv, messages.csv, transitions.csv, metrics.csv, summary.json)");
   AddScenario(cmd, a->file);
   AddSet(cmd, a->sets);
+  AddPythonPath(cmd);
   cmd->add_option("--seed", a->seed, "Override the scenario's seed (0 to 2^64 - 1)")->check(kSeedText);
   AddDuration(cmd, a->duration);
   AddThreads(cmd, a->threads);
@@ -428,6 +441,7 @@ Command AddValidate(CLI::App& app) {
                                      "models, controllers and their parameters");
   AddScenario(cmd, *file);
   AddSet(cmd, *sets);
+  AddPythonPath(cmd);
   cmd->add_flag("--print", *print,
                 "Print the effective scenario: every default filled in, grids as their nodes (it loads and runs "
                 "to the same fingerprint)");
@@ -441,6 +455,7 @@ Command AddServe(CLI::App& app) {
                                      "(USARSim-compatible; docs/protocol.md): clients drive its robots");
   AddScenario(cmd, a->file);
   AddSet(cmd, a->sets);
+  AddPythonPath(cmd);
   cmd->add_option("--bind", a->bind, "Address to listen on (loopback by default)")->capture_default_str();
   cmd->add_option("--port", a->port, "TCP port (0: any free port)")->check(CLI::Range(0, 65535))->capture_default_str();
   cmd->add_option(
@@ -480,6 +495,7 @@ Command AddLaunch(CLI::App& app) {
                                      "the scenario in real time, stop them all (also on Ctrl-C)");
   AddScenario(cmd, a->file);
   AddSet(cmd, a->sets);
+  AddPythonPath(cmd);
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   AddDuration(cmd, a->duration);
   cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
@@ -537,13 +553,19 @@ Command AddView(CLI::App& app) {
 Command AddList(CLI::App& app) {
   auto libraries = std::make_shared<std::vector<std::string>>();
   auto markdown = std::make_shared<bool>(false);
+  auto pythons = std::make_shared<std::vector<std::string>>();
   CLI::App* cmd = app.add_subcommand("list",
                                      "List the models (with their body keys), sensors (with their keys) and "
                                      "controllers (with their parameters) that sanet knows");
   cmd->add_option("--library", *libraries, "Also load this controller library (repeatable)");
+  cmd->add_option("--python", *pythons,
+                  "Also import this Python controller, MODULE:CLASS (repeatable; the module on --python-path or "
+                  "in the current folder)");
+  AddPythonPath(cmd);
   cmd->add_flag("--markdown", *markdown, "Print the scenario format's reference tables (as in docs/scenario.md)");
-  return {cmd, [libraries, markdown](agents::Registry& r) {
+  return {cmd, [libraries, pythons, markdown](agents::Registry& r) {
             for (const auto& lib : *libraries) r.LoadLibrary(lib);
+            for (const auto& python : *pythons) r.LoadPython(PythonSpec(python));
             return List(r, *markdown);
           }};
 }
@@ -601,6 +623,8 @@ int main(int argc, char** argv) {
   }
   agents::Registry registry;
   controllers::RegisterBuiltinControllers(registry);
+  python::InstallPython(registry);
+  scenario::SetPythonPath(PythonPathArgs());
   for (const Command& c : commands)
     if (*c.app) return Perform(c, registry);
   return kExitRunFailed;

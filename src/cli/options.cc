@@ -8,6 +8,22 @@ void AddForce(CLI::App* cmd, bool& force) {
                 "run's files are always replaced)");
 }
 
+namespace {
+std::vector<std::string>& PythonPathList() {
+  static std::vector<std::string> folders;
+  return folders;
+}
+}  // namespace
+
+void AddPythonPath(CLI::App* cmd) {
+  cmd->add_option("--python-path", PythonPathList(),
+                  "A folder where Python controllers' modules are looked for after the scenario's own (repeatable; "
+                  "docs/python.md)")
+      ->check(CLI::ExistingDirectory);
+}
+
+const std::vector<std::string>& PythonPathArgs() { return PythonPathList(); }
+
 const CLI::Validator kDurationRange(
     [](std::string& text) {
       const double d = std::strtod(text.c_str(), nullptr);

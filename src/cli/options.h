@@ -38,5 +38,9 @@ void AddDuration(CLI::App* cmd, std::optional<double>& duration);
 // Read as text so that every wrong value gets the same message ("two not in {1,2}").
 void AddThreads(CLI::App* cmd, std::optional<std::string>& threads);
 void AddForce(CLI::App* cmd, bool& force);
+// --python-path DIR (repeatable): where Python controllers' modules are looked for after the
+// scenario's folder; every command that loads a scenario takes it, into one process-wide list.
+void AddPythonPath(CLI::App* cmd);
+const std::vector<std::string>& PythonPathArgs();
 
 }  // namespace sanet::cli

@@ -205,6 +205,7 @@ Command AddSweep(CLI::App& app) {
       "Run a study: a scenario for every combination of varied values (--vary), each with every seed, several "
       "at a time, into one results database; run again, it does only what is missing (docs/studies.md)");
   AddScenario(cmd, a->file);
+  AddPythonPath(cmd);
   cmd->add_option("--vary", a->vary,
                   "PATH=V1,V2,...: a scenario value to vary, as --set takes it (repeatable; every combination runs)")
       ->allow_extra_args(false);

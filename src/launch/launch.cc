@@ -138,6 +138,7 @@ pid_t StartAgent(const std::string& self, const LaunchSettings& settings, const 
   std::vector<std::string> args = {"sanet",          "agent", "--server",   address,
                                    "--robot",        robot,   "--udp-base", std::to_string(settings.udp_base),
                                    "--shared-clock", "-q"};
+  for (const std::string& folder : settings.python_path) args.insert(args.end(), {"--python-path", folder});
   if (namespace_name.empty()) Exec(self, args);
   args.insert(args.end(), {"--udp-subnet", subnet});
   args[0] = self;  // ip runs the program itself: its path, not a name, comes first

@@ -27,6 +27,9 @@ struct LaunchSettings {
   // there are namespaces (ended when the run ends).
   std::vector<NodeId> exec_robots;
   std::vector<std::string> exec_command;
+  // Where the agents look for Python controllers' modules (they fetch the scenario from the
+  // server, so its folder is not theirs): the scenario's folder, then --python-path's.
+  std::vector<std::string> python_path;
 };
 
 // The robots a launch gives processes of their own, and namespaces where it makes them: those

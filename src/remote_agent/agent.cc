@@ -101,6 +101,7 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   hooks.delivered = [&](const Message& m) {
     if (node.IsAgent(m.from)) node.Report(RecvLine(m, node.NameOf(m.from)));
   };
+  registry.StartRun(spec.seed);
   agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
   std::uint64_t received = 0;

@@ -222,6 +222,7 @@ PluginIdentity ServerLink::FetchPlugin(const std::string& robot) {
   id.controller_api = static_cast<int>(reply.Count("ControllerApi", 1000000).value_or(0));
   if (const std::string* library = reply.Get("Library")) id.library = *library;
   if (const std::string* sha = reply.Get("Sha256")) id.sha256 = *sha;
+  if (const std::string* python = reply.Get("Python")) id.python = *python;
   return id;
 }
 

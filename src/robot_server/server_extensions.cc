@@ -84,6 +84,7 @@ void SimServer::SendPlugin(Client& c, const ProtocolMessage& m) {
   ProtocolMessage reply{"PLUGIN"};
   reply.Add("Robot", *robot).Add("ControllerApi", std::to_string(plugin.controller_api));
   if (!plugin.library.empty()) reply.Add("Library", plugin.library).Add("Sha256", plugin.sha256);
+  if (!plugin.python.empty()) reply.Add("Python", plugin.python);
   Send(c, reply);
 }
 

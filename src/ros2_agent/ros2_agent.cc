@@ -157,6 +157,7 @@ int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& s
   agents::ControllerHost::Hooks hooks;
   hooks.failed = [&](const std::string& why) { ending.by = "controller failed: " + why; };
   hooks.delivered = [&](const Message& m) { record.Received(m); };
+  registry.StartRun(spec.seed);
   agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
   hil::StepGrid grid(controller.rate);

@@ -41,7 +41,7 @@ std::string ParamLines(const ControllerInfo& info) {
   }
   std::string out;
   for (const ParamRead& r : none.Reads()) {
-    std::string what = r.kind + ", default " + r.fallback;
+    std::string what = r.kind == "required" ? r.kind : r.kind + ", default " + r.fallback;
     if (r.min > -HUGE_VAL && r.max < HUGE_VAL)
       what += ", in [" + ShortNumber(r.min) + ", " + ShortNumber(r.max) + "]";
     else if (r.min > -HUGE_VAL)

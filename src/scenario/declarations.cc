@@ -809,10 +809,15 @@ const Fields<sim::ControllerSpec>& ControllerFields() {
   static const Fields<ControllerSpec> fields = [] {
     Fields<ControllerSpec> f;
     f.Custom(
-        {"name", "text", "", "required", "a built-in controller, or one registered by `library`",
+        {"name", "text", "", "required unless `python`", "a built-in controller, or one registered by `library`",
          "the controller's registered name"},
         [](const Field& v, ControllerSpec& c) { c.name = v.Text(); },
-        [](const ControllerSpec& c) { return YAML::Node(c.name); });
+        [](const ControllerSpec& c) { return c.python.empty() ? YAML::Node(c.name) : YAML::Node(); });
+    f.Custom({"python", "text", "", "none",
+              "MODULE:CLASS; the module in the scenario file's folder, on `--python-path` or on PYTHONPATH",
+              "a controller written in Python instead ([python.md](python.md))"},
+             nullptr,  // the loader checks it with `name` and `library`
+             [](const ControllerSpec& c) { return c.python.empty() ? YAML::Node() : YAML::Node(c.python); });
     f.Custom({"library", "text (path)", "", "none",
               "must exist when the file is loaded; a relative path is taken from the scenario file's folder",
               "a controller library to load first"},

@@ -136,6 +136,29 @@ void ReadParams(const Field& controller, sim::ControllerSpec& c) {
   }
 }
 
+std::vector<std::string>& ExtraPythonPath() {
+  static std::vector<std::string> folders;
+  return folders;
+}
+
+// `python: MODULE:CLASS` instead of `name` (and of `library`): its module is looked for in the
+// scenario's folder, then in --python-path's.
+void ReadPythonController(const Field& c, const fs::path& dir, sim::ControllerSpec& spec) {
+  const auto python = c.Get("python");
+  if (!python) return void(c.Require("name"));
+  if (c.Get("name")) c.Get("name")->Fail("give `name` (a C++ controller) or `python`, not both");
+  if (c.Get("library")) c.Get("library")->Fail("a Python controller has no library: its module is its code");
+  const std::string text = python->Text();
+  const auto colon = text.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size() ||
+      text.find(':', colon + 1) != std::string::npos)
+    python->Fail("must be MODULE:CLASS (e.g. waypoint:Waypoint for class Waypoint in waypoint.py), not '" + text + "'");
+  spec.python = spec.name = text;
+  spec.python_path = {fs::absolute(dir.empty() ? fs::path(".") : dir).lexically_normal().string()};
+  if (spec.python_path[0].size() > 1 && spec.python_path[0].back() == '/') spec.python_path[0].pop_back();
+  for (const std::string& folder : ExtraPythonPath()) spec.python_path.push_back(folder);
+}
+
 net::NetworkSpec ReadNetwork(const Field& f) {
   net::NetworkSpec n;
   NetworkFields().Read(f, n);
@@ -165,9 +188,9 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_netw
   }
   if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
   if (auto c = f.Get("controller")) {
-    c->Require("name");
     sim::ControllerSpec spec;
     ControllerFields().Read(*c, spec);
+    ReadPythonController(*c, dir, spec);
     if (auto lib = c->Get("library")) {
       fs::path p = lib->Text();
       // Relative to the scenario's folder, and absolute so that dlopen does not search the
@@ -476,7 +499,8 @@ void CheckEachController(const Scenario& scenario, agents::Registry& registry) {
       const int at = e.line() ? e.line() : node.controller->params.Line(e.key());
       throw ScenarioError(scenario.file, at ? at : line, field + ".params." + e.key(), e.what());
     } catch (const agents::RegistryError& e) {
-      throw ScenarioError(scenario.file, line, field + ".name", e.what());
+      throw ScenarioError(scenario.file, line, field + (node.controller->python.empty() ? ".name" : ".python"),
+                          e.what());
     } catch (const std::exception& e) {
       throw ScenarioError(scenario.file, line, field, std::string("cannot be created: ") + e.what());
     }
@@ -502,6 +526,12 @@ Scenario Load(const std::string& path, const std::vector<std::string>& overrides
 }
 
 }  // namespace
+
+void SetPythonPath(const std::vector<std::string>& folders) {
+  ExtraPythonPath().clear();
+  for (const std::string& folder : folders)
+    ExtraPythonPath().push_back(fs::absolute(folder).lexically_normal().string());
+}
 
 Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {
   return Load(path, overrides, [&] { return ParseYamlFile(path); });

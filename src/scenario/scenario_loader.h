@@ -33,6 +33,9 @@ struct Scenario {
 // Reads and checks the file with `overrides` (--set) applied (structure, types, ranges, names).
 // Does not look at controllers. An error in a value set on the command line names the option.
 Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+// Folders where Python controllers' modules are looked for after the scenario's own folder, for
+// every scenario loaded from now on (--python-path: an agent whose scenario came from a server).
+void SetPythonPath(const std::vector<std::string>& folders);
 // The same from text (the effective scenario a server sends); `name` stands for the file in errors
 // and relative paths in it are taken from the working folder.
 Scenario LoadScenarioText(const std::string& text, const std::string& name);

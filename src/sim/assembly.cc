@@ -101,6 +101,7 @@ bool Assembly::remote(NodeId id) const {
 }
 
 void Assembly::BuildNodes(agents::Registry& registry) {
+  registry.StartRun(spec_.seed);  // before any controller is made (isolated ones fork from here)
   for (NodeId id = 0; id < run_nodes_.size(); ++id) {
     const NodeSpec& n = run_nodes_[id];
     if (!n.controller || remote(id)) {

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
@@ -16,7 +17,7 @@ namespace {
 
 std::string Sha256OfFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read the controller library " + path + ": " + std::strerror(errno));
+  if (!in) throw std::runtime_error("cannot read the controller's file " + path + ": " + std::strerror(errno));
   EVP_MD_CTX* context = EVP_MD_CTX_new();
   EVP_DigestInit_ex(context, EVP_sha256(), nullptr);
   std::vector<char> chunk(1 << 16);
@@ -30,21 +31,50 @@ std::string Sha256OfFile(const std::string& path) {
   return ToHex(digest);
 }
 
+// The file a Python module "a.b" is in: a/b.py or a/b/__init__.py under the first folder that
+// has one, as Python's import finds it; "" when none does.
+std::string ModuleFile(const sim::ControllerSpec& controller) {
+  std::string relative = controller.python.substr(0, controller.python.find(':'));
+  for (char& c : relative)
+    if (c == '.') c = '/';
+  for (const std::string& folder : controller.python_path)
+    for (const std::string& candidate : {folder + "/" + relative + ".py", folder + "/" + relative + "/__init__.py"})
+      if (std::filesystem::is_regular_file(candidate)) return std::filesystem::canonical(candidate).string();
+  return "";
+}
+
 }  // namespace
 
 PluginIdentity IdentifyPlugin(const sim::ControllerSpec& controller) {
   PluginIdentity id;
   id.controller_api = SANET_CONTROLLER_API_VERSION;
-  if (controller.library.empty()) return id;
-  id.library = controller.library;
-  id.sha256 = Sha256OfFile(controller.library);
+  id.python = controller.python;
+  id.library = controller.python.empty() ? controller.library : ModuleFile(controller);
+  if (!id.library.empty()) id.sha256 = Sha256OfFile(id.library);
   return id;
 }
+
+namespace {
+
+std::string PythonDifference(const PluginIdentity& server, const PluginIdentity& agent) {
+  if (agent.library.empty() && !server.library.empty())
+    return "the server's Python module " + server.library + " is not in this agent's --python-path";
+  if (server.sha256 != agent.sha256)
+    return "Python module: the server's " + server.library + " has SHA-256 " + server.sha256.substr(0, 16) +
+           "..., this computer's " + agent.library + " " + agent.sha256.substr(0, 16) +
+           "... (copy the server's file here, or point --python-path at it)";
+  return "";
+}
+
+}  // namespace
 
 std::string PluginDifference(const PluginIdentity& server, const PluginIdentity& agent) {
   if (server.controller_api != agent.controller_api)
     return "controller interface version: the server's " + std::to_string(server.controller_api) + ", this agent's " +
            std::to_string(agent.controller_api);
+  if (server.python != agent.python)
+    return "Python controller: the server's '" + server.python + "', this agent's '" + agent.python + "'";
+  if (!server.python.empty()) return PythonDifference(server, agent);
   if (server.library.empty() != agent.library.empty())
     return server.library.empty() ? "the server runs a built-in controller, this agent the library " + agent.library
                                   : "the server runs the library " + server.library + ", this agent a built-in one";

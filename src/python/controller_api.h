@@ -1,0 +1,31 @@
+// The controller interface (include/sanet/) as Python sees it, in the module `sanet`: the node a
+// controller drives (the C++ Node's calls in snake_case: now, id, name, lookup, name_of,
+// node_count, ir, laser, odometry, ground_truth, bearing, drive, set_wheel_speeds, holonomic,
+// send, broadcast, flood, network, random, log, transition, metric), its readings (Pose,
+// RangeScan with numpy arrays, Bearing), its network view (NetworkView, Route), messages
+// (Message), the parameters a controller is built with (Params: a read-only mapping that notes
+// what the controller reads) and ParamError. docs/python.md documents each.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include "sanet/message.h"
+#include "sanet/params.h"
+
+namespace sanet::python {
+
+// Adds the classes above to `module` (the embedded `sanet` module; the extension module too).
+void BindControllerApi(pybind11::module_& module);
+
+// A message as Python receives it.
+pybind11::object ToPython(const Message& message);
+
+// The parameters as Python's Params, which refers to `params` until Close (then reading them
+// raises an error naming the rule: parameters are read while the controller is built).
+pybind11::object ToPython(const Params& params);
+void Close(const pybind11::object& params);
+
+// The Python class ParamError (key, line, message) that controllers raise for bad parameters.
+pybind11::object ParamErrorType();
+
+}  // namespace sanet::python

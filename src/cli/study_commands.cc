@@ -71,6 +71,8 @@ study::SweepSettings Settings(const SweepArgs& a, const scenario::Scenario& base
   s.threads = a.threads;
   s.folder = a.output.empty() ? base.output_folder + "-sweep" : a.output;
   s.tables = ParseTables(a.tables);
+  for (const std::string& folder : PythonPathArgs())
+    s.python_path.push_back(std::filesystem::absolute(folder).string());
   s.retry_failed = a.retry_failed;
   for (const std::string& arg : CommandLine()) s.command += (s.command.empty() ? "" : " ") + arg;
   return s;

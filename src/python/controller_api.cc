@@ -36,8 +36,11 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
                        py::array_t<double>(scan->ranges.size(), scan->ranges.data()), scan->max_range});
 }
 
+// bytes, bytearray, memoryview and the like (a TypeError for text, which has no one encoding).
 Bytes ToBytes(const py::object& payload) {
-  const std::string text = py::bytes(payload);  // bytes, bytearray, memoryview alike
+  const auto bytes = py::reinterpret_steal<py::bytes>(PyBytes_FromObject(payload.ptr()));
+  if (!bytes) throw py::error_already_set();
+  const std::string text = bytes;
   return Bytes(text.begin(), text.end());
 }
 

@@ -2,7 +2,9 @@
 
 #include <pybind11/embed.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "python/controller_api.h"
 #include "python/python_runtime.h"
@@ -94,10 +96,13 @@ py::module_ Import(const ModuleClass& name, const agents::ControllerSpec& spec) 
 py::object ClassOf(const py::module_& module, const ModuleClass& name) {
   const std::string file = py::hasattr(module, "__file__") ? py::str(module.attr("__file__")).cast<std::string>() : "";
   if (!py::hasattr(module, name.cls.c_str())) {
-    std::string classes;
+    std::vector<std::string> names;
     for (const auto& [key, value] : module.attr("__dict__").cast<py::dict>())
       if (py::isinstance<py::type>(value) && py::hasattr(value, "control_step"))
-        classes += (classes.empty() ? "" : ", ") + key.cast<std::string>();
+        names.push_back(key.cast<std::string>());
+    std::sort(names.begin(), names.end());
+    std::string classes;
+    for (const std::string& n : names) classes += (classes.empty() ? "" : ", ") + n;
     throw agents::RegistryError("Python module '" + name.module + "' (" + file + ") has no class '" + name.cls +
                                 "' (controller classes there: " + (classes.empty() ? "none" : classes) + ")");
   }

@@ -90,6 +90,7 @@ RunJob JobFor(const SweepSettings& s, const PreparedRun& run) {
   job.args.insert(job.args.end(), {"--seed", std::to_string(run.point.seed)});
   if (s.duration) job.args.insert(job.args.end(), {"--duration", scenario::ShortNumber(*s.duration)});
   if (s.threads) job.args.insert(job.args.end(), {"--threads", *s.threads});
+  for (const std::string& folder : s.python_path) job.args.insert(job.args.end(), {"--python-path", folder});
   job.args.insert(job.args.end(), {"-o", job.folder, "-q", "--no-progress"});
   return job;
 }

@@ -24,8 +24,9 @@ struct SweepSettings {
   std::vector<std::uint64_t> seeds;
   std::optional<double> duration;
   std::optional<std::string> threads;
-  std::string folder;               // the study's
-  std::vector<std::string> tables;  // per-event tables to gather: messages, packets, routes, transitions
+  std::string folder;                    // the study's
+  std::vector<std::string> tables;       // per-event tables to gather: messages, packets, routes, transitions
+  std::vector<std::string> python_path;  // --python-path, given to every run
   bool retry_failed = false;
   std::string command;  // as typed, for the database
 };

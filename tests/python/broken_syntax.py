@@ -1,0 +1,3 @@
+class Broken:
+    def control_step(self, node)
+        pass

@@ -4,7 +4,7 @@ sanet's built-in `waypoint` controller (controllers/waypoint.cc with its pilot,
 controllers/navigation.cc) written again in Python, step for step, as an example of a Python
 controller: `controller: {python: "waypoint:Waypoint", params: {...}}` with this file beside the
 scenario (or on --python-path). Same parameters, same defaults, the same trajectory
-(tests/python/waypoint_test.py compares them).
+(tests/python/python_controllers_test.py compares them).
 """
 import math
 

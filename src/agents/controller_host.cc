@@ -14,6 +14,7 @@ std::string UnknownController(const std::string& name, const Registry& registry)
   if (const auto close = ClosestNames(name, known); !close.empty()) text += "; did you mean " + OrList(close) + "?";
   std::string list;
   for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+  if (name.find(':') != std::string::npos) text += "; a Python controller is `python: " + name + "`, not `name:`";
   return text + " (known here: " + (list.empty() ? "none" : list) +
          "; a controller of your own comes from its library, named in `library:`; `sanet list` shows them all)";
 }

@@ -46,10 +46,19 @@ class SimulatedNode : public Node {
   std::string NameOf(NodeId id) const override { return directory_.NameOf(id); }
   std::size_t NodeCount() const override { return directory_.NodeCount(); }
 
-  std::optional<RangeScan> Ir() override { return model_.Ir(); }
-  std::optional<RangeScan> Laser() override { return model_.Laser(); }
-  std::optional<Pose2D> Odometry() override { return model_.Odometry(); }
-  std::optional<Pose2D> GroundTruth() override { return model_.GroundTruth(); }
+  // Each read is also kept (LastReads), for a script that looks at the run between steps.
+  std::optional<RangeScan> Ir() override { return Kept(last_.ir, model_.Ir()); }
+  std::optional<RangeScan> Laser() override { return Kept(last_.laser, model_.Laser()); }
+  std::optional<Pose2D> Odometry() override { return Kept(last_.odometry, model_.Odometry()); }
+  std::optional<Pose2D> GroundTruth() override { return Kept(last_.ground_truth, model_.GroundTruth()); }
+
+  // What the node's controller read last, and when (-1: never); reading this draws no noise.
+  struct LastReads {
+    double time = -1;
+    std::optional<RangeScan> ir, laser;
+    std::optional<Pose2D> odometry, ground_truth;
+  };
+  const LastReads& last_reads() const { return last_; }
   std::optional<BearingReading> Bearing(NodeId target) override;
 
   bool Holonomic() const override { return model_.holonomic(); }
@@ -84,6 +93,15 @@ class SimulatedNode : public Node {
   bool ApplyWheelSpeeds(const std::vector<double>& w) override;
 
  private:
+  template <typename T>
+  std::optional<T> Kept(std::optional<T>& slot, std::optional<T> value) {
+    last_.time = Now();
+    slot = value;
+    return value;
+  }
+  std::optional<Pose2D> Kept(std::optional<Pose2D>& slot, Pose2D value) { return Kept(slot, std::optional(value)); }
+  LastReads last_;
+
   NodeId id_;
   std::string name_;
   robots::NodeModel& model_;

@@ -14,7 +14,7 @@ namespace sanet::cli {
 namespace {
 
 struct AgentArgs {
-  std::string file, robot, server = "127.0.0.1:3000", subnet, peer_address, peer_interface, library;
+  std::string file, robot, server, subnet, peer_address, peer_interface, library;
   std::optional<int> udp_base;
   bool shared_clock = false, quiet = false;
   Ros2AgentArgs ros2;
@@ -78,6 +78,10 @@ hil::PeerSettings PeerSettingsOf(const AgentArgs& a, const scenario::Scenario& s
 int Ros2Agent(const AgentArgs& a, agents::Registry& registry) {
   if (a.file.empty())
     throw CLI::ValidationError("--scenario", "--ros2 runs without a server: give the team's scenario file");
+  if (!a.server.empty())
+    throw CLI::ValidationError("--server",
+                               "--ros2 runs without a server: the robot's topics are its sensors and "
+                               "motors; drop --server (or --ros2)");
   scenario::Scenario sc = scenario::LoadScenario(a.file);
   const NodeId id = RobotOf(sc, a.robot);
   sim::ControllerSpec& controller = *sc.run.nodes[id].controller;
@@ -87,7 +91,7 @@ int Ros2Agent(const AgentArgs& a, agents::Registry& registry) {
 
 int Agent(const AgentArgs& a, agents::Registry& registry) {
   if (a.ros2.on) return Ros2Agent(a, registry);
-  std::unique_ptr<hil::ServerLink> link = Connect(a.server);
+  std::unique_ptr<hil::ServerLink> link = Connect(a.server.empty() ? "127.0.0.1:3000" : a.server);
   scenario::Scenario sc = ScenarioOf(a, *link);
   const NodeId id = RobotOf(sc, a.robot);
   sim::ControllerSpec& controller = *sc.run.nodes[id].controller;
@@ -111,8 +115,8 @@ Command AddAgent(CLI::App& app) {
                                      "Run one robot's controller as its own process, on this computer or another: "
                                      "sensors and motors through a `sanet serve` server, messages over real UDP "
                                      "(docs/remote-robots.md)");
-  cmd->add_option("--server", a->server, "The server, HOST:PORT (a host name or an IPv4 address)")
-      ->capture_default_str();
+  cmd->add_option("--server", a->server,
+                  "The server, HOST:PORT (a host name or an IPv4 address; default 127.0.0.1:3000)");
   cmd->add_option("--robot", a->robot, "The robot to drive (its name in the scenario)")->required();
   cmd->add_option("--scenario", a->file,
                   "This computer's copy of the scenario, which must be the server's (same fingerprint); without "

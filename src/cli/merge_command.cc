@@ -27,9 +27,10 @@ void PrintLinks(const nlohmann::ordered_json& summary) {
         std::printf("  messages say %s's clock is ahead of %s's by %+.4f s\n", p["to"].get<std::string>().c_str(),
                     p["from"].get<std::string>().c_str(), p["to_clock_ahead_by_s"].get<double>());
     } else if (p["smallest_delay_s"].get<double>() < 0)
-      std::printf("  %s -> %s: a message arrived %.4f s before it was sent: the clocks disagree by at least that\n",
-                  p["from"].get<std::string>().c_str(), p["to"].get<std::string>().c_str(),
-                  -p["smallest_delay_s"].get<double>());
+      std::printf(
+          "  %s -> %s: a message arrived %.4f s before it was sent: %s\n", p["from"].get<std::string>().c_str(),
+          p["to"].get<std::string>().c_str(), -p["smallest_delay_s"].get<double>(),
+          p.contains("note") ? "the agents read neighbouring /clock samples" : "the clocks disagree by at least that");
 }
 
 int Merge(const MergeArgs& a) {
@@ -42,6 +43,8 @@ int Merge(const MergeArgs& a) {
     throw CLI::ValidationError("-o", e.what());
   }
   if (a.quiet) return 0;
+  if (a.folders.size() == 1)
+    std::fprintf(stderr, "sanet merge: warning: one folder only: a team's time line needs each robot's folder\n");
   std::printf("sanet merge: %zu agents of %s, %zu messages received; the team's time line in %s/\n",
               summary["agents"].size(), summary["scenario"].get<std::string>().c_str(),
               summary["messages"]["received"].get<std::size_t>(), a.output.c_str());

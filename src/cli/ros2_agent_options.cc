@@ -1,12 +1,16 @@
 #include "ros2_agent_options.h"
 
+#include <cerrno>
+#include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "interruption.h"
 #include "ros2_agent/ros2_agent.h"
 #include "ros2_options.h"
+#include "scenario/effective_scenario.h"
 #include "scenario/yaml_reader.h"
 
 namespace sanet::cli {
@@ -19,7 +23,7 @@ hil::DatagramKey TeamKey(const Ros2AgentArgs& args) {
   std::string hex;
   if (!args.key_file.empty()) {
     std::ifstream in(args.key_file);
-    if (!in) throw CLI::ValidationError("--key-file", "cannot read " + args.key_file);
+    if (!in) throw CLI::ValidationError("--key-file", "cannot read " + args.key_file + ": " + std::strerror(errno));
     in >> hex;
     if (const auto key = hil::DatagramKey::FromHex(hex)) return *key;
     throw CLI::ValidationError("--key-file", args.key_file + " holds no key" + kKeyHow);
@@ -47,6 +51,22 @@ ros2agent::RobotTopics TopicsOf(const sim::NodeSpec& node, const Ros2AgentArgs& 
   return topics;
 }
 
+// --start-at: a Unix time in seconds, within a day of now (milliseconds, or a day's mistake, are
+// refused); not with /clock, whose time 0 is the simulator's.
+void CheckStartAt(const Ros2AgentArgs& args, const ros2agent::RobotTopics& topics) {
+  if (!args.start_at) return;
+  if (topics.use_sim_time)
+    throw CLI::ValidationError("--start-at",
+                               "with --use-sim-time (or use_sim_time in the robot's file) time 0 is "
+                               "/clock's: the team's start is the simulator's, drop --start-at");
+  const double now = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  if (*args.start_at > now + 86400 || *args.start_at < now - 86400)
+    throw CLI::ValidationError("--start-at",
+                               std::to_string(*args.start_at) + " is " +
+                                   std::to_string(static_cast<long long>(*args.start_at - now)) +
+                                   " s from now: give Unix time in seconds, e.g. $(( $(date +%s) + 20 ))");
+}
+
 }  // namespace
 
 void AddRos2AgentOptions(CLI::App* cmd, Ros2AgentArgs& args) {
@@ -66,7 +86,7 @@ void AddRos2AgentOptions(CLI::App* cmd, Ros2AgentArgs& args) {
                   "cmd_vel, clock, use_sim_time, odom_timeout); the defaults are the ROS 2 face's")
       ->check(CLI::ExistingFile)
       ->group(group);
-  cmd->add_option("--ros2-remap", args.remaps, "KEY=TOPIC: odom, scan, ground_truth (or none), cmd_vel, clock, ir/I")
+  cmd->add_option("--ros2-remap", args.remaps, "KEY=TOPIC: odom, scan, ground_truth (or none), cmd_vel, clock, ir_I")
       ->group(group);
   cmd->add_flag("--use-sim-time", args.use_sim_time, "Now() from /clock (a simulator's), not from this computer")
       ->group(group);
@@ -94,6 +114,8 @@ int StartRos2Agent(const scenario::Scenario& sc, NodeId id, const Ros2AgentArgs&
   settings.robot.domain = static_cast<std::uint32_t>(Ros2Domain(args.domain, sc.ros2 ? sc.ros2->domain : -1));
   settings.robot.interface = args.interface;
   settings.robot.topics = TopicsOf(sc.run.nodes[id], args);
+  CheckStartAt(args, settings.robot.topics);
+  settings.scenario_fingerprint = scenario::ScenarioFingerprint(sc);
   settings.robot.model = sc.run.nodes[id].model;
   settings.robot.start = sc.run.nodes[id].pose;
   settings.peer = std::move(peer);

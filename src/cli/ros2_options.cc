@@ -19,7 +19,7 @@ int Ros2Domain(std::optional<int> given, int section) {
 
 void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
   cmd->add_flag("--ros2", args.on,
-                "Make every robot no client drives a ROS 2 robot over DDS: /ROBOT/odom, scan, ir/I, ground_truth, "
+                "Make every robot no client drives a ROS 2 robot over DDS: /ROBOT/odom, scan, ir_I, ground_truth, "
                 "cmd_vel, and /tf, /tf_static, /clock (docs/ros2.md); on without it when the scenario has a ros2 "
                 "section");
   cmd->add_flag("--no-ros2", args.off, "No ROS 2 face, even if the scenario has a ros2 section");

@@ -112,6 +112,9 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
     for (const std::string& set : settings.sets) args.insert(args.end(), {"--set", set});
     if (settings.force) args.push_back("--force");
     for (const std::string& tap : taps) args.insert(args.end(), {"--tap", tap});
+    // The scenario's folder is the server's own: the rest of the agents' Python path.
+    for (std::size_t i = 1; i < settings.python_path.size(); ++i)
+      args.insert(args.end(), {"--python-path", settings.python_path[i]});
     // The face's DDS on the bridge, where the robots' namespaces reach it; not on the host's
     // other interfaces, and never on the robots' radio. CYCLONEDDS_URI is for the programs in the
     // namespaces (sim0, radio0), which the server's namespace does not have.

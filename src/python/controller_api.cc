@@ -38,6 +38,8 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
 
 // bytes, bytearray, memoryview and the like (a TypeError for text, which has no one encoding).
 Bytes ToBytes(const py::object& payload) {
+  if (py::isinstance<py::str>(payload))
+    throw py::type_error("a payload is bytes, not text: encode it (\"...\".encode()) or build it with struct.pack");
   const auto bytes = py::reinterpret_steal<py::bytes>(PyBytes_FromObject(payload.ptr()));
   if (!bytes) throw py::error_already_set();
   const std::string text = bytes;
@@ -119,7 +121,11 @@ py::object Converted(const std::string& key, const ParamValue& v, const py::obje
     const auto d = AsNumber(Scalar(key, v));
     if (!d) Refuse(key, v, "must be a number, not '" + Scalar(key, v) + "'");
     if (py::isinstance<py::float_>(fallback)) return py::float_(*d);
-    if (*d != std::floor(*d)) Refuse(key, v, "must be a whole number");
+    if (*d != std::floor(*d))
+      Refuse(key, v,
+             "must be a whole number, as its default (" + py::str(fallback).cast<std::string>() +
+                 ") is: a controller that takes any number writes its default as " +
+                 py::str(fallback).cast<std::string>() + ".0");
     return py::int_(static_cast<long long>(*d));
   }
   if (py::isinstance<py::str>(fallback)) return py::str(Scalar(key, v));
@@ -198,13 +204,20 @@ void BindReadings(py::module_& m) {
       .def_readonly("max_range", &Scan::max_range);
   py::class_<BearingReading>(m, "Bearing", "Where another node lies: distance (m), bearing (rad, robot frame)")
       .def_readonly("distance", &BearingReading::distance)
-      .def_readonly("bearing", &BearingReading::bearing);
+      .def_readonly("bearing", &BearingReading::bearing)
+      .def("__repr__", [](const BearingReading& b) {
+        return py::str("Bearing(distance={}, bearing={})").format(b.distance, b.bearing);
+      });
   py::class_<RouteEntry>(m, "Route", "A routing table entry")
       .def_readonly("destination", &RouteEntry::destination)
       .def_readonly("next_hop", &RouteEntry::next_hop)
       .def_readonly("hops", &RouteEntry::hops)
       .def_readonly("valid", &RouteEntry::valid)
-      .def_readonly("expires_in", &RouteEntry::expires_in);
+      .def_readonly("expires_in", &RouteEntry::expires_in)
+      .def("__repr__", [](const RouteEntry& r) {
+        return py::str("Route(destination={}, next_hop={}, hops={}, valid={}, expires_in={})")
+            .format(r.destination, r.next_hop, r.hops, r.valid, r.expires_in);
+      });
   py::class_<PyMessage>(m, "Message", "A message that reached this node")
       .def_readonly("sender", &PyMessage::sender)
       .def_readonly("to", &PyMessage::to)

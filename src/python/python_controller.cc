@@ -1,6 +1,6 @@
 #include "python/python_controller.h"
 
-#include <pybind11/embed.h>
+#include <pybind11/pybind11.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,8 +10,6 @@
 #include "python/python_runtime.h"
 
 namespace py = pybind11;
-
-PYBIND11_EMBEDDED_MODULE(sanet, module) { sanet::python::BindControllerApi(module); }
 
 namespace sanet::python {
 namespace {
@@ -88,13 +86,22 @@ py::module_ Import(const ModuleClass& name, const agents::ControllerSpec& spec) 
   } catch (py::error_already_set& e) {
     if (e.matches(PyExc_ModuleNotFoundError) && e.value().attr("name").cast<std::string>() == name.module)
       throw agents::RegistryError("no Python module '" + name.module + "' in " + Folders(spec.python_path) +
-                                  " (the scenario's folder and --python-path) or on PYTHONPATH");
+                                  " (the scenario's folder, or the current one, and --python-path's) or on PYTHONPATH" +
+                                  (name.module.size() > 3 && name.module.substr(name.module.size() - 3) == ".py"
+                                       ? ": a module is named without .py (" +
+                                             name.module.substr(0, name.module.size() - 3) + ":" + name.cls + ")"
+                                       : ""));
     throw agents::RegistryError("Python module '" + name.module + "' does not import:\n" + TracebackText(e));
   }
 }
 
-py::object ClassOf(const py::module_& module, const ModuleClass& name) {
+py::object ClassOf(const py::module_& module, const ModuleClass& name, const std::vector<std::string>& path) {
   const std::string file = py::hasattr(module, "__file__") ? py::str(module.attr("__file__")).cast<std::string>() : "";
+  const bool own = file.empty() || file.find("/python3") != std::string::npos;
+  if (!py::hasattr(module, name.cls.c_str()) && own && !OnSearchPath(file, path))
+    throw agents::RegistryError("'" + name.module + "' is a module of Python's own (" +
+                                (file.empty() ? std::string("built in") : file) +
+                                "), which a file of yours cannot replace: name your module otherwise");
   if (!py::hasattr(module, name.cls.c_str())) {
     std::vector<std::string> names;
     for (const auto& [key, value] : module.attr("__dict__").cast<py::dict>())
@@ -144,7 +151,7 @@ ControllerInfo LoadPythonController(const agents::ControllerSpec& spec) {
   EnsureInterpreter();
   py::module_::import("sanet");  // the classes controllers are given (Node, Params, ...)
   AddSearchPath(spec.python_path);
-  const py::object cls = ClassOf(Import(name, spec), name);
+  const py::object cls = ClassOf(Import(name, spec), name, spec.python_path);
   return {spec.python, Description(cls, spec.python),
           [cls, id = spec.python](const Params& params) { return Create(cls, id, params); }};
 }

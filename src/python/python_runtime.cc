@@ -34,17 +34,32 @@ void Start() {
 void EnsureInterpreter() {
   if (Py_IsInitialized()) return;
   Start();
+  py::module_::import("random");  // before any controller's folder is on the path
+  py::module_::import("numpy.random");
   if (g_pending_seed) Seed(*g_pending_seed);
   g_pending_seed.reset();
 }
 
+// Folders go after Python's standard library and before the installed packages: a controller's
+// module may not replace a module of Python's own (a random.py beside the scenario would break
+// every run's seeding), and is found before a package of the same name.
 void AddSearchPath(const std::vector<std::string>& folders) {
   EnsureInterpreter();
   py::list path = py::module_::import("sys").attr("path");
-  for (auto it = folders.rbegin(); it != folders.rend(); ++it) {
-    const py::str folder(*it);
-    if (!path.contains(folder)) path.insert(0, folder);
+  std::size_t at = 0;
+  while (at < path.size()) {
+    const std::string entry = py::str(path[at]);
+    if (entry.find("-packages") != std::string::npos) break;
+    ++at;
   }
+  for (const std::string& folder : folders)
+    if (!path.contains(py::str(folder))) path.insert(at++, py::str(folder));
+}
+
+bool OnSearchPath(const std::string& file, const std::vector<std::string>& folders) {
+  for (const std::string& folder : folders)
+    if (file.rfind(folder + "/", 0) == 0) return true;
+  return false;
 }
 
 void SeedRun(std::uint64_t seed) {

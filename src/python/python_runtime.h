@@ -19,8 +19,11 @@ namespace sanet::python {
 // Starts the interpreter once; later calls do nothing.
 void EnsureInterpreter();
 
-// Puts folders at the front of sys.path (each once), for the modules of Python controllers.
+// Puts folders on sys.path (each once, after the standard library), for the modules of Python
+// controllers.
 void AddSearchPath(const std::vector<std::string>& folders);
+// Whether `file` is in one of `folders`.
+bool OnSearchPath(const std::string& file, const std::vector<std::string>& folders);
 
 // Seeds `random` and numpy's global generator (numpy.random.seed: the seed modulo 2^32) from a
 // run's seed. Before the interpreter starts, the seed is kept and applied when it does.

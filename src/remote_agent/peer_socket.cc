@@ -80,7 +80,10 @@ void PeerSocket::Open() {
   const sockaddr_in mine = Ipv4Endpoint(address, PortOf(self_));
   if (::bind(fd_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
     throw std::runtime_error("cannot bind UDP " + address + ":" + std::to_string(PortOf(self_)) + ": " +
-                             std::strerror(errno));
+                             std::strerror(errno) +
+                             (errno == EADDRINUSE ? " (another agent or team uses these ports: give this team "
+                                                    "others with --udp-base or the scenario's loop.udp_port)"
+                                                  : ""));
   ::fcntl(fd_, F_SETFL, O_NONBLOCK);
   peers_[self_] = mine;
   address_ = address;

@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "core/delivery.h"
+#include "core/version.h"
+#include "trace/earlier_run.h"
 #include "trace/result_headers.h"
 
 namespace sanet::ros2agent {
@@ -16,15 +18,30 @@ std::string Fixed(double value) {
 
 }  // namespace
 
+namespace {
+
+// Refuses another kind of results first (trace/earlier_run.h), then clears an earlier agent's.
+std::string Claimed(const std::string& dir) {
+  trace::ExpectEarlierKind(dir, "ros2");
+  return dir;
+}
+
+}  // namespace
+
 AgentRecord::AgentRecord(const std::string& dir, const sim::RunSpec& spec, NodeId robot, bool force)
     : spec_(spec),
       robot_(robot),
-      folder_(dir, force),
+      folder_(Claimed(dir), force),
       log_(folder_.Csv("log.csv", trace::kLogHeader)),
       transitions_(folder_.Csv("transitions.csv", trace::kTransitionsHeader)),
       metrics_(folder_.Csv("metrics.csv", trace::kMetricsHeader)),
       messages_(folder_.Csv("messages.csv", trace::kMessagesHeader)),
-      sent_(folder_.Csv("sent.csv", "time_sent,from,to,delivery,bytes")) {}
+      sent_(folder_.Csv("sent.csv", "time_sent,from,to,delivery,bytes")) {
+  // First, so that a folder an agent was stopped in is known as an agent's (trace/earlier_run.h).
+  nlohmann::ordered_json provenance = {
+      {"scenario", spec.name}, {"robot", spec.nodes[robot].name}, {"mode", "ros2"}, {"sanet", SanetVersion()}};
+  folder_.WriteWhole("provenance.json", provenance.dump(2) + "\n");
+}
 
 std::string AgentRecord::NameOf(NodeId node) const {
   return node < spec_.nodes.size() ? spec_.nodes[node].name : "all";

@@ -22,18 +22,24 @@ Qos QosNamed(const scenario::Field& f) {
 
 std::string TopicNamed(const scenario::Field& f) {
   const std::string name = f.Text();
-  if (!IsTopicName(name)) f.Fail("'" + name + "' is no ROS topic name (parts of letters, digits and _, split by /)");
+  if (!IsTopicName(name))
+    f.Fail("'" + name +
+           "' is no ROS topic name (parts of letters, digits and _ that do not start with a digit, "
+           "split by /)");
   return name;
 }
 
-// `key: TOPIC` or `key: {topic: TOPIC, qos: reliable|best_effort, type: ...}`; returns the type
-// given, if any (the caller checks it against the key's types).
-std::string ReadTopic(const scenario::Field& f, Topic& topic) {
+// `key: TOPIC` or `key: {topic: TOPIC, qos: reliable|best_effort}`, and `type: ...` where the key
+// has a choice of types (`typed`): returns the type given, if any (the caller checks it).
+std::string ReadTopic(const scenario::Field& f, Topic& topic, bool typed = false) {
   if (f.IsScalar()) {
     topic.name = TopicNamed(f);
     return "";
   }
-  f.ExpectKeys({"topic", "qos", "type"});
+  if (typed)
+    f.ExpectKeys({"topic", "qos", "type"});
+  else
+    f.ExpectKeys({"topic", "qos"});  // one type only: odom, scan, ranges, clock
   if (const auto name = f.Get("topic")) topic.name = TopicNamed(*name);
   if (const auto qos = f.Get("qos")) topic.qos = QosNamed(*qos);
   const auto type = f.Get("type");
@@ -45,7 +51,7 @@ void ReadGroundTruth(const scenario::Field& f, RobotTopics& topics) {
     topics.ground_truth_type = GroundTruthType::kNone;
     return;
   }
-  const std::string type = ReadTopic(f, topics.ground_truth);
+  const std::string type = ReadTopic(f, topics.ground_truth, true);
   topics.ground_truth_type = GroundTruthType::kOdometry;
   if (type == "pose_stamped") topics.ground_truth_type = GroundTruthType::kPoseStamped;
   if (!type.empty() && type != "pose_stamped" && type != "odometry")
@@ -53,7 +59,7 @@ void ReadGroundTruth(const scenario::Field& f, RobotTopics& topics) {
 }
 
 void ReadCmdVel(const scenario::Field& f, RobotTopics& topics) {
-  const std::string type = ReadTopic(f, topics.cmd_vel);
+  const std::string type = ReadTopic(f, topics.cmd_vel, true);
   if (type == "twist_stamped") topics.cmd_vel_type = CmdVelType::kTwistStamped;
   if (type == "twist") topics.cmd_vel_type = CmdVelType::kTwist;
   if (!type.empty() && type != "twist" && type != "twist_stamped")
@@ -74,12 +80,12 @@ void ReadIr(const scenario::Field& f, RobotTopics& topics) {
 RobotTopics DefaultTopics(const std::string& name, std::size_t ir_count) {
   RobotTopics topics;
   topics.ns = "/" + name;
-  for (std::size_t i = 0; i < ir_count; ++i) topics.ir.push_back({"ir/" + std::to_string(i), Qos::kSensorData});
+  for (std::size_t i = 0; i < ir_count; ++i) topics.ir.push_back({"ir_" + std::to_string(i), Qos::kSensorData});
   return topics;
 }
 
 void ReadRobotFile(const std::string& path, RobotTopics& topics) {
-  const scenario::Field root = scenario::ParseYamlFile(path);
+  const scenario::Field root = scenario::ParseYamlFile(path, "a robot's file");
   root.ExpectKeys(
       {"namespace", "odom", "scan", "ir", "ground_truth", "cmd_vel", "clock", "use_sim_time", "odom_timeout"});
   if (const auto ns = root.Get("namespace")) {
@@ -106,7 +112,10 @@ void Remap(const std::string& assignment, RobotTopics& topics) {
     topics.ground_truth_type = GroundTruthType::kNone;
     return;
   }
-  if (!IsTopicName(name)) throw std::invalid_argument("'" + name + "' is no ROS topic name");
+  if (!IsTopicName(name))
+    throw std::invalid_argument("'" + name +
+                                "' is no ROS topic name (parts of letters, digits and _ that do not start with a "
+                                "digit, split by /)");
   Topic* topic = key == "odom"           ? &topics.odom
                  : key == "scan"         ? &topics.scan
                  : key == "ground_truth" ? &topics.ground_truth
@@ -114,10 +123,10 @@ void Remap(const std::string& assignment, RobotTopics& topics) {
                  : key == "clock"        ? &topics.clock
                                          : nullptr;
   for (std::size_t i = 0; i < topics.ir.size() && !topic; ++i)
-    if (key == "ir/" + std::to_string(i)) topic = &topics.ir[i];
+    if (key == "ir_" + std::to_string(i)) topic = &topics.ir[i];
   if (!topic)
     throw std::invalid_argument("'" + key + "' is none of odom, scan, ground_truth, cmd_vel, clock" +
-                                (topics.ir.empty() ? "" : ", ir/0 to ir/" + std::to_string(topics.ir.size() - 1)));
+                                (topics.ir.empty() ? "" : ", ir_0 to ir_" + std::to_string(topics.ir.size() - 1)));
   topic->name = name;
   if (key == "ground_truth" && topics.ground_truth_type == GroundTruthType::kNone)
     topics.ground_truth_type = GroundTruthType::kOdometry;

@@ -37,14 +37,14 @@ struct RobotTopics {
   double odom_timeout = 0.5;           // s without odom after which the robot is stopped
 };
 
-// The face's topics for robot `name` with `ir_count` IR sensors: /name/odom, /name/ir/0, ...
+// The face's topics for robot `name` with `ir_count` IR sensors: /name/odom, /name/ir_0, ...
 RobotTopics DefaultTopics(const std::string& name, std::size_t ir_count);
 
 // Applies a per-robot file (docs/ros2-robots.md) over `topics`. Throws scenario::ScenarioError
 // naming the file, line and field.
 void ReadRobotFile(const std::string& path, RobotTopics& topics);
 
-// KEY=TOPIC from the command line: KEY is odom, scan, ground_truth, cmd_vel, clock or ir/I; TOPIC
+// KEY=TOPIC from the command line: KEY is odom, scan, ground_truth, cmd_vel, clock or ir_I; TOPIC
 // a ROS name, or "none" for ground_truth. Throws std::invalid_argument saying what is wrong.
 void Remap(const std::string& assignment, RobotTopics& topics);
 

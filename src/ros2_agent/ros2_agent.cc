@@ -35,7 +35,18 @@ struct Ending {
   std::string by = "duration";
   double at = 0;
   std::uint64_t odometry_stops = 0;
+  std::vector<std::string> warnings;  // what may be wrong with the robot's topics
 };
+
+// Once the controller has run a while, what may be wrong with the robot's topics is said (a
+// robot that never moves, a sensor that never speaks), on stderr, in the log and the summary.
+void CheckTopics(Ros2Robot& robot, Ros2Node& node, Ending& ending) {
+  for (const std::string& trouble : robot.TopicTrouble()) {
+    std::fprintf(stderr, "sanet agent %s: warning: %s\n", node.Name().c_str(), trouble.c_str());
+    node.Log("warning: " + trouble);
+    ending.warnings.push_back(trouble);
+  }
+}
 
 nlohmann::ordered_json Summary(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& settings,
                                const Ending& ending, const hil::StepGrid& grid, const Ros2Node& node,
@@ -49,6 +60,7 @@ nlohmann::ordered_json Summary(const sim::RunSpec& spec, NodeId id, const Ros2Ag
   j["clock"] = settings.robot.topics.use_sim_time ? "/clock (use_sim_time)" : "this computer's";
   if (settings.start_at) j["start_at_unix_s"] = *settings.start_at;
   if (ending.time_zero_unix) j["time_zero_unix_s"] = *ending.time_zero_unix;  // for sanet merge
+  j["scenario_fingerprint"] = settings.scenario_fingerprint;
   j["ended_by"] = ending.by;
   j["ended_at_s"] = ending.at;
   j["steps"] = {{"run", grid.run()}, {"missed", grid.missed()}, {"achieved_rate_hz", grid.achieved_rate()}};
@@ -59,22 +71,43 @@ nlohmann::ordered_json Summary(const sim::RunSpec& spec, NodeId id, const Ros2Ag
                {"ranges", c.ranges},     {"ground_truth", c.ground_truth},
                {"clock", c.clock},       {"undecodable", c.undecodable},
                {"cmd_vel", c.cmd_vel},   {"odometry_stops", ending.odometry_stops}};
+  j["warnings"] = ending.warnings;
   return j;
 }
 
+// What is still awaited, for the line said every 10 s while the agent waits.
+std::string Awaited(const Ros2Robot& robot, const RobotTopics& t, double clock) {
+  std::string text = FullName(t, t.odom) + (robot.Odometry() ? " (here)" : " (nothing yet)");
+  if (t.use_sim_time)
+    text += " and " + FullName(t, t.clock) + (robot.SimTime() ? " (here)" : " (nothing yet)");
+  else if (clock < 0)
+    text += ", and the team's start in " + std::to_string(static_cast<long long>(-clock)) + " s";
+  return text;
+}
+
 // Polls until the robot's first odometry (and /clock with use_sim_time) and the team's start.
-bool WaitForTheRobot(Ros2Robot& robot, const Ros2AgentSettings& settings, const std::function<double()>& clock) {
+// Returns "" when the robot is there, else why the agent ends without driving it.
+std::string WaitForTheRobot(Ros2Robot& robot, const Ros2AgentSettings& settings, const std::function<double()>& clock,
+                            double duration) {
   const RobotTopics& t = settings.robot.topics;
-  if (!settings.quiet)
-    std::printf("sanet agent: waiting for %s%s\n", FullName(t, t.odom).c_str(),
-                t.use_sim_time ? (" and " + FullName(t, t.clock)).c_str() : "");
-  std::fflush(stdout);
-  while (!settings.stop_requested || !settings.stop_requested()) {
+  double said_at = -1e9;
+  for (;;) {
+    if (settings.stop_requested && settings.stop_requested()) return "interrupted";
     robot.Poll(hil::MonotonicSeconds());
-    if (robot.Odometry() && (!t.use_sim_time || robot.SimTime()) && clock() >= 0) return true;
+    const bool has_clock = !t.use_sim_time || robot.SimTime();
+    if (has_clock && clock() >= duration)
+      return robot.Odometry() ? "the robot's clock was past the run's duration (" + std::to_string(duration) +
+                                    " s) when its odometry came: start the agent sooner, or give --duration"
+                              : "the robot never came: no odometry on " + FullName(t, t.odom) + " before " +
+                                    std::to_string(duration) + " s of the robot's clock";
+    if (robot.Odometry() && has_clock && clock() >= 0) return "";
+    if (!settings.quiet && hil::MonotonicSeconds() - said_at >= 10) {
+      std::printf("sanet agent: waiting for %s\n", Awaited(robot, t, clock()).c_str());
+      std::fflush(stdout);
+      said_at = hil::MonotonicSeconds();
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  return false;
 }
 
 // The robot's motion is stopped while odometry is older than the topics' odom_timeout: a robot
@@ -93,7 +126,10 @@ class OdometryWatch {
       node_.Log(why);
       ++stops_;
     }
-    if (fresh && stopped_) node_.Log("odometry is back: the controller drives again");
+    if (fresh && stopped_) {
+      std::fprintf(stderr, "sanet agent %s: odometry is back: the controller drives again\n", node_.Name().c_str());
+      node_.Log("odometry is back: the controller drives again");
+    }
     stopped_ = !fresh;
     return fresh;
   }
@@ -120,6 +156,8 @@ struct Loop {
 void RunSteps(const Loop& l, const sim::RunSpec& spec, const Ros2AgentSettings& settings, Ending& ending) {
   OdometryWatch watch(l.robot, l.node, settings.robot.topics.odom_timeout);
   const auto deliver = [&](const Message& m) { l.host.Receive(m); };
+  const double check_at = hil::MonotonicSeconds() + 3;  // DDS has matched, sensors have spoken
+  bool checked = false;
   while (l.host.running() && l.node.ClockNow() < spec.duration) {
     if (settings.stop_requested && settings.stop_requested()) {
       ending.by = "interrupted";
@@ -135,6 +173,10 @@ void RunSteps(const Loop& l, const sim::RunSpec& spec, const Ros2AgentSettings& 
       if (l.grid.run() == 1) l.host.Start();
       l.host.Step();
       l.node.SetStepTime(std::nullopt);
+    }
+    if (!checked && hil::MonotonicSeconds() >= check_at) {
+      CheckTopics(l.robot, l.node, ending);
+      checked = true;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
@@ -161,10 +203,10 @@ int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& s
   agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
   hil::StepGrid grid(controller.rate);
-  if (WaitForTheRobot(robot, settings, now))
+  if (const std::string missing = WaitForTheRobot(robot, settings, now, spec.duration); missing.empty())
     RunSteps({robot, node, peers, host, clock, grid}, spec, settings, ending);
   else
-    ending.by = "interrupted";
+    ending.by = missing;
   robot.Drive({}, now());  // whatever ended the run, the robot stops
   ending.at = now();
   record.Finish(Summary(spec, id, settings, ending, grid, node, robot, peers));
@@ -174,7 +216,8 @@ int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& s
         spec.nodes[id].name.c_str(), ending.at, ending.by.c_str(), static_cast<unsigned long long>(grid.run()),
         static_cast<unsigned long long>(peers.datagrams().sent),
         static_cast<unsigned long long>(peers.datagrams().received), record.dir().c_str());
-  return ending.by.rfind("controller failed", 0) == 0 ? 1 : 0;
+  if (ending.by.rfind("controller failed", 0) == 0) return 1;
+  return ending.by.rfind("the robot", 0) == 0 ? 3 : 0;  // it never drove: 3
 }
 
 }  // namespace sanet::ros2agent

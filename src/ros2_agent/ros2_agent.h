@@ -30,6 +30,7 @@ struct Ros2AgentSettings {
   std::optional<double> start_at;
   bool quiet = false;
   std::function<bool()> stop_requested;  // Ctrl-C: end with the results
+  std::string scenario_fingerprint;      // in summary.json, so that sanet merge knows a team's folders
 };
 
 // Returns the exit code: 0 at the scenario's duration or when stopped, 1 when the controller failed.

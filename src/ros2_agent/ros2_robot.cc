@@ -120,4 +120,36 @@ void Ros2Robot::Drive(const Twist2D& velocity, double stamp) {
   ++counts_.cmd_vel;
 }
 
+namespace {
+
+std::string Silent(const std::string& topic, const char* what, std::uint32_t incompatible) {
+  std::string text = "nothing on " + topic + " (" + what + ")";
+  if (incompatible)
+    text += ": " + std::to_string(incompatible) +
+            " publisher(s) there offer a QoS this reader cannot take (see qos: in the robot's file)";
+  else
+    text += ": is the topic's name right (--ros2-remap, the robot's file)?";
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> Ros2Robot::TopicTrouble() {
+  const RobotTopics& t = settings_.topics;
+  std::vector<std::string> trouble;
+  if (scan_ && counts_.scans == 0)
+    trouble.push_back(Silent(FullName(t, t.scan), "the laser", dds_.IncompatibleWriters(scan_)));
+  for (std::size_t i = 0; i < ir_.size(); ++i)
+    if (!ranges_[i]) trouble.push_back(Silent(FullName(t, t.ir[i]), "an IR sensor", dds_.IncompatibleWriters(ir_[i])));
+  if (truth_ && counts_.ground_truth == 0)
+    trouble.push_back(
+        Silent(FullName(t, t.ground_truth), "GroundTruth(), empty until it comes", dds_.IncompatibleWriters(truth_)));
+  if (dds_.MatchedReaders(cmd_vel_) == 0)
+    trouble.push_back("no one subscribes to " + FullName(t, t.cmd_vel) + " as " +
+                      (t.cmd_vel_type == CmdVelType::kTwistStamped ? "TwistStamped" : "Twist") +
+                      ": the robot does not move (a driver on the other type? --ros2-cmd-vel-stamped, "
+                      "cmd_vel: {type: ...} in the robot's file)");
+  return trouble;
+}
+
 }  // namespace sanet::ros2agent

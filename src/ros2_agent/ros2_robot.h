@@ -46,6 +46,10 @@ class Ros2Robot {
     std::uint64_t odometry = 0, scans = 0, ranges = 0, ground_truth = 0, clock = 0, undecodable = 0, cmd_vel = 0;
   };
   const Counts& counts() const { return counts_; }
+  // What may be wrong with the robot's topics so far, one sentence each: readers that never got
+  // a sample (with the writers whose QoS or type could not match them), cmd_vel that no reader
+  // takes. Empty when every topic works.
+  std::vector<std::string> TopicTrouble();
   const RobotTopics& topics() const { return settings_.topics; }
 
  private:

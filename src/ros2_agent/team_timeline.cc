@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -11,6 +12,7 @@
 
 #include "core/statistics.h"
 #include "trace/csv_rows.h"
+#include "trace/earlier_run.h"
 #include "trace/result_headers.h"
 #include "trace/results_folder.h"
 
@@ -20,9 +22,10 @@ namespace {
 constexpr const char* kSentHeader = "time_sent,from,to,delivery,bytes";
 
 struct AgentFolder {
-  std::string dir, robot, scenario, clock, ended_by;
+  std::string dir, robot, scenario, clock, ended_by, fingerprint;
   std::optional<double> time_zero_unix;
-  double offset = 0;  // added to this agent's times to put them on the team's
+  double ended_at = 0;  // s, on its clock
+  double offset = 0;    // added to this agent's times to put them on the team's
 };
 
 std::string Fixed(double value) {
@@ -51,17 +54,34 @@ AgentFolder ReadAgentFolder(const std::string& dir) {
     throw TeamFolderError(where +
                           ": not an agent's summary ('mode' is not \"ros2\"): sanet merge takes the folders "
                           "of sanet agent --ros2");
-  AgentFolder a{dir,
-                Field(j, "robot", where),
-                Field(j, "scenario", where),
-                Field(j, "clock", where),
-                Field(j, "ended_by", where),
-                std::nullopt};
+  AgentFolder a;
+  a.dir = dir;
+  a.robot = Field(j, "robot", where);
+  a.scenario = Field(j, "scenario", where);
+  a.clock = Field(j, "clock", where);
+  a.ended_by = Field(j, "ended_by", where);
+  a.fingerprint = j.value("scenario_fingerprint", "");
+  a.ended_at = j.value("ended_at_s", 0.0);
   if (j.contains("time_zero_unix_s") && j["time_zero_unix_s"].is_number())
     a.time_zero_unix = j["time_zero_unix_s"].get<double>();
   else if (a.clock == "this computer's")
     throw TeamFolderError(where + ": 'time_zero_unix_s' is missing: the agent's times cannot be placed");
   return a;
+}
+
+// On computers' clocks: every agent ran while another did (folders of two runs of one team are
+// not one time line).
+void CheckTheyRanTogether(const std::vector<AgentFolder>& team) {
+  for (const AgentFolder& a : team) {
+    bool overlaps = team.size() == 1;
+    for (const AgentFolder& b : team)
+      if (&a != &b && a.offset <= b.offset + b.ended_at && b.offset <= a.offset + a.ended_at) overlaps = true;
+    if (!overlaps)
+      throw TeamFolderError(a.dir + "/summary.json: this agent ran from " + std::to_string(a.offset) + " s to " +
+                            std::to_string(a.offset + a.ended_at) +
+                            " s of the team's time line, while no other agent ran: the folders are of "
+                            "different runs");
+  }
 }
 
 // Checks that the folders are one team's and gives each the offset onto the team's time line.
@@ -73,6 +93,11 @@ std::vector<AgentFolder> ReadTeam(const std::vector<std::string>& dirs) {
     for (const AgentFolder& b : team) {
       if (a.robot == b.robot)
         throw TeamFolderError(dir + "/summary.json: robot '" + a.robot + "' again (also " + b.dir + ")");
+      if (a.fingerprint != b.fingerprint && !a.fingerprint.empty() && !b.fingerprint.empty())
+        throw TeamFolderError(dir + "/summary.json: scenario fingerprint " + a.fingerprint + ", but " + b.dir +
+                              " ran " + b.fingerprint +
+                              ": the agents ran different scenario files (one file for "
+                              "the whole team)");
       if (a.scenario != b.scenario || a.clock != b.clock)
         throw TeamFolderError(dir + "/summary.json: scenario '" + a.scenario + "' on " + a.clock + " clock, but " +
                               b.dir + " has scenario '" + b.scenario + "' on " + b.clock +
@@ -84,6 +109,7 @@ std::vector<AgentFolder> ReadTeam(const std::vector<std::string>& dirs) {
     double zero = *team.front().time_zero_unix;
     for (const AgentFolder& a : team) zero = std::min(zero, *a.time_zero_unix);
     for (AgentFolder& a : team) a.offset = *a.time_zero_unix - zero;
+    CheckTheyRanTogether(team);
   }
   return team;
 }
@@ -128,6 +154,7 @@ std::vector<TimedRow> ShiftedRows(const std::vector<AgentFolder>& team, const st
   for (const AgentFolder& a : team)
     ReadRows(a, file, header, [&](std::vector<std::string>& row, const std::string& where) {
       const double t = Number(row[0], where, header.substr(0, header.find(','))) + a.offset;
+      if (file == "sent.csv") Number(row[4], where, "bytes");
       row[0] = Fixed(t);
       out.push_back({t, row});
     });
@@ -149,6 +176,7 @@ std::vector<TimedRow> ShiftedMessages(const std::vector<AgentFolder>& team) {
       const AgentFolder* sender = Find(team, row[1]);
       const double sent = Number(row[0], where, "time_sent") + (sender ? sender->offset : 0);
       const double received = Number(row[5], where, "time_received") + a.offset;
+      Number(row[4], where, "bytes");
       row[0] = Fixed(sent);
       row[5] = Fixed(received);
       row[6] = Fixed(received - sent);
@@ -225,6 +253,8 @@ nlohmann::ordered_json ClockCheck(const std::vector<AgentFolder>& team, const st
   nlohmann::ordered_json offsets;
   for (const AgentFolder& a : team) offsets[a.robot] = a.offset;
   const bool shared = !team.front().time_zero_unix;
+  if (shared)
+    for (auto& p : pairs) p["note"] = "on /clock, agents read neighbouring samples: up to one /clock period apart";
   return {{"kind", team.front().clock},
           {"trusted_as", shared ? "one /clock, read by every agent: times are taken as they are"
                                 : "each computer's clock from the Unix time of its agent's time 0: what NTP or PTP "
@@ -254,6 +284,10 @@ nlohmann::ordered_json Summary(const std::vector<AgentFolder>& team, const std::
 
 nlohmann::ordered_json MergeTeam(const std::vector<std::string>& agent_folders, const std::string& out, bool force) {
   const std::vector<AgentFolder> team = ReadTeam(agent_folders);
+  for (const AgentFolder& a : team)
+    if (std::filesystem::exists(out) && std::filesystem::equivalent(a.dir, out))
+      throw trace::FolderRefused("-o " + out + " is one of the agents' folders: give the team's folder another name");
+  trace::ExpectEarlierKind(out, "ros2 team");
   const std::vector<TimedRow> sent = ShiftedRows(team, "sent.csv", kSentHeader);
   const std::vector<TimedRow> messages = ShiftedMessages(team);
   const std::map<LinkKey, Link> links = Links(sent, messages);

@@ -137,4 +137,16 @@ std::uint32_t DdsDomain::NewIncompatibleWriters(Entity reader) {
   return status.total_count_change;
 }
 
+std::uint32_t DdsDomain::MatchedReaders(Entity writer) {
+  dds_publication_matched_status_t status{};
+  if (dds_get_publication_matched_status(writer, &status) != DDS_RETCODE_OK) return 0;
+  return status.current_count;
+}
+
+std::uint32_t DdsDomain::IncompatibleWriters(Entity reader) {
+  dds_requested_incompatible_qos_status_t status{};
+  if (dds_get_requested_incompatible_qos_status(reader, &status) != DDS_RETCODE_OK) return 0;
+  return status.total_count;
+}
+
 }  // namespace sanet::ros2face

@@ -47,6 +47,10 @@ class DdsDomain {
   std::vector<Sample> Take(Entity reader, std::size_t most = 64);
   // Writers that asked for this reader but whose QoS cannot match it, since the last call.
   std::uint32_t NewIncompatibleWriters(Entity reader);
+  // Readers that match this writer now (same topic, type and compatible QoS).
+  std::uint32_t MatchedReaders(Entity writer);
+  // Writers that offered this reader a QoS it cannot take (or whose type differs), so far.
+  std::uint32_t IncompatibleWriters(Entity reader);
   std::uint32_t domain() const { return domain_; }
 
  private:

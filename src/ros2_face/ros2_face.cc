@@ -79,7 +79,7 @@ void Ros2Face::AddRobots() {
       r->scan = dds_.Writer(ns + "/scan", DdsType<msg::sensor_msgs::LaserScan>(), Qos::kSensorData);
     for (std::size_t i = 0; i < r->frames.ir.size(); ++i)
       r->ir.push_back(
-          dds_.Writer(ns + "/ir/" + std::to_string(i), DdsType<msg::sensor_msgs::Range>(), Qos::kSensorData));
+          dds_.Writer(ns + "/ir_" + std::to_string(i), DdsType<msg::sensor_msgs::Range>(), Qos::kSensorData));
     r->cmd_vel = dds_.Reader(
         ns + "/cmd_vel",
         settings_.twist_stamped ? DdsType<msg::geometry_msgs::TwistStamped>() : DdsType<msg::geometry_msgs::Twist>(),

@@ -1,6 +1,7 @@
 // The ROS 2 face of a served world: every robot that no other front end drives is a ROS 2 robot
 // under its name as namespace. It publishes /<robot>/odom, /<robot>/ground_truth, /<robot>/scan
-// (a laser), /<robot>/ir/<i> (each IR sensor), /tf, /tf_static and /clock, and takes
+// (a laser), /<robot>/ir_<i> (each IR sensor; a ROS name token may not start with a digit), /tf, /tf_static and /clock,
+// and takes
 // /<robot>/cmd_vel (geometry_msgs/Twist, or TwistStamped) to the robot's Node, as a controller
 // would drive it. Over plain DDS as ROS 2 nodes speak it (docs/ros2.md): no ROS install needed.
 //

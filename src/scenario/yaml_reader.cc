@@ -166,11 +166,11 @@ void CountValues(const YAML::Node& node, std::size_t& count, const std::string& 
 
 namespace {
 
-Field ParseYaml(std::istream& in, const std::string& name) {
+Field ParseYaml(std::istream& in, const std::string& name, const std::string& what = "a scenario") {
   auto file = std::make_shared<const std::string>(name);
   try {
     YAML::Node root = YAML::Load(in);
-    if (!root.IsMap()) throw ScenarioError(name, 1, "", "a scenario must be a mapping of keys to values");
+    if (!root.IsMap()) throw ScenarioError(name, 1, "", what + " must be a mapping of keys to values");
     std::size_t count = 0;
     CountValues(root, count, name);
     return Field(root, "", file);
@@ -181,12 +181,13 @@ Field ParseYaml(std::istream& in, const std::string& name) {
 
 }  // namespace
 
-Field ParseYamlFile(const std::string& path) {
+Field ParseYamlFile(const std::string& path, const std::string& what) {
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw ScenarioError(path, 0, "", "is a folder, not a scenario file");
+  if (std::filesystem::is_directory(path, error))
+    throw ScenarioError(path, 0, "", "is a folder, not " + what + (what == "a scenario" ? " file" : ""));
   std::ifstream in(path);
   if (!in) throw ScenarioError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
-  return ParseYaml(in, path);
+  return ParseYaml(in, path, what);
 }
 
 Field ParseYamlText(const std::string& text, const std::string& name) {

@@ -64,8 +64,9 @@ class Field {
   std::shared_ptr<const std::string> file_;
 };
 
-// Parses a file; syntax errors become ScenarioErrors with the line.
-Field ParseYamlFile(const std::string& path);
+// Parses a file; syntax errors become ScenarioErrors with the line. `what` names the kind of file
+// in errors ("a scenario", "a robot's file").
+Field ParseYamlFile(const std::string& path, const std::string& what = "a scenario");
 // The same for text that came from elsewhere; `name` stands for its file in errors.
 Field ParseYamlText(const std::string& text, const std::string& name);
 

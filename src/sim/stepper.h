@@ -60,6 +60,8 @@ class Stepper : public RunEvents {
   void Lost(NodeId to, const Message& message, const std::string& why) override;
   void Failed(const std::string& why) override;
   void Spawned(NodeId node, const std::string& spawned_as) override;
+  // The node stops for good (a scenario's switch-off event, or a script's), recorded as an event.
+  void SwitchOff(NodeId node);
 
  private:
   void ScheduleAll();
@@ -83,7 +85,6 @@ class Stepper : public RunEvents {
   void LookAtRoutes();
   void CollectMoving();
   void TellProgress();
-  void SwitchOff(NodeId node);
   bool StopIfInterrupted();
   void CountTowardsEnd(const std::vector<std::string>& watched, const std::string& what, const std::string& said);
   PoseReader Poses() const;

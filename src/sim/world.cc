@@ -54,6 +54,11 @@ struct World::Running {
   Stepper stepper;
 };
 
+void World::SwitchOff(NodeId node) {
+  if (!running_) throw WorldError("a node is switched off while the run goes: between Start and Finish");
+  running_->stepper.SwitchOff(node);
+}
+
 RunResult World::Run(const RunOptions& options) {
   Start(options);
   RunUntil(spec().duration);

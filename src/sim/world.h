@@ -88,6 +88,8 @@ class World {
   double Now() const;  // s, simulated
   // Ends the run at once (from inside it) or before its next piece; results are written as usual.
   void Stop(const std::string& why = "stopped");
+  // Switches a node off now, between pieces, as a scenario's switch-off event does (recorded).
+  void SwitchOff(NodeId node);
 
  private:
   std::unique_ptr<Assembly> parts_;

@@ -71,4 +71,23 @@ void ClearEarlierRun(const std::string& dir, bool force) {
   for (const fs::path& p : remove) fs::remove_all(p);
 }
 
+void ExpectEarlierKind(const std::string& dir, const std::string& mode) {
+  std::ifstream in(fs::path(dir) / "summary.json");
+  if (!in) return;
+  std::string found;
+  try {
+    const auto summary = nlohmann::json::parse(in);
+    if (!summary.contains("files")) return;  // no summary of ours: ClearEarlierRun decides
+    found = summary.value("mode", "");
+  } catch (const std::exception&) {
+    return;
+  }
+  if (found == mode) return;
+  const auto kind = [](const std::string& m) {
+    return m.empty() ? std::string("a simulation's run") : m == "ros2" ? "an agent's on a ROS 2 robot" : "a " + m;
+  };
+  throw FolderRefused("the results folder " + dir + " holds the results of " + kind(found) + ", not of " + kind(mode) +
+                      ": give another folder with -o");
+}
+
 }  // namespace sanet::trace

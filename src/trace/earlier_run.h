@@ -19,4 +19,9 @@ class FolderRefused : public std::runtime_error {
 // few of them; with `force` it is left where it is.
 void ClearEarlierRun(const std::string& dir, bool force);
 
+// Refuses (FolderRefused) a folder that holds the results of another kind of sanet run than
+// `mode` (summary.json's "mode": none for a simulation's run, "ros2" for an agent's on a ROS 2
+// robot, "ros2 team" for sanet merge's), so that one command never clears another's results.
+void ExpectEarlierKind(const std::string& dir, const std::string& mode);
+
 }  // namespace sanet::trace

@@ -3,6 +3,7 @@
 #include <openssl/evp.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -37,7 +38,14 @@ std::string ModuleFile(const sim::ControllerSpec& controller) {
   std::string relative = controller.python.substr(0, controller.python.find(':'));
   for (char& c : relative)
     if (c == '.') c = '/';
-  for (const std::string& folder : controller.python_path)
+  std::vector<std::string> folders = controller.python_path;
+  if (const char* env = std::getenv("PYTHONPATH"))  // where Python looks next, for both sides
+    for (std::string rest = env; !rest.empty();) {
+      const auto colon = rest.find(':');
+      folders.push_back(rest.substr(0, colon));
+      rest = colon == std::string::npos ? "" : rest.substr(colon + 1);
+    }
+  for (const std::string& folder : folders)
     for (const std::string& candidate : {folder + "/" + relative + ".py", folder + "/" + relative + "/__init__.py"})
       if (std::filesystem::is_regular_file(candidate)) return std::filesystem::canonical(candidate).string();
   return "";
@@ -58,7 +66,9 @@ namespace {
 
 std::string PythonDifference(const PluginIdentity& server, const PluginIdentity& agent) {
   if (agent.library.empty() && !server.library.empty())
-    return "the server's Python module " + server.library + " is not in this agent's --python-path";
+    return "this agent finds no module '" + server.python.substr(0, server.python.find(':')) +
+           "' (in --python-path's folders or on PYTHONPATH): give --python-path the folder that holds the server's " +
+           server.library;
   if (server.sha256 != agent.sha256)
     return "Python module: the server's " + server.library + " has SHA-256 " + server.sha256.substr(0, 16) +
            "..., this computer's " + agent.library + " " + agent.sha256.substr(0, 16) +

@@ -74,11 +74,23 @@ class Stops(unittest.TestCase):
                 self.assertLessEqual(float(last.split(",")[0]), s["simulated_s"] + 1e-6)
                 self.assertIn("interrupted by " + how.name, err)
 
+    def test_two_signals_at_once_are_one_request(self):
+        out = os.path.join(self.tmp.name, "at-once")
+        process = subprocess.Popen([SANET, "run", LONG, "-q", "-o", out], stderr=subprocess.PIPE, text=True)
+        time.sleep(1.5)
+        process.send_signal(signal.SIGINT)  # as `timeout` does: the process and its group
+        process.send_signal(signal.SIGTERM)
+        _, said = process.communicate(timeout=60)
+        self.assertIn(process.returncode, (130, 143), said)  # whichever the kernel delivered first
+        self.assertNotIn("second signal", said)
+        self.assertEqual(summary(out)["status"], "interrupted", "the results written whole")
+
     def test_two_signals_end_at_once_without_half_written_files(self):
         out = os.path.join(self.tmp.name, "twice")
         process = subprocess.Popen([SANET, "run", LONG, "-q", "-o", out], stderr=subprocess.PIPE, text=True)
         time.sleep(1.5)
         process.send_signal(signal.SIGINT)
+        time.sleep(1.1)  # a second request, not the same one twice
         process.send_signal(signal.SIGINT)
         _, said = process.communicate(timeout=60)
         self.assertEqual(process.returncode, 130)

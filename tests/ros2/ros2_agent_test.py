@@ -133,6 +133,7 @@ def csv_rows(path):
 ONE_ROBOT = """name: one
 duration: 60
 world: {size: [20, 20]}
+loop: {udp_port: 47630}
 nodes:
   - name: r1
     model: diffdrive

@@ -31,16 +31,16 @@ std::string FileWith(const std::string& text) {
 TEST(RobotTopics, DefaultsAreTheFacesAndRemappingRenames) {
   RobotTopics t = DefaultTopics("scout", 2);
   EXPECT_EQ(FullName(t, t.odom), "/scout/odom");
-  EXPECT_EQ(FullName(t, t.ir[1]), "/scout/ir/1");
+  EXPECT_EQ(FullName(t, t.ir[1]), "/scout/ir_1");
   EXPECT_EQ(FullName(t, t.clock), "/clock");
   Remap("odom=/tb4/odom", t);
-  Remap("ir/1=sonar/right", t);
+  Remap("ir_1=sonar/right", t);
   Remap("ground_truth=none", t);
   EXPECT_EQ(FullName(t, t.odom), "/tb4/odom");
   EXPECT_EQ(FullName(t, t.ir[1]), "/scout/sonar/right");
   EXPECT_EQ(t.ground_truth_type, GroundTruthType::kNone);
   EXPECT_THROW(Remap("odometry=/x", t), std::invalid_argument);
-  EXPECT_THROW(Remap("ir/2=/x", t), std::invalid_argument);
+  EXPECT_THROW(Remap("ir_2=/x", t), std::invalid_argument);
   EXPECT_THROW(Remap("odom=/bad name", t), std::invalid_argument);
   EXPECT_THROW(Remap("odom", t), std::invalid_argument);
 }
@@ -144,7 +144,7 @@ TEST(Ros2Robot, ReadsTheRobotsTopicsAndDrivesItsCmdVel) {
   clock.clock = StampAt(7.5);
   const auto publish = [&] {
     played.Publish("/r1/odom", odom, Qos::kDefault);
-    for (std::size_t i = 0; i < settings.topics.ir.size(); ++i) played.Publish("/r1/ir/" + std::to_string(i), range);
+    for (std::size_t i = 0; i < settings.topics.ir.size(); ++i) played.Publish("/r1/ir_" + std::to_string(i), range);
     played.Publish("/r1/ground_truth", odom);
     played.Publish("/clock", clock, Qos::kClock);
     robot.Poll(1.0);

@@ -1,0 +1,19 @@
+"""sanet from Python: step a run, look at it and act on it between steps, and read results and
+studies as pandas DataFrames (docs/python-module.md).
+
+    import sanet
+    with sanet.Simulation("scenarios/around-the-wall.yaml", seed=3, output="out") as sim:
+        while sim.step(1.0):
+            print(sim.now, sim.pose("robot"))
+    print(sanet.Results("out").trajectories.head())
+
+The classes a Python controller is given (Node, Params, Pose, RangeScan, Bearing, Route,
+NetworkView, Message, ParamError) are here too (docs/python.md).
+"""
+from ._sanet import (Bearing, Message, NetworkView, Node, ParamError, Params, Pose, RangeScan, Route, Simulation,
+                     StudyReader)
+from .results import Results
+from .study import Study
+
+__all__ = ["Simulation", "Results", "Study", "Node", "Params", "ParamError", "Pose", "RangeScan", "Bearing", "Route",
+           "NetworkView", "Message"]

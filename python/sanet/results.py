@@ -1,0 +1,51 @@
+"""A run's results folder as pandas DataFrames."""
+import json
+import os
+
+
+class Results:
+    """The results folder of a run (`sanet run`, `Simulation.finish()`, a study's run):
+
+        r = sanet.Results("results/around-the-wall")
+        r.trajectories   # time, node, x, y, theta
+        r.messages       # time_sent, from, to, delivery, bytes, time_received, delay, hops
+        r.packets        # per node: IP packets sent, received, forwarded, dropped (with a network)
+        r.metrics, r.transitions, r.log, r.routes
+        r.summary        # summary.json as a dict
+
+    Each table is read when first asked for, from the CSV file of the same name, with the
+    file's own columns; a file the run did not write raises FileNotFoundError saying so."""
+
+    TABLES = ("trajectories", "messages", "packets", "metrics", "transitions", "log", "routes", "min_distance")
+
+    def __init__(self, folder):
+        if not os.path.isfile(os.path.join(folder, "summary.json")):
+            raise FileNotFoundError(f"{folder} is not a results folder: it has no summary.json "
+                                    "(sanet run writes one at the end of every run)")
+        self.folder = folder
+        self._tables = {}
+
+    @property
+    def summary(self):
+        """summary.json as a dict."""
+        with open(os.path.join(self.folder, "summary.json")) as f:
+            return json.load(f)
+
+    def table(self, name):
+        """The results file NAME.csv as a DataFrame."""
+        if name not in self._tables:
+            import pandas
+            path = os.path.join(self.folder, name + ".csv")
+            if not os.path.isfile(path):
+                raise FileNotFoundError(f"{path}: this run wrote no {name}.csv (files: "
+                                        f"{', '.join(self.summary.get('files', []))})")
+            self._tables[name] = pandas.read_csv(path, keep_default_na=False, na_values=[""])
+        return self._tables[name]
+
+    def __getattr__(self, name):
+        if name in Results.TABLES:
+            return self.table(name)
+        raise AttributeError(f"Results has no {name!r}: tables are {', '.join(Results.TABLES)}, and summary")
+
+    def __repr__(self):
+        return f"sanet.Results({self.folder!r})"

@@ -1,0 +1,11 @@
+// sanet.Study's reader: a study's database as `sanet report` reads it (study/report.h), so that
+// the module's numbers are the command's.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace sanet::pymodule {
+
+void BindStudyReader(pybind11::module_& module);
+
+}  // namespace sanet::pymodule

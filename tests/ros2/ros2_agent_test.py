@@ -15,6 +15,7 @@ over UDP with the team's key, every agent with its own results folder.
 import csv
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -224,6 +225,30 @@ class NetworkView(unittest.TestCase):
             self.assertEqual(views, {"net kernel routes neighbours"}, "docs/controllers.md: loopback, empty tables")
 
 
+class WhatTheAgentSays(unittest.TestCase):
+    def test_a_robot_that_never_comes_ends_the_agent_at_the_duration(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            done = agent(one_robot(tmp), "r1", os.path.join(tmp, "r1"), "--duration", "2")
+            said = done.communicate(timeout=60)[0]
+            self.assertEqual(done.returncode, 3, said)
+            self.assertIn("the robot never came: no odometry on /r1/odom before 2", said)
+            self.assertIn("the robot never came", summary(os.path.join(tmp, "r1"))["ended_by"])
+
+    def test_silent_sensors_and_a_cmd_vel_no_one_takes_are_warned(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = written(tmp, "omni.yaml", ONE_ROBOT.replace("model: diffdrive", "model: omni3"))
+            robot = driver("/r1/odom", "/r1/cmd_vel", "twist", 8)  # a driver on Twist, and no IR topics
+            controller = agent(scenario, "r1", os.path.join(tmp, "r1"), "--duration", "5", "--ros2-cmd-vel-stamped")
+            said = controller.communicate(timeout=60)[0]
+            _, last = driven(robot.communicate(timeout=60)[0])
+            self.assertEqual(controller.returncode, 0, said)
+            self.assertIn("warning: no one subscribes to /r1/cmd_vel as TwistStamped: the robot does not move", said)
+            self.assertIn("warning: nothing on /r1/ir_0 (an IR sensor)", said)
+            self.assertEqual(last["commands"], 0, "the driver took no command")
+            warnings = summary(os.path.join(tmp, "r1"))["warnings"]
+            self.assertEqual(len([w for w in warnings if "IR sensor" in w]), 6, "each of the omni3's six IR topics")
+
+
 TB4 = """# a robot whose driver names its topics otherwise
 namespace: tb4_1
 odom: {topic: wheel/odom, qos: reliable}
@@ -310,6 +335,18 @@ class Refusals(unittest.TestCase):
             self.assertNotEqual(out.returncode, 0)
             self.assertIn("--scenario", out.stderr)
 
+    def test_one_commands_results_are_not_cleared_by_another(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "run")
+            subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "around-the-wall.yaml"), "-q", "-o", run,
+                            "--duration", "1"], check=True, capture_output=True)
+            before = sorted(os.listdir(run))
+            out = agent(one_robot(tmp), "r1", run, "--duration", "1").communicate(timeout=30)[0]
+            self.assertIn("holds the results of a simulation's run, not of an agent's on a ROS 2 robot", out)
+            out = merge(run, run).stderr
+            self.assertIn("not an agent's summary", out)
+            self.assertEqual(sorted(os.listdir(run)), before, "nothing of the run's was touched")
+
     def test_folders_of_no_team_are_refused_naming_them(self):
         with tempfile.TemporaryDirectory() as tmp:
             empty = os.path.join(tmp, "empty")
@@ -334,6 +371,14 @@ class Refusals(unittest.TestCase):
             self.assertIn("robot 'r1' again", out.stderr)
             out = merge(os.path.join(tmp, "team"), twice)
             self.assertIn(twice + "/sent.csv: header 'x', expected 'time_sent,from,to,delivery,bytes'", out.stderr)
+            other = os.path.join(tmp, "other")
+            shutil.copytree(twice, other)
+            for folder, robot, fingerprint in ((twice, "r1", "aaaa"), (other, "r2", "bbbb")):
+                with open(os.path.join(folder, "summary.json"), "w") as f:
+                    json.dump({"mode": "ros2", "robot": robot, "scenario": "one", "clock": "/clock (use_sim_time)",
+                               "ended_by": "duration", "scenario_fingerprint": fingerprint}, f)
+            out = merge(os.path.join(tmp, "team"), twice, other)
+            self.assertIn("the agents ran different scenario files", out.stderr)
             self.assertFalse(os.path.exists(os.path.join(tmp, "team", "summary.json")), "nothing half-written")
 
 

@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -97,11 +98,12 @@ py::module_ Import(const ModuleClass& name, const agents::ControllerSpec& spec) 
 
 py::object ClassOf(const py::module_& module, const ModuleClass& name, const std::vector<std::string>& path) {
   const std::string file = py::hasattr(module, "__file__") ? py::str(module.attr("__file__")).cast<std::string>() : "";
-  const bool own = file.empty() || file.find("/python3") != std::string::npos;
-  if (!py::hasattr(module, name.cls.c_str()) && own && !OnSearchPath(file, path))
-    throw agents::RegistryError("'" + name.module + "' is a module of Python's own (" +
-                                (file.empty() ? std::string("built in") : file) +
-                                "), which a file of yours cannot replace: name your module otherwise");
+  for (const std::string& folder : path)  // a file of the user's that Python's own module hides
+    if (const std::string mine = folder + "/" + name.module + ".py";
+        !OnSearchPath(file, path) && std::filesystem::exists(mine))
+      throw agents::RegistryError("'" + name.module + "' is a module of Python's own (" +
+                                  (file.empty() ? std::string("built in") : file) + "), which " + mine +
+                                  " cannot replace: name your module otherwise");
   if (!py::hasattr(module, name.cls.c_str())) {
     std::vector<std::string> names;
     for (const auto& [key, value] : module.attr("__dict__").cast<py::dict>())

@@ -193,6 +193,18 @@ class Failures(unittest.TestCase):
                 self.assertIn(says, done.stderr)
                 self.assertIn(also, done.stderr)
 
+    def test_a_module_named_as_pythons_own_is_refused_saying_so(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            write(tmp, "random.py", "class Random:\n    def control_step(self, node):\n        pass\n")
+            scenario = pair(tmp, controller="random:Random", peers=False)
+            done = sanet("validate", scenario)
+            self.assertEqual(done.returncode, 2)
+            self.assertIn("'random' is a module of Python's own", done.stderr)
+            self.assertIn(os.path.join(tmp, "random.py") + " cannot replace: name your module otherwise", done.stderr)
+            scenario = pair(tmp, peers=False, extra="")  # Talker beside a random.py: seeding still works
+            done = sanet("run", scenario, "-o", os.path.join(tmp, "out"), "-q")
+            self.assertEqual(done.returncode, 0, done.stderr)
+
     def test_the_node_refuses_what_cpp_refuses(self):
         with tempfile.TemporaryDirectory() as tmp:
             scenario = pair(tmp, controller="probe:Refusals", peers=False)

@@ -6,7 +6,8 @@ Simulation.step(dt) at dt = 1, 0.1 and 0.01 s, each reading every robot's pose b
 a script would. It prints each run's own wall time (summary.json's wall_time_s, which
 Simulation.finish() returns as `wall`: loading and writing excluded), its ratio to `sanet run`
 and to one Simulation.run() (the module's own baseline: a process without sanet's tcmalloc), and
-the cost per step over Simulation.run().
+the cost per step over Simulation.run(), which is within the runs' noise; then the cost of the
+calls themselves, timed over many: a step that advances nothing, and a pose read.
 
   PYTHONPATH=build/python /usr/bin/python3 bench/python_step.py [--sanet build/sanet] [--seconds 60] [--repeat 3]
 """
@@ -15,6 +16,7 @@ import json
 import os
 import subprocess
 import tempfile
+import time
 
 import sanet
 
@@ -60,6 +62,23 @@ def main():
             per_step = f"{(wall - one) / steps * 1e6:12.1f}" if steps else f"{'':>12}"
             print(f"{label:>18} {wall:>8.3f} {wall / base:>12.2f} {wall / one:>8.2f} {steps:>6} {per_step}",
                   flush=True)
+        step, pose = call_costs(os.path.join(tmp, "calls"))
+        print(f"step(0): {step:.2f} us a call; pose(): {pose:.2f} us a call")
+
+
+def call_costs(folder, calls=20000):
+    """us per step(0) (the crossing into the run and back, nothing to simulate) and per pose()."""
+    with sanet.Simulation(SCENARIO, duration=10, output=folder, force=True) as sim:
+        sim.step(1)
+        start = time.perf_counter()
+        for _ in range(calls):
+            sim.step(0)
+        step = (time.perf_counter() - start) / calls * 1e6
+        start = time.perf_counter()
+        for _ in range(calls):
+            sim.pose("leader")
+        pose = (time.perf_counter() - start) / calls * 1e6
+    return step, pose
 
 
 if __name__ == "__main__":

@@ -10,10 +10,10 @@ studies as pandas DataFrames (docs/python-module.md).
 The classes a Python controller is given (Node, Params, Pose, RangeScan, Bearing, Route,
 NetworkView, Message, ParamError) are here too (docs/python.md).
 """
-from ._sanet import (Bearing, Message, NetworkView, Node, ParamError, Params, Pose, RangeScan, Route, Simulation,
-                     StudyReader)
+from ._sanet import (Bearing, FolderRefused, Message, NetworkView, Node, ParamError, Params, Pose, RangeScan,
+                     ReportError, Route, ScenarioError, Simulation, StudyReader)
 from .results import Results
 from .study import Study
 
-__all__ = ["Simulation", "Results", "Study", "Node", "Params", "ParamError", "Pose", "RangeScan", "Bearing", "Route",
-           "NetworkView", "Message"]
+__all__ = ["Simulation", "Results", "Study", "ScenarioError", "FolderRefused", "ReportError", "Node", "Params",
+           "ParamError", "Pose", "RangeScan", "Bearing", "Route", "NetworkView", "Message"]

@@ -59,9 +59,9 @@ struct RandomStates {
   }
 };
 
+// JSON is YAML's flow style: a Python str stays text ("a: b" is no mapping), lists stay lists.
 std::string YamlText(const py::handle& value) {
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  return py::module_::import("json").attr("dumps")(value).cast<std::string>();  // JSON is YAML's flow style
+  return py::module_::import("json").attr("dumps")(value).cast<std::string>();
 }
 
 bool HasPythonControllers(const sim::RunSpec& spec) {
@@ -73,7 +73,8 @@ bool HasPythonControllers(const sim::RunSpec& spec) {
 class Simulation {
  public:
   Simulation(const std::string& path, const py::dict& set, std::optional<std::uint64_t> seed,
-             std::optional<std::string> output, std::optional<double> duration, bool force, bool frames)
+             std::optional<std::string> output, std::optional<double> duration, bool force, bool frames,
+             const std::vector<std::string>& python_path)
       : since_(frames) {
     if (g_live)
       throw std::runtime_error(
@@ -81,6 +82,9 @@ class Simulation {
           "(or use `with sanet.Simulation(...) as sim:`) before starting another");
     controllers::RegisterBuiltinControllers(registry_);
     python::InstallPython(registry_);
+    if (duration && !(*duration > 0 && *duration <= 1e9))
+      throw py::value_error("duration must be more than 0 and at most 1e9 s, not " + std::to_string(*duration));
+    scenario::SetPythonPath(python_path);
     Load(path, set, seed, duration);
     Build(path, output, force);
   }
@@ -94,15 +98,22 @@ class Simulation {
 
   // The time the run was advanced to (the clock itself stands a nanosecond past it, so that
   // events at exactly that time have run), or where it ended.
-  double Now() const { return std::min(target_, Live().Now()); }
+  double Now() const {
+    if (!world_) return ended_at_;
+    return running_ ? target_ : std::min(target_, world_->Now());
+  }
   bool running() const { return world_ && running_; }
   bool finished() const { return !world_; }
   bool Step(double seconds) {
     if (!(seconds >= 0)) throw py::value_error("step(seconds): seconds must be 0 or more");
+    Live();  // refuses a finished Simulation
     // Summed on the clock's nanoseconds, so that ten steps of 0.1 s end at 1 s.
     return RunTo(std::round((target_ + seconds) * 1e9) / 1e9);
   }
-  bool Run(std::optional<double> until) { return RunTo(until.value_or(scenario_.run.duration)); }
+  bool Run(std::optional<double> until) {
+    Live();  // refuses a finished Simulation
+    return RunTo(until.value_or(scenario_.run.duration));
+  }
   py::dict Finish();
   // Finishes before the run's end, `why` in summary.json's ended_by.
   py::dict EndEarly(const std::string& why);
@@ -130,13 +141,11 @@ class Simulation {
   bool Drive(const std::string& robot, double vx, double vy, double omega) {
     return Driven(robot).Drive({vx, vy, omega});
   }
-  void Send(const std::string& from, const std::string& to, const py::bytes& payload) {
-    const std::string text = payload;
-    Driven(from).Send(Id(to), Bytes(text.begin(), text.end()));
+  void Send(const std::string& from, const std::string& to, const py::object& payload) {
+    Driven(from).Send(Id(to), python::BytesOf(payload));
   }
-  void Broadcast(const std::string& from, const py::bytes& payload) {
-    const std::string text = payload;
-    Driven(from).Broadcast(Bytes(text.begin(), text.end()));
+  void Broadcast(const std::string& from, const py::object& payload) {
+    Driven(from).Broadcast(python::BytesOf(payload));
   }
   void SwitchOff(const std::string& node) { Live().SwitchOff(Id(node)); }
 
@@ -182,7 +191,8 @@ class Simulation {
   SinceLastStep since_;
   std::unique_ptr<sim::World> world_;
   bool running_ = true, python_controllers_ = false;
-  double target_ = 0;  // s: where the script has advanced the run to
+  double target_ = 0;    // s: where the script has advanced the run to
+  double ended_at_ = 0;  // s: where it ended, once finished
   RandomStates run_random_;
 };
 
@@ -211,7 +221,7 @@ void Simulation::Build(const std::string& path, std::optional<std::string> outpu
   options_.force = force;
   const scenario::EffectiveScenario effective = scenario::Effective(scenario_);
   options_.provenance = sim::Provenance{effective.yaml, effective.fingerprint, {"python3", "sanet.Simulation", path}};
-  options_.stop_requested = [] { return PyErr_CheckSignals() != 0 ? std::string("interrupted (Ctrl-C)") : ""; };
+  options_.stop_requested = [] { return PyErr_CheckSignals() != 0 ? std::string("interrupted by SIGINT (Ctrl-C)") : ""; };
   trace::ClearEarlierRun(options_.output_dir, force);
   const RandomStates script = python_controllers_ ? RandomStates::Now() : RandomStates{};
   world_ = std::make_unique<sim::World>(scenario_.run, registry_);  // seeds the run's random states
@@ -228,7 +238,11 @@ bool Simulation::RunTo(double t) {
   since_.Clear();
   if (!running_) return false;
   target_ = std::max(target_, std::min(t, scenario_.run.duration));
-  running_ = WithRunsRandom([&] { return Live().RunUntil(target_); });
+  // Up to just before the target: the bodies stand where they are at the target (its physics
+  // step has not started the next), and what happens at the target happens in the next piece.
+  // At the end, the end itself.
+  const double cut = target_ >= scenario_.run.duration ? target_ : target_ - 1e-9;
+  running_ = WithRunsRandom([&] { return Live().RunUntil(cut); });
   if (PyErr_Occurred()) throw py::error_already_set();  // Ctrl-C: the run ended there, marked
   return running_;
 }
@@ -243,9 +257,12 @@ py::dict Simulation::EndEarly(const std::string& why) {
 
 py::dict Simulation::Finish() {
   const sim::RunResult r = WithRunsRandom([&] { return Live().Finish(); });
+  std::vector<std::string> warnings = options_.warnings;
+  warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
+  ended_at_ = world_->ended_by().empty() ? scenario_.run.duration : world_->ended_at();
   py::dict out("fingerprint"_a = r.fingerprint, "simulated"_a = r.simulated, "wall"_a = r.wall,
-               "ended_by"_a = world_->ended_by(), "interrupted"_a = world_->interrupted(),
-               "output"_a = options_.output_dir, "warnings"_a = r.warnings);
+               "ended_by"_a = world_->ended_by().empty() ? std::string("duration") : world_->ended_by(),
+               "interrupted"_a = world_->interrupted(), "output"_a = options_.output_dir, "warnings"_a = warnings);
   world_.reset();
   g_live = false;
   return out;
@@ -260,10 +277,14 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
 
 py::dict Simulation::Readings(const std::string& node) {
   const NodeId id = Id(node);
-  if (Live().driver().OwnerOf(id) == std::optional<std::string>(kScript)) {
+  if (!Live().driver().Spec(id).controller) {  // the script's node: its sensors now
+    Driven(node);
     const sim::SensorReadings& r = Live().driver().TakeReadings(id, kScript);
+    py::list bearings;
+    for (const auto& [other, b] : r.bearings.value_or(std::vector<std::pair<NodeId, BearingReading>>{}))
+      bearings.append(py::make_tuple(Live().NameOf(other), b.distance, b.bearing));
     return py::dict("time"_a = r.time, "ground_truth"_a = r.ground_truth, "odometry"_a = r.odometry,
-                    "ir"_a = ScanOrNone(r.ir), "laser"_a = ScanOrNone(r.laser));
+                    "ir"_a = ScanOrNone(r.ir), "laser"_a = ScanOrNone(r.laser), "bearings"_a = bearings);
   }
   const auto& r = Live().parts().node(id).last_reads();
   return py::dict("time"_a = r.time, "ground_truth"_a = r.ground_truth, "odometry"_a = r.odometry,
@@ -302,12 +323,13 @@ Simulation(path, set={}, seed=None, output=None, duration=None, force=False, fra
   duration  the simulated duration instead of the scenario's (s)
   force     write beside files in `output` that no sanet run wrote
   frames    keep the radio frames of each step for frames()
+  python_path  folders where Python controllers' modules are looked for after the scenario's
 
 Only one Simulation is live in a process (ns-3 has one simulator): finish() it first.)")
       .def(py::init<const std::string&, const py::dict&, std::optional<std::uint64_t>, std::optional<std::string>,
-                    std::optional<double>, bool, bool>(),
+                    std::optional<double>, bool, bool, const std::vector<std::string>&>(),
            "path"_a, "set"_a = py::dict(), "seed"_a = py::none(), "output"_a = py::none(), "duration"_a = py::none(),
-           "force"_a = false, "frames"_a = false)
+           "force"_a = false, "frames"_a = false, "python_path"_a = std::vector<std::string>{})
       .def_property_readonly("now", &Simulation::Now, "Simulated time (s)")
       .def_property_readonly("running", &Simulation::running, "False once the run has ended")
       .def("step", &Simulation::Step, "seconds"_a,
@@ -332,8 +354,12 @@ Only one Simulation is live in a process (ns-3 has one simulator): finish() it f
       .def("broadcast", &Simulation::Broadcast, "sender"_a, "payload"_a)
       .def("switch_off", &Simulation::SwitchOff, "node"_a, "Switches the node off now, as a scenario event does")
       .def("__enter__", [](Simulation& s) -> Simulation& { return s; })
-      .def("__exit__", [](Simulation& s, py::args) {
-        if (!s.finished()) s.EndEarly("the with block ended at " + std::to_string(s.Now()) + " s");
+      .def("__exit__", [](Simulation& s, const py::object& type, const py::object& value, const py::object&) {
+        if (s.finished()) return;
+        const std::string at = " at " + std::to_string(s.Now()) + " s";
+        if (type.is_none()) return void(s.EndEarly("the with block ended" + at));
+        s.EndEarly("the script raised " + py::str(type.attr("__name__")).cast<std::string>() + " (" +
+                   py::str(value).cast<std::string>() + ")" + at);
       });
 }
 

@@ -36,15 +36,6 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
                        py::array_t<double>(scan->ranges.size(), scan->ranges.data()), scan->max_range});
 }
 
-// bytes, bytearray, memoryview and the like (a TypeError for text, which has no one encoding).
-Bytes ToBytes(const py::object& payload) {
-  if (py::isinstance<py::str>(payload))
-    throw py::type_error("a payload is bytes, not text: encode it (\"...\".encode()) or build it with struct.pack");
-  const auto bytes = py::reinterpret_steal<py::bytes>(PyBytes_FromObject(payload.ptr()));
-  if (!bytes) throw py::error_already_set();
-  const std::string text = bytes;
-  return Bytes(text.begin(), text.end());
-}
 
 const char* DeliveryText(Delivery d) {
   return d == Delivery::kUnicast ? "unicast" : d == Delivery::kBroadcast ? "broadcast" : "flood";
@@ -197,6 +188,8 @@ void BindReadings(py::module_& m) {
       .def_readonly("y", &Pose2D::y)
       .def_readonly("theta", &Pose2D::theta)
       .def("__iter__", [](const Pose2D& p) { return py::iter(py::make_tuple(p.x, p.y, p.theta)); })
+      .def(py::pickle([](const Pose2D& p) { return py::make_tuple(p.x, p.y, p.theta); },
+                      [](const py::tuple& t) { return Pose2D{t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>()}; }))
       .def("__repr__", [](const Pose2D& p) { return py::str("Pose(x={}, y={}, theta={})").format(p.x, p.y, p.theta); });
   py::class_<Scan>(m, "RangeScan", "Ranges in the robot frame: numpy arrays angles (rad) and ranges (m), max_range")
       .def_readonly("angles", &Scan::angles)
@@ -260,12 +253,12 @@ void BindNode(py::module_& m) {
       .def("set_wheel_speeds", &Node::SetWheelSpeeds, "rad_per_s"_a)
       .def("holonomic", &Node::Holonomic)
       .def(
-          "send", [](Node& n, NodeId to, const py::object& payload) { n.Send(to, ToBytes(payload)); }, "to"_a,
+          "send", [](Node& n, NodeId to, const py::object& payload) { n.Send(to, BytesOf(payload)); }, "to"_a,
           "payload"_a)
       .def(
-          "broadcast", [](Node& n, const py::object& payload) { n.Broadcast(ToBytes(payload)); }, "payload"_a)
+          "broadcast", [](Node& n, const py::object& payload) { n.Broadcast(BytesOf(payload)); }, "payload"_a)
       .def(
-          "flood", [](Node& n, const py::object& payload) { n.Flood(ToBytes(payload)); }, "payload"_a)
+          "flood", [](Node& n, const py::object& payload) { n.Flood(BytesOf(payload)); }, "payload"_a)
       .def("network", &Node::Network, py::return_value_policy::reference)
       .def("random", &Node::Random)
       .def("log", &Node::Log, "text"_a)
@@ -281,6 +274,16 @@ void BindControllerApi(py::module_& module) {
   BindReadings(module);
   BindNetworkView(module);
   BindNode(module);
+}
+
+// bytes, bytearray, memoryview and the like (a TypeError for text, which has no one encoding).
+Bytes BytesOf(const py::object& payload) {
+  if (py::isinstance<py::str>(payload))
+    throw py::type_error("a payload is bytes, not text: encode it (\"...\".encode()) or build it with struct.pack");
+  const auto bytes = py::reinterpret_steal<py::bytes>(PyBytes_FromObject(payload.ptr()));
+  if (!bytes) throw py::error_already_set();
+  const std::string text = bytes;
+  return Bytes(text.begin(), text.end());
 }
 
 py::object ToPython(const Message& m) {

@@ -25,6 +25,9 @@ pybind11::object ToPython(const Message& message);
 pybind11::object ToPython(const Params& params);
 void Close(const pybind11::object& params);
 
+// A payload from bytes, bytearray or memoryview (a TypeError for text, which has no one encoding).
+Bytes BytesOf(const pybind11::object& payload);
+
 // The Python class ParamError (key, line, message) that controllers raise for bad parameters.
 pybind11::object ParamErrorType();
 

@@ -98,9 +98,10 @@ py::module_ Import(const ModuleClass& name, const agents::ControllerSpec& spec) 
 
 py::object ClassOf(const py::module_& module, const ModuleClass& name, const std::vector<std::string>& path) {
   const std::string file = py::hasattr(module, "__file__") ? py::str(module.attr("__file__")).cast<std::string>() : "";
+  const std::string stdlib = py::module_::import("sysconfig").attr("get_paths")()["stdlib"].cast<std::string>();
+  const bool own = file.empty() || file.rfind(stdlib + "/", 0) == 0;  // built in, or the standard library's
   for (const std::string& folder : path)  // a file of the user's that Python's own module hides
-    if (const std::string mine = folder + "/" + name.module + ".py";
-        !OnSearchPath(file, path) && std::filesystem::exists(mine))
+    if (const std::string mine = folder + "/" + name.module + ".py"; own && std::filesystem::exists(mine))
       throw agents::RegistryError("'" + name.module + "' is a module of Python's own (" +
                                   (file.empty() ? std::string("built in") : file) + "), which " + mine +
                                   " cannot replace: name your module otherwise");

@@ -85,7 +85,9 @@ class Stepping(unittest.TestCase):
             self.assertGreater(vx, 0.3)
             readings = sim.readings("robot")
             self.assertEqual(len(readings["ir"]["ranges"]), 6)
-            self.assertAlmostEqual(readings["time"], 1.0, places=6)
+            self.assertAlmostEqual(readings["time"], 0.9, places=6, msg="its controller's last step before now")
+            sim.step(0.05)  # what happens at 1 s happens in the next step
+            self.assertAlmostEqual(sim.readings("robot")["time"], 1.0, places=6)
             self.assertIn("mote0", sim.nodes())
             with self.assertRaises(KeyError):
                 sim.pose("nobody")

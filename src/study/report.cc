@@ -112,7 +112,9 @@ std::map<long, double> StudyReader::Values(const std::string& metric) const {
   if (names.empty()) throw ReportError("no run of this study has completed yet");
   std::vector<std::string> close = ClosestNames(metric, names);
   for (const std::string& name : names)  // a part of a name: "delay" for message_delay_s.median
-    if (close.size() < 3 && name.find(metric) != std::string::npos) close.push_back(name);
+    if (close.size() < 3 && name.find(metric) != std::string::npos &&
+        std::find(close.begin(), close.end(), name) == close.end())
+      close.push_back(name);
   throw ReportError("no completed run has a metric '" + metric + "'" +
                     (close.empty() ? "" : " (did you mean " + OrList(close) + "?)") +
                     "; sanet report --list lists them");

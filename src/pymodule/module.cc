@@ -19,19 +19,17 @@ std::string Replaced(std::string text, const std::string& what, const std::strin
 
 // A scenario's mistake (ValueError) and a results folder that is not free (FileExistsError).
 void TranslateErrors(pybind11::module_& module) {
-  static pybind11::exception<sanet::scenario::ScenarioError> scenario_error(module, "ScenarioError",
-                                                                           PyExc_ValueError);
+  static pybind11::exception<sanet::scenario::ScenarioError> scenario_error(module, "ScenarioError", PyExc_ValueError);
   static pybind11::exception<sanet::trace::FolderRefused> folder_refused(module, "FolderRefused",
-                                                                        PyExc_FileExistsError);
+                                                                         PyExc_FileExistsError);
   pybind11::register_exception_translator([](std::exception_ptr thrown) {
     try {
       if (thrown) std::rethrow_exception(thrown);
     } catch (const sanet::scenario::ScenarioError& e) {
       scenario_error(Replaced(e.what(), "--set ", "set ").c_str());
     } catch (const sanet::trace::FolderRefused& e) {
-      folder_refused(Replaced(Replaced(e.what(), "another folder with -o", "another output="), "--force",
-                              "force=True")
-                         .c_str());
+      folder_refused(
+          Replaced(Replaced(e.what(), "another folder with -o", "another output="), "--force", "force=True").c_str());
     }
   });
 }

@@ -221,7 +221,9 @@ void Simulation::Build(const std::string& path, std::optional<std::string> outpu
   options_.force = force;
   const scenario::EffectiveScenario effective = scenario::Effective(scenario_);
   options_.provenance = sim::Provenance{effective.yaml, effective.fingerprint, {"python3", "sanet.Simulation", path}};
-  options_.stop_requested = [] { return PyErr_CheckSignals() != 0 ? std::string("interrupted by SIGINT (Ctrl-C)") : ""; };
+  options_.stop_requested = [] {
+    return PyErr_CheckSignals() != 0 ? std::string("interrupted by SIGINT (Ctrl-C)") : "";
+  };
   trace::ClearEarlierRun(options_.output_dir, force);
   const RandomStates script = python_controllers_ ? RandomStates::Now() : RandomStates{};
   world_ = std::make_unique<sim::World>(scenario_.run, registry_);  // seeds the run's random states

@@ -36,7 +36,6 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
                        py::array_t<double>(scan->ranges.size(), scan->ranges.data()), scan->max_range});
 }
 
-
 const char* DeliveryText(Delivery d) {
   return d == Delivery::kUnicast ? "unicast" : d == Delivery::kBroadcast ? "broadcast" : "flood";
 }
@@ -189,7 +188,9 @@ void BindReadings(py::module_& m) {
       .def_readonly("theta", &Pose2D::theta)
       .def("__iter__", [](const Pose2D& p) { return py::iter(py::make_tuple(p.x, p.y, p.theta)); })
       .def(py::pickle([](const Pose2D& p) { return py::make_tuple(p.x, p.y, p.theta); },
-                      [](const py::tuple& t) { return Pose2D{t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>()}; }))
+                      [](const py::tuple& t) {
+                        return Pose2D{t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>()};
+                      }))
       .def("__repr__", [](const Pose2D& p) { return py::str("Pose(x={}, y={}, theta={})").format(p.x, p.y, p.theta); });
   py::class_<Scan>(m, "RangeScan", "Ranges in the robot frame: numpy arrays angles (rad) and ranges (m), max_range")
       .def_readonly("angles", &Scan::angles)

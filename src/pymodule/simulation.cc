@@ -178,6 +178,7 @@ class Simulation {
       RandomStates& run;
       const RandomStates& script;
       ~Restore() {
+        const py::error_scope pending;  // a KeyboardInterrupt the run stopped on stays raised after this
         run = RandomStates::Now();
         script.Apply();
       }

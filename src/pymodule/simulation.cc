@@ -96,8 +96,8 @@ class Simulation {
     }
   }
 
-  // The time the run was advanced to (the clock itself stands a nanosecond past it, so that
-  // events at exactly that time have run), or where it ended.
+  // The time the run was advanced to (it stands just before it: what happens at exactly that
+  // time comes with the next step), or where it ended.
   double Now() const {
     if (!world_) return ended_at_;
     return running_ ? target_ : std::min(target_, world_->Now());

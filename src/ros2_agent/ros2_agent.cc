@@ -212,10 +212,12 @@ int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& s
   record.Finish(Summary(spec, id, settings, ending, grid, node, robot, peers));
   if (!settings.quiet)
     std::printf(
-        "sanet agent %s: ended at %.1f s (%s): %llu steps, %llu datagrams sent, %llu received; results in %s/\n",
+        "sanet agent %s: ended at %.1f s (%s): %llu steps, %llu datagrams sent, %llu received, %llu rejected; "
+        "results in %s/\n",
         spec.nodes[id].name.c_str(), ending.at, ending.by.c_str(), static_cast<unsigned long long>(grid.run()),
         static_cast<unsigned long long>(peers.datagrams().sent),
-        static_cast<unsigned long long>(peers.datagrams().received), record.dir().c_str());
+        static_cast<unsigned long long>(peers.datagrams().received),
+        static_cast<unsigned long long>(peers.datagrams().rejected), record.dir().c_str());
   if (ending.by.rfind("controller failed", 0) == 0) return 1;
   return ending.by.rfind("the robot", 0) == 0 ? 3 : 0;  // it never drove: 3
 }

@@ -69,7 +69,9 @@ std::optional<AgentDatagram> OpenDatagram(const std::uint8_t* data, std::size_t 
   const std::size_t signed_size = size - kDatagramMac;
   const auto mac = Mac(key, data, signed_size);
   if (CRYPTO_memcmp(mac.data(), data + signed_size, kDatagramMac) != 0) {
-    *why = "its MAC does not hold (forged, altered, or from another run)";
+    *why =
+        "its MAC does not hold (forged, altered, from another run, or sent with another key: a team's "
+        "agents share one, --key-file or SANET_TEAM_KEY)";
     return std::nullopt;
   }
   Reader r(Bytes(data + 2, data + kDatagramHeader));

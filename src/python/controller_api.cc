@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "sanet/node.h"
@@ -134,11 +135,21 @@ std::string KindOf(const py::object& fallback) {
   return "list";
 }
 
+// A default as `sanet list` shows C++ controllers' ("false", "0.5", "robot").
+std::string Shown(const py::object& fallback) {
+  if (fallback.is_none()) return "none";
+  if (py::isinstance<py::bool_>(fallback)) return fallback.cast<bool>() ? "true" : "false";
+  if (py::isinstance<py::str>(fallback)) return fallback.cast<std::string>();
+  if (py::isinstance<py::int_>(fallback) || py::isinstance<py::float_>(fallback)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", fallback.cast<double>());
+    return text;
+  }
+  return py::repr(fallback).cast<std::string>();
+}
+
 py::object Get(const PyParams& p, const std::string& key, const py::object& fallback) {
-  const std::string shown = fallback.is_none()                  ? "none"
-                            : py::isinstance<py::str>(fallback) ? fallback.cast<std::string>()
-                                                                : py::repr(fallback).cast<std::string>();
-  const ParamValue* v = p.Open().Read(key, KindOf(fallback), shown);
+  const ParamValue* v = p.Open().Read(key, KindOf(fallback), Shown(fallback));
   return v ? Converted(key, *v, fallback) : fallback;
 }
 

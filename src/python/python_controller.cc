@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <stdexcept>
 #include <vector>
@@ -128,7 +129,12 @@ std::string Description(const py::object& cls, const std::string& name) {
   if (doc.is_none()) return "a Python controller (" + name + ")";
   std::string text = py::str(doc).cast<std::string>();
   text = text.substr(text.find_first_not_of(" \n"));
-  return text.substr(0, text.find("\n\n"));
+  text = text.substr(0, text.find("\n\n"));  // the first paragraph, on one line
+  std::string line;
+  for (char c : text)
+    if (!std::isspace(static_cast<unsigned char>(c)) || (!line.empty() && line.back() != ' '))
+      line += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+  return line;
 }
 
 // Builds an instance; the parameters' errors become ParamError (key and line), others say why.

@@ -123,11 +123,9 @@ Bytes ChannelRecord(std::uint16_t id, std::uint16_t schema, const std::string& t
 
 }  // namespace
 
-void McapWriter::Write(std::uint16_t channel, std::uint64_t log_time, std::uint64_t publish_time, const Bytes& data) {
-  if (closed_) throw std::logic_error("McapWriter::Write after Close");
-  if (channel == 0 || channel > channels_.size())
-    throw std::out_of_range("McapWriter: no channel " + std::to_string(channel));
-  for (; schemas_written_ < schemas_.size(); ++schemas_written_) {  // before the messages that use them
+// Schemas and channels added since the last were written go into the chunk being gathered.
+void McapWriter::ChunkNewDefinitions() {
+  for (; schemas_written_ < schemas_.size(); ++schemas_written_) {
     const Schema& s = schemas_[schemas_written_];
     Append(chunk_, SchemaRecord(s.id, s.name, s.encoding, s.data));
   }
@@ -135,6 +133,13 @@ void McapWriter::Write(std::uint16_t channel, std::uint64_t log_time, std::uint6
     const Channel& c = channels_[channels_written_];
     Append(chunk_, ChannelRecord(c.id, c.schema, c.topic, c.encoding, c.metadata));
   }
+}
+
+void McapWriter::Write(std::uint16_t channel, std::uint64_t log_time, std::uint64_t publish_time, const Bytes& data) {
+  if (closed_) throw std::logic_error("McapWriter::Write after Close");
+  if (channel == 0 || channel > channels_.size())
+    throw std::out_of_range("McapWriter: no channel " + std::to_string(channel));
+  ChunkNewDefinitions();  // before the messages that use them
   const bool first_in_chunk = chunk_index_.empty();
   chunk_start_ = first_in_chunk ? log_time : std::min(chunk_start_, log_time);
   chunk_end_ = first_in_chunk ? log_time : std::max(chunk_end_, log_time);
@@ -199,16 +204,7 @@ void McapWriter::FlushChunk() {
 void McapWriter::Close() {
   if (closed_) return;
   closed_ = true;
-  if (schemas_written_ < schemas_.size() || channels_written_ < channels_.size()) {  // channels with no message
-    for (; schemas_written_ < schemas_.size(); ++schemas_written_) {
-      const Schema& s = schemas_[schemas_written_];
-      Append(chunk_, SchemaRecord(s.id, s.name, s.encoding, s.data));
-    }
-    for (; channels_written_ < channels_.size(); ++channels_written_) {
-      const Channel& c = channels_[channels_written_];
-      Append(chunk_, ChannelRecord(c.id, c.schema, c.topic, c.encoding, c.metadata));
-    }
-  }
+  ChunkNewDefinitions();  // channels that had no message
   FlushChunk();
   Bytes end;
   Int<std::uint32_t>(end, data_crc_);

@@ -48,6 +48,7 @@ class McapWriter {
     std::map<std::string, std::string> metadata;
   };
   void Put(const Bytes& bytes);
+  void ChunkNewDefinitions();
   void FlushChunk();
   void WriteSummary(std::uint64_t summary_start);
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "builtin.h"
+#include "core/delivery.h"
 #include "core/version.h"
 #include "python/controller_api.h"
 #include "python/python_controller.h"
@@ -278,29 +279,34 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
                   "max_range"_a = scan->max_range);
 }
 
-py::dict Simulation::Readings(const std::string& node) {
-  const NodeId id = Id(node);
-  if (!Live().driver().Spec(id).controller) {  // the script's node: its sensors now
-    Driven(node);
-    const sim::SensorReadings& r = Live().driver().TakeReadings(id, kScript);
-    py::list bearings;
-    for (const auto& [other, b] : r.bearings.value_or(std::vector<std::pair<NodeId, BearingReading>>{}))
-      bearings.append(py::make_tuple(Live().NameOf(other), b.distance, b.bearing));
-    return py::dict("time"_a = r.time, "ground_truth"_a = r.ground_truth, "odometry"_a = r.odometry,
-                    "ir"_a = ScanOrNone(r.ir), "laser"_a = ScanOrNone(r.laser), "bearings"_a = bearings);
-  }
-  const auto& r = Live().parts().node(id).last_reads();
+// The readings of a node as the script sees them (a controller's last reads, or the driver's).
+template <typename Reads>
+py::dict ReadingsDict(const Reads& r) {
   return py::dict("time"_a = r.time, "ground_truth"_a = r.ground_truth, "odometry"_a = r.odometry,
                   "ir"_a = ScanOrNone(r.ir), "laser"_a = ScanOrNone(r.laser));
+}
+
+py::dict Simulation::Readings(const std::string& node) {
+  const NodeId id = Id(node);
+  if (Live().driver().Spec(id).controller) return ReadingsDict(Live().parts().node(id).last_reads());
+  Driven(node);  // the script's node: its sensors now
+  const sim::SensorReadings& r = Live().driver().TakeReadings(id, kScript);
+  py::list bearings;
+  for (const auto& [other, b] : r.bearings.value_or(std::vector<std::pair<NodeId, BearingReading>>{}))
+    bearings.append(py::make_tuple(Live().NameOf(other), b.distance, b.bearing));
+  py::dict out = ReadingsDict(r);
+  out["bearings"] = bearings;
+  return out;
 }
 
 py::list Simulation::Messages() const {
   py::list out;
   for (const auto& [to, m] : since_.messages)
     out.append(py::dict("time_sent"_a = m.time_sent, "from"_a = Live().NameOf(m.from), "to"_a = Live().NameOf(to),
-                        "delivery"_a = python::ToPython(m).attr("delivery"), "bytes"_a = m.payload.size(),
+                        "delivery"_a = DeliveryName(m.delivery), "bytes"_a = m.payload.size(),
                         "time_received"_a = m.time_received, "delay"_a = m.time_received - m.time_sent,
-                        "hops"_a = m.hops, "payload"_a = python::ToPython(m).attr("payload")));
+                        "hops"_a = m.hops,
+                        "payload"_a = py::bytes(reinterpret_cast<const char*>(m.payload.data()), m.payload.size())));
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "core/delivery.h"
 #include "sanet/node.h"
 
 namespace py = pybind11;
@@ -35,10 +36,6 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
   if (!scan) return py::none();
   return py::cast(Scan{py::array_t<double>(scan->angles.size(), scan->angles.data()),
                        py::array_t<double>(scan->ranges.size(), scan->ranges.data()), scan->max_range});
-}
-
-const char* DeliveryText(Delivery d) {
-  return d == Delivery::kUnicast ? "unicast" : d == Delivery::kBroadcast ? "broadcast" : "flood";
 }
 
 // ---- Params: a read-only mapping that notes every read, so that unknown keys are found and
@@ -301,7 +298,7 @@ Bytes BytesOf(const py::object& payload) {
 py::object ToPython(const Message& m) {
   PyMessage out{m.from,
                 m.to == kBroadcast ? std::nullopt : std::optional<NodeId>(m.to),
-                DeliveryText(m.delivery),
+                DeliveryName(m.delivery),
                 py::bytes(reinterpret_cast<const char*>(m.payload.data()), m.payload.size()),
                 m.time_sent,
                 m.time_received,

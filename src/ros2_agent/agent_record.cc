@@ -10,16 +10,6 @@
 namespace sanet::ros2agent {
 namespace {
 
-std::string Fixed(double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.6f", value);
-  return text;
-}
-
-}  // namespace
-
-namespace {
-
 // Refuses another kind of results first (trace/earlier_run.h), then clears an earlier agent's.
 std::string Claimed(const std::string& dir) {
   trace::ExpectEarlierKind(dir, "ros2");
@@ -47,7 +37,7 @@ std::string AgentRecord::NameOf(NodeId node) const {
   return node < spec_.nodes.size() ? spec_.nodes[node].name : "all";
 }
 
-std::string AgentRecord::Stamp(double t) const { return Fixed(t) + "," + NameOf(robot_) + ","; }
+std::string AgentRecord::Stamp(double t) const { return trace::CsvTime(t) + "," + NameOf(robot_) + ","; }
 
 void AgentRecord::Log(double t, const std::string& text) { log_.Row(Stamp(t) + trace::CsvField(text)); }
 
@@ -62,13 +52,14 @@ void AgentRecord::Metric(double t, const std::string& name, double value) {
 }
 
 void AgentRecord::Received(const Message& m) {
-  messages_.Row(Fixed(m.time_sent) + "," + NameOf(m.from) + "," + NameOf(robot_) + "," + DeliveryName(m.delivery) +
-                "," + std::to_string(m.payload.size()) + "," + Fixed(m.time_received) + "," +
-                Fixed(m.time_received - m.time_sent) + "," + (m.hops ? std::to_string(*m.hops) : ""));
+  messages_.Row(trace::CsvTime(m.time_sent) + "," + NameOf(m.from) + "," + NameOf(robot_) + "," +
+                DeliveryName(m.delivery) + "," + std::to_string(m.payload.size()) + "," +
+                trace::CsvTime(m.time_received) + "," + trace::CsvTime(m.time_received - m.time_sent) + "," +
+                (m.hops ? std::to_string(*m.hops) : ""));
 }
 
 void AgentRecord::Sent(double t, NodeId to, Delivery delivery, std::size_t bytes) {
-  sent_.Row(Fixed(t) + "," + NameOf(robot_) + "," + NameOf(to) + "," + DeliveryName(delivery) + "," +
+  sent_.Row(trace::CsvTime(t) + "," + NameOf(robot_) + "," + NameOf(to) + "," + DeliveryName(delivery) + "," +
             std::to_string(bytes));
 }
 

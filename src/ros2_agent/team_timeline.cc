@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -27,12 +26,6 @@ struct AgentFolder {
   double ended_at = 0;  // s, on its clock
   double offset = 0;    // added to this agent's times to put them on the team's
 };
-
-std::string Fixed(double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.6f", value);
-  return text;
-}
 
 std::string Field(const nlohmann::json& j, const std::string& key, const std::string& where) {
   if (!j.contains(key) || !j[key].is_string())
@@ -155,7 +148,7 @@ std::vector<TimedRow> ShiftedRows(const std::vector<AgentFolder>& team, const st
     ReadRows(a, file, header, [&](std::vector<std::string>& row, const std::string& where) {
       const double t = Number(row[0], where, header.substr(0, header.find(','))) + a.offset;
       if (file == "sent.csv") Number(row[4], where, "bytes");
-      row[0] = Fixed(t);
+      row[0] = trace::CsvTime(t);
       out.push_back({t, row});
     });
   std::stable_sort(out.begin(), out.end(), [](const TimedRow& x, const TimedRow& y) { return x.time < y.time; });
@@ -177,9 +170,9 @@ std::vector<TimedRow> ShiftedMessages(const std::vector<AgentFolder>& team) {
       const double sent = Number(row[0], where, "time_sent") + (sender ? sender->offset : 0);
       const double received = Number(row[5], where, "time_received") + a.offset;
       Number(row[4], where, "bytes");
-      row[0] = Fixed(sent);
-      row[5] = Fixed(received);
-      row[6] = Fixed(received - sent);
+      row[0] = trace::CsvTime(sent);
+      row[5] = trace::CsvTime(received);
+      row[6] = trace::CsvTime(received - sent);
       out.push_back({received, row});
     });
   std::stable_sort(out.begin(), out.end(), [](const TimedRow& x, const TimedRow& y) { return x.time < y.time; });
@@ -227,7 +220,8 @@ void WriteLinks(trace::ResultsFolder& folder, const std::map<LinkKey, Link>& lin
     std::string line =
         from + "," + to + "," + way + "," + std::to_string(link.sent) + "," + std::to_string(link.delays.size());
     const nlohmann::ordered_json q = Quartiles(link.delays);
-    for (const char* k : {"min", "median", "max"}) line += "," + (link.delays.empty() ? "" : Fixed(q[k].get<double>()));
+    for (const char* k : {"min", "median", "max"})
+      line += "," + (link.delays.empty() ? "" : trace::CsvTime(q[k].get<double>()));
     sink.Row(line);
   }
 }

@@ -1,5 +1,7 @@
 #include "trace/csv_sink.h"
 
+#include <cstdio>
+
 namespace sanet::trace {
 
 CsvSink::CsvSink(std::optional<std::string> path, std::string_view header, std::size_t buffer_bytes)
@@ -36,6 +38,12 @@ std::string CsvField(std::string_view text) {
   }
   out.push_back('"');
   return out;
+}
+
+std::string CsvTime(double seconds) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6f", seconds);
+  return text;
 }
 
 }  // namespace sanet::trace

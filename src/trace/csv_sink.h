@@ -32,5 +32,7 @@ class CsvSink {
 
 // Quotes a CSV field when it holds a comma, quote or newline.
 std::string CsvField(std::string_view text);
+// A time (s) as the results files write it: six decimals.
+std::string CsvTime(double seconds);
 
 }  // namespace sanet::trace

@@ -25,6 +25,11 @@ class NodeDirectory {
   virtual void Log(NodeId node, const std::string& text) = 0;
   virtual void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) = 0;
   virtual void Metric(NodeId node, const std::string& name, double value) = 0;
+  // What a node's driver read, at simulated time `t`, for the run's log: readings are recorded as
+  // taken, never read again (a noisy sensor draws from the node's random stream).
+  enum class Scanner { kIr, kLaser };
+  virtual void ReadScan(NodeId /*node*/, double /*t*/, Scanner /*which*/, const RangeScan& /*scan*/) {}
+  virtual void ReadOdometry(NodeId /*node*/, double /*t*/, const Pose2D& /*pose*/) {}
 };
 
 class SimulatedNode : public Node {
@@ -47,9 +52,15 @@ class SimulatedNode : public Node {
   std::size_t NodeCount() const override { return directory_.NodeCount(); }
 
   // Each read is also kept (LastReads), for a script that looks at the run between steps.
-  std::optional<RangeScan> Ir() override { return Kept(last_.ir, model_.Ir()); }
-  std::optional<RangeScan> Laser() override { return Kept(last_.laser, model_.Laser()); }
-  std::optional<Pose2D> Odometry() override { return Kept(last_.odometry, model_.Odometry()); }
+  std::optional<RangeScan> Ir() override { return Told(NodeDirectory::Scanner::kIr, Kept(last_.ir, model_.Ir())); }
+  std::optional<RangeScan> Laser() override {
+    return Told(NodeDirectory::Scanner::kLaser, Kept(last_.laser, model_.Laser()));
+  }
+  std::optional<Pose2D> Odometry() override {
+    std::optional<Pose2D> pose = Kept(last_.odometry, model_.Odometry());
+    if (pose) directory_.ReadOdometry(id_, Now(), *pose);
+    return pose;
+  }
   std::optional<Pose2D> GroundTruth() override { return Kept(last_.ground_truth, model_.GroundTruth()); }
 
   // What the node's controller read last, and when (-1: never); reading this draws no noise.
@@ -100,6 +111,10 @@ class SimulatedNode : public Node {
     return value;
   }
   std::optional<Pose2D> Kept(std::optional<Pose2D>& slot, Pose2D value) { return Kept(slot, std::optional(value)); }
+  std::optional<RangeScan> Told(NodeDirectory::Scanner which, std::optional<RangeScan> scan) {
+    if (scan) directory_.ReadScan(id_, Now(), which, *scan);
+    return scan;
+  }
   LastReads last_;
 
   NodeId id_;

@@ -43,23 +43,7 @@ Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& 
   if (spec_.trace && folder_.writes()) StartTrace();
 }
 
-// The trace begins with what does not change: the run, its nodes where they start, the obstacles.
-void Outputs::StartTrace() {
-  trace_ = std::make_unique<trace::RunTrace>(folder_.TempFile("trace.sqlite"));
-  trace_->Info("format", "sanet trace 1");
-  trace_->Info("name", spec_.name);
-  trace_->Info("seed", std::to_string(spec_.seed));
-  trace_->Info("duration_s", Format("%.9g", spec_.duration));
-  trace_->Info("world_size_m", Format("%.9g %.9g", spec_.world_size.x, spec_.world_size.y));
-  trace_->Info("pose_interval_s", Format("%.9g", spec_.trajectory_interval));
-  trace_->Info("network", spec_.network ? "ns-3" : "none");
-  for (NodeId id = 0; id < nodes_.size(); ++id) {
-    const NodeSpec& n = nodes_[id];
-    trace_->Node(id, n.name, robots::ModelName(n.model.kind), n.pose.x, n.pose.y, n.pose.theta);
-  }
-  for (const Obstacle& o : spec_.obstacles)
-    trace_->Obstacle(o.kind, o.box.center.x, o.box.center.y, o.box.size.x, o.box.size.y, o.box.size.z, o.box.yaw);
-}
+void Outputs::StartTrace() { trace_ = std::make_unique<RunTraces>(spec_, nodes_, folder_); }
 
 void Outputs::Event(double t, NodeId node, const char* kind, const std::string& detail) {
   if (trace_) trace_->Event(t, node, kind, detail);
@@ -91,9 +75,7 @@ void Outputs::Metric(double t, NodeId node, const std::string& name, double valu
 void Outputs::Delivered(NodeId to, const Message& m) {
   const double delay = m.time_received - m.time_sent;
   delays_.push_back(delay);
-  if (trace_)
-    trace_->Message(m.time_sent, m.time_received, m.from, to, DeliveryName(m.delivery),
-                    static_cast<std::uint32_t>(m.payload.size()), m.hops);
+  if (trace_) trace_->Message(m.time_received, m, to, /*delivered=*/true);
   messages_.Row(Format("%.6f,%s,%s,%s,%zu,%.6f,%.6f,%s", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
                        DeliveryName(m.delivery), m.payload.size(), m.time_received, delay,
                        m.hops ? std::to_string(*m.hops).c_str() : ""));
@@ -101,11 +83,9 @@ void Outputs::Delivered(NodeId to, const Message& m) {
 
 // A row without time_received, delay and hops: the message reached the node but not whoever
 // drives it.
-void Outputs::Lost(NodeId to, const Message& m) {
+void Outputs::Lost(double t, NodeId to, const Message& m) {
   ++messages_undelivered_;
-  if (trace_)
-    trace_->Message(m.time_sent, std::nullopt, m.from, to, DeliveryName(m.delivery),
-                    static_cast<std::uint32_t>(m.payload.size()), std::nullopt);
+  if (trace_) trace_->Message(t, m, to, /*delivered=*/false);
   messages_.Row(Format("%.6f,%s,%s,%s,%zu,,,", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
                        DeliveryName(m.delivery), m.payload.size()));
 }
@@ -152,28 +132,25 @@ void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
     // Nodes at rest add no rows (a mote appears at the start and the end unless something moves
     // it); the last row of every node is its final pose.
     if (last && (final_row ? last->time >= spec_.duration : Unmoved(p, last->pose))) continue;
-    Record(now, id, p);
+    Record(now, id, p, world.velocity ? world.velocity(id) : Twist2D{});
   }
 }
 
-void Outputs::Record(double now, NodeId id, const Pose2D& p) {
+void Outputs::Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity) {
   last_recorded_[id] = Recorded{p, now};
   if (spec_.figures && nodes_[id].model.kind != robots::ModelKind::kMote) {
     trace::Track& track = tracks_[id];
     track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
   }
   trajectories_.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, Name(id).c_str(), p.x, p.y, p.theta));
-  if (trace_) trace_->Pose(now, id, p.x, p.y, p.theta);
+  if (trace_) trace_->Pose(now, id, p, velocity);
 }
 
 void Outputs::Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose) {
   spawned_as_[node] = spawned_as;
-  if (trace_) {
-    trace_->Node(node, Name(node), robots::ModelName(nodes_[node].model.kind), pose.x, pose.y, pose.theta);
-    trace_->Event(t, node, "spawn", spawned_as);
-  }
+  if (trace_) trace_->Spawned(t, node, spawned_as, pose);
   last_recorded_.resize(nodes_.size());
-  Record(std::min(t, spec_.duration), node, pose);
+  Record(std::min(t, spec_.duration), node, pose, Twist2D{});
 }
 
 }  // namespace sanet::sim

@@ -15,11 +15,11 @@
 #include "core/fingerprint.h"
 #include "net/network_traces.h"
 #include "sim/run_nodes.h"
+#include "sim/run_traces.h"
 #include "sim/run_spec.h"
 #include "sim/run_warnings.h"
 #include "trace/figures.h"
 #include "trace/results_folder.h"
-#include "trace/run_trace.h"
 
 namespace sanet::sim {
 
@@ -58,6 +58,7 @@ struct RunResult {
 // What the outputs read of the world when they sample it.
 struct PoseReader {
   std::function<Pose2D(NodeId)> pose;
+  std::function<Twist2D(NodeId)> velocity;  // world frame, for the trace
   std::vector<NodeId> vehicles;  // the nodes that move by themselves
 };
 
@@ -79,7 +80,7 @@ class Outputs {
   void Warned(std::vector<std::string> warnings) { said_before_ = std::move(warnings); }
   trace::ResultsFolder& folder() { return folder_; }
   // The run's trace, when the scenario asks for one and the results are written.
-  trace::RunTrace* trace() { return trace_.get(); }
+  RunTraces* trace() { return trace_.get(); }
   // Something that happened to a node (switch-off), for the trace.
   void Event(double t, NodeId node, const char* kind, const std::string& detail);
 
@@ -89,8 +90,8 @@ class Outputs {
   void Metric(double t, NodeId node, const std::string& name, double value);
   void Delivered(NodeId to, const Message& message);
   void DroppedByImpairment() { ++messages_lost_; }
-  // A message that reached a node's radio but not its controller (the stepper logs why).
-  void Lost(NodeId to, const Message& message);
+  // A message that reached a node's radio at `t` but not its controller (the stepper logs why).
+  void Lost(double t, NodeId to, const Message& message);
   // A robot a client added at time `t`, standing at `pose`: its first trajectory row.
   void Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose);
   void Ended(const std::string& by, double at);
@@ -117,7 +118,7 @@ class Outputs {
 
  private:
   void SampleMinDistance(double now, const PoseReader& world);
-  void Record(double now, NodeId id, const Pose2D& p);
+  void Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity);
   void StartTrace();
   void AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp);
   void AddTapFiles(const net::NetworkTraces& network, nlohmann::ordered_json& summary);
@@ -149,7 +150,7 @@ class Outputs {
   std::vector<std::optional<Recorded>> last_recorded_;
   std::map<NodeId, trace::Track> tracks_;     // of robots, for the figures
   std::map<NodeId, std::string> spawned_as_;  // robots that clients added, with their classes
-  std::unique_ptr<trace::RunTrace> trace_;
+  std::unique_ptr<RunTraces> trace_;
   std::string ended_by_, failure_;
   bool interrupted_ = false;
   double ended_at_ = 0;

@@ -4,7 +4,9 @@
 
 #include <string>
 
+#include "agents/simulated_node.h"
 #include "sanet/message.h"
+#include "sim/snapshot.h"
 
 namespace sanet::sim {
 
@@ -20,6 +22,9 @@ class RunEvents {
   virtual void Failed(const std::string& why) = 0;
   // A node joined the running world (a robot a front end spawned, as the class it names).
   virtual void Spawned(NodeId node, const std::string& spawned_as) = 0;
+  // What a node's driver read (agents::NodeDirectory), with where the body truly is now.
+  virtual void ReadScan(NodeId /*node*/, agents::NodeDirectory::Scanner /*which*/, const RangeScan& /*scan*/) {}
+  virtual void ReadOdometry(NodeId /*node*/, const Pose2D& /*odometry*/, const BodyState& /*body*/) {}
 };
 
 }  // namespace sanet::sim

@@ -44,17 +44,17 @@ Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<RunObserve
 }
 
 void Stepper::SeeFrame(const net::FrameEvent& f) {
-  if (trace::RunTrace* trace = outputs_.trace()) trace->Frame(f.t, f.node, f.sent, f.peer, f.kind, f.bytes);
+  if (RunTraces* trace = outputs_.trace()) trace->Frame(f);
   if (frame_watchers_ > 0)
     for (RunObserver* o : observers_)
       if (o->Wants().frames) o->Frame(f);
 }
 
 void Stepper::LookAtRoutes() {
-  trace::RunTrace* trace = outputs_.trace();
+  RunTraces* trace = outputs_.trace();
   if (!trace && route_watchers_ == 0) return;
   for (const RouteChange& r : routes_.Look(Now(), world_)) {
-    if (trace) trace->Route(r.time, r.node, r.destination, r.next_hop, r.hops);
+    if (trace) trace->Route(r);
     if (route_watchers_ > 0)
       for (RunObserver* o : observers_)
         if (o->Wants().routes) o->RouteChanged(r);
@@ -278,7 +278,8 @@ void Stepper::Record() {
 }
 
 PoseReader Stepper::Poses() const {
-  return {[this](NodeId id) { return world_.model(id).body().pose(); }, vehicles_};
+  return {[this](NodeId id) { return world_.model(id).body().pose(); },
+          [this](NodeId id) { return world_.model(id).body().velocity(); }, vehicles_};
 }
 
 void Stepper::SwitchOff(NodeId node) {
@@ -322,7 +323,7 @@ void Stepper::Delivered(NodeId to, const Message& message) {
 
 // The message's row, then a line in the addressee's log saying why.
 void Stepper::Lost(NodeId to, const Message& message, const std::string& why) {
-  outputs_.Lost(to, message);
+  outputs_.Lost(Now(), to, message);
   for (RunObserver* o : observers_) o->Lost(to, message, why);
   const std::string text = "message from " + world_.NameOf(message.from) + " lost: " + why;
   outputs_.Log(message.time_received, to, text);

@@ -3,7 +3,8 @@
 // messages in uncompressed chunks with a message index per channel after each, the data end with
 // the data section's CRC32, then a summary (schemas, channels, chunk indexes, statistics) grouped
 // by opcode with summary offsets, and the footer, so that readers seek by time and topic.
-// No MCAP library is packaged in Debian; CRC32 is zlib's.
+// Chunks may be compressed with Zstandard (the spec's "zstd", Debian's libzstd), which every MCAP
+// reader supports. No MCAP library is packaged in Debian; CRC32 is zlib's.
 #pragma once
 
 #include <cstdint>
@@ -17,10 +18,12 @@ namespace sanet::trace {
 class McapWriter {
  public:
   using Bytes = std::vector<std::uint8_t>;
+  enum class Compression { kNone, kZstd };
   // Opens `path` and writes the magic and the header (`profile`: "ros2" for ROS 2 messages in
-  // CDR). Messages gather in chunks of about `chunk_bytes`. Throws std::runtime_error.
+  // CDR). Messages gather in chunks of about `chunk_bytes` (before compression). Throws
+  // std::runtime_error.
   McapWriter(const std::string& path, const std::string& profile, const std::string& library,
-             std::size_t chunk_bytes = 1 << 20);
+             Compression compression = Compression::kNone, std::size_t chunk_bytes = 1 << 20);
   ~McapWriter();
   McapWriter(const McapWriter&) = delete;
   McapWriter& operator=(const McapWriter&) = delete;
@@ -55,6 +58,7 @@ class McapWriter {
   std::ofstream out_;
   std::uint64_t offset_ = 0;    // bytes written so far
   std::uint32_t data_crc_ = 0;  // CRC32 of the data section so far
+  Compression compression_;
   std::size_t chunk_bytes_;
   std::vector<Schema> schemas_;
   std::vector<Channel> channels_;

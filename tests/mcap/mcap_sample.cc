@@ -1,9 +1,9 @@
 // Writes an MCAP file with trace::McapWriter for tests/mcap/mcap_test.py: two schemas (ROS 2
 // message definitions, as the trace will carry them), three channels, one of them without
 // messages, and COUNT messages a channel, with times that sometimes go back, in chunks of
-// CHUNK bytes, so that the file has many chunks and indexes.
+// CHUNK bytes, so that the file has many chunks and indexes; with `zstd`, compressed.
 //
-//   mcap_sample FILE COUNT CHUNK
+//   mcap_sample FILE COUNT CHUNK [zstd]
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -11,12 +11,14 @@
 #include "trace/mcap_writer.h"
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: mcap_sample FILE COUNT CHUNK\n");
+  using sanet::trace::McapWriter;
+  if (argc != 4 && argc != 5) {
+    std::fprintf(stderr, "usage: mcap_sample FILE COUNT CHUNK [zstd]\n");
     return 2;
   }
   const long count = std::atol(argv[2]);
-  sanet::trace::McapWriter mcap(argv[1], "ros2", "sanet tests", static_cast<std::size_t>(std::atol(argv[3])));
+  const auto compression = argc == 5 ? McapWriter::Compression::kZstd : McapWriter::Compression::kNone;
+  McapWriter mcap(argv[1], "ros2", "sanet tests", compression, static_cast<std::size_t>(std::atol(argv[3])));
   const auto point = mcap.AddSchema("geometry_msgs/msg/Point", "ros2msg", "float64 x\nfloat64 y\nfloat64 z\n");
   const auto text = mcap.AddSchema("std_msgs/msg/String", "ros2msg", "string data\n");
   const auto a = mcap.AddChannel(point, "/r1/point", "cdr", {{"offered_qos_profiles", ""}});

@@ -24,10 +24,17 @@ def read(path):
 
 class Container(unittest.TestCase):
     def test_many_chunks_read_back_whole_and_indexed(self):
+        for compression in ["", "zstd"]:
+            with self.subTest(compression=compression or "none"):
+                self.many_chunks(compression)
+
+    def many_chunks(self, compression):
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, "sample.mcap")
-            subprocess.run([SAMPLE, path, "500", "4096"], check=True, capture_output=True)
+            subprocess.run([SAMPLE, path, "500", "4096", *([compression] if compression else [])], check=True,
+                           capture_output=True)
             f = read(path)
+            self.assertEqual(f["compression"], [compression] * f["chunks"])
             self.assertEqual((f["profile"], f["library"]), ("ros2", "sanet tests"))
             self.assertTrue(f["streamed"]["done"], "the stream reader reached the trailing magic")
             self.assertEqual(f["streamed"]["messages"], 1000)

@@ -1,7 +1,7 @@
 // An independent reader of sanet's MCAP files: npm's @mcap/core (pinned by ./setup), the reader of
 // Foxglove's tools. It reads FILE twice: record by record with every CRC checked
 // (McapStreamReader), and through its summary and indexes (McapIndexedReader), and prints what
-// it found as JSON for the test to compare.
+// it found as JSON for the test to compare. Zstandard chunks are decompressed with npm's fzstd.
 //
 //   node read_mcap.mjs NODE_MODULES FILE
 import { createRequire } from "node:module";
@@ -11,9 +11,11 @@ import { resolve } from "node:path";
 const [modules, file] = process.argv.slice(2);
 const require = createRequire(resolve(modules) + "/");
 const { McapIndexedReader, McapStreamReader } = require("@mcap/core");
+const { decompress } = require("fzstd");
+const decompressHandlers = { zstd: (data, size) => decompress(data, new Uint8Array(Number(size))) };
 
 const streamed = { records: {}, messages: 0 };
-const stream = new McapStreamReader({ validateCrcs: true });
+const stream = new McapStreamReader({ validateCrcs: true, decompressHandlers });
 stream.append(new Uint8Array(await readFile(file)));
 for (let r; (r = stream.nextRecord()); ) {
   streamed.records[r.type] = (streamed.records[r.type] ?? 0) + 1;
@@ -30,7 +32,7 @@ const readable = {
     return new Uint8Array(buffer.buffer, buffer.byteOffset, buffer.length);
   },
 };
-const reader = await McapIndexedReader.Initialize({ readable });
+const reader = await McapIndexedReader.Initialize({ readable, decompressHandlers });
 const channels = {};
 for (const [id, c] of reader.channelsById)
   channels[c.topic] = { id, schema: reader.schemasById.get(c.schemaId)?.name, encoding: c.messageEncoding,
@@ -49,7 +51,7 @@ for await (const m of reader.readMessages({ topics: ["/log"], startTime: 1000000
 const s = reader.statistics;
 console.log(JSON.stringify({
   profile: reader.header.profile, library: reader.header.library, streamed, channels,
-  chunks: reader.chunkIndexes.length, summaryOffsets: [...reader.summaryOffsetsByOpcode.keys()],
+  chunks: reader.chunkIndexes.length, compression: reader.chunkIndexes.map((c) => c.compression), summaryOffsets: [...reader.summaryOffsetsByOpcode.keys()],
   statistics: { messages: Number(s.messageCount), channels: s.channelCount, schemas: s.schemaCount,
                 chunks: s.chunkCount, start: Number(s.messageStartTime), end: Number(s.messageEndTime),
                 perChannel: Object.fromEntries([...s.channelMessageCounts].map(([k, v]) => [k, Number(v)])) },

@@ -1,16 +1,16 @@
-#include "ros2_face/robot_messages.h"
+#include "sim/robot_messages.h"
 
 #include <cmath>
 
-namespace sanet::ros2face {
-namespace {
-
-msg::geometry_msgs::Quaternion Yaw(double theta) {
+namespace sanet::sim {
+msg::geometry_msgs::Quaternion YawQuaternion(double theta) {
   msg::geometry_msgs::Quaternion q;
   q.z = std::sin(theta / 2);
   q.w = std::cos(theta / 2);
   return q;
 }
+
+namespace {
 
 msg::geometry_msgs::TransformStamped Transform(const std::string& parent, const std::string& child, double t, double x,
                                                double y, double z, double yaw) {
@@ -21,7 +21,7 @@ msg::geometry_msgs::TransformStamped Transform(const std::string& parent, const 
   tf.transform.translation.x = x;
   tf.transform.translation.y = y;
   tf.transform.translation.z = z;
-  tf.transform.rotation = Yaw(yaw);
+  tf.transform.rotation = YawQuaternion(yaw);
   return tf;
 }
 
@@ -33,7 +33,7 @@ msg::nav_msgs::Odometry OdometryIn(const std::string& frame, const std::string& 
   o.child_frame_id = child;
   o.pose.pose.position.x = pose.x;
   o.pose.pose.position.y = pose.y;
-  o.pose.pose.orientation = Yaw(pose.theta);
+  o.pose.pose.orientation = YawQuaternion(pose.theta);
   o.twist.twist.linear.x = body_velocity.vx;
   o.twist.twist.linear.y = body_velocity.vy;
   o.twist.twist.angular.z = body_velocity.omega;
@@ -80,12 +80,12 @@ Pose2D Relative(const Pose2D& origin, const Pose2D& pose) {
   return {d.x, d.y, std::remainder(pose.theta - origin.theta, 2 * M_PI)};
 }
 
-msg::nav_msgs::Odometry OdometryOf(const sim::SensorReadings& r, const Pose2D& start, const RobotFrames& frames) {
+msg::nav_msgs::Odometry OdometryOf(const SensorReadings& r, const Pose2D& start, const RobotFrames& frames) {
   const Pose2D pose = Relative(start, r.odometry.value_or(start));
   return OdometryIn(frames.odom, frames.base, r.time, pose, InBody(r.velocity, r.ground_truth.theta));
 }
 
-msg::nav_msgs::Odometry GroundTruthOf(const sim::SensorReadings& r, const RobotFrames& frames) {
+msg::nav_msgs::Odometry GroundTruthOf(const SensorReadings& r, const RobotFrames& frames) {
   return OdometryIn("world", frames.base, r.time, r.ground_truth, InBody(r.velocity, r.ground_truth.theta));
 }
 
@@ -118,16 +118,17 @@ msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, co
   return r;
 }
 
-msg::geometry_msgs::TransformStamped OdomToBase(const sim::SensorReadings& r, const Pose2D& start,
+msg::geometry_msgs::TransformStamped OdomToBase(const SensorReadings& r, const Pose2D& start,
                                                 const RobotFrames& frames) {
   const Pose2D pose = Relative(start, r.odometry.value_or(start));
   return Transform(frames.odom, frames.base, r.time, pose.x, pose.y, 0, pose.theta);
 }
 
-msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver, const std::map<NodeId, RobotFrames>& frames) {
+msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const NodeSpec&(NodeId)>& spec_of,
+                                          const std::map<NodeId, RobotFrames>& frames) {
   msg::tf2_msgs::TFMessage out;
-  for (NodeId id = 0; id < driver.NodeCount(); ++id) {
-    const sim::NodeSpec& node = driver.Spec(id);
+  for (NodeId id = 0; id < count; ++id) {
+    const NodeSpec& node = spec_of(id);
     const Pose2D& p = node.pose;
     if (node.model.kind == robots::ModelKind::kMote) {
       out.transforms.push_back(Transform("world", node.name, 0, p.x, p.y, 0, p.theta));
@@ -141,4 +142,4 @@ msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver, const std::
   return out;
 }
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::sim

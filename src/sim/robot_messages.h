@@ -7,6 +7,7 @@
 // world for ground truth, motes and the start poses.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -14,7 +15,7 @@
 #include "ros2msg/messages.h"
 #include "sim/driver.h"
 
-namespace sanet::ros2face {
+namespace sanet::sim {
 
 namespace msg = ros2msg;
 
@@ -25,23 +26,26 @@ struct RobotFrames {
 RobotFrames FramesOf(const std::string& robot, const robots::ModelSpec& model);
 
 msg::builtin_interfaces::Time StampOf(double t);  // s of simulated time
+msg::geometry_msgs::Quaternion YawQuaternion(double theta);  // a turn of `theta` rad about z
 
 // Wheel odometry in R/odom (relative to the start pose), with the body's velocity in R/base_link.
-msg::nav_msgs::Odometry OdometryOf(const sim::SensorReadings& r, const Pose2D& start, const RobotFrames& frames);
+msg::nav_msgs::Odometry OdometryOf(const SensorReadings& r, const Pose2D& start, const RobotFrames& frames);
 // The true pose in world, child R/base_link.
-msg::nav_msgs::Odometry GroundTruthOf(const sim::SensorReadings& r, const RobotFrames& frames);
+msg::nav_msgs::Odometry GroundTruthOf(const SensorReadings& r, const RobotFrames& frames);
 msg::sensor_msgs::LaserScan ScanOf(const RangeScan& scan, double t, const std::string& frame);
 // IR sensor `i`: one ray (field of view 0), its noise's variance.
 msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, const std::string& frame, double noise);
 
 // R/odom -> R/base_link now.
-msg::geometry_msgs::TransformStamped OdomToBase(const sim::SensorReadings& r, const Pose2D& start,
+msg::geometry_msgs::TransformStamped OdomToBase(const SensorReadings& r, const Pose2D& start,
                                                 const RobotFrames& frames);
 // What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor, for every
-// robot (`frames`: each robot's, by node); world -> M for every mote.
-msg::tf2_msgs::TFMessage StaticTransforms(const sim::Driver& driver, const std::map<NodeId, RobotFrames>& frames);
+// robot (`frames`: each robot's, by node; FramesOf for the others); world -> M for every mote, of
+// the `count` nodes whose specs `spec_of` gives.
+msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const NodeSpec&(NodeId)>& spec_of,
+                                          const std::map<NodeId, RobotFrames>& frames);
 
 // `pose` seen from `origin`: both in the same frame.
 Pose2D Relative(const Pose2D& origin, const Pose2D& pose);
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::sim

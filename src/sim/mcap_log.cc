@@ -1,0 +1,212 @@
+#include "sim/mcap_log.h"
+
+#include <cmath>
+
+#include "core/delivery.h"
+#include "core/version.h"
+#include "ros2msg/codec.h"
+
+namespace sanet::sim {
+namespace {
+
+// Frames delivered within this many seconds of simulated time are drawn together, for as long.
+constexpr double kRadioWindow = 0.25;
+constexpr std::size_t kOdometry = 0, kIr = 1, kLaser = 2;
+
+// The time of a message in the log, as its header's stamp says it (StampOf).
+std::uint64_t Nanoseconds(double t) {
+  if (t <= 0) return 0;
+  const msg::builtin_interfaces::Time stamp = StampOf(t);
+  return static_cast<std::uint64_t>(stamp.sec) * 1000000000u + stamp.nanosec;
+}
+
+msg::rcl_interfaces::Log LogLine(double t, const std::string& node, const std::string& text) {
+  msg::rcl_interfaces::Log line;
+  line.stamp = StampOf(t);
+  line.level = msg::rcl_interfaces::Log::INFO;
+  line.name = node;
+  line.msg = text;
+  return line;
+}
+
+// The log's ground truth and /tf carry the true pose: a reading whose odometry is the truth.
+SensorReadings Truth(double t, const Pose2D& pose, const Twist2D& velocity) {
+  SensorReadings r;
+  r.time = t;
+  r.ground_truth = pose;
+  r.odometry = pose;
+  r.velocity = velocity;
+  return r;
+}
+
+}  // namespace
+
+McapLog::McapLog(const std::string& path, const RunSpec& spec, const RunNodes& nodes)
+    : spec_(spec),
+      nodes_(nodes),
+      writer_(path, "ros2", std::string("sanet ") + SanetVersion(), trace::McapWriter::Compression::kZstd) {
+  Statics(0);
+}
+
+template <typename M>
+std::uint16_t McapLog::ChannelOf(const std::string& topic) {
+  if (const auto known = channels_.find(topic); known != channels_.end()) return known->second;
+  const std::string type = ros2msg::TypeOf<M>::kName;
+  auto schema = schemas_.find(type);
+  if (schema == schemas_.end())
+    schema = schemas_.emplace(type, writer_.AddSchema(type, "ros2msg", ros2msg::TypeOf<M>::Definition())).first;
+  return channels_[topic] = writer_.AddChannel(schema->second, topic, "cdr");
+}
+
+template <typename M>
+void McapLog::Publish(const std::string& topic, double t, const M& message) {
+  const std::uint16_t channel = ChannelOf<M>(topic);
+  writer_.Write(channel, Nanoseconds(t), Nanoseconds(t), ros2msg::Encode(message));
+}
+
+const RobotFrames& McapLog::FramesOf(NodeId node) {
+  while (frames_.size() <= node) {
+    const NodeSpec& n = nodes_[frames_.size()];
+    frames_.push_back(sim::FramesOf(n.name, n.model));
+    if (n.model.kind == robots::ModelKind::kMote) frames_.back().base = n.name;  // its frame in /tf_static
+  }
+  return frames_[node];
+}
+
+// Whether this is the node's first read of `what` at time `t` (a controller may read twice).
+bool McapLog::FirstAt(double t, NodeId node, std::size_t what) {
+  if (last_read_.size() <= node) last_read_.resize(node + 1, {-1, -1, -1});
+  if (last_read_[node][what] == t) return false;
+  last_read_[node][what] = t;
+  return true;
+}
+
+void McapLog::Statics(double t) {
+  Publish("/tf_static", t,
+          StaticTransforms(
+              nodes_.size(), [this](NodeId id) -> const NodeSpec& { return nodes_[id]; }, {}));
+  Publish("/world", t, WorldMarkers(spec_, nodes_, t));
+  for (NodeId id = where_.size(); id < nodes_.size(); ++id) where_.push_back({nodes_[id].pose.x, nodes_[id].pose.y});
+}
+
+void McapLog::Spawned(double t) { Statics(t); }
+
+void McapLog::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
+  const RobotFrames& frames = FramesOf(node);
+  const SensorReadings truth = Truth(t, pose, velocity);
+  const std::string& name = nodes_[node].name;
+  Publish("/" + name + "/ground_truth", t, GroundTruthOf(truth, frames));
+  if (nodes_[node].model.kind != robots::ModelKind::kMote) {
+    msg::tf2_msgs::TFMessage tf;
+    tf.transforms.push_back(OdomToBase(truth, nodes_[node].pose, frames));
+    Publish("/tf", t, tf);
+  }
+  if (node < where_.size()) where_[node] = {pose.x, pose.y};
+}
+
+void McapLog::Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body) {
+  if (!FirstAt(t, node, kOdometry)) return;
+  SensorReadings r = Truth(t, body.pose, body.velocity);
+  r.odometry = odometry;
+  Publish("/" + nodes_[node].name + "/odom", t, OdometryOf(r, nodes_[node].pose, FramesOf(node)));
+}
+
+void McapLog::Scan(double t, NodeId node, Scanner which, const RangeScan& scan) {
+  if (!FirstAt(t, node, which == Scanner::kIr ? kIr : kLaser)) return;
+  const RobotFrames& frames = FramesOf(node);
+  const std::string ns = "/" + nodes_[node].name;
+  if (which == Scanner::kLaser) return Publish(ns + "/scan", t, ScanOf(scan, t, frames.laser));
+  const auto& ir = nodes_[node].model.sensors.ir;
+  const double noise = ir ? ir->noise : 0;
+  for (std::size_t i = 0; i < scan.ranges.size() && i < frames.ir.size(); ++i)
+    Publish(ns + "/ir_" + std::to_string(i), t, RangeOf(scan, i, t, frames.ir[i], noise));
+}
+
+void McapLog::Frame(const net::FrameEvent& f) {
+  msg::sanet_msgs::RadioFrame frame;
+  frame.stamp = StampOf(f.t);
+  frame.node = nodes_.NameOf(f.node);
+  frame.sent = f.sent;
+  frame.peer = f.peer ? nodes_.NameOf(*f.peer) : "";
+  frame.kind = f.kind;
+  frame.bytes = f.bytes;
+  Publish("/radio/frames", f.t, frame);
+  FlushRadio(f.t);
+  if (!f.sent && f.peer && *f.peer < where_.size() && f.node < where_.size()) {
+    const std::string kind = f.kind;
+    radio_[{*f.peer, f.node}] |= kind == "data" || kind == "broadcast";
+  }
+}
+
+// Draws the frames of every window that ended before `until`.
+void McapLog::FlushRadio(double until) {
+  if (until < radio_window_ + kRadioWindow) return;
+  if (!radio_.empty()) {
+    std::vector<RadioLine> lines;
+    for (const auto& [pair, data] : radio_) lines.push_back({where_[pair.first], where_[pair.second], data});
+    Publish("/radio/links", radio_window_, RadioMarkers(radio_window_, kRadioWindow, lines));
+  }
+  radio_.clear();
+  radio_window_ = std::floor(until / kRadioWindow) * kRadioWindow;
+}
+
+void McapLog::Message(double t, const sanet::Message& m, NodeId to, bool delivered) {
+  msg::sanet_msgs::NetworkMessage out;
+  out.stamp = StampOf(t);
+  out.sender = nodes_.NameOf(m.from);
+  out.receiver = nodes_.NameOf(to);
+  out.delivery = DeliveryName(m.delivery);
+  out.bytes = static_cast<std::uint32_t>(m.payload.size());
+  out.sent = m.time_sent;
+  out.received = delivered ? m.time_received : std::nan("");
+  out.delay = delivered ? m.time_received - m.time_sent : std::nan("");
+  out.hops = delivered && m.hops ? *m.hops : -1;
+  Publish("/messages", t, out);
+}
+
+void McapLog::Route(const RouteChange& r) {
+  msg::sanet_msgs::RouteChange out;
+  out.stamp = StampOf(r.time);
+  out.node = nodes_.NameOf(r.node);
+  out.destination = nodes_.NameOf(r.destination);
+  out.next_hop = r.next_hop ? nodes_.NameOf(*r.next_hop) : "";
+  out.hops = r.next_hop ? r.hops : 0;
+  Publish("/routes", r.time, out);
+}
+
+void McapLog::Transition(double t, NodeId node, const std::string& from, const std::string& to,
+                         const std::string& why) {
+  msg::sanet_msgs::Transition out;
+  out.stamp = StampOf(t);
+  out.node = nodes_.NameOf(node);
+  out.from_state = from;
+  out.to_state = to;
+  out.why = why;
+  Publish("/transitions", t, out);
+}
+
+void McapLog::Metric(double t, NodeId node, const std::string& name, double value) {
+  msg::sanet_msgs::Metric out;
+  out.stamp = StampOf(t);
+  out.node = nodes_.NameOf(node);
+  out.name = name;
+  out.value = value;
+  Publish("/metrics", t, out);
+}
+
+void McapLog::Event(double t, NodeId node, const std::string& kind, const std::string& detail) {
+  if (kind == "log") return Publish("/rosout", t, LogLine(t, nodes_.NameOf(node), detail));
+  msg::sanet_msgs::NodeEvent out;
+  out.stamp = StampOf(t);
+  out.node = nodes_.NameOf(node);
+  out.kind = kind;
+  out.detail = detail;
+  Publish("/events", t, out);
+}
+
+void McapLog::Close() {
+  FlushRadio(HUGE_VAL);
+  writer_.Close();
+}
+
+}  // namespace sanet::sim

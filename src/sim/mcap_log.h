@@ -1,0 +1,71 @@
+// A run's trace as ROS 2 messages in an MCAP file (trace.mcap), which ros2 bag, Foxglove,
+// Lichtblick and PlotJuggler open. Every message is CDR from the ROS 2 message layer (ros2msg),
+// built by the functions the ROS 2 face publishes with (sim/robot_messages.h), and logged and
+// published at the simulated time of its event. Readings are those the run took (a controller's,
+// the server's, the face's), handed over as they were read: the log never reads a sensor.
+// docs/mcap.md lists the topics and types.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "agents/simulated_node.h"
+#include "net/network_traces.h"
+#include "sim/robot_messages.h"
+#include "sim/run_nodes.h"
+#include "sim/run_observer.h"
+#include "sim/run_spec.h"
+#include "sim/snapshot.h"
+#include "sim/world_markers.h"
+#include "trace/mcap_writer.h"
+
+namespace sanet::sim {
+
+class McapLog {
+ public:
+  using Scanner = agents::NodeDirectory::Scanner;
+  // Opens `path` and logs what stands at time 0: /tf_static and the world's markers.
+  McapLog(const std::string& path, const RunSpec& spec, const RunNodes& nodes);
+
+  // A robot joined at `t`: /tf_static and the world's markers again, with it.
+  void Spawned(double t);
+  // A true pose the trace records (a row of trajectories.csv).
+  void Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity);
+  void Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body);
+  void Scan(double t, NodeId node, Scanner which, const RangeScan& scan);
+  void Frame(const net::FrameEvent& frame);
+  // An application message at `t` (when it was delivered, or reached a radio but no controller).
+  void Message(double t, const sanet::Message& m, NodeId to, bool delivered);
+  void Route(const RouteChange& change);
+  void Transition(double t, NodeId node, const std::string& from, const std::string& to, const std::string& why);
+  void Metric(double t, NodeId node, const std::string& name, double value);
+  // A line of a node's log ("log") or something that happened to it (switch-off, spawn).
+  void Event(double t, NodeId node, const std::string& kind, const std::string& detail);
+  void Close();
+
+ private:
+  template <typename M>
+  void Publish(const std::string& topic, double t, const M& message);
+  template <typename M>
+  std::uint16_t ChannelOf(const std::string& topic);
+  const RobotFrames& FramesOf(NodeId node);
+  bool FirstAt(double t, NodeId node, std::size_t what);
+  void FlushRadio(double until);
+  void Statics(double t);
+
+  const RunSpec& spec_;
+  const RunNodes& nodes_;
+  trace::McapWriter writer_;
+  std::map<std::string, std::uint16_t> schemas_, channels_;
+  std::vector<RobotFrames> frames_;
+  std::vector<std::array<double, 3>> last_read_;  // per node: odometry, IR, laser (-1: never)
+  std::vector<Vec2> where_;                       // per node: where it stood last, for the radio's lines
+  std::map<std::pair<NodeId, NodeId>, bool> radio_;  // sender, receiver: a data frame among them, in the window
+  double radio_window_ = 0;                       // s, the current window's start
+};
+
+}  // namespace sanet::sim

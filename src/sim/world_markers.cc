@@ -1,0 +1,126 @@
+#include "sim/world_markers.h"
+
+#include <cmath>
+
+#include "sim/robot_messages.h"
+
+namespace sanet::sim {
+namespace {
+
+using msg::visualization_msgs::Marker;
+using msg::visualization_msgs::MarkerArray;
+
+msg::std_msgs::ColorRGBA Colour(float r, float g, float b, float a = 1) {
+  msg::std_msgs::ColorRGBA c;
+  c.r = r, c.g = g, c.b = b, c.a = a;
+  return c;
+}
+
+Marker Shape(const std::string& frame, double t, const char* ns, int id, int type) {
+  Marker m;
+  m.header.stamp = StampOf(t);
+  m.header.frame_id = frame;
+  m.ns = ns;
+  m.id = id;
+  m.type = type;
+  m.action = Marker::ADD;
+  m.pose.orientation.w = 1;
+  return m;
+}
+
+void Place(Marker& m, double x, double y, double z, double yaw) {
+  m.pose.position.x = x, m.pose.position.y = y, m.pose.position.z = z;
+  m.pose.orientation = YawQuaternion(yaw);
+}
+
+Marker ObstacleMarker(const Obstacle& o, int id, double t) {
+  Marker m = Shape("world", t, "obstacles", id, Marker::CUBE);
+  Place(m, o.box.center.x, o.box.center.y, o.box.center.z, o.box.yaw);
+  m.scale.x = o.box.size.x, m.scale.y = o.box.size.y, m.scale.z = o.box.size.z;
+  m.color = o.kind == "wall" ? Colour(0.55f, 0.55f, 0.6f) : Colour(0.7f, 0.5f, 0.3f);
+  return m;
+}
+
+Marker MoteMarker(const NodeSpec& node, int id, double t) {
+  const double side = node.model.mote.size;
+  Marker m = Shape("world", t, "motes", id, Marker::CUBE);
+  Place(m, node.pose.x, node.pose.y, side / 2, node.pose.theta);
+  m.scale.x = m.scale.y = m.scale.z = side;
+  m.color = Colour(1.0f, 0.6f, 0.1f);
+  return m;
+}
+
+// In the robot's own frame, which /tf moves: the body needs no update while the robot drives.
+Marker BodyMarker(const NodeSpec& node, int id, double t) {
+  const RobotFrames frames = FramesOf(node.name, node.model);
+  Marker m = Shape(frames.base, t, "bodies", id, Marker::CYLINDER);
+  m.frame_locked = true;
+  m.color = Colour(0.2f, 0.45f, 0.9f);
+  if (node.model.kind == robots::ModelKind::kDiffDrive) {
+    const auto& d = node.model.diffdrive;
+    m.type = Marker::CUBE;
+    Place(m, 0, 0, d.ground_clearance + d.body_height / 2, 0);
+    m.scale.x = d.body_length, m.scale.y = d.body_width, m.scale.z = d.body_height;
+  } else {
+    const auto& o = node.model.omni3;
+    Place(m, 0, 0, o.ground_clearance + o.body_height / 2, 0);
+    m.scale.x = m.scale.y = 2 * o.body_radius, m.scale.z = o.body_height;
+  }
+  return m;
+}
+
+Marker NameMarker(const NodeSpec& node, const std::string& frame, int id, double t) {
+  Marker m = Shape(frame, t, "names", id, Marker::TEXT_VIEW_FACING);
+  m.frame_locked = true;
+  m.pose.position.z = 0.5;
+  m.scale.z = 0.25;  // the text's height, m
+  m.color = Colour(1, 1, 1);
+  m.text = node.name;
+  return m;
+}
+
+msg::geometry_msgs::Point At(Vec2 p, double z) {
+  msg::geometry_msgs::Point point;
+  point.x = p.x, point.y = p.y, point.z = z;
+  return point;
+}
+
+}  // namespace
+
+MarkerArray WorldMarkers(const RunSpec& spec, const RunNodes& nodes, double t) {
+  MarkerArray out;
+  int id = 0;
+  for (const Obstacle& o : spec.obstacles) out.markers.push_back(ObstacleMarker(o, id++, t));
+  for (NodeId n = 0; n < nodes.size(); ++n) {
+    const NodeSpec& node = nodes[n];
+    const int marker = static_cast<int>(n);
+    if (node.model.kind == robots::ModelKind::kMote) {
+      out.markers.push_back(MoteMarker(node, marker, t));
+      out.markers.push_back(NameMarker(node, node.name, marker, t));  // the mote's frame, from /tf_static
+    } else {
+      out.markers.push_back(BodyMarker(node, marker, t));
+      out.markers.push_back(NameMarker(node, FramesOf(node.name, node.model).base, marker, t));
+    }
+  }
+  return out;
+}
+
+MarkerArray RadioMarkers(double t, double lifetime, const std::vector<RadioLine>& lines) {
+  MarkerArray out;
+  for (const bool data : {true, false}) {
+    Marker m = Shape("world", t, data ? "radio_data" : "radio_other", 0, Marker::LINE_LIST);
+    m.scale.x = data ? 0.04 : 0.02;  // the lines' width, m
+    m.color = data ? Colour(0.2f, 0.9f, 0.3f, 0.9f) : Colour(0.3f, 0.6f, 1.0f, 0.6f);
+    m.lifetime.sec = static_cast<std::int32_t>(std::floor(lifetime));
+    m.lifetime.nanosec = static_cast<std::uint32_t>(std::llround((lifetime - std::floor(lifetime)) * 1e9));
+    for (const RadioLine& line : lines)
+      if (line.data == data) {
+        m.points.push_back(At(line.from, 0.3));
+        m.points.push_back(At(line.to, 0.3));
+      }
+    if (!m.points.empty()) out.markers.push_back(std::move(m));
+  }
+  return out;
+}
+
+}  // namespace sanet::sim

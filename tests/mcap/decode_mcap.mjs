@@ -1,0 +1,82 @@
+// Decodes every message of a ROS 2 MCAP file as a ROS 2 tool would, from the schemas in the file
+// alone: @mcap/core's indexed reader (fzstd for Zstandard chunks), @foxglove/rosmsg to parse each
+// ros2msg schema, @foxglove/rosmsg2-serialization to read the CDR. Each message is also written
+// back with the same library's writer, which must give the same bytes (up to CDR's closing
+// padding), so that a field too many or too few cannot pass. Prints JSON for the test: the
+// channels, the count per topic, the decoding errors, messages whose stamp is not their log time,
+// every ground-truth pose, and the first and last message of each topic.
+//
+//   node decode_mcap.mjs NODE_MODULES FILE
+import { createRequire } from "node:module";
+import { open } from "node:fs/promises";
+import { resolve } from "node:path";
+
+const [modules, file] = process.argv.slice(2);
+const require = createRequire(resolve(modules) + "/");
+const { McapIndexedReader } = require("@mcap/core");
+const { decompress } = require("fzstd");
+const { parse } = require("@foxglove/rosmsg");
+const { MessageReader, MessageWriter } = require("@foxglove/rosmsg2-serialization");
+
+const handle = await open(file);
+const readable = {
+  size: async () => BigInt((await handle.stat()).size),
+  read: async (offset, length) => {
+    const buffer = Buffer.alloc(Number(length));
+    await handle.read(buffer, 0, Number(length), Number(offset));
+    return new Uint8Array(buffer.buffer, buffer.byteOffset, buffer.length);
+  },
+};
+const decompressHandlers = { zstd: (data, size) => decompress(data, new Uint8Array(Number(size))) };
+const reader = await McapIndexedReader.Initialize({ readable, decompressHandlers });
+
+const codecs = new Map();  // channel id -> { reader, writer }
+const channels = {};
+for (const [id, c] of reader.channelsById) {
+  const schema = reader.schemasById.get(c.schemaId);
+  channels[c.topic] = { schema: schema.name, schemaEncoding: schema.encoding, messageEncoding: c.messageEncoding };
+  const definitions = parse(new TextDecoder().decode(schema.data), { ros2: true });
+  codecs.set(id, { reader: new MessageReader(definitions), writer: new MessageWriter(definitions) });
+}
+
+const stampOf = (m) => m.header?.stamp ?? m.stamp ?? m.transforms?.[0]?.header.stamp ?? m.markers?.[0]?.header.stamp;
+const plain = (value) => JSON.parse(JSON.stringify(value, (k, v) =>
+  typeof v === "bigint" ? Number(v) : ArrayBuffer.isView(v) ? Array.from(v) : v));
+const counts = {}, first = {}, last = {}, groundTruth = {};
+const errors = [], stampMismatches = [];
+for await (const record of reader.readMessages()) {
+  const topic = reader.channelsById.get(record.channelId).topic;
+  const codec = codecs.get(record.channelId);
+  counts[topic] = (counts[topic] ?? 0) + 1;
+  let message;
+  try {
+    message = codec.reader.readMessage(record.data);
+    const again = codec.writer.writeMessage(message);
+    const padding = record.data.length - again.length;
+    if (padding < 0 || padding > 3 || !again.every((b, i) => i < 4 || b === record.data[i]))
+      errors.push(`${topic}: written back as ${again.length} bytes, not ${record.data.length}`);
+  } catch (e) {
+    errors.push(`${topic}: ${e.message}`);
+    continue;
+  }
+  const stamp = stampOf(message);
+  // (this version of the library reads builtin_interfaces/Time as {sec, nsec})
+  if (stamp && BigInt(stamp.sec) * 1000000000n + BigInt(stamp.nanosec ?? stamp.nsec) !== record.logTime)
+    stampMismatches.push(`${topic} at ${record.logTime}`);
+  if (record.logTime !== record.publishTime) stampMismatches.push(`${topic}: publish time differs`);
+  if (topic.endsWith("/ground_truth")) {
+    const p = message.pose.pose;
+    (groundTruth[topic.split("/")[1]] ??= []).push(
+      [Number(record.logTime) / 1e9, p.position.x, p.position.y, 2 * Math.atan2(p.orientation.z, p.orientation.w)]);
+  }
+  first[topic] ??= plain(message);
+  last[topic] = message;
+}
+for (const topic of Object.keys(last)) last[topic] = plain(last[topic]);
+console.log(JSON.stringify({
+  profile: reader.header.profile, channels, counts, errors: errors.slice(0, 20), errorCount: errors.length,
+  stampMismatches: stampMismatches.slice(0, 20), groundTruth, first, last,
+  statistics: Number(reader.statistics.messageCount), chunks: reader.chunkIndexes.length,
+  compression: [...new Set(reader.chunkIndexes.map((c) => c.compression))],
+}));
+await handle.close();

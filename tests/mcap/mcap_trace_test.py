@@ -1,0 +1,186 @@
+#!/usr/bin/env python3
+"""A run's trace.mcap read by independent tools (tests/mcap/decode_mcap.mjs: npm's @mcap/core,
+@foxglove/rosmsg and @foxglove/rosmsg2-serialization): every message of every channel decodes from
+the schemas in the file and writes back to the same bytes; log time = publish time = the message's
+stamp; ground truth equals trajectories.csv; the topics with a CSV twin have its rows; the frames
+compose (world -> R/odom -> R/base_link is the true pose); the readings are the run's; and the
+fingerprint is the same with and without the trace."""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SANET, MODULES, SOURCE = sys.argv[1:4]
+del sys.argv[1:4]
+DECODER = os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs")
+
+# A robot that steers by its odometry and looks with a laser.
+ODOMETRY = """name: odometry
+duration: 8
+nodes:
+  - name: r
+    model: omni3
+    pose: [0, 0, 0.3]
+    sensors: {laser: {}}
+    controller: {name: waypoint, params: {waypoints: [[2, 1]], speed: 0.5, localization: odometry}}
+  - {name: m, model: mote, pose: [3, 3, 0]}
+"""
+
+
+def run(scenario, folder, *sets):
+    done = subprocess.run([SANET, "run", scenario, "-o", folder, *sets], capture_output=True, text=True, timeout=300)
+    if done.returncode != 0:
+        raise AssertionError(done.stderr)
+    with open(os.path.join(folder, "summary.json")) as f:
+        return json.load(f)["fingerprint"]
+
+
+def decode(path):
+    done = subprocess.run(["node", DECODER, MODULES, path], capture_output=True, text=True, timeout=300)
+    if done.returncode != 0:
+        raise AssertionError(done.stderr)
+    return json.loads(done.stdout)
+
+
+def rows(folder, name):
+    with open(os.path.join(folder, name)) as f:
+        return list(csv.DictReader(f))
+
+
+def yaw(q):
+    return 2 * math.atan2(q["z"], q["w"])
+
+
+class HelpRequest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.out = os.path.join(cls.tmp.name, "traced")
+        scenario = os.path.join(SOURCE, "scenarios", "help-request.yaml")
+        cls.fingerprint = run(scenario, cls.out, "--set", "outputs.trace=true")
+        cls.untraced = run(scenario, os.path.join(cls.tmp.name, "plain"), "--set", "outputs.trace=false")
+        cls.log = decode(os.path.join(cls.out, "trace.mcap"))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_the_trace_does_not_change_the_run(self):
+        self.assertEqual(self.fingerprint, self.untraced)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp.name, "plain", "trace.mcap")), "the same switch")
+
+    def test_every_message_decodes_as_ros2_cdr_at_its_own_time(self):
+        log = self.log
+        self.assertEqual(log["profile"], "ros2")
+        self.assertEqual(log["errorCount"], 0, log["errors"])
+        self.assertEqual(log["stampMismatches"], [])
+        self.assertEqual(log["statistics"], sum(log["counts"].values()))
+        self.assertGreater(log["chunks"], 5, "chunked, with an index per chunk")
+        self.assertEqual(log["compression"], ["zstd"])
+        for topic, c in log["channels"].items():
+            self.assertEqual((c["schemaEncoding"], c["messageEncoding"]), ("ros2msg", "cdr"), topic)
+        types = {t: c["schema"] for t, c in log["channels"].items()}
+        self.assertEqual(types["/robot/ground_truth"], "nav_msgs/msg/Odometry")
+        self.assertEqual(types["/robot/ir_0"], "sensor_msgs/msg/Range")
+        self.assertEqual(types["/tf"], "tf2_msgs/msg/TFMessage")
+        self.assertEqual(types["/world"], "visualization_msgs/msg/MarkerArray")
+        self.assertEqual(types["/radio/links"], "visualization_msgs/msg/MarkerArray")
+        self.assertEqual(types["/rosout"], "rcl_interfaces/msg/Log")
+
+    def test_ground_truth_is_trajectories_csv(self):
+        truth = self.log["groundTruth"]
+        by_node = {}
+        for r in rows(self.out, "trajectories.csv"):
+            by_node.setdefault(r["node"], []).append(r)
+        self.assertEqual(set(truth), set(by_node))
+        for node, csv_rows in by_node.items():
+            self.assertEqual(len(truth[node]), len(csv_rows), node)
+            for (t, x, y, theta), r in zip(truth[node], csv_rows):
+                self.assertAlmostEqual(t, float(r["time"]), places=6)
+                self.assertAlmostEqual(x, float(r["x"]), places=4)
+                self.assertAlmostEqual(y, float(r["y"]), places=4)
+                self.assertAlmostEqual(math.remainder(theta - float(r["theta"]), 2 * math.pi), 0, places=4)
+
+    def test_topics_with_a_csv_twin_have_its_rows(self):
+        counts = self.log["counts"]
+        for topic, name in [("/transitions", "transitions.csv"), ("/metrics", "metrics.csv"),
+                            ("/messages", "messages.csv"), ("/rosout", "log.csv")]:
+            self.assertEqual(counts.get(topic, 0), len(rows(self.out, name)), topic)
+            self.assertGreater(counts.get(topic, 0), 0, topic)
+        first = self.log["first"]["/transitions"]
+        t = rows(self.out, "transitions.csv")[0]
+        self.assertEqual((first["node"], first["from_state"], first["to_state"], first["why"]),
+                         (t["node"], t["from"], t["to"], t["why"]))
+
+    def test_the_frames_compose_to_the_true_pose(self):
+        static = {(tf["header"]["frame_id"], tf["child_frame_id"]): tf["transform"]
+                  for tf in self.log["first"]["/tf_static"]["transforms"]}
+        start = static[("world", "robot/odom")]
+        self.assertIn(("robot/base_link", "robot/ir_0"), static, "sensor mounts")
+        self.assertIn(("world", "m0"), static, "motes")
+        odom_to_base = self.log["last"]["/tf"]["transforms"][0]["transform"]
+        s, o = start["translation"], odom_to_base["translation"]
+        a = yaw(start["rotation"])
+        x = s["x"] + o["x"] * math.cos(a) - o["y"] * math.sin(a)
+        y = s["y"] + o["x"] * math.sin(a) + o["y"] * math.cos(a)
+        last = rows(self.out, "trajectories.csv")
+        final = [r for r in last if r["node"] == "robot"][-1]
+        self.assertAlmostEqual(x, float(final["x"]), places=3)
+        self.assertAlmostEqual(y, float(final["y"]), places=3)
+
+    def test_the_world_and_the_radio_are_drawn(self):
+        markers = self.log["first"]["/world"]["markers"]
+        spaces = [m["ns"] for m in markers]
+        self.assertGreater(spaces.count("obstacles"), 0)
+        self.assertEqual(spaces.count("motes"), 25, "every mote of the scenario")
+        body = next(m for m in markers if m["ns"] == "bodies")
+        self.assertEqual((body["header"]["frame_id"], body["frame_locked"]), ("robot/base_link", True))
+        self.assertGreater(self.log["counts"]["/radio/links"], 100)
+        lines = self.log["first"]["/radio/links"]["markers"][0]
+        self.assertEqual(lines["type"], 5, "LINE_LIST")
+        self.assertGreater(len(lines["points"]), 0)
+        self.assertEqual(len(lines["points"]) % 2, 0)
+        self.assertGreater(self.log["counts"]["/radio/frames"], 1000)
+        self.assertGreater(self.log["counts"]["/routes"], 0)
+
+    def test_ir_ranges_are_the_readings_the_controller_took(self):
+        counts = self.log["counts"]
+        self.assertTrue(all(counts[f"/robot/ir_{i}"] == counts["/robot/ir_0"] for i in range(6)))
+        self.assertGreater(counts["/robot/ir_0"], 1000)
+        self.assertEqual(self.log["first"]["/robot/ir_3"]["header"]["frame_id"], "robot/ir_3")
+
+
+class Readings(unittest.TestCase):
+    def test_odometry_and_scans_are_logged_as_read(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = os.path.join(tmp, "odometry.yaml")
+            with open(scenario, "w") as f:
+                f.write(ODOMETRY)
+            out = os.path.join(tmp, "out")
+            run(scenario, out, "--set", "outputs.trace=true")
+            log = decode(os.path.join(out, "trace.mcap"))
+            self.assertEqual(log["errorCount"], 0, log["errors"])
+            counts = log["counts"]
+            # The controller reads odometry, laser and IR at each of its steps until it arrives, once each.
+            self.assertGreaterEqual(counts["/r/odom"], 20)
+            self.assertLessEqual(abs(counts["/r/scan"] - counts["/r/odom"]), 1, "each step reads both")
+            odom = log["last"]["/r/odom"]
+            self.assertEqual((odom["header"]["frame_id"], odom["child_frame_id"]), ("r/odom", "r/base_link"))
+            final = [r for r in rows(out, "trajectories.csv") if r["node"] == "r"][-1]
+            # Odometry starts at the start pose and drifts little over 2 m.
+            p = odom["pose"]["pose"]["position"]
+            start = 0.3
+            x = p["x"] * math.cos(start) - p["y"] * math.sin(start)
+            y = p["x"] * math.sin(start) + p["y"] * math.cos(start)
+            self.assertLess(math.hypot(x - float(final["x"]), y - float(final["y"])), 0.3)
+            scan = log["first"]["/r/scan"]
+            self.assertEqual(scan["header"]["frame_id"], "r/laser")
+            self.assertGreater(len(scan["ranges"]), 10)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

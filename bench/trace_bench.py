@@ -1,41 +1,57 @@
 #!/usr/bin/env python3
-"""The run's trace (trace.sqlite): its size and what it costs. Runs each scenario with the trace
-on and off (the same seed) and prints the trace's size, the wall time of each and their ratio.
+"""The run's trace, both of its files: trace.sqlite (sanet's viewer, SQL) and trace.mcap (ROS 2
+messages for ROS 2 tools, Foxglove and PlotJuggler), written from the same event stream. Runs each
+scenario with the trace off (the baseline, measured in the same run) and on, the same seed, and
+prints for each file its size, its bytes per simulated second and the wall time its writer took
+(summary.json's profile_s.trace, timed around each writer's calls), then the MCAP file's ratios to
+the SQLite one, and the whole run's wall time on against off. The fingerprints must be the same.
 
-    bench/trace_bench.py build/sanet [scenario ...]   (default: help-request and formation)"""
+    bench/trace_bench.py [--sanet build/sanet] [--duration S] [scenario ...]
+    (default: help-request, and swarm-1k for 60 simulated seconds)"""
+import argparse
 import json
 import os
 import subprocess
-import sys
 import tempfile
 
-sanet = sys.argv[1]
-here = os.path.dirname(os.path.abspath(__file__))
-scenarios = sys.argv[2:] or [os.path.join(here, "..", "scenarios", n + ".yaml") for n in ("help-request", "formation")]
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DEFAULT = [(os.path.join(ROOT, "scenarios", "help-request.yaml"), None),
+           (os.path.join(ROOT, "scenarios", "swarm-1k.yaml"), 60)]
 
 
-def wall(scenario, trace, folder):
-    with open(scenario) as f:
-        text = f.read()
-    text = text.replace("outputs:\n", f"outputs:\n  trace: {'true' if trace else 'false'}\n") if "outputs:\n" in text \
-        else text + f"\noutputs:\n  trace: {'true' if trace else 'false'}\n"
-    path = os.path.join(folder, "s.yaml")
-    with open(path, "w") as f:
-        f.write(text)
-    out = os.path.join(folder, "on" if trace else "off")
-    subprocess.run([sanet, "run", path, "-q", "-o", out], check=True)
+def run(sanet, scenario, duration, trace, out):
+    extra = ["--duration", str(duration)] if duration else []
+    subprocess.run([sanet, "run", scenario, "-q", "-o", out, "--set", f"outputs.trace={str(trace).lower()}", *extra],
+                   check=True)
     with open(os.path.join(out, "summary.json")) as f:
-        summary = json.load(f)
-    size = os.path.getsize(os.path.join(out, "trace.sqlite")) if trace else 0
-    return summary["wall_time_s"], summary["real_time_factor"], size, summary["fingerprint"]
+        return json.load(f)
 
 
-print(f"{'scenario':>14} {'trace MB':>9} {'wall off s':>11} {'wall on s':>10} {'on/off':>7} {'rtf on':>8}  fingerprint")
-for scenario in scenarios:
-    with tempfile.TemporaryDirectory() as tmp:
-        off = wall(scenario, False, tmp)
-        on = wall(scenario, True, tmp)
-    same = "same" if on[3] == off[3] else "DIFFERENT"
-    name = os.path.splitext(os.path.basename(scenario))[0]
-    print(f"{name:>14} {on[2] / 1e6:>9.2f} {off[0]:>11.2f} {on[0]:>10.2f} {on[0] / off[0]:>7.2f} {on[1]:>8.1f}  {same}",
-          flush=True)
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--sanet", default=os.path.join(ROOT, "build", "sanet"))
+    parser.add_argument("--duration", type=float, help="simulated seconds of every scenario given")
+    parser.add_argument("scenarios", nargs="*")
+    a = parser.parse_args()
+    cases = [(s, a.duration) for s in a.scenarios] or DEFAULT
+    print(f"{'scenario':>13} {'file':>7} {'MB':>7} {'kB/sim s':>9} {'write s':>8}   "
+          f"{'mcap/sqlite size':>16} {'time':>6}   {'run on/off':>10}  fingerprint")
+    for scenario, duration in cases:
+        with tempfile.TemporaryDirectory() as tmp:
+            off = run(a.sanet, scenario, duration, False, os.path.join(tmp, "off"))
+            on = run(a.sanet, scenario, duration, True, os.path.join(tmp, "on"))
+            sizes = {kind: os.path.getsize(os.path.join(tmp, "on", f"trace.{kind}")) for kind in ("sqlite", "mcap")}
+        simulated = on["simulated_s"] if "simulated_s" in on else on["duration_s"]
+        cost = on["profile_s"]["trace"]
+        name = os.path.splitext(os.path.basename(scenario))[0]
+        same = "same" if on["fingerprint"] == off["fingerprint"] else "DIFFERENT"
+        for kind in ("sqlite", "mcap"):
+            ratios = (f"{sizes['mcap'] / sizes['sqlite']:>16.2f} {cost['mcap'] / max(cost['sqlite'], 1e-9):>6.2f}"
+                      if kind == "mcap" else f"{'':>16} {'':>6}")
+            run_ratio = f"{on['wall_time_s'] / off['wall_time_s']:>10.2f}  {same}" if kind == "mcap" else ""
+            print(f"{name:>13} {kind:>7} {sizes[kind] / 1e6:>7.2f} {sizes[kind] / simulated / 1e3:>9.1f} "
+                  f"{cost[kind]:>8.2f}   {ratios}   {run_ratio}", flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -89,8 +89,9 @@ void Ros2Face::AddRobots() {
   nodes_seen_ = driver_.NodeCount();
   std::map<NodeId, RobotFrames> frames;
   for (const auto& r : robots_) frames[r->id] = r->frames;
-  dds_.Write(tf_static_, ros2msg::Encode(StaticTransforms(
-      driver_.NodeCount(), [this](NodeId id) -> const sim::NodeSpec& { return driver_.Spec(id); }, frames)));
+  dds_.Write(tf_static_,
+             ros2msg::Encode(StaticTransforms(
+                 driver_.NodeCount(), [this](NodeId id) -> const sim::NodeSpec& { return driver_.Spec(id); }, frames)));
 }
 
 void Ros2Face::Start() {

@@ -21,15 +21,15 @@
 #include <vector>
 
 #include "ros2_face/dds_domain.h"
-#include "sim/robot_messages.h"
 #include "sections/ros2_section.h"
 #include "sim/driver.h"
+#include "sim/robot_messages.h"
 
 namespace sanet::ros2face {
 
 namespace msg = ros2msg;
-using sim::FramesOf, sim::GroundTruthOf, sim::OdometryOf, sim::OdomToBase, sim::RangeOf, sim::RobotFrames,
-    sim::ScanOf, sim::StampOf, sim::StaticTransforms;
+using sim::FramesOf, sim::GroundTruthOf, sim::OdometryOf, sim::OdomToBase, sim::RangeOf, sim::RobotFrames, sim::ScanOf,
+    sim::StampOf, sim::StaticTransforms;
 
 struct Ros2Settings {
   std::uint32_t domain = 0;                 // ROS_DOMAIN_ID

@@ -551,7 +551,8 @@ const Fields<Scenario>& OutputsFields() {
         });
     f.Custom(
         {"trace", "boolean", "", "`true` for runs of up to 200 nodes", "",
-         "write the trace of both worlds: `trace.sqlite` (docs/trace.md) and `trace.mcap`, ROS 2 messages for ROS 2 tools, Foxglove and PlotJuggler (docs/mcap.md); never changes the fingerprint"},
+         "write the trace of both worlds: `trace.sqlite` (docs/trace.md) and `trace.mcap`, ROS 2 messages for ROS 2 "
+         "tools, Foxglove and PlotJuggler (docs/mcap.md); never changes the fingerprint"},
         [](const Field& v, Scenario& s) { s.trace = v.Bool(); },
         [](const Scenario& s) { return YAML::Node(s.run.trace); });
     return f;

@@ -83,8 +83,7 @@ bool McapLog::FirstAt(double t, NodeId node, std::size_t what) {
 
 void McapLog::Statics(double t) {
   Publish("/tf_static", t,
-          StaticTransforms(
-              nodes_.size(), [this](NodeId id) -> const NodeSpec& { return nodes_[id]; }, {}));
+          StaticTransforms(nodes_.size(), [this](NodeId id) -> const NodeSpec& { return nodes_[id]; }, {}));
   Publish("/world", t, WorldMarkers(spec_, nodes_, t));
   for (NodeId id = where_.size(); id < nodes_.size(); ++id) where_.push_back({nodes_[id].pose.x, nodes_[id].pose.y});
 }

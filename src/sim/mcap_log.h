@@ -62,10 +62,10 @@ class McapLog {
   trace::McapWriter writer_;
   std::map<std::string, std::uint16_t> schemas_, channels_;
   std::vector<RobotFrames> frames_;
-  std::vector<std::array<double, 3>> last_read_;  // per node: odometry, IR, laser (-1: never)
-  std::vector<Vec2> where_;                       // per node: where it stood last, for the radio's lines
+  std::vector<std::array<double, 3>> last_read_;     // per node: odometry, IR, laser (-1: never)
+  std::vector<Vec2> where_;                          // per node: where it stood last, for the radio's lines
   std::map<std::pair<NodeId, NodeId>, bool> radio_;  // sender, receiver: a data frame among them, in the window
-  double radio_window_ = 0;                       // s, the current window's start
+  double radio_window_ = 0;                          // s, the current window's start
 };
 
 }  // namespace sanet::sim

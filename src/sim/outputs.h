@@ -15,8 +15,8 @@
 #include "core/fingerprint.h"
 #include "net/network_traces.h"
 #include "sim/run_nodes.h"
-#include "sim/run_traces.h"
 #include "sim/run_spec.h"
+#include "sim/run_traces.h"
 #include "sim/run_warnings.h"
 #include "trace/figures.h"
 #include "trace/results_folder.h"
@@ -59,7 +59,7 @@ struct RunResult {
 struct PoseReader {
   std::function<Pose2D(NodeId)> pose;
   std::function<Twist2D(NodeId)> velocity;  // world frame, for the trace
-  std::vector<NodeId> vehicles;  // the nodes that move by themselves
+  std::vector<NodeId> vehicles;             // the nodes that move by themselves
 };
 
 // Where a run came from: written first into its results folder (provenance.json, scenario.yaml),

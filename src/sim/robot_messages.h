@@ -25,7 +25,7 @@ struct RobotFrames {
 };
 RobotFrames FramesOf(const std::string& robot, const robots::ModelSpec& model);
 
-msg::builtin_interfaces::Time StampOf(double t);  // s of simulated time
+msg::builtin_interfaces::Time StampOf(double t);             // s of simulated time
 msg::geometry_msgs::Quaternion YawQuaternion(double theta);  // a turn of `theta` rad about z
 
 // Wheel odometry in R/odom (relative to the start pose), with the body's velocity in R/base_link.

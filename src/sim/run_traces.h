@@ -33,17 +33,19 @@ class RunTraces {
   void Metric(double t, NodeId node, const std::string& name, double value);
   void Event(double t, NodeId node, const char* kind, const std::string& detail);
   // Readings as their owner took them (the SQLite trace keeps none).
-  void Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body) {
-    mcap_.Odometry(t, node, odometry, body);
-  }
-  void Scan(double t, NodeId node, Scanner which, const RangeScan& scan) { mcap_.Scan(t, node, which, scan); }
+  void Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body);
+  void Scan(double t, NodeId node, Scanner which, const RangeScan& scan);
   void Close();
+  // Wall time spent writing each file so far, s.
+  double sqlite_seconds() const { return sqlite_seconds_; }
+  double mcap_seconds() const { return mcap_seconds_; }
 
  private:
   void Describe(const RunSpec& spec);
   const RunNodes& nodes_;
   trace::RunTrace sqlite_;
   McapLog mcap_;
+  double sqlite_seconds_ = 0, mcap_seconds_ = 0;
 };
 
 }  // namespace sanet::sim

@@ -65,7 +65,8 @@ Bytes Compressed(McapWriter::Compression c, const Bytes& records) {
   if (c == McapWriter::Compression::kNone) return records;
   Bytes out(ZSTD_compressBound(records.size()));
   const std::size_t n = ZSTD_compress(out.data(), out.size(), records.data(), records.size(), 3);
-  if (ZSTD_isError(n)) throw std::runtime_error(std::string("an MCAP chunk could not be compressed: ") + ZSTD_getErrorName(n));
+  if (ZSTD_isError(n))
+    throw std::runtime_error(std::string("an MCAP chunk could not be compressed: ") + ZSTD_getErrorName(n));
   out.resize(n);
   return out;
 }

@@ -9,6 +9,7 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -152,6 +153,34 @@ class HelpRequest(unittest.TestCase):
         self.assertTrue(all(counts[f"/robot/ir_{i}"] == counts["/robot/ir_0"] for i in range(6)))
         self.assertGreater(counts["/robot/ir_0"], 1000)
         self.assertEqual(self.log["first"]["/robot/ir_3"]["header"]["frame_id"], "robot/ir_3")
+
+
+class FormationLayout(unittest.TestCase):
+    """The Foxglove layout shipped in docs names only topics, nodes and metrics the formation's log has."""
+
+    def test_the_layout_fits_the_formations_log(self):
+        with open(os.path.join(SOURCE, "docs", "foxglove", "formation.json")) as f:
+            layout = json.load(f)
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "out")
+            run(os.path.join(SOURCE, "scenarios", "formation.yaml"), out, "--duration", "20")
+            log = decode(os.path.join(out, "trace.mcap"))
+            metrics = {(r["node"], r["name"]) for r in rows(out, "metrics.csv")}
+        self.assertEqual(log["errorCount"], 0, log["errors"])
+        named = set()
+        for panel, config in layout["configById"].items():
+            named |= set(config.get("topics", {}))
+            if "topicPath" in config:
+                named.add(config["topicPath"])
+            for path in config.get("paths", []):
+                topic = re.match(r"(/[^{.]+)", path["value"])[1]
+                named.add(topic)
+                node, name = re.findall(r'node=="([^"]+)"', path["value"]), re.findall(r'name=="([^"]+)"', path["value"])
+                self.assertIn((node[0], name[0]), metrics, path["value"])
+        self.assertGreater(len(named), 5)
+        self.assertFalse(named - set(log["channels"]), "topics the log does not have")
+        panels = re.findall(r'"([A-Za-z0-9 ]+![^"]+)"', json.dumps(layout["layout"]))
+        self.assertEqual(set(panels), set(layout["configById"]), "every panel placed")
 
 
 class Readings(unittest.TestCase):

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sanet/node.h"
+#include "sim/message_sink.h"
 #include "sim/remote_inbox.h"
 #include "sim/run_observer.h"
 #include "sim/run_spec.h"
@@ -100,6 +101,9 @@ class Driver {
   void Every(double period, std::function<void()> action);
   void AddObserver(RunObserver& observer) { observers_.push_back(&observer); }
   const std::vector<RunObserver*>& observers() const { return observers_; }
+  // Sinks of the run's ROS 2 messages (sim/message_sink.h), added before the run starts.
+  void AddMessageSink(MessageSink& sink) { sinks_.push_back(&sink); }
+  const std::vector<MessageSink*>& message_sinks() const { return sinks_; }
   // Ends the run at once (from inside it) or before its next piece (between World::RunUntil
   // calls); results are written as usual and summary.json's ended_by says `why`.
   void Stop(const std::string& why = "stopped by a front end");
@@ -111,6 +115,7 @@ class Driver {
   void CheckOwner(NodeId robot, const std::string& owner, const char* what) const;
   Assembly& parts_;
   std::vector<RunObserver*> observers_;
+  std::vector<MessageSink*> sinks_;
   std::vector<std::unique_ptr<Repeater>> repeaters_;
   std::vector<std::string> owners_;  // per node; "" for none
   std::vector<SensorReadings> readings_;

@@ -29,7 +29,8 @@ bool Unmoved(const Pose2D& p, const Pose2D& last) {
 
 }  // namespace
 
-Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force)
+Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force,
+                 const std::vector<MessageSink*>& sinks)
     : spec_(spec),
       nodes_(nodes),
       folder_(dir, force),
@@ -40,10 +41,15 @@ Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& 
       metric_rows_(folder_.Csv("metrics.csv", trace::kMetricsHeader)),
       last_recorded_(nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
-  if (spec_.trace && folder_.writes()) StartTrace();
+  StartTrace(sinks);
 }
 
-void Outputs::StartTrace() { trace_ = std::make_unique<RunTraces>(spec_, nodes_, folder_); }
+void Outputs::StartTrace(const std::vector<MessageSink*>& sinks) {
+  const bool files = spec_.trace && folder_.writes();
+  if (!files && sinks.empty()) return;
+  trace_ = std::make_unique<RunTraces>(spec_, nodes_, files ? &folder_ : nullptr);
+  for (MessageSink* sink : sinks) trace_->AddSink(*sink);
+}
 
 void Outputs::Event(double t, NodeId node, const char* kind, const std::string& detail) {
   if (trace_) trace_->Event(t, node, kind, detail);

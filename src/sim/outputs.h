@@ -73,13 +73,16 @@ struct Provenance {
 class Outputs {
  public:
   // Clears what an earlier run left in `dir` first (refusing foreign files unless `force`).
-  // `nodes` grows while the run goes (robots spawned by front ends).
-  Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force = false);
+  // `nodes` grows while the run goes (robots spawned by front ends). `sinks` get the run's ROS 2
+  // messages (live streams), whether or not the trace is written.
+  Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force = false,
+          const std::vector<MessageSink*>& sinks = {});
   void Begin(const Provenance& provenance);
   // Warnings said before the run (the command printed them): summary.json lists them first.
   void Warned(std::vector<std::string> warnings) { said_before_ = std::move(warnings); }
   trace::ResultsFolder& folder() { return folder_; }
-  // The run's trace, when the scenario asks for one and the results are written.
+  // The run's trace, when the scenario asks for one and the results are written, or live
+  // streams want its messages.
   RunTraces* trace() { return trace_.get(); }
   // Something that happened to a node (switch-off), for the trace.
   void Event(double t, NodeId node, const char* kind, const std::string& detail);
@@ -119,7 +122,7 @@ class Outputs {
  private:
   void SampleMinDistance(double now, const PoseReader& world);
   void Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity);
-  void StartTrace();
+  void StartTrace(const std::vector<MessageSink*>& sinks);
   void AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp);
   void AddTapFiles(const net::NetworkTraces& network, nlohmann::ordered_json& summary);
   void WriteFigures(const std::vector<Pose2D>& final_poses, const std::optional<net::NetworkTraces>& network);

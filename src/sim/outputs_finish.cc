@@ -234,7 +234,8 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
                     {"controllers", result.profile.controllers},
                     {"recording", result.profile.recording},
                     {"physics_wait", result.profile.physics_wait}};
-  if (trace_) j["profile_s"]["trace"] = {{"sqlite", trace_->sqlite_seconds()}, {"mcap", trace_->mcap_seconds()}};
+  if (trace_ && trace_->files())
+    j["profile_s"]["trace"] = {{"sqlite", trace_->sqlite_seconds()}, {"mcap", trace_->mcap_seconds()}};
   nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
   for (NodeId id = 0; id < nodes_.size(); ++id) {
     const Pose2D p = final_poses.at(id);

@@ -1,14 +1,17 @@
 // The run's trace as one typed event stream, written twice from the same calls: trace.sqlite
-// (trace::RunTrace, for sanet's viewer and SQL) and trace.mcap (McapLog, ROS 2 messages for ROS 2
-// tools, Foxglove and PlotJuggler). Both take their temporary names in the results folder and
-// their own names when the results are committed.
+// (trace::RunTrace, for sanet's viewer and SQL) and trace.mcap (RunMessages into an McapSink, ROS 2
+// messages for ROS 2 tools, Foxglove and PlotJuggler), both under temporary names in the results
+// folder until the results are committed. Live streams add sinks of their own: a run without a
+// trace still makes the messages for them.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "net/network_traces.h"
-#include "sim/mcap_log.h"
+#include "sim/mcap_sink.h"
+#include "sim/run_messages.h"
 #include "sim/run_nodes.h"
 #include "sim/run_observer.h"
 #include "sim/run_spec.h"
@@ -19,9 +22,12 @@ namespace sanet::sim {
 
 class RunTraces {
  public:
-  using Scanner = McapLog::Scanner;
-  // Starts both with what does not change: the run, its nodes where they start, the obstacles.
-  RunTraces(const RunSpec& spec, const RunNodes& nodes, trace::ResultsFolder& folder);
+  using Scanner = RunMessages::Scanner;
+  // Starts both files in `folder` (none: no files, only sinks added) with what does not change:
+  // the run, its nodes where they start, the obstacles.
+  RunTraces(const RunSpec& spec, const RunNodes& nodes, trace::ResultsFolder* folder);
+  void AddSink(MessageSink& sink) { messages_.AddSink(sink); }
+  bool files() const { return sqlite_ != nullptr; }
 
   void Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose);
   void Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity);
@@ -36,15 +42,16 @@ class RunTraces {
   void Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body);
   void Scan(double t, NodeId node, Scanner which, const RangeScan& scan);
   void Close();
-  // Wall time spent writing each file so far, s.
+  // Wall time spent writing each file so far (for trace.mcap: making the messages too), s.
   double sqlite_seconds() const { return sqlite_seconds_; }
   double mcap_seconds() const { return mcap_seconds_; }
 
  private:
   void Describe(const RunSpec& spec);
   const RunNodes& nodes_;
-  trace::RunTrace sqlite_;
-  McapLog mcap_;
+  std::unique_ptr<trace::RunTrace> sqlite_;
+  std::unique_ptr<McapSink> mcap_file_;
+  RunMessages messages_;
   double sqlite_seconds_ = 0, mcap_seconds_ = 0;
 };
 

@@ -47,7 +47,8 @@ void World::Stop(const std::string& why) { driver_->Stop(why); }
 struct World::Running {
   Running(World& world, const RunOptions& run_options)
       : options(run_options),
-        outputs(world.spec(), world.parts_->run_nodes(), options.output_dir, options.force),
+        outputs(world.spec(), world.parts_->run_nodes(), options.output_dir, options.force,
+                world.driver_->message_sinks()),
         stepper(*world.parts_, outputs, world.driver_->observers()) {}
   RunOptions options;
   Outputs outputs;

@@ -1,9 +1,8 @@
-#include "sim/mcap_log.h"
+#include "sim/run_messages.h"
 
 #include <cmath>
 
 #include "core/delivery.h"
-#include "core/version.h"
 #include "ros2msg/codec.h"
 
 namespace sanet::sim {
@@ -41,30 +40,41 @@ SensorReadings Truth(double t, const Pose2D& pose, const Twist2D& velocity) {
 
 }  // namespace
 
-McapLog::McapLog(const std::string& path, const RunSpec& spec, const RunNodes& nodes)
-    : spec_(spec),
-      nodes_(nodes),
-      writer_(path, "ros2", std::string("sanet ") + SanetVersion(), trace::McapWriter::Compression::kZstd) {
-  Statics(0);
+RunMessages::RunMessages(const RunSpec& spec, const RunNodes& nodes) : spec_(spec), nodes_(nodes) { Statics(0); }
+
+void RunMessages::AddSink(MessageSink& sink) {
+  sinks_.push_back(&sink);
+  std::vector<const Topic*> in_order(topics_.size());
+  for (const auto& [name, topic] : topics_) in_order[topic.id - 1] = &topic;
+  for (const Topic* topic : in_order) {
+    sink.Advertise(*topic);
+    if (const auto last = latched_.find(topic->id); last != latched_.end())
+      sink.Publish(*topic, last->second.first, last->second.second);
+  }
 }
 
 template <typename M>
-std::uint16_t McapLog::ChannelOf(const std::string& topic) {
-  if (const auto known = channels_.find(topic); known != channels_.end()) return known->second;
-  const std::string type = ros2msg::TypeOf<M>::kName;
-  auto schema = schemas_.find(type);
-  if (schema == schemas_.end())
-    schema = schemas_.emplace(type, writer_.AddSchema(type, "ros2msg", ros2msg::TypeOf<M>::Definition())).first;
-  return channels_[topic] = writer_.AddChannel(schema->second, topic, "cdr");
+const Topic& RunMessages::TopicOf(const std::string& name) {
+  if (const auto known = topics_.find(name); known != topics_.end()) return known->second;
+  Topic& topic = topics_[name];
+  topic.id = static_cast<std::uint32_t>(topics_.size());
+  topic.name = name;
+  topic.type = ros2msg::TypeOf<M>::kName;
+  topic.definition = ros2msg::TypeOf<M>::Definition();
+  topic.latched = name == "/tf_static" || name == "/world";
+  for (MessageSink* sink : sinks_) sink->Advertise(topic);
+  return topic;
 }
 
 template <typename M>
-void McapLog::Publish(const std::string& topic, double t, const M& message) {
-  const std::uint16_t channel = ChannelOf<M>(topic);
-  writer_.Write(channel, Nanoseconds(t), Nanoseconds(t), ros2msg::Encode(message));
+void RunMessages::Publish(const std::string& name, double t, const M& message) {
+  const Topic& topic = TopicOf<M>(name);
+  const std::vector<std::uint8_t> cdr = ros2msg::Encode(message);
+  if (topic.latched) latched_[topic.id] = {Nanoseconds(t), cdr};
+  for (MessageSink* sink : sinks_) sink->Publish(topic, Nanoseconds(t), cdr);
 }
 
-const RobotFrames& McapLog::FramesOf(NodeId node) {
+const RobotFrames& RunMessages::FramesOf(NodeId node) {
   while (frames_.size() <= node) {
     const NodeSpec& n = nodes_[frames_.size()];
     frames_.push_back(sim::FramesOf(n.name, n.model));
@@ -74,23 +84,23 @@ const RobotFrames& McapLog::FramesOf(NodeId node) {
 }
 
 // Whether this is the node's first read of `what` at time `t` (a controller may read twice).
-bool McapLog::FirstAt(double t, NodeId node, std::size_t what) {
+bool RunMessages::FirstAt(double t, NodeId node, std::size_t what) {
   if (last_read_.size() <= node) last_read_.resize(node + 1, {-1, -1, -1});
   if (last_read_[node][what] == t) return false;
   last_read_[node][what] = t;
   return true;
 }
 
-void McapLog::Statics(double t) {
+void RunMessages::Statics(double t) {
   Publish("/tf_static", t,
           StaticTransforms(nodes_.size(), [this](NodeId id) -> const NodeSpec& { return nodes_[id]; }, {}));
   Publish("/world", t, WorldMarkers(spec_, nodes_, t));
   for (NodeId id = where_.size(); id < nodes_.size(); ++id) where_.push_back({nodes_[id].pose.x, nodes_[id].pose.y});
 }
 
-void McapLog::Spawned(double t) { Statics(t); }
+void RunMessages::Spawned(double t) { Statics(t); }
 
-void McapLog::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
+void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
   const RobotFrames& frames = FramesOf(node);
   const SensorReadings truth = Truth(t, pose, velocity);
   const std::string& name = nodes_[node].name;
@@ -103,14 +113,14 @@ void McapLog::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& vel
   if (node < where_.size()) where_[node] = {pose.x, pose.y};
 }
 
-void McapLog::Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body) {
+void RunMessages::Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body) {
   if (!FirstAt(t, node, kOdometry)) return;
   SensorReadings r = Truth(t, body.pose, body.velocity);
   r.odometry = odometry;
   Publish("/" + nodes_[node].name + "/odom", t, OdometryOf(r, nodes_[node].pose, FramesOf(node)));
 }
 
-void McapLog::Scan(double t, NodeId node, Scanner which, const RangeScan& scan) {
+void RunMessages::Scan(double t, NodeId node, Scanner which, const RangeScan& scan) {
   if (!FirstAt(t, node, which == Scanner::kIr ? kIr : kLaser)) return;
   const RobotFrames& frames = FramesOf(node);
   const std::string ns = "/" + nodes_[node].name;
@@ -121,7 +131,7 @@ void McapLog::Scan(double t, NodeId node, Scanner which, const RangeScan& scan) 
     Publish(ns + "/ir_" + std::to_string(i), t, RangeOf(scan, i, t, frames.ir[i], noise));
 }
 
-void McapLog::Frame(const net::FrameEvent& f) {
+void RunMessages::Frame(const net::FrameEvent& f) {
   msg::sanet_msgs::RadioFrame frame;
   frame.stamp = StampOf(f.t);
   frame.node = nodes_.NameOf(f.node);
@@ -138,7 +148,7 @@ void McapLog::Frame(const net::FrameEvent& f) {
 }
 
 // Draws the frames of every window that ended before `until`.
-void McapLog::FlushRadio(double until) {
+void RunMessages::FlushRadio(double until) {
   if (until < radio_window_ + kRadioWindow) return;
   if (!radio_.empty()) {
     std::vector<RadioLine> lines;
@@ -149,7 +159,7 @@ void McapLog::FlushRadio(double until) {
   radio_window_ = std::floor(until / kRadioWindow) * kRadioWindow;
 }
 
-void McapLog::Message(double t, const sanet::Message& m, NodeId to, bool delivered) {
+void RunMessages::Message(double t, const sanet::Message& m, NodeId to, bool delivered) {
   msg::sanet_msgs::NetworkMessage out;
   out.stamp = StampOf(t);
   out.sender = nodes_.NameOf(m.from);
@@ -163,7 +173,7 @@ void McapLog::Message(double t, const sanet::Message& m, NodeId to, bool deliver
   Publish("/messages", t, out);
 }
 
-void McapLog::Route(const RouteChange& r) {
+void RunMessages::Route(const RouteChange& r) {
   msg::sanet_msgs::RouteChange out;
   out.stamp = StampOf(r.time);
   out.node = nodes_.NameOf(r.node);
@@ -173,8 +183,8 @@ void McapLog::Route(const RouteChange& r) {
   Publish("/routes", r.time, out);
 }
 
-void McapLog::Transition(double t, NodeId node, const std::string& from, const std::string& to,
-                         const std::string& why) {
+void RunMessages::Transition(double t, NodeId node, const std::string& from, const std::string& to,
+                             const std::string& why) {
   msg::sanet_msgs::Transition out;
   out.stamp = StampOf(t);
   out.node = nodes_.NameOf(node);
@@ -184,7 +194,7 @@ void McapLog::Transition(double t, NodeId node, const std::string& from, const s
   Publish("/transitions", t, out);
 }
 
-void McapLog::Metric(double t, NodeId node, const std::string& name, double value) {
+void RunMessages::Metric(double t, NodeId node, const std::string& name, double value) {
   msg::sanet_msgs::Metric out;
   out.stamp = StampOf(t);
   out.node = nodes_.NameOf(node);
@@ -193,7 +203,7 @@ void McapLog::Metric(double t, NodeId node, const std::string& name, double valu
   Publish("/metrics", t, out);
 }
 
-void McapLog::Event(double t, NodeId node, const std::string& kind, const std::string& detail) {
+void RunMessages::Event(double t, NodeId node, const std::string& kind, const std::string& detail) {
   if (kind == "log") return Publish("/rosout", t, LogLine(t, nodes_.NameOf(node), detail));
   msg::sanet_msgs::NodeEvent out;
   out.stamp = StampOf(t);
@@ -203,9 +213,6 @@ void McapLog::Event(double t, NodeId node, const std::string& kind, const std::s
   Publish("/events", t, out);
 }
 
-void McapLog::Close() {
-  FlushRadio(HUGE_VAL);
-  writer_.Close();
-}
+void RunMessages::Flush() { FlushRadio(HUGE_VAL); }
 
 }  // namespace sanet::sim

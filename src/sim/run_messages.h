@@ -1,9 +1,9 @@
-// A run's trace as ROS 2 messages in an MCAP file (trace.mcap), which ros2 bag, Foxglove,
-// Lichtblick and PlotJuggler open. Every message is CDR from the ROS 2 message layer (ros2msg),
-// built by the functions the ROS 2 face publishes with (sim/robot_messages.h), and logged and
-// published at the simulated time of its event. Readings are those the run took (a controller's,
-// the server's, the face's), handed over as they were read: the log never reads a sensor.
-// docs/mcap.md lists the topics and types.
+// A run's events as ROS 2 messages, for its sinks: the MCAP log (trace.mcap, which ros2 bag,
+// Foxglove, Lichtblick and PlotJuggler open) and live Foxglove streams. Every message is CDR from
+// the ROS 2 message layer (ros2msg), built by the functions the ROS 2 face publishes with
+// (sim/robot_messages.h), at the simulated time of its event. Readings are those the run took (a
+// controller's, the server's, the face's), handed over as they were read: the messages never
+// read a sensor. docs/mcap.md lists the topics and types.
 #pragma once
 
 #include <array>
@@ -15,21 +15,24 @@
 
 #include "agents/simulated_node.h"
 #include "net/network_traces.h"
+#include "sim/message_sink.h"
 #include "sim/robot_messages.h"
 #include "sim/run_nodes.h"
 #include "sim/run_observer.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
 #include "sim/world_markers.h"
-#include "trace/mcap_writer.h"
 
 namespace sanet::sim {
 
-class McapLog {
+class RunMessages {
  public:
   using Scanner = agents::NodeDirectory::Scanner;
-  // Opens `path` and logs what stands at time 0: /tf_static and the world's markers.
-  McapLog(const std::string& path, const RunSpec& spec, const RunNodes& nodes);
+  // Publishes what stands at time 0 (/tf_static, the world's markers) to the sinks added later.
+  RunMessages(const RunSpec& spec, const RunNodes& nodes);
+  // From now on `sink` gets every message; it is told of every topic so far and gets the last
+  // message of the latched ones.
+  void AddSink(MessageSink& sink);
 
   // A robot joined at `t`: /tf_static and the world's markers again, with it.
   void Spawned(double t);
@@ -45,13 +48,14 @@ class McapLog {
   void Metric(double t, NodeId node, const std::string& name, double value);
   // A line of a node's log ("log") or something that happened to it (switch-off, spawn).
   void Event(double t, NodeId node, const std::string& kind, const std::string& detail);
-  void Close();
+  // Sends what waits to be sent (the radio's last window).
+  void Flush();
 
  private:
   template <typename M>
   void Publish(const std::string& topic, double t, const M& message);
   template <typename M>
-  std::uint16_t ChannelOf(const std::string& topic);
+  const Topic& TopicOf(const std::string& name);
   const RobotFrames& FramesOf(NodeId node);
   bool FirstAt(double t, NodeId node, std::size_t what);
   void FlushRadio(double until);
@@ -59,8 +63,9 @@ class McapLog {
 
   const RunSpec& spec_;
   const RunNodes& nodes_;
-  trace::McapWriter writer_;
-  std::map<std::string, std::uint16_t> schemas_, channels_;
+  std::vector<MessageSink*> sinks_;
+  std::map<std::string, Topic> topics_;                                                   // by name
+  std::map<std::uint32_t, std::pair<std::uint64_t, std::vector<std::uint8_t>>> latched_;  // by topic id
   std::vector<RobotFrames> frames_;
   std::vector<std::array<double, 3>> last_read_;     // per node: odometry, IR, laser (-1: never)
   std::vector<Vec2> where_;                          // per node: where it stood last, for the radio's lines

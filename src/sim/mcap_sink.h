@@ -1,0 +1,26 @@
+// The run's ROS 2 messages into an MCAP file (trace.mcap, docs/mcap.md): one schema per type, one
+// channel per topic, zstd chunks (trace/mcap_writer.h).
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "sim/message_sink.h"
+#include "trace/mcap_writer.h"
+
+namespace sanet::sim {
+
+class McapSink : public MessageSink {
+ public:
+  explicit McapSink(const std::string& path);
+  void Advertise(const Topic& topic) override;
+  void Publish(const Topic& topic, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr) override;
+  void Close() { writer_.Close(); }
+
+ private:
+  trace::McapWriter writer_;
+  std::map<std::string, std::uint16_t> schemas_;     // by type
+  std::map<std::uint32_t, std::uint16_t> channels_;  // by topic id
+};
+
+}  // namespace sanet::sim

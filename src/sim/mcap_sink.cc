@@ -1,5 +1,7 @@
 #include "sim/mcap_sink.h"
 
+#include <stdexcept>
+
 #include "core/version.h"
 
 namespace sanet::sim {
@@ -11,11 +13,15 @@ void McapSink::Advertise(const Topic& topic) {
   auto schema = schemas_.find(topic.type);
   if (schema == schemas_.end())
     schema = schemas_.emplace(topic.type, writer_.AddSchema(topic.type, "ros2msg", topic.definition)).first;
-  channels_[topic.id] = writer_.AddChannel(schema->second, topic.name, "cdr");
+  if (channels_.size() < topic.id) channels_.resize(topic.id, 0);
+  try {
+    channels_[topic.id - 1] = writer_.AddChannel(schema->second, topic.name, "cdr");
+  } catch (const std::length_error&) {  // a swarm of thousands: the file keeps the first topics
+  }
 }
 
 void McapSink::Publish(const Topic& topic, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr) {
-  writer_.Write(channels_.at(topic.id), time_ns, time_ns, cdr);
+  if (const std::uint16_t channel = channels_.at(topic.id - 1)) writer_.Write(channel, time_ns, time_ns, cdr);
 }
 
 }  // namespace sanet::sim

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "sim/message_sink.h"
 #include "trace/mcap_writer.h"
@@ -19,8 +20,8 @@ class McapSink : public MessageSink {
 
  private:
   trace::McapWriter writer_;
-  std::map<std::string, std::uint16_t> schemas_;     // by type
-  std::map<std::uint32_t, std::uint16_t> channels_;  // by topic id
+  std::map<std::string, std::uint16_t> schemas_;  // by type
+  std::vector<std::uint16_t> channels_;           // by topic id - 1; 0: a topic past the file's 65535 channels
 };
 
 }  // namespace sanet::sim

@@ -10,8 +10,6 @@ msg::geometry_msgs::Quaternion YawQuaternion(double theta) {
   return q;
 }
 
-namespace {
-
 msg::geometry_msgs::TransformStamped Transform(const std::string& parent, const std::string& child, double t, double x,
                                                double y, double z, double yaw) {
   msg::geometry_msgs::TransformStamped tf;
@@ -24,6 +22,8 @@ msg::geometry_msgs::TransformStamped Transform(const std::string& parent, const 
   tf.transform.rotation = YawQuaternion(yaw);
   return tf;
 }
+
+namespace {
 
 msg::nav_msgs::Odometry OdometryIn(const std::string& frame, const std::string& child, double t, const Pose2D& pose,
                                    const Twist2D& body_velocity) {
@@ -46,13 +46,14 @@ Twist2D InBody(const Twist2D& world, double theta) {
   return {v.x, v.y, world.omega};
 }
 
-void AddSensorMounts(msg::tf2_msgs::TFMessage& out, const robots::ModelSpec& model, const RobotFrames& frames) {
+void AddSensorMounts(msg::tf2_msgs::TFMessage& out, const robots::ModelSpec& model, const RobotFrames& frames,
+                     double t) {
   if (const auto& laser = model.sensors.laser)
-    out.transforms.push_back(Transform(frames.base, frames.laser, 0, laser->mount_x, 0, laser->mount_height, 0));
+    out.transforms.push_back(Transform(frames.base, frames.laser, t, laser->mount_x, 0, laser->mount_height, 0));
   if (const auto& ir = model.sensors.ir)
     for (std::size_t i = 0; i < ir->angles.size(); ++i) {
       const double a = ir->angles[i];
-      out.transforms.push_back(Transform(frames.base, frames.ir[i], 0, ir->mount_x + ir->mount_radius * std::cos(a),
+      out.transforms.push_back(Transform(frames.base, frames.ir[i], t, ir->mount_x + ir->mount_radius * std::cos(a),
                                          ir->mount_radius * std::sin(a), ir->mount_height, a));
     }
 }
@@ -125,19 +126,19 @@ msg::geometry_msgs::TransformStamped OdomToBase(const SensorReadings& r, const P
 }
 
 msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const NodeSpec&(NodeId)>& spec_of,
-                                          const std::map<NodeId, RobotFrames>& frames) {
+                                          const std::map<NodeId, RobotFrames>& frames, double t) {
   msg::tf2_msgs::TFMessage out;
   for (NodeId id = 0; id < count; ++id) {
     const NodeSpec& node = spec_of(id);
     const Pose2D& p = node.pose;
     if (node.model.kind == robots::ModelKind::kMote) {
-      out.transforms.push_back(Transform("world", node.name, 0, p.x, p.y, 0, p.theta));
+      out.transforms.push_back(Transform("world", node.name, t, p.x, p.y, 0, p.theta));
       continue;
     }
     const auto given = frames.find(id);
     const RobotFrames robot = given != frames.end() ? given->second : FramesOf(node.name, node.model);
-    out.transforms.push_back(Transform("world", robot.odom, 0, p.x, p.y, 0, p.theta));
-    AddSensorMounts(out, node.model, robot);
+    out.transforms.push_back(Transform("world", robot.odom, t, p.x, p.y, 0, p.theta));
+    AddSensorMounts(out, node.model, robot, t);
   }
   return out;
 }

@@ -41,9 +41,12 @@ msg::geometry_msgs::TransformStamped OdomToBase(const SensorReadings& r, const P
                                                 const RobotFrames& frames);
 // What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor, for every
 // robot (`frames`: each robot's, by node; FramesOf for the others); world -> M for every mote, of
-// the `count` nodes whose specs `spec_of` gives.
+// the `count` nodes whose specs `spec_of` gives, stamped `t`.
 msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const NodeSpec&(NodeId)>& spec_of,
-                                          const std::map<NodeId, RobotFrames>& frames);
+                                          const std::map<NodeId, RobotFrames>& frames, double t = 0);
+// `parent` -> `child` at time `t`: a shift by (x, y, z) and a turn of `yaw` about z.
+msg::geometry_msgs::TransformStamped Transform(const std::string& parent, const std::string& child, double t, double x,
+                                               double y, double z, double yaw);
 
 // `pose` seen from `origin`: both in the same frame.
 Pose2D Relative(const Pose2D& origin, const Pose2D& pose);

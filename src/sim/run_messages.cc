@@ -1,5 +1,7 @@
 #include "sim/run_messages.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "core/delivery.h"
@@ -11,6 +13,17 @@ namespace {
 // Frames delivered within this many seconds of simulated time are drawn together, for as long.
 constexpr double kRadioWindow = 0.25;
 constexpr std::size_t kOdometry = 0, kIr = 1, kLaser = 2;
+// A node's topics, by slot: ground truth, odometry, laser, then each IR sensor.
+constexpr std::size_t kTruthTopic = 0, kOdomTopic = 1, kScanTopic = 2, kFirstIrTopic = 3;
+
+// A node's name as a ROS name token (letters, digits, underscores, not starting with a digit),
+// so that every topic is one ROS 2 accepts: "P2DX-1" is published as "/P2DX_1/odom".
+std::string RosToken(const std::string& name) {
+  std::string token;
+  for (const char c : name) token += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
+  if (token.empty() || std::isdigit(static_cast<unsigned char>(token[0]))) token = "_" + token;
+  return token;
+}
 
 // The time of a message in the log, as its header's stamp says it (StampOf).
 std::uint64_t Nanoseconds(double t) {
@@ -67,11 +80,24 @@ const Topic& RunMessages::TopicOf(const std::string& name) {
 }
 
 template <typename M>
-void RunMessages::Publish(const std::string& name, double t, const M& message) {
-  const Topic& topic = TopicOf<M>(name);
+const Topic& RunMessages::NodeTopic(NodeId node, std::size_t slot, const char* suffix) {
+  if (node_topics_.size() <= node) node_topics_.resize(node + 1);
+  std::vector<const Topic*>& topics = node_topics_[node];
+  if (topics.size() <= slot) topics.resize(slot + 1, nullptr);
+  if (!topics[slot]) topics[slot] = &TopicOf<M>("/" + RosToken(nodes_[node].name) + suffix);
+  return *topics[slot];
+}
+
+template <typename M>
+void RunMessages::Publish(const Topic& topic, double t, const M& message) {
   const std::vector<std::uint8_t> cdr = ros2msg::Encode(message);
   if (topic.latched) latched_[topic.id] = {Nanoseconds(t), cdr};
   for (MessageSink* sink : sinks_) sink->Publish(topic, Nanoseconds(t), cdr);
+}
+
+template <typename M>
+void RunMessages::Publish(const std::string& name, double t, const M& message) {
+  Publish(TopicOf<M>(name), t, message);
 }
 
 const RobotFrames& RunMessages::FramesOf(NodeId node) {
@@ -92,8 +118,17 @@ bool RunMessages::FirstAt(double t, NodeId node, std::size_t what) {
 }
 
 void RunMessages::Statics(double t) {
-  Publish("/tf_static", t,
-          StaticTransforms(nodes_.size(), [this](NodeId id) -> const NodeSpec& { return nodes_[id]; }, {}));
+  // Motes' frames go in /tf instead (Pose): something may push a mote.
+  msg::tf2_msgs::TFMessage statics = StaticTransforms(
+      nodes_.size(), [this](NodeId id) -> const NodeSpec& { return nodes_[id]; }, {}, t);
+  auto& transforms = statics.transforms;
+  transforms.erase(std::remove_if(transforms.begin(), transforms.end(),
+                                  [this](const msg::geometry_msgs::TransformStamped& tf) {
+                                    const auto node = nodes_.Find(tf.child_frame_id);
+                                    return node && nodes_[*node].model.kind == robots::ModelKind::kMote;
+                                  }),
+                   transforms.end());
+  Publish("/tf_static", t, statics);
   Publish("/world", t, WorldMarkers(spec_, nodes_, t));
   for (NodeId id = where_.size(); id < nodes_.size(); ++id) where_.push_back({nodes_[id].pose.x, nodes_[id].pose.y});
 }
@@ -103,13 +138,13 @@ void RunMessages::Spawned(double t) { Statics(t); }
 void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
   const RobotFrames& frames = FramesOf(node);
   const SensorReadings truth = Truth(t, pose, velocity);
-  const std::string& name = nodes_[node].name;
-  Publish("/" + name + "/ground_truth", t, GroundTruthOf(truth, frames));
-  if (nodes_[node].model.kind != robots::ModelKind::kMote) {
-    msg::tf2_msgs::TFMessage tf;
+  Publish(NodeTopic<msg::nav_msgs::Odometry>(node, kTruthTopic, "/ground_truth"), t, GroundTruthOf(truth, frames));
+  msg::tf2_msgs::TFMessage tf;
+  if (nodes_[node].model.kind == robots::ModelKind::kMote)
+    tf.transforms.push_back(Transform("world", frames.base, t, pose.x, pose.y, 0, pose.theta));
+  else
     tf.transforms.push_back(OdomToBase(truth, nodes_[node].pose, frames));
-    Publish("/tf", t, tf);
-  }
+  Publish("/tf", t, tf);
   if (node < where_.size()) where_[node] = {pose.x, pose.y};
 }
 
@@ -117,18 +152,22 @@ void RunMessages::Odometry(double t, NodeId node, const Pose2D& odometry, const 
   if (!FirstAt(t, node, kOdometry)) return;
   SensorReadings r = Truth(t, body.pose, body.velocity);
   r.odometry = odometry;
-  Publish("/" + nodes_[node].name + "/odom", t, OdometryOf(r, nodes_[node].pose, FramesOf(node)));
+  Publish(NodeTopic<msg::nav_msgs::Odometry>(node, kOdomTopic, "/odom"), t,
+          OdometryOf(r, nodes_[node].pose, FramesOf(node)));
 }
 
 void RunMessages::Scan(double t, NodeId node, Scanner which, const RangeScan& scan) {
   if (!FirstAt(t, node, which == Scanner::kIr ? kIr : kLaser)) return;
   const RobotFrames& frames = FramesOf(node);
-  const std::string ns = "/" + nodes_[node].name;
-  if (which == Scanner::kLaser) return Publish(ns + "/scan", t, ScanOf(scan, t, frames.laser));
+  if (which == Scanner::kLaser)
+    return Publish(NodeTopic<msg::sensor_msgs::LaserScan>(node, kScanTopic, "/scan"), t, ScanOf(scan, t, frames.laser));
   const auto& ir = nodes_[node].model.sensors.ir;
   const double noise = ir ? ir->noise : 0;
-  for (std::size_t i = 0; i < scan.ranges.size() && i < frames.ir.size(); ++i)
-    Publish(ns + "/ir_" + std::to_string(i), t, RangeOf(scan, i, t, frames.ir[i], noise));
+  for (std::size_t i = 0; i < scan.ranges.size() && i < frames.ir.size(); ++i) {
+    const std::string suffix = "/ir_" + std::to_string(i);
+    Publish(NodeTopic<msg::sensor_msgs::Range>(node, kFirstIrTopic + i, suffix.c_str()), t,
+            RangeOf(scan, i, t, frames.ir[i], noise));
+  }
 }
 
 void RunMessages::Frame(const net::FrameEvent& f) {
@@ -141,22 +180,26 @@ void RunMessages::Frame(const net::FrameEvent& f) {
   frame.bytes = f.bytes;
   Publish("/radio/frames", f.t, frame);
   FlushRadio(f.t);
+  last_frame_ = f.t;
   if (!f.sent && f.peer && *f.peer < where_.size() && f.node < where_.size()) {
     const std::string kind = f.kind;
-    radio_[{*f.peer, f.node}] |= kind == "data" || kind == "broadcast";
+    // Where both stood when the frame crossed (the first frame of the pair in the window).
+    auto [line, added] = radio_.try_emplace({*f.peer, f.node}, RadioLine{where_[*f.peer], where_[f.node], false});
+    line->second.data |= kind == "data" || kind == "broadcast";
   }
 }
 
-// Draws the frames of every window that ended before `until`.
-void RunMessages::FlushRadio(double until) {
-  if (until < radio_window_ + kRadioWindow) return;
+// Draws the frames of the window that ended before `now`, stamped `now` so that the log stays
+// in time order; they last one window.
+void RunMessages::FlushRadio(double now) {
+  if (now < radio_window_ + kRadioWindow) return;
   if (!radio_.empty()) {
     std::vector<RadioLine> lines;
-    for (const auto& [pair, data] : radio_) lines.push_back({where_[pair.first], where_[pair.second], data});
-    Publish("/radio/links", radio_window_, RadioMarkers(radio_window_, kRadioWindow, lines));
+    for (const auto& [pair, line] : radio_) lines.push_back(line);
+    Publish("/radio/links", now, RadioMarkers(now, kRadioWindow, lines));
   }
   radio_.clear();
-  radio_window_ = std::floor(until / kRadioWindow) * kRadioWindow;
+  radio_window_ = std::floor(now / kRadioWindow) * kRadioWindow;
 }
 
 void RunMessages::Message(double t, const sanet::Message& m, NodeId to, bool delivered) {
@@ -213,6 +256,6 @@ void RunMessages::Event(double t, NodeId node, const std::string& kind, const st
   Publish("/events", t, out);
 }
 
-void RunMessages::Flush() { FlushRadio(HUGE_VAL); }
+void RunMessages::Flush() { FlushRadio(last_frame_ + kRadioWindow); }
 
 }  // namespace sanet::sim

@@ -56,6 +56,10 @@ class RunMessages {
   void Publish(const std::string& topic, double t, const M& message);
   template <typename M>
   const Topic& TopicOf(const std::string& name);
+  template <typename M>
+  const Topic& NodeTopic(NodeId node, std::size_t slot, const char* suffix);
+  template <typename M>
+  void Publish(const Topic& topic, double t, const M& message);
   const RobotFrames& FramesOf(NodeId node);
   bool FirstAt(double t, NodeId node, std::size_t what);
   void FlushRadio(double until);
@@ -64,13 +68,15 @@ class RunMessages {
   const RunSpec& spec_;
   const RunNodes& nodes_;
   std::vector<MessageSink*> sinks_;
-  std::map<std::string, Topic> topics_;                                                   // by name
+  std::map<std::string, Topic> topics_;                 // by name
+  std::vector<std::vector<const Topic*>> node_topics_;  // by node and slot (NodeTopic)
   std::map<std::uint32_t, std::pair<std::uint64_t, std::vector<std::uint8_t>>> latched_;  // by topic id
   std::vector<RobotFrames> frames_;
-  std::vector<std::array<double, 3>> last_read_;     // per node: odometry, IR, laser (-1: never)
-  std::vector<Vec2> where_;                          // per node: where it stood last, for the radio's lines
-  std::map<std::pair<NodeId, NodeId>, bool> radio_;  // sender, receiver: a data frame among them, in the window
-  double radio_window_ = 0;                          // s, the current window's start
+  std::vector<std::array<double, 3>> last_read_;          // per node: odometry, IR, laser (-1: never)
+  std::vector<Vec2> where_;                               // per node: where it stood last, for the radio's lines
+  std::map<std::pair<NodeId, NodeId>, RadioLine> radio_;  // by sender and receiver, in the window
+  double last_frame_ = 0;                                 // s, the last frame's time
+  double radio_window_ = 0;                               // s, the current window's start
 };
 
 }  // namespace sanet::sim

@@ -43,8 +43,9 @@ Marker ObstacleMarker(const Obstacle& o, int id, double t) {
 
 Marker MoteMarker(const NodeSpec& node, int id, double t) {
   const double side = node.model.mote.size;
-  Marker m = Shape("world", t, "motes", id, Marker::CUBE);
-  Place(m, node.pose.x, node.pose.y, side / 2, node.pose.theta);
+  Marker m = Shape(node.name, t, "motes", id, Marker::CUBE);  // the mote's frame, which /tf moves
+  m.frame_locked = true;
+  Place(m, 0, 0, side / 2, 0);
   m.scale.x = m.scale.y = m.scale.z = side;
   m.color = Colour(1.0f, 0.6f, 0.1f);
   return m;
@@ -96,7 +97,7 @@ MarkerArray WorldMarkers(const RunSpec& spec, const RunNodes& nodes, double t) {
     const int marker = static_cast<int>(n);
     if (node.model.kind == robots::ModelKind::kMote) {
       out.markers.push_back(MoteMarker(node, marker, t));
-      out.markers.push_back(NameMarker(node, node.name, marker, t));  // the mote's frame, from /tf_static
+      out.markers.push_back(NameMarker(node, node.name, marker, t));
     } else {
       out.markers.push_back(BodyMarker(node, marker, t));
       out.markers.push_back(NameMarker(node, FramesOf(node.name, node.model).base, marker, t));

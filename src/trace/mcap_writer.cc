@@ -59,12 +59,12 @@ void Map(Bytes& b, const std::map<std::uint16_t, Value>& map) {
 
 const char* CompressionName(McapWriter::Compression c) { return c == McapWriter::Compression::kZstd ? "zstd" : ""; }
 
-// A chunk's records as the chunk stores them. Zstandard's level 3 (its default) packs a run's
-// repetitive messages several times over at a small share of the run's time (bench/mcap_trace.py).
+// A chunk's records as the chunk stores them. Zstandard's fastest level packs a run's repetitive
+// messages several times over at a small share of the run's time (bench/trace_bench.py).
 Bytes Compressed(McapWriter::Compression c, const Bytes& records) {
   if (c == McapWriter::Compression::kNone) return records;
   Bytes out(ZSTD_compressBound(records.size()));
-  const std::size_t n = ZSTD_compress(out.data(), out.size(), records.data(), records.size(), 3);
+  const std::size_t n = ZSTD_compress(out.data(), out.size(), records.data(), records.size(), 1);
   if (ZSTD_isError(n))
     throw std::runtime_error(std::string("an MCAP chunk could not be compressed: ") + ZSTD_getErrorName(n));
   out.resize(n);
@@ -105,7 +105,10 @@ std::uint16_t McapWriter::AddSchema(const std::string& name, const std::string& 
 std::uint16_t McapWriter::AddChannel(std::uint16_t schema, const std::string& topic,
                                      const std::string& message_encoding,
                                      const std::map<std::string, std::string>& metadata) {
+  if (channels_.size() >= 65535) throw std::length_error("an MCAP file holds at most 65535 channels");
   channels_.push_back({static_cast<std::uint16_t>(channels_.size() + 1), schema, topic, message_encoding, metadata});
+  sequence_.push_back(0);
+  per_channel_.push_back(0);
   return channels_.back().id;
 }
 
@@ -161,15 +164,16 @@ void McapWriter::Write(std::uint16_t channel, std::uint64_t log_time, std::uint6
   first_ = message_count_ == 0 ? log_time : std::min(first_, log_time);
   last_ = message_count_ == 0 ? log_time : std::max(last_, log_time);
   chunk_index_[channel].push_back({log_time, chunk_.size()});
-  Bytes m;
-  Int<std::uint16_t>(m, channel);
-  Int<std::uint32_t>(m, sequence_[channel]++);
-  Int<std::uint64_t>(m, log_time);
-  Int<std::uint64_t>(m, publish_time);
-  Append(m, data);
-  Append(chunk_, Record(kMessage, m));
+  // The Message record straight into the chunk: opcode, length, channel, sequence, times, data.
+  chunk_.push_back(kMessage);
+  Int<std::uint64_t>(chunk_, 2 + 4 + 8 + 8 + data.size());
+  Int<std::uint16_t>(chunk_, channel);
+  Int<std::uint32_t>(chunk_, sequence_[channel - 1]++);
+  Int<std::uint64_t>(chunk_, log_time);
+  Int<std::uint64_t>(chunk_, publish_time);
+  Append(chunk_, data);
   ++message_count_;
-  ++per_channel_[channel];
+  ++per_channel_[channel - 1];
   if (chunk_.size() >= chunk_bytes_) FlushChunk();
 }
 
@@ -247,7 +251,10 @@ void McapWriter::WriteSummary(std::uint64_t summary_start) {
   Int<std::uint32_t>(st, chunk_count_);
   Int<std::uint64_t>(st, first_);
   Int<std::uint64_t>(st, last_);
-  Map(st, per_channel_);
+  std::map<std::uint16_t, std::uint64_t> per_channel;
+  for (std::size_t i = 0; i < per_channel_.size(); ++i)
+    if (per_channel_[i] > 0) per_channel[static_cast<std::uint16_t>(i + 1)] = per_channel_[i];
+  Map(st, per_channel);
   statistics = Record(kStatistics, st);
   groups = {{kSchema, schemas}, {kChannel, channels}, {kChunkIndex, chunk_indexes_}, {kStatistics, statistics}};
   std::uint32_t crc = 0;  // from the summary's start through the footer's summary_offset_start

@@ -30,7 +30,7 @@ class McapWriter {
 
   // Ids start at 1. `encoding`: "ros2msg" for a ROS 2 message definition.
   std::uint16_t AddSchema(const std::string& name, const std::string& encoding, const std::string& data);
-  // `message_encoding`: "cdr" for ROS 2 messages.
+  // `message_encoding`: "cdr" for ROS 2 messages. Throws std::length_error past 65535 channels.
   std::uint16_t AddChannel(std::uint16_t schema, const std::string& topic, const std::string& message_encoding,
                            const std::map<std::string, std::string>& metadata = {});
   // Log and publish time in nanoseconds (sanet: simulated time). Times may go back; chunk and
@@ -69,8 +69,8 @@ class McapWriter {
   Bytes chunk_indexes_;                                     // Chunk Index records, for the summary
   std::uint32_t chunk_count_ = 0;
   std::uint64_t message_count_ = 0, first_ = 0, last_ = 0;
-  std::map<std::uint16_t, std::uint64_t> per_channel_;
-  std::map<std::uint16_t, std::uint32_t> sequence_;
+  std::vector<std::uint64_t> per_channel_;  // messages, by channel id - 1
+  std::vector<std::uint32_t> sequence_;     // the next message's sequence number, by channel id - 1
   bool closed_ = false;
 };
 

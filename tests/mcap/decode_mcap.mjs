@@ -4,16 +4,17 @@
 // back with the same library's writer, which must give the same bytes (up to CDR's closing
 // padding), so that a field too many or too few cannot pass. Prints JSON for the test: the
 // channels, the count per topic, the decoding errors, messages whose stamp is not their log time,
-// every ground-truth pose, and the first and last message of each topic.
+// every ground-truth pose, the parent and child frames /tf links, and the first and last message
+// of each topic.
 //
 //   node decode_mcap.mjs NODE_MODULES FILE
 import { createRequire } from "node:module";
-import { open } from "node:fs/promises";
+import { open, readFile } from "node:fs/promises";
 import { resolve } from "node:path";
 
 const [modules, file] = process.argv.slice(2);
 const require = createRequire(resolve(modules) + "/");
-const { McapIndexedReader } = require("@mcap/core");
+const { McapIndexedReader, McapStreamReader } = require("@mcap/core");
 const { decompress } = require("fzstd");
 const { parse } = require("@foxglove/rosmsg");
 const { MessageReader, MessageWriter } = require("@foxglove/rosmsg2-serialization");
@@ -42,7 +43,7 @@ for (const [id, c] of reader.channelsById) {
 const stampOf = (m) => m.header?.stamp ?? m.stamp ?? m.transforms?.[0]?.header.stamp ?? m.markers?.[0]?.header.stamp;
 const plain = (value) => JSON.parse(JSON.stringify(value, (k, v) =>
   typeof v === "bigint" ? Number(v) : ArrayBuffer.isView(v) ? Array.from(v) : v));
-const counts = {}, first = {}, last = {}, groundTruth = {};
+const counts = {}, first = {}, last = {}, groundTruth = {}, tfPairs = new Set();
 const errors = [], stampMismatches = [];
 for await (const record of reader.readMessages()) {
   const topic = reader.channelsById.get(record.channelId).topic;
@@ -69,14 +70,27 @@ for await (const record of reader.readMessages()) {
     (groundTruth[topic.split("/")[1]] ??= []).push(
       [Number(record.logTime) / 1e9, p.position.x, p.position.y, 2 * Math.atan2(p.orientation.z, p.orientation.w)]);
   }
+  if (topic === "/tf")
+    for (const tf of message.transforms) tfPairs.add(`${tf.header.frame_id} ${tf.child_frame_id}`);
   first[topic] ??= plain(message);
   last[topic] = message;
 }
 for (const topic of Object.keys(last)) last[topic] = plain(last[topic]);
+
+// In the file's own order, as a streaming reader (or a live replay) meets them: messages that go
+// back in time.
+const stream = new McapStreamReader({ decompressHandlers });
+stream.append(new Uint8Array(await readFile(file)));
+let latest = 0n, backwards = 0;
+for (let r; (r = stream.nextRecord()); )
+  if (r.type === "Message") {
+    if (r.logTime < latest) backwards++;
+    else latest = r.logTime;
+  }
 console.log(JSON.stringify({
   profile: reader.header.profile, channels, counts, errors: errors.slice(0, 20), errorCount: errors.length,
-  stampMismatches: stampMismatches.slice(0, 20), groundTruth, first, last,
+  stampMismatches: stampMismatches.slice(0, 20), groundTruth, first, last, tfPairs: [...tfPairs].sort(),
   statistics: Number(reader.statistics.messageCount), chunks: reader.chunkIndexes.length,
-  compression: [...new Set(reader.chunkIndexes.map((c) => c.compression))],
+  compression: [...new Set(reader.chunkIndexes.map((c) => c.compression))], backwards,
 }));
 await handle.close();

@@ -23,7 +23,7 @@ DECODER = os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs")
 ODOMETRY = """name: odometry
 duration: 8
 nodes:
-  - name: r
+  - name: r-1
     model: omni3
     pose: [0, 0, 0.3]
     sensors: {laser: {}}
@@ -79,6 +79,7 @@ class HelpRequest(unittest.TestCase):
         self.assertEqual(log["profile"], "ros2")
         self.assertEqual(log["errorCount"], 0, log["errors"])
         self.assertEqual(log["stampMismatches"], [])
+        self.assertEqual(log["backwards"], 0, "the file is in time order, for streaming readers")
         self.assertEqual(log["statistics"], sum(log["counts"].values()))
         self.assertGreater(log["chunks"], 5, "chunked, with an index per chunk")
         self.assertEqual(log["compression"], ["zstd"])
@@ -122,7 +123,9 @@ class HelpRequest(unittest.TestCase):
                   for tf in self.log["first"]["/tf_static"]["transforms"]}
         start = static[("world", "robot/odom")]
         self.assertIn(("robot/base_link", "robot/ir_0"), static, "sensor mounts")
-        self.assertIn(("world", "m0"), static, "motes")
+        self.assertNotIn(("world", "m0"), static, "motes are in /tf, since something may push them")
+        self.assertIn("world m0", self.log["tfPairs"])
+        self.assertIn("robot/odom robot/base_link", self.log["tfPairs"])
         odom_to_base = self.log["last"]["/tf"]["transforms"][0]["transform"]
         s, o = start["translation"], odom_to_base["translation"]
         a = yaw(start["rotation"])
@@ -194,20 +197,22 @@ class Readings(unittest.TestCase):
             log = decode(os.path.join(out, "trace.mcap"))
             self.assertEqual(log["errorCount"], 0, log["errors"])
             counts = log["counts"]
+            # A node's name as a ROS name token in its topics (ROS 2 refuses "-"); frames keep the name.
+            self.assertNotIn("/r-1/odom", counts)
             # The controller reads odometry, laser and IR at each of its steps until it arrives, once each.
-            self.assertGreaterEqual(counts["/r/odom"], 20)
-            self.assertLessEqual(abs(counts["/r/scan"] - counts["/r/odom"]), 1, "each step reads both")
-            odom = log["last"]["/r/odom"]
-            self.assertEqual((odom["header"]["frame_id"], odom["child_frame_id"]), ("r/odom", "r/base_link"))
-            final = [r for r in rows(out, "trajectories.csv") if r["node"] == "r"][-1]
+            self.assertGreaterEqual(counts["/r_1/odom"], 20)
+            self.assertLessEqual(abs(counts["/r_1/scan"] - counts["/r_1/odom"]), 1, "each step reads both")
+            odom = log["last"]["/r_1/odom"]
+            self.assertEqual((odom["header"]["frame_id"], odom["child_frame_id"]), ("r-1/odom", "r-1/base_link"))
+            final = [r for r in rows(out, "trajectories.csv") if r["node"] == "r-1"][-1]
             # Odometry starts at the start pose and drifts little over 2 m.
             p = odom["pose"]["pose"]["position"]
             start = 0.3
             x = p["x"] * math.cos(start) - p["y"] * math.sin(start)
             y = p["x"] * math.sin(start) + p["y"] * math.cos(start)
             self.assertLess(math.hypot(x - float(final["x"]), y - float(final["y"])), 0.3)
-            scan = log["first"]["/r/scan"]
-            self.assertEqual(scan["header"]["frame_id"], "r/laser")
+            scan = log["first"]["/r_1/scan"]
+            self.assertEqual(scan["header"]["frame_id"], "r-1/laser")
             self.assertGreater(len(scan["ranges"]), 10)
 
 

@@ -40,6 +40,7 @@
 #include "trace/earlier_run.h"
 #include "view/live_view.h"
 #include "view/viewer_server.h"
+#include "view_options.h"
 #include "wire/realtime_priority.h"
 #include "wss/wss_server.h"
 
@@ -48,41 +49,6 @@ namespace {
 using namespace sanet;
 
 using namespace sanet::cli;
-
-// --view: the live view of a run (docs/viewer.md).
-struct ViewArgs {
-  bool on = false;
-  int port = 8000;
-  std::string port_file;
-};
-
-void AddViewOptions(CLI::App* cmd, ViewArgs& v) {
-  cmd->add_flag("--view", v.on, "Stream a live view of the run to a web page on loopback (docs/viewer.md)");
-  cmd->add_option("--view-port", v.port, "The live view's HTTP port (0: any free port)")
-      ->check(CLI::Range(0, 65535))
-      ->capture_default_str();
-  cmd->add_option("--view-port-file", v.port_file, "Once the live view listens, write its port to this file");
-}
-
-void WritePortFile(const std::string& path, std::uint16_t port, const char* option);
-
-// The live view, watching `world`; null without --view.
-std::unique_ptr<view::LiveView> StartLiveView(sim::World& world, const ViewArgs& v, bool announce = true) {
-  if (!v.on) return nullptr;
-  view::LiveSettings settings;
-  settings.port = v.port;
-  std::unique_ptr<view::LiveView> live;
-  try {
-    live = std::make_unique<view::LiveView>(world.spec(), settings);
-  } catch (const std::runtime_error& e) {
-    throw CLI::ValidationError("--view", e.what());
-  }
-  WritePortFile(v.port_file, static_cast<std::uint16_t>(live->port()), "--view-port-file");
-  world.AddObserver(*live);
-  if (announce) std::printf("sanet: live view at http://127.0.0.1:%d/\n", live->port());
-  std::fflush(stdout);
-  return live;
-}
 
 struct RunArgs {
   std::string file;
@@ -95,6 +61,7 @@ struct RunArgs {
   bool no_progress = false;
   bool force = false;
   bool isolate_controllers = false;
+  bool real_time = false;
   ViewArgs view;
 };
 
@@ -145,8 +112,13 @@ int Run(const RunArgs& args, agents::Registry& registry) {
                 sc.run.nodes.size(), sc.run.nodes.size() == 1 ? "" : "s", sc.run.duration,
                 static_cast<unsigned long long>(sc.run.seed),
                 sc.run.threads == 2 ? ", physics on a second thread" : "");
+  if (args.real_time) sim::UseRealTimeClock();  // the same schedule, against the wall clock
   sim::World world(sc.run, registry);
-  const std::unique_ptr<view::LiveView> live = StartLiveView(world, args.view, !args.quiet);
+  LiveViews live = StartLiveViews(world, args.view, !args.quiet);
+  if (live.foxglove)
+    options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder&) {
+      j["foxglove"] = live.foxglove->hub().Summary();
+    };
   InstallStopHandlers();
   sim::RunResult r;
   {
@@ -154,7 +126,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
     options.progress = progress.Callback();
     r = world.Run(options);
   }
-  if (live) live->Finish();
+  live.Finish();
   PrintWarnings(r.warnings);
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s simulated; the results so far are in %s/ (status: interrupted)\n",
@@ -199,14 +171,6 @@ void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
     hil::JoinRadioTaps(world.driver(), pairs);
   } catch (const std::exception& e) {
     throw CLI::ValidationError("--tap", e.what());
-  }
-}
-
-void WritePortFile(const std::string& path, std::uint16_t port, const char* option) {
-  try {
-    if (!path.empty()) WriteFileAtomically(path, std::to_string(port) + "\n");
-  } catch (const std::runtime_error& e) {
-    throw CLI::ValidationError(option, e.what());  // names the file and the system's reason
   }
 }
 
@@ -298,7 +262,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   JoinTaps(world, a.taps);
   const std::unique_ptr<hil::WssServer> wss = StartWss(world, a);
   const std::unique_ptr<ros2face::Ros2Face> ros2 = StartRos2Face(world, a.ros2, sc.ros2);
-  const std::unique_ptr<view::LiveView> live = StartLiveView(world, a.view);
+  LiveViews live = StartLiveViews(world, a.view, /*announce=*/true, /*foxglove_anyway=*/true);
   WritePortFile(a.port_file, server.port(), "--port-file");
   server.Start();
   InstallStopHandlers();
@@ -319,10 +283,11 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
     j["clock"] = server.ClockSummary();
     if (wss) j["wss"] = wss->Summary();
     if (ros2) j["ros2"] = ros2->Summary();
+    if (live.foxglove) j["foxglove"] = live.foxglove->hub().Summary();
     server.WriteAgentTable(folder);
   };
   const sim::RunResult r = world.Run(options);
-  if (live) live->Finish();
+  live.Finish();
   PrintWarnings(r.warnings);
   if (!a.quiet) PrintServed(server, r, results, ros2 ? ros2->Driven() : std::vector<std::string>{});
   if (world.interrupted()) {
@@ -413,7 +378,8 @@ Command AddRun(CLI::App& app) {
   auto a = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run",
                                      "Run a scenario and write its results folder (trajectories.csv, "
-                                     "log.csv, messages.csv, transitions.csv, metrics.csv, summary.json)");
+                                     "log.csv, messages.csv, transitions.csv, metrics.csv, summary.json; with "
+                                     "outputs.trace, on up to 200 nodes: trace.sqlite and trace.mcap)");
   AddScenario(cmd, a->file);
   AddSet(cmd, a->sets);
   AddPythonPath(cmd);
@@ -428,6 +394,9 @@ Command AddRun(CLI::App& app) {
                 "Run each controller in a child process of its own: a plugin that crashes ends the run with its "
                 "results kept, not the process (same results; every node call crosses a socket)");
   AddForce(cmd, a->force);
+  cmd->add_flag("--real-time", a->real_time,
+                "Run against the wall clock, a simulated second per second, to watch it live with --view (the "
+                "same results)");
   AddViewOptions(cmd, a->view);
   return {cmd, [a](agents::Registry& r) { return Run(*a, r); }};
 }
@@ -512,9 +481,27 @@ Command AddLaunch(CLI::App& app) {
 
 volatile std::sig_atomic_t g_view_stop = 0;
 
-int View(const view::ViewerSettings& settings, const std::string& port_file) {
+// The Foxglove replay of the folder's trace.mcap, on a hub of its own; none without the file.
+struct Replay {
+  std::unique_ptr<foxglove::FoxgloveHub> hub;
+  std::unique_ptr<foxglove::McapReplay> replay;  // after the hub: destroyed before the hub it plays on
+};
+
+Replay StartFoxgloveReplay(const std::string& results, const FoxgloveArgs& f) {
+  Replay r;
+  if (!std::filesystem::exists(results + "/trace.mcap")) return r;
+  r.hub = StartHub(f);
+  r.replay = StartReplay(results, *r.hub, f);
+  WritePortFile(f.port_file, static_cast<std::uint16_t>(r.hub->port()), "--foxglove-port-file");
+  std::printf("sanet: Foxglove replay of %s/trace.mcap (%zu messages, %g x) at ws://127.0.0.1:%d\n", results.c_str(),
+              r.replay->messages(), f.speed, r.hub->port());
+  return r;
+}
+
+int View(const view::ViewerSettings& settings, const std::string& port_file, const FoxgloveArgs& foxglove) {
   std::signal(SIGINT, [](int) { g_view_stop = 1; });
   std::signal(SIGTERM, [](int) { g_view_stop = 1; });
+  const Replay replay = StartFoxgloveReplay(settings.results, foxglove);
   try {
     view::ServeViewer(
         settings,
@@ -538,7 +525,8 @@ Command AddView(CLI::App& app) {
   auto port_file = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("view",
                                      "Serve a web page (on loopback) that replays a run from its results folder: the "
-                                     "world from above and in 3D, radio links and packets, timeline, plots");
+                                     "world from above and in 3D, radio links and packets, timeline, plots; and "
+                                     "its trace.mcap to Foxglove over WebSocket");
   cmd->add_option("results", settings->results, "A results folder with trace.sqlite")
       ->required()
       ->check(CLI::ExistingDirectory);
@@ -547,7 +535,9 @@ Command AddView(CLI::App& app) {
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   cmd->add_option("--port-file", *port_file, "Once listening, write the port number to this file");
-  return {cmd, [settings, port_file](agents::Registry&) { return View(*settings, *port_file); }};
+  auto foxglove = std::make_shared<FoxgloveArgs>();
+  AddFoxgloveOptions(cmd, *foxglove, /*replay=*/true);
+  return {cmd, [settings, port_file, foxglove](agents::Registry&) { return View(*settings, *port_file, *foxglove); }};
 }
 
 Command AddList(CLI::App& app) {

@@ -24,6 +24,9 @@ class MessageSink {
   virtual void Advertise(const Topic& topic) = 0;
   // `cdr`: the message as ROS 2 serializes it; `time_ns`: simulated time of its event.
   virtual void Publish(const Topic& topic, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr) = 0;
+  // Whether it wants messages now (a stream with no client does not): when no sink does, the
+  // messages are not even made, except the latched ones.
+  virtual bool Active() const { return true; }
 };
 
 }  // namespace sanet::sim

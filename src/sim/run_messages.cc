@@ -90,6 +90,7 @@ const Topic& RunMessages::NodeTopic(NodeId node, std::size_t slot, const char* s
 
 template <typename M>
 void RunMessages::Publish(const Topic& topic, double t, const M& message) {
+  if (!topic.latched && std::none_of(sinks_.begin(), sinks_.end(), [](MessageSink* s) { return s->Active(); })) return;
   const std::vector<std::uint8_t> cdr = ros2msg::Encode(message);
   if (topic.latched) latched_[topic.id] = {Nanoseconds(t), cdr};
   for (MessageSink* sink : sinks_) sink->Publish(topic, Nanoseconds(t), cdr);

@@ -1,0 +1,16 @@
+#include "foxglove/foxglove_live.h"
+
+#include <cmath>
+
+#include "sim/snapshot.h"
+
+namespace sanet::foxglove {
+
+void FoxgloveLive::AfterStep(const sim::WorldSnapshot& snapshot) {
+  const double t = snapshot.time();
+  if (last_time_ >= 0 && t - last_time_ < 0.05) return;
+  last_time_ = t;
+  hub_.Time(static_cast<std::uint64_t>(std::llround(t * 1e9)));
+}
+
+}  // namespace sanet::foxglove

@@ -1,0 +1,31 @@
+// A running world as a Foxglove stream (`sanet serve --view`, `sanet run --view`): the run's ROS 2
+// messages (sim/run_messages.h, the bytes its MCAP log holds) go to the hub as they are made, and
+// its simulated time after the physics steps, at most every 50 ms of it.
+#pragma once
+
+#include "foxglove/foxglove_hub.h"
+#include "sim/message_sink.h"
+#include "sim/run_observer.h"
+
+namespace sanet::foxglove {
+
+class FoxgloveLive : public sim::MessageSink, public sim::RunObserver {
+ public:
+  explicit FoxgloveLive(HubSettings settings) : hub_(std::move(settings)) {}
+  FoxgloveHub& hub() { return hub_; }
+
+  void Advertise(const sim::Topic& topic) override {
+    hub_.Advertise({topic.id, topic.name, topic.type, topic.definition, topic.latched});
+  }
+  void Publish(const sim::Topic& topic, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr) override {
+    hub_.Publish(topic.id, time_ns, cdr);
+  }
+  bool Active() const override { return hub_.clients() > 0; }
+  void AfterStep(const sim::WorldSnapshot& snapshot) override;
+
+ private:
+  FoxgloveHub hub_;
+  double last_time_ = -1;  // s, the last time sent
+};
+
+}  // namespace sanet::foxglove

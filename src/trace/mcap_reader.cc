@@ -1,0 +1,153 @@
+#include "trace/mcap_reader.h"
+
+#include <zstd.h>
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <stdexcept>
+
+namespace sanet::trace {
+namespace {
+
+constexpr std::uint8_t kMagic[] = {0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
+enum Op : std::uint8_t {
+  kHeader = 0x01,
+  kSchema = 0x03,
+  kChannel = 0x04,
+  kMessage = 0x05,
+  kChunk = 0x06,
+  kDataEnd = 0x0F
+};
+
+// Little-endian fields of one record's content, never past its end.
+class Fields {
+ public:
+  Fields(const std::uint8_t* data, std::size_t size, const std::string& where) : p_(data), n_(size), where_(where) {}
+  template <typename T>
+  T Int() {
+    Need(sizeof(T));
+    T value = 0;
+    for (std::size_t i = 0; i < sizeof(T); ++i) value |= static_cast<T>(static_cast<T>(p_[at_ + i]) << (8 * i));
+    at_ += sizeof(T);
+    return value;
+  }
+  std::string Text() {
+    const auto n = Int<std::uint32_t>();
+    Need(n);
+    std::string s(reinterpret_cast<const char*>(p_ + at_), n);
+    at_ += n;
+    return s;
+  }
+  std::vector<std::uint8_t> Bytes(std::uint64_t n) {
+    Need(n);
+    std::vector<std::uint8_t> b(p_ + at_, p_ + at_ + n);
+    at_ += n;
+    return b;
+  }
+  std::vector<std::uint8_t> Rest() { return Bytes(n_ - at_); }
+
+ private:
+  void Need(std::uint64_t n) const {
+    if (n > n_ - at_) throw std::runtime_error(where_ + ": a record is cut short");
+  }
+  const std::uint8_t* p_;
+  std::size_t n_, at_ = 0;
+  std::string where_;
+};
+
+class Reader {
+ public:
+  Reader(McapContents& out, const std::string& path) : out_(out), path_(path) {}
+  // The records in [data, data + size); false once the data section ends.
+  bool Records(const std::uint8_t* data, std::size_t size, std::uint64_t base);
+
+ private:
+  void Record(std::uint8_t op, Fields content, std::uint64_t offset);
+  void Chunk(Fields content, std::uint64_t offset);
+  std::string At(std::uint64_t offset) const { return path_ + " at byte " + std::to_string(offset); }
+
+  McapContents& out_;
+  std::string path_;
+  std::map<std::uint16_t, std::vector<std::string>> schemas_;  // id -> name, encoding, data
+  std::map<std::uint16_t, bool> channels_;
+};
+
+bool Reader::Records(const std::uint8_t* data, std::size_t size, std::uint64_t base) {
+  std::size_t at = 0;
+  while (at < size) {
+    if (size - at < 9) throw std::runtime_error(At(base + at) + ": a record is cut short");
+    const std::uint8_t op = data[at];
+    std::uint64_t length = 0;
+    for (int i = 0; i < 8; ++i) length |= static_cast<std::uint64_t>(data[at + 1 + i]) << (8 * i);
+    if (length > size - at - 9) throw std::runtime_error(At(base + at) + ": a record is cut short");
+    if (op == kDataEnd) return false;
+    Record(op, Fields(data + at + 9, length, At(base + at)), base + at);
+    at += 9 + length;
+  }
+  return true;
+}
+
+void Reader::Record(std::uint8_t op, Fields f, std::uint64_t offset) {
+  if (op == kHeader) {
+    out_.profile = f.Text();
+  } else if (op == kSchema) {
+    const auto id = f.Int<std::uint16_t>();
+    std::string name = f.Text(), encoding = f.Text(), data = f.Text();
+    schemas_[id] = {name, encoding, data};
+  } else if (op == kChannel) {
+    McapContents::Channel c;
+    c.id = f.Int<std::uint16_t>();
+    const auto schema = schemas_.find(f.Int<std::uint16_t>());
+    c.topic = f.Text();
+    c.message_encoding = f.Text();
+    if (schema != schemas_.end())
+      c.schema_name = schema->second[0], c.schema_encoding = schema->second[1], c.schema = schema->second[2];
+    if (!channels_[c.id]) out_.channels.push_back(c);
+    channels_[c.id] = true;
+  } else if (op == kMessage) {
+    McapContents::Message m;
+    m.channel = f.Int<std::uint16_t>();
+    f.Int<std::uint32_t>();  // sequence
+    m.log_time = f.Int<std::uint64_t>();
+    f.Int<std::uint64_t>();  // publish time
+    m.data = f.Rest();
+    out_.messages.push_back(std::move(m));
+  } else if (op == kChunk) {
+    Chunk(f, offset);
+  }
+}
+
+void Reader::Chunk(Fields f, std::uint64_t offset) {
+  f.Int<std::uint64_t>();  // start and end times
+  f.Int<std::uint64_t>();
+  const auto size = f.Int<std::uint64_t>();
+  f.Int<std::uint32_t>();  // CRC (0: not given); zstd checks its own frames
+  const std::string compression = f.Text();
+  std::vector<std::uint8_t> records = f.Bytes(f.Int<std::uint64_t>());
+  if (compression == "zstd") {
+    std::vector<std::uint8_t> plain(size);
+    const std::size_t n = ZSTD_decompress(plain.data(), plain.size(), records.data(), records.size());
+    if (ZSTD_isError(n) || n != size) throw std::runtime_error(At(offset) + ": a damaged zstd chunk");
+    records.swap(plain);
+  } else if (!compression.empty()) {
+    throw std::runtime_error(At(offset) + ": chunks compressed with '" + compression + "' cannot be read here");
+  }
+  Records(records.data(), records.size(), offset);
+}
+
+}  // namespace
+
+McapContents ReadMcap(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  const std::vector<std::uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (file.size() < sizeof kMagic || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0)
+    throw std::runtime_error(path + " is not an MCAP file");
+  McapContents out;
+  Reader(out, path).Records(file.data() + sizeof kMagic, file.size() - sizeof kMagic, sizeof kMagic);
+  return out;
+}
+
+}  // namespace sanet::trace

@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""sanet's Foxglove WebSocket stream against the protocol's own client (tests/foxglove/client.mjs:
+npm's @foxglove/ws-protocol over ws, messages decoded with @foxglove/rosmsg2-serialization from the
+advertised schemas): a live run's /tf and a robot's scan arrive with simulated timestamps that
+advance and equal the messages' stamps; a client that stops reading is dropped while another keeps
+receiving, and the run's results do not change; garbage, unknown operations and clients without the
+subprotocol are answered as the protocol says; the connection cap holds; a finished run's trace.mcap
+replays in time order with every message the log has."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import unittest
+
+SANET, MODULES, SOURCE = sys.argv[1:4]
+del sys.argv[1:4]
+CLIENT = os.path.join(SOURCE, "tests", "foxglove", "client.mjs")
+DECODER = os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs")
+FORMATION = os.path.join(SOURCE, "scenarios", "formation.yaml")
+HELP_REQUEST = os.path.join(SOURCE, "scenarios", "help-request.yaml")
+
+
+def client(*args, timeout=120):
+    done = subprocess.run(["node", CLIENT, MODULES, *args], capture_output=True, text=True, timeout=timeout)
+    if done.returncode != 0:
+        raise AssertionError(done.stderr)
+    return json.loads(done.stdout)
+
+
+def wait_for(path, process, seconds=30):
+    end = time.time() + seconds
+    while time.time() < end:
+        if os.path.exists(path):
+            with open(path) as f:
+                text = f.read().strip()
+            if text:
+                return int(text)
+        if process.poll() is not None:
+            raise AssertionError(f"sanet ended early: {process.communicate()}")
+        time.sleep(0.05)
+    raise AssertionError(f"{path} never written")
+
+
+def fingerprint(folder):
+    with open(os.path.join(folder, "summary.json")) as f:
+        return json.load(f)["fingerprint"]
+
+
+class Live(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def start(self, scenario, *extra):
+        port_file = os.path.join(self.tmp.name, "foxglove-port")
+        run = subprocess.Popen([SANET, "run", scenario, "-q", "-o", os.path.join(self.tmp.name, "live"), "--view",
+                                "--view-port", "0", "--foxglove-port", "0", "--foxglove-port-file", port_file, *extra],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        return run, f"ws://127.0.0.1:{wait_for(port_file, run)}"
+
+    def test_a_live_run_streams_decodable_messages_on_simulated_time(self):
+        run, url = self.start(FORMATION, "--duration", "12", "--real-time")
+        seen = client("watch", url, "4", "/tf", "/f1/scan", "/tf_static", "/world")
+        self.assertEqual(run.wait(timeout=60), 0, run.stderr.read())
+        self.assertEqual(seen["serverInfo"]["capabilities"], ["time"])
+        for topic in ("/tf", "/f1/scan", "/leader/ground_truth", "/radio/links", "/messages"):
+            self.assertIn(topic, seen["topics"])
+        received = seen["received"]
+        self.assertEqual(received["/f1/scan"]["schemaName"], "sensor_msgs/msg/LaserScan")
+        self.assertEqual(received["/f1/scan"]["encoding"], "cdr")
+        for topic in ("/tf", "/f1/scan"):
+            r = received[topic]
+            self.assertGreater(r["count"], 20, topic)
+            self.assertEqual(r["errors"], 0, topic)
+            stamps = [s[0] for s in r["stamps"]]
+            self.assertEqual(stamps, sorted(stamps), f"{topic}: timestamps advance")
+            self.assertGreater(stamps[-1] - stamps[0], 2e9, f"{topic}: over seconds of simulated time")
+            self.assertTrue(all(t == stamp for t, stamp in r["stamps"]), f"{topic}: the stamp is the simulated time")
+        self.assertEqual(received["/tf_static"]["count"], 1, "a latched topic's message reaches a late subscriber")
+        self.assertEqual(received["/world"]["count"], 1)
+        times = seen["times"]
+        self.assertGreater(len(times), 20)
+        self.assertEqual(times, sorted(times))
+        plain = os.path.join(self.tmp.name, "plain")
+        subprocess.run([SANET, "run", FORMATION, "--duration", "12", "-q", "-o", plain], check=True)
+        self.assertEqual(fingerprint(os.path.join(self.tmp.name, "live")), fingerprint(plain))
+
+    def test_a_client_that_stops_reading_is_dropped_and_the_others_go_on(self):
+        run, url = self.start(HELP_REQUEST, "--foxglove-queue-mb", "1")
+        results = {}
+        staller = threading.Thread(target=lambda: results.update(stall=client("stall", url, "12")))
+        staller.start()
+        watched = client("watch", url, "5", "/tf", "/radio/frames")
+        staller.join()
+        self.assertEqual(run.wait(timeout=120), 0, run.stderr.read())
+        with open(os.path.join(self.tmp.name, "live", "summary.json")) as f:
+            served = json.load(f)["foxglove"]
+        self.assertEqual(served["clients"], 2)
+        self.assertEqual(served["dropped_for_not_reading"], 1, "the stalled client, not the reading one")
+        self.assertGreater(watched["received"]["/radio/frames"]["count"], 1000)
+        self.assertEqual(watched["received"]["/radio/frames"]["errors"], 0)
+        with open(os.path.join(self.tmp.name, "live", "summary.json")) as f:
+            self.assertEqual(json.load(f)["status"], "completed")
+
+    def test_garbage_and_strangers_get_the_protocols_answers(self):
+        run, url = self.start(FORMATION, "--duration", "8", "--real-time", "--foxglove-max-clients", "2")
+        answers = client("hostile", url)
+        statuses = [s["message"] for s in answers["statuses"]]
+        self.assertTrue(all(s["level"] in (1, 2) for s in answers["statuses"]))
+        for says in ("not a JSON object", "unsupported operation \"getParameters\"", "no channel 99999",
+                     "subscribe without \"subscriptions\"", "without its \"op\"", "takes no messages from clients"):
+            self.assertTrue(any(says in s for s in statuses), f"{says!r} not in {statuses}")
+        self.assertEqual(answers["refusedWithoutSubprotocol"], 400)
+        self.assertTrue(answers["stillOpen"], "garbage does not end the session")
+        # The cap: two clients at once, the third refused.
+        holders = [subprocess.Popen(["node", CLIENT, MODULES, "watch", url, "3", "/tf"], stdout=subprocess.PIPE)
+                   for _ in range(2)]
+        time.sleep(1.5)
+        self.assertEqual(client("knock", url, "foxglove.websocket.v1")["outcome"], 503, "the third is refused")
+        for h in holders:
+            h.wait(timeout=30)
+        self.assertEqual(run.wait(timeout=60), 0)
+
+
+class Replay(unittest.TestCase):
+    def test_a_finished_run_replays_in_order_with_every_message(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "run")
+            subprocess.run([SANET, "run", FORMATION, "--duration", "20", "-q", "-o", out], check=True)
+            log = subprocess.run(["node", DECODER, MODULES, os.path.join(out, "trace.mcap")], capture_output=True,
+                                 text=True, check=True)
+            counts = json.loads(log.stdout)["counts"]
+            port_file = os.path.join(tmp, "foxglove-port")
+            view = subprocess.Popen([SANET, "view", out, "--port", "0", "--foxglove-port", "0",
+                                     "--foxglove-port-file", port_file, "--speed", "10"],
+                                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            try:
+                url = f"ws://127.0.0.1:{wait_for(port_file, view)}"
+                seen = client("watch", url, "4", "/tf", "/f2/scan", "/tf_static", "/messages")
+            finally:
+                view.terminate()
+                view.wait(timeout=30)
+        for topic in ("/tf", "/f2/scan", "/tf_static", "/messages"):
+            r = seen["received"][topic]
+            self.assertEqual(r["count"], counts[topic], f"{topic}: every message of the log")
+            self.assertEqual(r["errors"], 0)
+            stamps = [s[0] for s in r["stamps"]]
+            self.assertEqual(stamps, sorted(stamps), f"{topic}: in time order")
+        times = seen["times"]
+        self.assertEqual(times, sorted(times))
+        self.assertGreaterEqual(times[-1], 19.9e9, "the timeline reaches the run's end")
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

@@ -115,6 +115,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   if (args.real_time) sim::UseRealTimeClock();  // the same schedule, against the wall clock
   sim::World world(sc.run, registry);
   LiveViews live = StartLiveViews(world, args.view, !args.quiet);
+  if (!args.quiet) live.AnnounceFoxglove();
   if (live.foxglove)
     options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder&) {
       j["foxglove"] = live.foxglove->hub().Summary();
@@ -269,6 +270,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), a.bind.c_str(), server.port(),
               sc.run.duration);
   std::fflush(stdout);
+  live.AnnounceFoxglove();
   sim::RunOptions options;
   options.output_dir = results;
   options.scenario_file = a.file;

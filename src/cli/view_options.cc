@@ -73,20 +73,24 @@ std::unique_ptr<T> Listening(const FoxgloveArgs& f) {
 
 std::unique_ptr<foxglove::FoxgloveHub> StartHub(const FoxgloveArgs& f) { return Listening<foxglove::FoxgloveHub>(f); }
 
-std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f, bool announce) {
+void LiveViews::AnnounceFoxglove() const {
+  if (!foxglove) return;
+  std::printf("sanet: Foxglove stream at ws://127.0.0.1:%d\n", foxglove->hub().port());
+  std::fflush(stdout);
+}
+
+std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f) {
   std::unique_ptr<foxglove::FoxgloveLive> live = Listening<foxglove::FoxgloveLive>(f);
   WritePortFile(f.port_file, static_cast<std::uint16_t>(live->hub().port()), "--foxglove-port-file");
   world.driver().AddMessageSink(*live);
   world.AddObserver(*live);
-  if (announce) std::printf("sanet: Foxglove stream at ws://127.0.0.1:%d\n", live->hub().port());
-  std::fflush(stdout);
   return live;
 }
 
 LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce, bool foxglove_anyway) {
   LiveViews views;
   if (!v.on) {
-    if (foxglove_anyway) views.foxglove = StartFoxglove(world, v.foxglove, announce);
+    if (foxglove_anyway) views.foxglove = StartFoxglove(world, v.foxglove);
     return views;
   }
   view::LiveSettings settings;
@@ -99,7 +103,7 @@ LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce, bo
   WritePortFile(v.port_file, static_cast<std::uint16_t>(views.page->port()), "--view-port-file");
   world.AddObserver(*views.page);
   if (announce) std::printf("sanet: live view at http://127.0.0.1:%d/\n", views.page->port());
-  views.foxglove = StartFoxglove(world, v.foxglove, announce);
+  views.foxglove = StartFoxglove(world, v.foxglove);
   std::fflush(stdout);
   return views;
 }

@@ -44,12 +44,14 @@ struct LiveViews {
   void Finish() {
     if (page) page->Finish();
   }
+  // Says where Foxglove connects (after what the command prints first, which scripts read).
+  void AnnounceFoxglove() const;
 };
 // Both views, watching `world`; none without --view, or only the Foxglove stream if `foxglove_anyway`
-// (`sanet serve`, whose world runs in real time).
+// (`sanet serve`, whose world runs in real time). `announce`: print the page's address.
 LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce = true, bool foxglove_anyway = false);
 // The Foxglove stream alone (`sanet serve` has it with or without --view).
-std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f, bool announce);
+std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f);
 
 // The Foxglove replay of `results`/trace.mcap, on `hub`; null if the folder has no trace.mcap.
 std::unique_ptr<foxglove::McapReplay> StartReplay(const std::string& results, foxglove::FoxgloveHub& hub,

@@ -17,10 +17,12 @@ class McapSink : public MessageSink {
   void Advertise(const Topic& topic) override;
   void Publish(const Topic& topic, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr) override;
   void Close() { writer_.Close(); }
+  std::size_t left_out() const { return left_out_; }  // topics past the file's 65535 channels
 
  private:
   trace::McapWriter writer_;
   std::map<std::string, std::uint16_t> schemas_;  // by type
+  std::size_t left_out_ = 0;
   std::vector<std::uint16_t> channels_;           // by topic id - 1; 0: a topic past the file's 65535 channels
 };
 

@@ -149,6 +149,9 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
   result.fingerprint = fp.Hex();
   const nlohmann::ordered_json moved_motes = RunWarnings::MovedMotes(nodes_, final_poses);
   result.warnings = warnings_.Sentences(moved_motes);
+  if (trace_ && trace_->mcap_topics_left_out() > 0)
+    result.warnings.push_back("trace.mcap holds its first 65535 topics (MCAP numbers channels with 16 bits); " +
+                              std::to_string(trace_->mcap_topics_left_out()) + " more were left out of it");
   if (!moved_motes.empty()) extra["motes_moved"] = moved_motes;
   std::vector<std::string> all = said_before_;
   all.insert(all.end(), result.warnings.begin(), result.warnings.end());

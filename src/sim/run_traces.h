@@ -28,6 +28,7 @@ class RunTraces {
   RunTraces(const RunSpec& spec, const RunNodes& nodes, trace::ResultsFolder* folder);
   void AddSink(MessageSink& sink) { messages_.AddSink(sink); }
   bool files() const { return sqlite_ != nullptr; }
+  std::size_t mcap_topics_left_out() const { return mcap_file_ ? mcap_file_->left_out() : 0; }
 
   void Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose);
   void Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity);

@@ -23,7 +23,7 @@ class McapSink : public MessageSink {
   trace::McapWriter writer_;
   std::map<std::string, std::uint16_t> schemas_;  // by type
   std::size_t left_out_ = 0;
-  std::vector<std::uint16_t> channels_;           // by topic id - 1; 0: a topic past the file's 65535 channels
+  std::vector<std::uint16_t> channels_;  // by topic id - 1; 0: a topic past the file's 65535 channels
 };
 
 }  // namespace sanet::sim

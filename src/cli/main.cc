@@ -495,8 +495,8 @@ Replay StartFoxgloveReplay(const std::string& results, const FoxgloveArgs& f) {
   r.hub = StartHub(f);
   r.replay = StartReplay(results, *r.hub, f);
   WritePortFile(f.port_file, static_cast<std::uint16_t>(r.hub->port()), "--foxglove-port-file");
-  std::printf("sanet: Foxglove replay of %s/trace.mcap (%zu messages, %g x) at ws://127.0.0.1:%d\n", results.c_str(),
-              r.replay->messages(), f.speed, r.hub->port());
+  std::printf("sanet: Foxglove replay of %s/trace.mcap (%llu messages, %g x) at ws://127.0.0.1:%d\n", results.c_str(),
+              static_cast<unsigned long long>(r.replay->messages()), f.speed, r.hub->port());
   return r;
 }
 

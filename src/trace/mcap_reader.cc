@@ -4,7 +4,6 @@
 
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <stdexcept>
 
@@ -59,61 +58,85 @@ class Fields {
 
 class Reader {
  public:
-  Reader(McapContents& out, const std::string& path) : out_(out), path_(path) {}
-  // The records in [data, data + size); false once the data section ends.
-  bool Records(const std::uint8_t* data, std::size_t size, std::uint64_t base);
+  Reader(const McapVisitor& visit, const std::string& path) : visit_(visit), path_(path) {}
+  // The file, a record at a time; false if the visitor stopped.
+  bool File(std::ifstream& in);
+  bool stopped() const { return stopped_; }
 
  private:
+  // The records in [data, data + size) (a chunk's).
+  void Records(const std::uint8_t* data, std::size_t size, std::uint64_t base);
   void Record(std::uint8_t op, Fields content, std::uint64_t offset);
   void Chunk(Fields content, std::uint64_t offset);
   std::string At(std::uint64_t offset) const { return path_ + " at byte " + std::to_string(offset); }
 
-  McapContents& out_;
+  const McapVisitor& visit_;
   std::string path_;
+  bool stopped_ = false;
   std::map<std::uint16_t, std::vector<std::string>> schemas_;  // id -> name, encoding, data
   std::map<std::uint16_t, bool> channels_;
 };
 
-bool Reader::Records(const std::uint8_t* data, std::size_t size, std::uint64_t base) {
+bool Reader::File(std::ifstream& in) {
+  std::uint64_t offset = sizeof kMagic;
+  std::vector<std::uint8_t> content;
+  while (!stopped_) {
+    std::uint8_t head[9];
+    if (!in.read(reinterpret_cast<char*>(head), sizeof head)) {
+      if (in.gcount() == 0) return true;  // the end, without a data end (a run stopped hard)
+      throw std::runtime_error(At(offset) + ": a record is cut short");
+    }
+    std::uint64_t length = 0;
+    for (int i = 0; i < 8; ++i) length |= static_cast<std::uint64_t>(head[1 + i]) << (8 * i);
+    if (head[0] == kDataEnd) return true;
+    if (length > (std::uint64_t{1} << 32)) throw std::runtime_error(At(offset) + ": a record of impossible length");
+    content.resize(length);
+    if (!in.read(reinterpret_cast<char*>(content.data()), static_cast<std::streamsize>(length)))
+      throw std::runtime_error(At(offset) + ": a record is cut short");
+    Record(head[0], Fields(content.data(), content.size(), At(offset)), offset);
+    offset += sizeof head + length;
+  }
+  return false;
+}
+
+void Reader::Records(const std::uint8_t* data, std::size_t size, std::uint64_t base) {
   std::size_t at = 0;
-  while (at < size) {
-    if (size - at < 9) throw std::runtime_error(At(base + at) + ": a record is cut short");
-    const std::uint8_t op = data[at];
+  while (at < size && !stopped_) {
+    if (size - at < 9) throw std::runtime_error(At(base) + ": a chunk's record is cut short");
     std::uint64_t length = 0;
     for (int i = 0; i < 8; ++i) length |= static_cast<std::uint64_t>(data[at + 1 + i]) << (8 * i);
-    if (length > size - at - 9) throw std::runtime_error(At(base + at) + ": a record is cut short");
-    if (op == kDataEnd) return false;
-    Record(op, Fields(data + at + 9, length, At(base + at)), base + at);
+    if (length > size - at - 9) throw std::runtime_error(At(base) + ": a chunk's record is cut short");
+    Record(data[at], Fields(data + at + 9, length, At(base)), base);
     at += 9 + length;
   }
-  return true;
 }
 
 void Reader::Record(std::uint8_t op, Fields f, std::uint64_t offset) {
   if (op == kHeader) {
-    out_.profile = f.Text();
+    const std::string profile = f.Text();
+    if (visit_.header) visit_.header(profile);
   } else if (op == kSchema) {
     const auto id = f.Int<std::uint16_t>();
     std::string name = f.Text(), encoding = f.Text(), data = f.Text();
     schemas_[id] = {name, encoding, data};
   } else if (op == kChannel) {
-    McapContents::Channel c;
+    McapChannel c;
     c.id = f.Int<std::uint16_t>();
     const auto schema = schemas_.find(f.Int<std::uint16_t>());
     c.topic = f.Text();
     c.message_encoding = f.Text();
     if (schema != schemas_.end())
       c.schema_name = schema->second[0], c.schema_encoding = schema->second[1], c.schema = schema->second[2];
-    if (!channels_[c.id]) out_.channels.push_back(c);
+    if (!channels_[c.id] && visit_.channel) visit_.channel(c);
     channels_[c.id] = true;
   } else if (op == kMessage) {
-    McapContents::Message m;
+    McapMessage m;
     m.channel = f.Int<std::uint16_t>();
     f.Int<std::uint32_t>();  // sequence
     m.log_time = f.Int<std::uint64_t>();
     f.Int<std::uint64_t>();  // publish time
     m.data = f.Rest();
-    out_.messages.push_back(std::move(m));
+    if (visit_.message && !visit_.message(m)) stopped_ = true;
   } else if (op == kChunk) {
     Chunk(f, offset);
   }
@@ -139,15 +162,13 @@ void Reader::Chunk(Fields f, std::uint64_t offset) {
 
 }  // namespace
 
-McapContents ReadMcap(const std::string& path) {
+bool ReadMcap(const std::string& path, const McapVisitor& visit) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path);
-  const std::vector<std::uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (file.size() < sizeof kMagic || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0)
+  std::uint8_t magic[sizeof kMagic];
+  if (!in.read(reinterpret_cast<char*>(magic), sizeof magic) || std::memcmp(magic, kMagic, sizeof kMagic) != 0)
     throw std::runtime_error(path + " is not an MCAP file");
-  McapContents out;
-  Reader(out, path).Records(file.data() + sizeof kMagic, file.size() - sizeof kMagic, sizeof kMagic);
-  return out;
+  return Reader(visit, path).File(in);
 }
 
 }  // namespace sanet::trace

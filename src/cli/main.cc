@@ -491,9 +491,13 @@ struct Replay {
 
 Replay StartFoxgloveReplay(const std::string& results, const FoxgloveArgs& f) {
   Replay r;
-  if (!std::filesystem::exists(results + "/trace.mcap")) return r;
+  if (!std::filesystem::exists(results + "/trace.mcap")) {
+    std::printf("sanet: no trace.mcap in %s: no Foxglove replay (runs write it with outputs.trace)\n", results.c_str());
+    return r;
+  }
   r.hub = StartHub(f);
   r.replay = StartReplay(results, *r.hub, f);
+  if (!r.replay) return r;
   WritePortFile(f.port_file, static_cast<std::uint16_t>(r.hub->port()), "--foxglove-port-file");
   std::printf("sanet: Foxglove replay of %s/trace.mcap (%llu messages, %g x) at ws://127.0.0.1:%d\n", results.c_str(),
               static_cast<unsigned long long>(r.replay->messages()), f.speed, r.hub->port());

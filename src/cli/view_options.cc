@@ -8,14 +8,19 @@
 namespace sanet::cli {
 
 void AddViewOptions(CLI::App* cmd, ViewArgs& v) {
-  cmd->add_flag("--view", v.on,
-                "Stream a live view of the run to a web page and to Foxglove, on loopback (docs/viewer.md, "
-                "docs/foxglove.md)");
+  CLI::Option* view =
+      cmd->add_flag("--view", v.on,
+                    "Stream a live view of the run to a web page and to Foxglove, on loopback (docs/viewer.md, "
+                    "docs/foxglove.md)");
   cmd->add_option("--view-port", v.port, "The live view's HTTP port (0: any free port)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   cmd->add_option("--view-port-file", v.port_file, "Once the live view listens, write its port to this file");
   AddFoxgloveOptions(cmd, v.foxglove, /*replay=*/false);
+  if (cmd->get_name() == "run")  // sanet serve streams to Foxglove with or without the page
+    for (const char* name :
+         {"--foxglove-port", "--foxglove-port-file", "--foxglove-max-clients", "--foxglove-queue-mb"})
+      cmd->get_option(name)->needs(view);
 }
 
 void AddFoxgloveOptions(CLI::App* cmd, FoxgloveArgs& f, bool replay) {
@@ -62,6 +67,7 @@ std::unique_ptr<T> Listening(const FoxgloveArgs& f) {
     if (f.port_option && f.port_option->count() > 0) throw CLI::ValidationError("--foxglove-port", e.what());
   }
   settings.port = 0;  // the default port is taken (another run's stream): any free one
+  std::printf("sanet: the Foxglove port %d is taken (another run streams?); a free one instead:\n", f.port);
   try {
     return std::make_unique<T>(settings);
   } catch (const std::runtime_error& e) {
@@ -93,6 +99,7 @@ LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce, bo
     if (foxglove_anyway) views.foxglove = StartFoxglove(world, v.foxglove);
     return views;
   }
+  views.foxglove = StartFoxglove(world, v.foxglove);  // first: a port refused stops nothing started
   view::LiveSettings settings;
   settings.port = v.port;
   try {
@@ -103,7 +110,6 @@ LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce, bo
   WritePortFile(v.port_file, static_cast<std::uint16_t>(views.page->port()), "--view-port-file");
   world.AddObserver(*views.page);
   if (announce) std::printf("sanet: live view at http://127.0.0.1:%d/\n", views.page->port());
-  views.foxglove = StartFoxglove(world, v.foxglove);
   std::fflush(stdout);
   return views;
 }
@@ -114,8 +120,9 @@ std::unique_ptr<foxglove::McapReplay> StartReplay(const std::string& results, fo
   if (!std::filesystem::exists(path)) return nullptr;
   try {
     return std::make_unique<foxglove::McapReplay>(path, hub, f.speed);
-  } catch (const std::runtime_error& e) {
-    throw CLI::ValidationError("RESULTS_DIR", e.what());
+  } catch (const std::runtime_error& e) {  // the page can still replay trace.sqlite
+    std::fprintf(stderr, "sanet: warning: no Foxglove replay: %s\n", e.what());
+    return nullptr;
   }
 }
 

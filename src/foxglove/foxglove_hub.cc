@@ -1,5 +1,6 @@
 #include "foxglove/foxglove_hub.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 
@@ -14,9 +15,14 @@ void Put(std::vector<std::uint8_t>& out, T value) {  // little endian, as the pr
   for (std::size_t i = 0; i < sizeof(T); ++i) out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
 }
 
+// The protocol's numbers are unsigned 32-bit: larger ones are refused, not wrapped.
+bool Id(const nlohmann::json& value) { return value.is_number_unsigned() && value.get<std::uint64_t>() <= 0xFFFFFFFFu; }
+
 }  // namespace
 
-FoxgloveHub::FoxgloveHub(HubSettings settings) : settings_(std::move(settings)) {
+FoxgloveHub::FoxgloveHub(HubSettings settings)
+    : settings_(std::move(settings)),
+      session_(std::to_string(std::chrono::system_clock::now().time_since_epoch().count())) {
   WsHandlers handlers;
   handlers.opened = [this](ClientId c) { Opened(c); };
   handlers.text = [this](ClientId c, const std::string& text) { Text(c, text); };
@@ -51,13 +57,12 @@ nlohmann::json FoxgloveHub::ChannelJson(const Channel& c) {
 }
 
 void FoxgloveHub::Opened(ClientId client) {
-  const auto session = std::chrono::system_clock::now().time_since_epoch().count();
   nlohmann::json info = {{"op", "serverInfo"},
                          {"name", settings_.name},
                          {"capabilities", {"time"}},
                          {"supportedEncodings", nlohmann::json::array()},
                          {"metadata", nlohmann::json::object()},
-                         {"sessionId", std::to_string(session)}};
+                         {"sessionId", session_}};
   nlohmann::json advertise = {{"op", "advertise"}, {"channels", nlohmann::json::array()}};
   const std::lock_guard<std::mutex> lock(mutex_);  // no channel advertised between the two
   clients_.insert(client);
@@ -107,46 +112,50 @@ void FoxgloveHub::Status(ClientId client, int level, const std::string& message)
 }
 
 void FoxgloveHub::Text(ClientId client, const std::string& text) {
-  const nlohmann::json message = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  // Nothing nested deeper than the protocol's messages is kept: a hostile depth costs nothing.
+  const nlohmann::json::parser_callback_t shallow = [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+    return depth <= 4;
+  };
+  const nlohmann::json message = nlohmann::json::parse(text, shallow, /*allow_exceptions=*/false);
   if (message.is_discarded() || !message.is_object())
-    return Status(client, kError, "not a JSON object: " + text.substr(0, 80));
+    return Status(client, kError, "not a JSON object (" + std::to_string(text.size()) + " bytes)");
   const auto op = message.find("op");
   if (op == message.end() || !op->is_string()) return Status(client, kError, "a message without its \"op\"");
   if (*op == "subscribe") return Subscribe(client, message);
   if (*op == "unsubscribe") return Unsubscribe(client, message);
+  const std::string name = op->get<std::string>();
   Status(client, kError,
-         "unsupported operation \"" + op->get<std::string>() +
-             "\" (this server streams a run: "
-             "subscribe and unsubscribe)");
+         "unsupported operation \"" + name.substr(0, 40) + "\" (this server streams a run: subscribe and unsubscribe)");
+}
+
+std::string FoxgloveHub::SubscribeOne(ClientId client, const nlohmann::json& s) {
+  if (!s.is_object() || !s.contains("id") || !s.contains("channelId") || !Id(s["id"]) || !Id(s["channelId"]))
+    return "needs \"id\" and \"channelId\", numbers from 0 to 4294967295";
+  const auto id = s["id"].get<std::uint32_t>();
+  const auto channel = s["channelId"].get<std::uint32_t>();
+  if (channel == 0 || channel > channels_.size() || channels_[channel - 1].id == 0)
+    return "no channel " + std::to_string(channel);
+  auto& mine = subscriptions_[client];
+  if (const auto held = mine.find(channel); held != mine.end())
+    return "channel " + std::to_string(channel) + " is subscribed already (subscription " +
+           std::to_string(held->second) + "): one subscription per channel";
+  for (const auto& [c, sub] : mine)
+    if (sub == id) return "subscription id " + std::to_string(id) + " is in use";
+  mine[channel] = id;
+  if (const auto last = latched_.find(channel); last != latched_.end())
+    server_->SendBinary(client, MessageData(id, last->second.first, last->second.second));
+  return "";
 }
 
 void FoxgloveHub::Subscribe(ClientId client, const nlohmann::json& message) {
   const auto list = message.find("subscriptions");
   if (list == message.end() || !list->is_array()) return Status(client, kError, "subscribe without \"subscriptions\"");
   std::vector<std::string> refused;
-  const std::lock_guard<std::mutex> lock(mutex_);
-  auto& mine = subscriptions_[client];
-  for (const nlohmann::json& s : *list) {
-    if (!s.is_object() || !s.contains("id") || !s.contains("channelId") || !s["id"].is_number_unsigned() ||
-        !s["channelId"].is_number_unsigned()) {
-      refused.push_back(s.dump() + ": needs numbers \"id\" and \"channelId\"");
-      continue;
-    }
-    const auto id = s["id"].get<std::uint32_t>();
-    const auto channel = s["channelId"].get<std::uint32_t>();
-    if (channel == 0 || channel > channels_.size()) {
-      refused.push_back("no channel " + std::to_string(channel));
-      continue;
-    }
-    bool reused = false;
-    for (const auto& [c, sub] : mine) reused |= sub == id && c != channel;
-    if (reused) {
-      refused.push_back("subscription id " + std::to_string(id) + " is in use");
-      continue;
-    }
-    mine[channel] = id;
-    if (const auto last = latched_.find(channel); last != latched_.end())
-      server_->SendBinary(client, MessageData(id, last->second.first, last->second.second));
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (std::size_t i = 0; i < list->size(); ++i)
+      if (const std::string why = SubscribeOne(client, (*list)[i]); !why.empty())
+        refused.push_back("subscriptions[" + std::to_string(i) + "]: " + why);
   }
   for (const std::string& why : refused) Status(client, kWarning, "subscribe: " + why);
 }
@@ -155,11 +164,25 @@ void FoxgloveHub::Unsubscribe(ClientId client, const nlohmann::json& message) {
   const auto ids = message.find("subscriptionIds");
   if (ids == message.end() || !ids->is_array())
     return Status(client, kError, "unsubscribe without \"subscriptionIds\"");
+  std::vector<std::string> unknown;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    auto& mine = subscriptions_[client];
+    for (const nlohmann::json& id : *ids) {
+      const auto held = std::find_if(mine.begin(), mine.end(),
+                                     [&](const auto& s) { return Id(id) && s.second == id.get<std::uint32_t>(); });
+      if (held == mine.end())
+        unknown.push_back(Id(id) ? std::to_string(id.get<std::uint32_t>()) : std::string("a value that is no id"));
+      else
+        mine.erase(held);
+    }
+  }
+  for (const std::string& id : unknown) Status(client, kWarning, "unsubscribe: no subscription " + id);
+}
+
+void FoxgloveHub::ForgetLatched() {
   const std::lock_guard<std::mutex> lock(mutex_);
-  auto& mine = subscriptions_[client];
-  for (const nlohmann::json& id : *ids)
-    for (auto s = mine.begin(); s != mine.end();)
-      s = id.is_number_unsigned() && s->second == id.get<std::uint32_t>() ? mine.erase(s) : std::next(s);
+  latched_.clear();
 }
 
 }  // namespace sanet::foxglove

@@ -43,6 +43,8 @@ class FoxgloveHub {
   void Advertise(const Channel& channel);
   void Publish(std::uint32_t channel, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr);
   void Time(std::uint64_t time_ns);
+  // Latched messages are forgotten (a replay about to start again sends them itself).
+  void ForgetLatched();
   std::size_t clients() const;
   std::uint64_t dropped() const;
   // For summary.json: the port, clients served, dropped for not reading, refused.
@@ -54,11 +56,13 @@ class FoxgloveHub {
   void Subscribe(ClientId client, const nlohmann::json& message);
   void Unsubscribe(ClientId client, const nlohmann::json& message);
   void Status(ClientId client, int level, const std::string& message);
+  std::string SubscribeOne(ClientId client, const nlohmann::json& s);  // "" or why it was refused
   static nlohmann::json ChannelJson(const Channel& c);
   static std::vector<std::uint8_t> MessageData(std::uint32_t subscription, std::uint64_t time_ns,
                                                const std::vector<std::uint8_t>& cdr);
 
   HubSettings settings_;
+  const std::string session_;  // one per hub: a client that reconnects knows it is the same server
   mutable std::mutex mutex_;
   std::vector<Channel> channels_;                                                         // by id - 1
   std::map<std::uint32_t, std::pair<std::uint64_t, std::vector<std::uint8_t>>> latched_;  // by channel

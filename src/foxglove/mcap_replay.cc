@@ -45,6 +45,7 @@ void McapReplay::Serve() {
   };
   while (!stop_) {
     wait([this] { return hub_.clients() > 0; });
+    hub_.ForgetLatched();  // the play sends /tf_static and /world itself, at their times
     std::this_thread::sleep_for(std::chrono::milliseconds(500));  // time to subscribe
     if (!stop_ && Play()) ++plays_;
     wait([this] { return hub_.clients() == 0; });

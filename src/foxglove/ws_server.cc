@@ -67,7 +67,8 @@ class WsServer::Impl::Session : public std::enable_shared_from_this<Session> {
   Session(tcp::socket socket, Impl& server, ClientId id) : ws_(std::move(socket)), server_(server), id_(id) {}
   void Start();
   void Send(bool binary, std::string bytes);
-  void Close(const std::string& why);
+  // Policy violation, or (`going_away`) the server stopping.
+  void Close(const std::string& why, bool going_away = false);
 
  private:
   void Upgrade();
@@ -175,9 +176,10 @@ void WsServer::Impl::Session::WriteNext() {
   });
 }
 
-void WsServer::Impl::Session::Close(const std::string& why) {
+void WsServer::Impl::Session::Close(const std::string& why, bool going_away) {
   if (gone_ || !open_) return;
-  ws_.async_close(websocket::close_reason(websocket::close_code::policy_error, why),
+  const auto code = going_away ? websocket::close_code::going_away : websocket::close_code::policy_error;
+  ws_.async_close(websocket::close_reason(code, why),
                   [self = shared_from_this(), why](beast::error_code) { self->Fail(why); });
 }
 
@@ -230,7 +232,7 @@ WsServer::~WsServer() {
   asio::post(impl_->io_, [this] {
     beast::error_code ignored;
     impl_->acceptor_.close(ignored);
-    for (auto& [id, session] : impl_->sessions_) session->Close("the server is stopping");
+    for (auto& [id, session] : impl_->sessions_) session->Close("the run is over", /*going_away=*/true);
   });
   // Let the closing frames go, then stop whatever still waits.
   std::this_thread::sleep_for(std::chrono::milliseconds(100));

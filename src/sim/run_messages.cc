@@ -131,7 +131,39 @@ void RunMessages::Statics(double t) {
                    transforms.end());
   Publish("/tf_static", t, statics);
   Publish("/world", t, WorldMarkers(spec_, nodes_, t));
-  for (NodeId id = where_.size(); id < nodes_.size(); ++id) where_.push_back({nodes_[id].pose.x, nodes_[id].pose.y});
+  if (where_.empty()) AdvertiseShared();
+  for (NodeId id = where_.size(); id < nodes_.size(); ++id) {
+    where_.push_back({nodes_[id].pose.x, nodes_[id].pose.y});
+    AdvertiseNode(id);
+  }
+}
+
+// Every topic is known before its first message, so that a live client can subscribe in time
+// for it (a first log line, a first transition).
+void RunMessages::AdvertiseShared() {
+  TopicOf<msg::tf2_msgs::TFMessage>("/tf");
+  TopicOf<msg::sanet_msgs::NetworkMessage>("/messages");
+  TopicOf<msg::sanet_msgs::Transition>("/transitions");
+  TopicOf<msg::sanet_msgs::Metric>("/metrics");
+  TopicOf<msg::rcl_interfaces::Log>("/rosout");
+  TopicOf<msg::sanet_msgs::NodeEvent>("/events");
+  if (!spec_.network) return;
+  TopicOf<msg::sanet_msgs::RadioFrame>("/radio/frames");
+  TopicOf<msg::visualization_msgs::MarkerArray>("/radio/links");
+  TopicOf<msg::sanet_msgs::RouteChange>("/routes");
+}
+
+void RunMessages::AdvertiseNode(NodeId node) {
+  NodeTopic<msg::nav_msgs::Odometry>(node, kTruthTopic, "/ground_truth");
+  const robots::ModelSpec& model = nodes_[node].model;
+  if (model.kind == robots::ModelKind::kMote) return;
+  NodeTopic<msg::nav_msgs::Odometry>(node, kOdomTopic, "/odom");
+  if (model.sensors.laser) NodeTopic<msg::sensor_msgs::LaserScan>(node, kScanTopic, "/scan");
+  if (model.sensors.ir)
+    for (std::size_t i = 0; i < model.sensors.ir->angles.size(); ++i) {
+      const std::string suffix = "/ir_" + std::to_string(i);
+      NodeTopic<msg::sensor_msgs::Range>(node, kFirstIrTopic + i, suffix.c_str());
+    }
 }
 
 void RunMessages::Spawned(double t) { Statics(t); }

@@ -64,6 +64,8 @@ class RunMessages {
   bool FirstAt(double t, NodeId node, std::size_t what);
   void FlushRadio(double until);
   void Statics(double t);
+  void AdvertiseShared();
+  void AdvertiseNode(NodeId node);
 
   const RunSpec& spec_;
   const RunNodes& nodes_;

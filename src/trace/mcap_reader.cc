@@ -84,7 +84,7 @@ bool Reader::File(std::ifstream& in) {
     std::uint8_t head[9];
     if (!in.read(reinterpret_cast<char*>(head), sizeof head)) {
       if (in.gcount() == 0) return true;  // the end, without a data end (a run stopped hard)
-      throw std::runtime_error(At(offset) + ": a record is cut short");
+      throw std::runtime_error(At(offset) + ": the file ends inside a record (cut short?)");
     }
     std::uint64_t length = 0;
     for (int i = 0; i < 8; ++i) length |= static_cast<std::uint64_t>(head[1 + i]) << (8 * i);
@@ -92,7 +92,8 @@ bool Reader::File(std::ifstream& in) {
     if (length > (std::uint64_t{1} << 32)) throw std::runtime_error(At(offset) + ": a record of impossible length");
     content.resize(length);
     if (!in.read(reinterpret_cast<char*>(content.data()), static_cast<std::streamsize>(length)))
-      throw std::runtime_error(At(offset) + ": a record is cut short");
+      throw std::runtime_error(At(offset) + ": the record that starts here (" + std::to_string(length) +
+                               " bytes) goes past the file's end (cut short?)");
     Record(head[0], Fields(content.data(), content.size(), At(offset)), offset);
     offset += sizeof head + length;
   }

@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -40,10 +41,13 @@ LiveView::LiveView(const sim::RunSpec& spec, LiveSettings settings)
                                      return true;
                                    });
   });
+  ListenAlone(*server_);
   port_ = settings_.port == 0 ? server_->bind_to_any_port(settings_.bind)
                               : (server_->bind_to_port(settings_.bind, settings_.port) ? settings_.port : -1);
   if (port_ < 0) throw std::runtime_error("cannot listen on " + settings_.bind + ":" + std::to_string(settings_.port));
   thread_ = std::thread([this] { server_->listen_after_bind(); });
+  // Until it runs, cpp-httplib's stop() does nothing and a destructor would wait on it for ever.
+  for (int i = 0; i < 5000 && !server_->is_running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 LiveView::~LiveView() {

@@ -1,5 +1,7 @@
 #include "view/page_routes.h"
 
+#include <sys/socket.h>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -49,6 +51,13 @@ void AddPageRoutes(httplib::Server& server, const std::string& javascript) {
       text << in.rdbuf();
       r.set_content(text.str(), "application/javascript");
     });
+}
+
+void ListenAlone(httplib::Server& server) {
+  server.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof yes);
+  });
 }
 
 }  // namespace sanet::view

@@ -54,6 +54,7 @@ void ServeViewer(const ViewerSettings& settings, const std::function<void(int po
   const TraceReader trace(settings.results);
   httplib::Server server;
   AddRoutes(server, trace, settings.javascript);
+  ListenAlone(server);
   const int port = settings.port == 0 ? server.bind_to_any_port(settings.bind)
                                       : (server.bind_to_port(settings.bind, settings.port) ? settings.port : -1);
   if (port < 0)

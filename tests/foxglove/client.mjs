@@ -94,18 +94,34 @@ function knock(protocol) {
 
 async function hostile() {
   const ws = new WebSocket(url, ["foxglove.websocket.v1"]);
-  const texts = [];
-  ws.on("message", (data, binary) => { if (!binary) texts.push(JSON.parse(data.toString())); });
+  const texts = [], late = [];
+  let unsubscribedAt = null;
+  ws.on("message", (data, binary) => {
+    if (!binary) return texts.push(JSON.parse(data.toString()));
+    // Message data for subscription 1 well after it was unsubscribed (what was queued may still come).
+    if (data[0] === 1 && data.readUInt32LE(1) === 1 && unsubscribedAt && Date.now() - unsubscribedAt > 300)
+      late.push(Date.now() - unsubscribedAt);
+  });
   await new Promise((r) => ws.on("open", r));
+  await until(() => texts.some((t) => t.op === "advertise" && t.channels.some((c) => c.topic === "/tf")));
+  const tf = texts.flatMap((t) => (t.op === "advertise" ? t.channels : [])).find((c) => c.topic === "/tf").id;
+  const deep = "[".repeat(100000) + "]".repeat(100000);
   for (const m of ["not json", "[1, 2]", JSON.stringify({ op: "getParameters", parameterNames: [] }),
                    JSON.stringify({ op: "subscribe", subscriptions: [{ id: 1, channelId: 99999 }] }),
-                   JSON.stringify({ op: "subscribe" }), JSON.stringify({ noop: 1 })])
+                   JSON.stringify({ op: "subscribe" }), JSON.stringify({ noop: 1 }),
+                   `{"op":"subscribe","subscriptions":${deep}}`, `{"op":"subscribe","subscriptions":[${deep}]}`,
+                   JSON.stringify({ op: "subscribe", subscriptions: [{ id: 1, channelId: tf }, { id: 2, channelId: tf }] }),
+                   `{"op":"subscribe","subscriptions":[{"id":4294967297,"channelId":${tf}}]}`,
+                   JSON.stringify({ op: "unsubscribe", subscriptionIds: [77] })])
     ws.send(m);
   ws.send(Buffer.from([1, 0, 0, 0, 0, 42]));
   await sleep(1000);
+  ws.send(JSON.stringify({ op: "unsubscribe", subscriptionIds: [1] }));
+  unsubscribedAt = Date.now();
+  await sleep(1500);
   const refused = await knock("not.foxglove");
   ws.close();
-  print({ statuses: texts.filter((t) => t.op === "status"), refusedWithoutSubprotocol: refused,
+  print({ statuses: texts.filter((t) => t.op === "status"), refusedWithoutSubprotocol: refused, late,
           stillOpen: ws.readyState === WebSocket.OPEN || ws.readyState === WebSocket.CLOSING });
 }
 

@@ -68,7 +68,9 @@ class Live(unittest.TestCase):
         seen = client("watch", url, "4", "/tf", "/f1/scan", "/tf_static", "/world")
         self.assertEqual(run.wait(timeout=60), 0, run.stderr.read())
         self.assertEqual(seen["serverInfo"]["capabilities"], ["time"])
-        for topic in ("/tf", "/f1/scan", "/leader/ground_truth", "/radio/links", "/messages"):
+        # Every topic is advertised from the start, before its first message (a first log line).
+        for topic in ("/tf", "/f1/scan", "/leader/ground_truth", "/radio/links", "/messages", "/rosout",
+                      "/transitions", "/f3/odom"):
             self.assertIn(topic, seen["topics"])
         received = seen["received"]
         self.assertEqual(received["/f1/scan"]["schemaName"], "sensor_msgs/msg/LaserScan")
@@ -113,10 +115,14 @@ class Live(unittest.TestCase):
         statuses = [s["message"] for s in answers["statuses"]]
         self.assertTrue(all(s["level"] in (1, 2) for s in answers["statuses"]))
         for says in ("not a JSON object", "unsupported operation \"getParameters\"", "no channel 99999",
-                     "subscribe without \"subscriptions\"", "without its \"op\"", "takes no messages from clients"):
+                     "subscribe without \"subscriptions\"", "without its \"op\"", "takes no messages from clients",
+                     "is subscribed already (subscription 1): one subscription per channel",
+                     "numbers from 0 to 4294967295", "unsubscribe: no subscription 77"):
             self.assertTrue(any(says in s for s in statuses), f"{says!r} not in {statuses}")
         self.assertEqual(answers["refusedWithoutSubprotocol"], 400)
-        self.assertTrue(answers["stillOpen"], "garbage does not end the session")
+        self.assertTrue(answers["stillOpen"], "garbage (nested 100,000 deep too) does not end the session")
+        self.assertEqual(answers["late"], [], "nothing for a subscription after it was unsubscribed")
+        self.assertTrue(all(len(s) < 300 for s in statuses), "statuses do not echo what was sent")
         # The cap: two clients at once, the third refused.
         holders = [subprocess.Popen(["node", CLIENT, MODULES, "watch", url, "3", "/tf"], stdout=subprocess.PIPE)
                    for _ in range(2)]

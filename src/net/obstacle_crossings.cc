@@ -1,0 +1,112 @@
+#include "net/obstacle_crossings.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace sanet::net {
+namespace {
+
+// The box's footprint corners seen from above, for the cells it touches.
+void FootprintBounds(const physics::StaticBox& box, double& lo_x, double& lo_y, double& hi_x, double& hi_y) {
+  const double c = std::fabs(std::cos(box.yaw)), s = std::fabs(std::sin(box.yaw));
+  const double half_x = (box.size.x * c + box.size.y * s) / 2, half_y = (box.size.x * s + box.size.y * c) / 2;
+  lo_x = box.center.x - half_x, hi_x = box.center.x + half_x;
+  lo_y = box.center.y - half_y, hi_y = box.center.y + half_y;
+}
+
+}  // namespace
+
+double LengthInside(const physics::StaticBox& box, const physics::Vec3& a, const physics::Vec3& b) {
+  // Both ends in the box's own frame, where it is axis-aligned about the origin.
+  const double c = std::cos(-box.yaw), s = std::sin(-box.yaw);
+  const auto local = [&](const physics::Vec3& p) {
+    const double x = p.x - box.center.x, y = p.y - box.center.y;
+    return physics::Vec3{x * c - y * s, x * s + y * c, p.z - box.center.z};
+  };
+  const physics::Vec3 p = local(a), q = local(b);
+  const double from[3] = {p.x, p.y, p.z}, d[3] = {q.x - p.x, q.y - p.y, q.z - p.z};
+  const double half[3] = {box.size.x / 2, box.size.y / 2, box.size.z / 2};
+  double t0 = 0, t1 = 1;  // the slabs' clipping of the segment
+  for (int i = 0; i < 3; ++i) {
+    if (std::fabs(d[i]) < 1e-15) {
+      if (std::fabs(from[i]) >= half[i]) return 0;
+      continue;
+    }
+    double enter = (-half[i] - from[i]) / d[i], leave = (half[i] - from[i]) / d[i];
+    if (enter > leave) std::swap(enter, leave);
+    t0 = std::max(t0, enter), t1 = std::min(t1, leave);
+    if (t0 >= t1) return 0;
+  }
+  return (t1 - t0) * std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+ObstacleCrossings::ObstacleCrossings(std::vector<RadioObstacle> obstacles, double cell)
+    : obstacles_(std::move(obstacles)), cell_(cell), seen_(obstacles_.size(), 0) {
+  if (obstacles_.empty()) return;
+  std::vector<std::array<std::int64_t, 4>> spans;  // each obstacle's cells: x0, y0, x1, y1
+  min_x_ = min_y_ = INT64_MAX, max_x_ = max_y_ = INT64_MIN;
+  for (const RadioObstacle& o : obstacles_) {
+    double lo_x, lo_y, hi_x, hi_y;
+    FootprintBounds(o.box, lo_x, lo_y, hi_x, hi_y);
+    spans.push_back({Cell(lo_x), Cell(lo_y), Cell(hi_x), Cell(hi_y)});
+    min_x_ = std::min(min_x_, spans.back()[0]), min_y_ = std::min(min_y_, spans.back()[1]);
+    max_x_ = std::max(max_x_, spans.back()[2]), max_y_ = std::max(max_y_, spans.back()[3]);
+  }
+  const std::int64_t rows = max_y_ - min_y_ + 1;
+  cells_.resize(static_cast<std::size_t>((max_x_ - min_x_ + 1) * rows));
+  for (std::size_t i = 0; i < spans.size(); ++i)
+    for (std::int64_t x = spans[i][0]; x <= spans[i][2]; ++x)
+      for (std::int64_t y = spans[i][1]; y <= spans[i][3]; ++y)
+        cells_[static_cast<std::size_t>((x - min_x_) * rows + (y - min_y_))].push_back(i);
+}
+
+void ObstacleCrossings::Visit(std::int64_t cx, std::int64_t cy, std::vector<std::size_t>& found) const {
+  if (cx < min_x_ || cx > max_x_ || cy < min_y_ || cy > max_y_) return;
+  for (const std::size_t i : cells_[static_cast<std::size_t>((cx - min_x_) * (max_y_ - min_y_ + 1) + (cy - min_y_))])
+    if (seen_[i] != query_) {
+      seen_[i] = query_;
+      found.push_back(i);
+    }
+}
+
+std::vector<Crossing> ObstacleCrossings::Crossings(const physics::Vec3& a, const physics::Vec3& b) const {
+  std::vector<Crossing> out;
+  if (obstacles_.empty()) return out;
+  ++query_;
+  std::vector<std::size_t> found;
+  // Amanatides and Woo: the cells the segment's shadow crosses, in order.
+  std::int64_t cx = Cell(a.x), cy = Cell(a.y);
+  const std::int64_t end_x = Cell(b.x), end_y = Cell(b.y);
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const std::int64_t step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
+  const auto boundary = [&](std::int64_t c, std::int64_t step) { return origin_ + (c + (step > 0 ? 1 : 0)) * cell_; };
+  double next_x = dx != 0 ? (boundary(cx, step_x) - a.x) / dx : HUGE_VAL;
+  double next_y = dy != 0 ? (boundary(cy, step_y) - a.y) / dy : HUGE_VAL;
+  const double delta_x = dx != 0 ? cell_ / std::fabs(dx) : HUGE_VAL,
+               delta_y = dy != 0 ? cell_ / std::fabs(dy) : HUGE_VAL;
+  for (;;) {
+    Visit(cx, cy, found);
+    // At the end's cell, or past the segment's end (the parameters only grow: this ends).
+    if ((cx == end_x && cy == end_y) || std::min(next_x, next_y) > 1) break;
+    if (next_x < next_y) {
+      cx += step_x, next_x += delta_x;
+    } else {
+      cy += step_y, next_y += delta_y;
+    }
+  }
+  std::sort(found.begin(), found.end());
+  for (const std::size_t i : found)
+    if (const double length = LengthInside(obstacles_[i].box, a, b); length > 0) out.push_back({i, length});
+  return out;
+}
+
+double ObstacleCrossings::LossDb(const physics::Vec3& a, const physics::Vec3& b) const {
+  double loss = 0;
+  for (const Crossing& c : Crossings(a, b))
+    loss += obstacles_[c.obstacle].loss_db + obstacles_[c.obstacle].loss_db_per_m * c.length;
+  return loss;
+}
+
+}  // namespace sanet::net

@@ -7,18 +7,12 @@
 #include <map>
 #include <stdexcept>
 
+#include "trace/mcap_format.h"
+
 namespace sanet::trace {
 namespace {
 
-constexpr std::uint8_t kMagic[] = {0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
-enum Op : std::uint8_t {
-  kHeader = 0x01,
-  kSchema = 0x03,
-  kChannel = 0x04,
-  kMessage = 0x05,
-  kChunk = 0x06,
-  kDataEnd = 0x0F
-};
+using namespace mcap;  // the format's magic and opcodes
 
 // Little-endian fields of one record's content, never past its end.
 class Fields {
@@ -150,7 +144,7 @@ void Reader::Chunk(Fields f, std::uint64_t offset) {
   f.Int<std::uint32_t>();  // CRC (0: not given); zstd checks its own frames
   const std::string compression = f.Text();
   std::vector<std::uint8_t> records = f.Bytes(f.Int<std::uint64_t>());
-  if (compression == "zstd") {
+  if (compression == kZstd) {
     std::vector<std::uint8_t> plain(size);
     const std::size_t n = ZSTD_decompress(plain.data(), plain.size(), records.data(), records.size());
     if (ZSTD_isError(n) || n != size) throw std::runtime_error(At(offset) + ": a damaged zstd chunk");

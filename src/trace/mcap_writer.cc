@@ -6,25 +6,14 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "trace/mcap_format.h"
+
 namespace sanet::trace {
 namespace {
 
 using Bytes = McapWriter::Bytes;
 
-constexpr std::uint8_t kMagic[] = {0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
-enum Op : std::uint8_t {
-  kHeader = 0x01,
-  kFooter = 0x02,
-  kSchema = 0x03,
-  kChannel = 0x04,
-  kMessage = 0x05,
-  kChunk = 0x06,
-  kMessageIndex = 0x07,
-  kChunkIndex = 0x08,
-  kStatistics = 0x0B,
-  kSummaryOffset = 0x0E,
-  kDataEnd = 0x0F,
-};
+using namespace mcap;  // the format's magic and opcodes
 
 // Little-endian integers, strings and maps as the specification's "Serialization" section says.
 template <typename T>
@@ -57,7 +46,7 @@ void Map(Bytes& b, const std::map<std::uint16_t, Value>& map) {
   }
 }
 
-const char* CompressionName(McapWriter::Compression c) { return c == McapWriter::Compression::kZstd ? "zstd" : ""; }
+const char* CompressionName(McapWriter::Compression c) { return c == McapWriter::Compression::kZstd ? kZstd : ""; }
 
 // A chunk's records as the chunk stores them. Zstandard's fastest level packs a run's repetitive
 // messages several times over at a small share of the run's time (bench/trace_bench.py).

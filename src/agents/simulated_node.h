@@ -25,11 +25,11 @@ class NodeDirectory {
   virtual void Log(NodeId node, const std::string& text) = 0;
   virtual void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) = 0;
   virtual void Metric(NodeId node, const std::string& name, double value) = 0;
-  // What a node's driver read, at simulated time `t`, for the run's log: readings are recorded as
-  // taken, never read again (a noisy sensor draws from the node's random stream).
+  // What a node's driver read, now, for the run's log: readings are recorded as taken, never read
+  // again (a noisy sensor draws from the node's random stream).
   enum class Scanner { kIr, kLaser };
-  virtual void ReadScan(NodeId /*node*/, double /*t*/, Scanner /*which*/, const RangeScan& /*scan*/) {}
-  virtual void ReadOdometry(NodeId /*node*/, double /*t*/, const Pose2D& /*pose*/) {}
+  virtual void ReadScan(NodeId /*node*/, Scanner /*which*/, const RangeScan& /*scan*/) {}
+  virtual void ReadOdometry(NodeId /*node*/, const Pose2D& /*pose*/) {}
 };
 
 class SimulatedNode : public Node {
@@ -58,7 +58,7 @@ class SimulatedNode : public Node {
   }
   std::optional<Pose2D> Odometry() override {
     std::optional<Pose2D> pose = Kept(last_.odometry, model_.Odometry());
-    if (pose) directory_.ReadOdometry(id_, Now(), *pose);
+    if (pose) directory_.ReadOdometry(id_, *pose);
     return pose;
   }
   std::optional<Pose2D> GroundTruth() override { return Kept(last_.ground_truth, model_.GroundTruth()); }
@@ -112,7 +112,7 @@ class SimulatedNode : public Node {
   }
   std::optional<Pose2D> Kept(std::optional<Pose2D>& slot, Pose2D value) { return Kept(slot, std::optional(value)); }
   std::optional<RangeScan> Told(NodeDirectory::Scanner which, std::optional<RangeScan> scan) {
-    if (scan) directory_.ReadScan(id_, Now(), which, *scan);
+    if (scan) directory_.ReadScan(id_, which, *scan);
     return scan;
   }
   LastReads last_;

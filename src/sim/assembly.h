@@ -88,10 +88,10 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void Log(NodeId node, const std::string& text) override;
   void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) override;
   void Metric(NodeId node, const std::string& name, double value) override;
-  void ReadScan(NodeId node, double /*t*/, Scanner which, const RangeScan& scan) override {
+  void ReadScan(NodeId node, Scanner which, const RangeScan& scan) override {
     if (events_) events_->ReadScan(node, which, scan);
   }
-  void ReadOdometry(NodeId node, double /*t*/, const Pose2D& odometry) override {
+  void ReadOdometry(NodeId node, const Pose2D& odometry) override {
     if (events_) events_->ReadOdometry(node, odometry, Body(node));
   }
 

@@ -105,9 +105,9 @@ const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owne
   r.laser = model.Laser();
   r.ir = model.Ir();
   // The run's log records what the owner read (NodeDirectory), as a controller's reads.
-  if (r.odometry) parts_.ReadOdometry(robot, r.time, *r.odometry);
-  if (r.laser) parts_.ReadScan(robot, r.time, agents::NodeDirectory::Scanner::kLaser, *r.laser);
-  if (r.ir) parts_.ReadScan(robot, r.time, agents::NodeDirectory::Scanner::kIr, *r.ir);
+  if (r.odometry) parts_.ReadOdometry(robot, *r.odometry);
+  if (r.laser) parts_.ReadScan(robot, agents::NodeDirectory::Scanner::kLaser, *r.laser);
+  if (r.ir) parts_.ReadScan(robot, agents::NodeDirectory::Scanner::kIr, *r.ir);
   r.bearings.reset();
   if (model.spec().sensors.bearing) {
     r.bearings.emplace();

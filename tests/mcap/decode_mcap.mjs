@@ -9,27 +9,19 @@
 //
 //   node decode_mcap.mjs NODE_MODULES FILE
 import { createRequire } from "node:module";
-import { open, readFile } from "node:fs/promises";
+import { readFile } from "node:fs/promises";
 import { resolve } from "node:path";
+
+import * as mcapFile from "./mcap_file.mjs";
 
 const [modules, file] = process.argv.slice(2);
 const require = createRequire(resolve(modules) + "/");
-const { McapIndexedReader, McapStreamReader } = require("@mcap/core");
-const { decompress } = require("fzstd");
+const { McapStreamReader } = require("@mcap/core");
 const { parse } = require("@foxglove/rosmsg");
 const { MessageReader, MessageWriter } = require("@foxglove/rosmsg2-serialization");
 
-const handle = await open(file);
-const readable = {
-  size: async () => BigInt((await handle.stat()).size),
-  read: async (offset, length) => {
-    const buffer = Buffer.alloc(Number(length));
-    await handle.read(buffer, 0, Number(length), Number(offset));
-    return new Uint8Array(buffer.buffer, buffer.byteOffset, buffer.length);
-  },
-};
-const decompressHandlers = { zstd: (data, size) => decompress(data, new Uint8Array(Number(size))) };
-const reader = await McapIndexedReader.Initialize({ readable, decompressHandlers });
+const decompressHandlers = mcapFile.decompressHandlers(require);
+const { reader, close } = await mcapFile.openIndexed(require, file);
 
 const codecs = new Map();  // channel id -> { reader, writer }
 const channels = {};
@@ -93,4 +85,4 @@ console.log(JSON.stringify({
   statistics: Number(reader.statistics.messageCount), chunks: reader.chunkIndexes.length,
   compression: [...new Set(reader.chunkIndexes.map((c) => c.compression))], backwards,
 }));
-await handle.close();
+await close();

@@ -5,14 +5,15 @@
 //
 //   node read_mcap.mjs NODE_MODULES FILE
 import { createRequire } from "node:module";
-import { open, readFile } from "node:fs/promises";
+import { readFile } from "node:fs/promises";
 import { resolve } from "node:path";
+
+import * as mcapFile from "./mcap_file.mjs";
 
 const [modules, file] = process.argv.slice(2);
 const require = createRequire(resolve(modules) + "/");
-const { McapIndexedReader, McapStreamReader } = require("@mcap/core");
-const { decompress } = require("fzstd");
-const decompressHandlers = { zstd: (data, size) => decompress(data, new Uint8Array(Number(size))) };
+const { McapStreamReader } = require("@mcap/core");
+const decompressHandlers = mcapFile.decompressHandlers(require);
 
 const streamed = { records: {}, messages: 0 };
 const stream = new McapStreamReader({ validateCrcs: true, decompressHandlers });
@@ -23,16 +24,7 @@ for (let r; (r = stream.nextRecord()); ) {
 }
 streamed.done = stream.done();
 
-const handle = await open(file);
-const readable = {
-  size: async () => BigInt((await handle.stat()).size),
-  read: async (offset, length) => {
-    const buffer = Buffer.alloc(Number(length));
-    await handle.read(buffer, 0, Number(length), Number(offset));
-    return new Uint8Array(buffer.buffer, buffer.byteOffset, buffer.length);
-  },
-};
-const reader = await McapIndexedReader.Initialize({ readable, decompressHandlers });
+const { reader, close } = await mcapFile.openIndexed(require, file);
 const channels = {};
 for (const [id, c] of reader.channelsById)
   channels[c.topic] = { id, schema: reader.schemasById.get(c.schemaId)?.name, encoding: c.messageEncoding,
@@ -57,4 +49,4 @@ console.log(JSON.stringify({
                 perChannel: Object.fromEntries([...s.channelMessageCounts].map(([k, v]) => [k, Number(v)])) },
   perTopic, ordered, window,
 }));
-await handle.close();
+await close();

@@ -36,6 +36,7 @@ void IndexedWifiChannel::JoinNewRadios() {
     GetAttribute("PropagationLossModel", loss);
     GetAttribute("PropagationDelayModel", delay);
     loss_ = loss.Get<ns3::PropagationLossModel>();
+    if (!range_loss_) range_loss_ = loss_;
     delay_ = delay.Get<ns3::PropagationDelayModel>();
     probe_from_ = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
     probe_to_ = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
@@ -79,7 +80,7 @@ void IndexedWifiChannel::Moved(std::uint32_t index) {
 double IndexedWifiChannel::LossAt(double tx_power_dbm, double distance) const {
   probe_from_->SetPosition(ns3::Vector(0, 0, top_));
   probe_to_->SetPosition(ns3::Vector(distance, 0, top_));
-  return loss_->CalcRxPower(tx_power_dbm, probe_from_, probe_to_);
+  return range_loss_->CalcRxPower(tx_power_dbm, probe_from_, probe_to_);
 }
 
 // Every loss model sanet builds (log-distance, Friis, two-ray ground, each with an optional range

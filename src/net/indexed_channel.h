@@ -44,6 +44,10 @@ class IndexedWifiChannel : public ns3::YansWifiChannel {
   // Frames that would arrive weaker than `dbm` (after the receiver's antenna gain) are not
   // handed to that receiver. Set before the first frame.
   void SetFloor(double dbm) { floor_ = dbm; }
+  // The loss model ranges are computed with, if not the channel's own: the path loss without the
+  // walls, which only add loss, so that the candidates stay a superset of the radios reached
+  // (probing through walls from wherever the probe stood would shrink the range wrongly).
+  void SetRangeLossModel(ns3::Ptr<ns3::PropagationLossModel> loss) { range_loss_ = std::move(loss); }
   double floor() const { return floor_; }
   // The radio at `index` (the order radios joined the channel: a node's id in sanet) has moved:
   // its grid cell is brought up to date. Call it after every change of position, before the
@@ -70,7 +74,7 @@ class IndexedWifiChannel : public ns3::YansWifiChannel {
   double top_ = 0;  // highest antenna (m) seen: ranges are computed with both ends there
   double max_rx_gain_ = std::numeric_limits<double>::lowest();  // dB, the largest receiver gain: ranges
                                                                 // must reach its radio too
-  ns3::Ptr<ns3::PropagationLossModel> loss_;
+  ns3::Ptr<ns3::PropagationLossModel> loss_, range_loss_;
   ns3::Ptr<ns3::PropagationDelayModel> delay_;
   ns3::Ptr<ns3::MobilityModel> probe_from_, probe_to_;  // positions for computing ranges
   std::vector<Radio> radios_;

@@ -27,6 +27,9 @@ const char* ChannelName(ChannelModel model);
 const char* StandardName(WifiStandard standard);
 // The data rates (Mbps) a standard offers.
 std::vector<double> DataRates(WifiStandard standard);
+// The carrier frequency (Hz) of the channel sanet uses: 2.412 GHz (channel 1) for 802.11b and
+// 802.11g, 5.18 GHz (channel 36) for 802.11a.
+inline double FrequencyHz(WifiStandard standard) { return standard == WifiStandard::k80211a ? 5.18e9 : 2.412e9; }
 
 struct NetworkSpec {
   WifiStandard standard = WifiStandard::k80211b;
@@ -64,6 +67,7 @@ struct NetworkSpec {
 // Radio settings a node may override.
 struct NodeRadio {
   std::optional<double> tx_power;  // dBm
+  double antenna_height = 0;       // m above the node's position, for the walls between antennas only
 };
 
 }  // namespace sanet::net

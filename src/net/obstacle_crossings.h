@@ -34,6 +34,7 @@ class ObstacleCrossings {
   // `cell`: the grid's cell side, m (about an obstacle's length suits).
   explicit ObstacleCrossings(std::vector<RadioObstacle> obstacles, double cell = 5.0);
   bool empty() const { return obstacles_.empty(); }
+  std::size_t size() const { return obstacles_.size(); }
   // Every obstacle segment a-b passes through, in the order the obstacles were given.
   std::vector<Crossing> Crossings(const physics::Vec3& a, const physics::Vec3& b) const;
   // The multi-wall loss of a-b: each crossing's loss plus its loss per metre times its length.

@@ -32,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/statistics.h"
+#include "net/path_loss.h"
 
 namespace sanet::net {
 namespace {
@@ -59,14 +60,11 @@ std::string ModeName(WifiStandard standard, double mbps) {
   return "";
 }
 
-double FrequencyHz(WifiStandard standard) {
-  return standard == WifiStandard::k80211a ? 5.18e9 : 2.412e9;  // channel 36, channel 1
-}
-
 }  // namespace
 
 WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes,
-                                 std::vector<std::string> names, const std::vector<NodeRadio>& radios)
+                                 std::vector<std::string> names, const std::vector<NodeRadio>& radios,
+                                 std::vector<RadioObstacle> walls)
     : spec_(spec),
       ns3_defaults_(spec.ns3),
       nodes_(nodes),
@@ -76,6 +74,10 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
       next_sequence_(nodes.GetN(), 0),
       floods_seen_(nodes.GetN()),
       radios_(radios) {
+  if (!walls.empty()) {
+    walls_ = ns3::CreateObject<ObstacleLossModel>();
+    walls_->SetObstacles(std::make_shared<const ObstacleCrossings>(std::move(walls)));
+  }
   ConfigureRadios();
   // One node at a time: a node may transmit with its own power.
   for (NodeId id = 0; id < nodes_.GetN(); ++id) devices_.Add(InstallRadio(nodes_.Get(id), radios.at(id)));
@@ -118,32 +120,16 @@ void WirelessNetwork::ConfigureRadios() {
         "ns3::RandomPropagationDelayModel", "Variable",
         ns3::StringValue("ns3::UniformRandomVariable[Min=0.0|Max=" + std::to_string(spec_.random_delay_max) + "]"));
   }
-  switch (spec_.loss) {
-    case LossModel::kLogDistance:
-      channel.AddPropagationLoss("ns3::LogDistancePropagationLossModel", "Exponent", ns3::DoubleValue(spec_.exponent),
-                                 "ReferenceDistance", ns3::DoubleValue(spec_.reference_distance), "ReferenceLoss",
-                                 ns3::DoubleValue(spec_.reference_loss));
-      break;
-    case LossModel::kFriis:
-      channel.AddPropagationLoss("ns3::FriisPropagationLossModel", "Frequency",
-                                 ns3::DoubleValue(FrequencyHz(spec_.standard)));
-      break;
-    case LossModel::kTwoRayGround:
-      channel.AddPropagationLoss("ns3::TwoRayGroundPropagationLossModel", "Frequency",
-                                 ns3::DoubleValue(FrequencyHz(spec_.standard)), "HeightAboveZ",
-                                 ns3::DoubleValue(spec_.antenna_height));
-      break;
-  }
-  if (spec_.max_range > 0)
-    channel.AddPropagationLoss("ns3::RangePropagationLossModel", "MaxRange", ns3::DoubleValue(spec_.max_range));
-
   ns3::Ptr<ns3::YansWifiChannel> yans = channel.Create();
+  const ns3::Ptr<ns3::PropagationLossModel> loss = PathLoss(spec_);
+  if (walls_) LastOf(loss)->SetNext(walls_);
+  yans->SetPropagationLossModel(loss);
   if (spec_.channel == ChannelModel::kIndexed) {
     indexed_ = ns3::CreateObject<IndexedWifiChannel>();
-    ns3::PointerValue loss, delay;
-    yans->GetAttribute("PropagationLossModel", loss);
+    ns3::PointerValue delay;
     yans->GetAttribute("PropagationDelayModel", delay);
-    indexed_->SetPropagationLossModel(loss.Get<ns3::PropagationLossModel>());
+    indexed_->SetPropagationLossModel(loss);
+    indexed_->SetRangeLossModel(walls_ ? PathLoss(spec_) : loss);
     indexed_->SetPropagationDelayModel(delay.Get<ns3::PropagationDelayModel>());
     indexed_->SetFloor(spec_.ChannelFloor());
     phy_.UseIndexedPhy();
@@ -157,6 +143,7 @@ void WirelessNetwork::ConfigureRadios() {
 
 ns3::NetDeviceContainer WirelessNetwork::InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio) {
   const double power = radio.tx_power.value_or(spec_.tx_power);
+  if (walls_) walls_->SetAntennaHeight(node->GetId(), radio.antenna_height);
   phy_.Set("TxPowerStart", ns3::DoubleValue(power));
   phy_.Set("TxPowerEnd", ns3::DoubleValue(power));
   ns3::NetDeviceContainer device = wifi_.Install(phy_, mac_, node);
@@ -467,6 +454,11 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   t.taps = tap_ledger_;
   t.channel = frame_counts_;
   t.channel.model = ChannelName(spec_.channel);
+  if (walls_) {
+    t.channel.walls = walls_->walls();
+    t.channel.wall_losses = walls_->counters().asked;
+    t.channel.wall_walks = walls_->counters().walked;
+  }
   if (indexed_) {
     t.channel.floor_dbm = spec_.ChannelFloor();
     t.channel.candidates = indexed_->counters().candidates;

@@ -24,6 +24,7 @@
 #include "net/message_header.h"
 #include "net/network_spec.h"
 #include "net/ns3_attributes.h"
+#include "net/obstacle_loss_model.h"
 #include "net/packet_trace.h"
 #include "net/routing_view.h"
 #include "net/tap_port.h"
@@ -33,9 +34,10 @@ namespace sanet::net {
 
 class WirelessNetwork : public Transport {
  public:
-  // `nodes` already carry their mobility models; `radios` holds per-node overrides.
+  // `nodes` already carry their mobility models; `radios` holds per-node overrides; `walls`
+  // are the obstacles that cost a frame crossing them (ObstacleLossModel), none by default.
   WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes, std::vector<std::string> names,
-                  const std::vector<NodeRadio>& radios);
+                  const std::vector<NodeRadio>& radios, std::vector<RadioObstacle> walls = {});
   ~WirelessNetwork() override;
   // A node joins while the run goes (a robot a client spawned), with the next id: the same
   // radio, channel, routing and traces as the others. `node` already carries its mobility.
@@ -62,6 +64,8 @@ class WirelessNetwork : public Transport {
   void Moved(const std::vector<NodeId>& nodes) override;
   const AddressBook& addresses() const { return book_; }
   const PacketTrace& packet_trace() const { return trace_; }
+  // The walls' part of the channel's loss (null when no obstacle costs anything).
+  ns3::Ptr<const ObstacleLossModel> walls() const { return walls_; }
 
  private:
   void ConfigureRadios();
@@ -105,6 +109,7 @@ class WirelessNetwork : public Transport {
   std::unique_ptr<FrameTrace> frames_;  // while someone traces the frames
   TapLedger tap_ledger_;
   ns3::Ptr<IndexedWifiChannel> indexed_;  // with `channel: indexed`
+  ns3::Ptr<ObstacleLossModel> walls_;     // last in the channel's loss chain, if any obstacle costs
   ChannelCounts frame_counts_;
 };
 

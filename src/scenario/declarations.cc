@@ -23,20 +23,40 @@ YAML::Node Numbers(std::initializer_list<double> values) {
   return out;
 }
 
+// A loss given outright replaces the material's: both at once is a contradiction.
+void WithRadio(const Field& f, const ObstacleRadio& radio, sim::Obstacle& o) {
+  if (radio.material && radio.loss_db)
+    f.Get("radio_loss_db")->Fail("give either 'material' or 'radio_loss_db', not both");
+  o.material = radio.material, o.radio_loss_db = radio.loss_db, o.radio_loss_db_per_m = radio.loss_db_per_m;
+}
+
+// The materials' names, each between `quote`s.
+std::string MaterialList(const std::string& quote = "") {
+  std::string list;
+  for (const std::string& name : net::MaterialNames()) list += (list.empty() ? "" : ", ") + quote + name + quote;
+  return list;
+}
+
 sim::Obstacle ReadBox(const Field& box) {
   BoxSettings b;
   BoxFields().Read(box, b);
-  return {"box", {{b.center.x, b.center.y, b.size[2] / 2}, {b.size[0], b.size[1], b.size[2]}, b.yaw}};
+  sim::Obstacle o{"box", {{b.center.x, b.center.y, b.size[2] / 2}, {b.size[0], b.size[1], b.size[2]}, b.yaw}, {}, {}};
+  WithRadio(box, b.radio, o);
+  return o;
 }
 
 sim::Obstacle ReadWall(const Field& wall) {
   WallSettings w;
   WallFields().Read(wall, w);
   const Vec2 mid = (w.from + w.to) * 0.5;
-  return {"wall",
-          {{mid.x, mid.y, w.height / 2},
-           {Norm(w.to - w.from), w.thickness, w.height},
-           std::atan2(w.to.y - w.from.y, w.to.x - w.from.x)}};
+  sim::Obstacle o{"wall",
+                  {{mid.x, mid.y, w.height / 2},
+                   {Norm(w.to - w.from), w.thickness, w.height},
+                   std::atan2(w.to.y - w.from.y, w.to.x - w.from.x)},
+                  {},
+                  {}};
+  WithRadio(wall, w.radio, o);
+  return o;
 }
 
 sim::Obstacle ReadObstacle(const Field& f) {
@@ -58,6 +78,9 @@ YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
     box["center"] = Numbers({o.box.center.x, o.box.center.y});
     box["size"] = Numbers({o.box.size.x, o.box.size.y, o.box.size.z});
     box["yaw"] = NumberNode(o.box.yaw);
+    if (o.material) box["material"] = net::MaterialName(*o.material);
+    if (o.radio_loss_db) box["radio_loss_db"] = NumberNode(*o.radio_loss_db);
+    if (o.radio_loss_db_per_m > 0) box["radio_loss_db_per_m"] = NumberNode(o.radio_loss_db_per_m);
     YAML::Node item;
     item["box"] = box;
     list.push_back(item);
@@ -113,6 +136,19 @@ const Fields<sim::RunSpec>& WorldFields() {
             for (const Field& o : v.Items()) s.obstacles.push_back(ReadObstacle(o));
         },
         [](const RunSpec& s) { return s.obstacles.empty() ? YAML::Node() : PrintObstacles(s.obstacles); });
+    f.Custom(
+        {"obstacle_material", "text", "", "`none`", MaterialList("`"),
+         "material of the obstacles that name none: `none` costs the radio nothing"},
+        [](const Field& v, RunSpec& s) {
+          const std::string text = v.Text();
+          const auto material = net::MaterialNamed(text);
+          if (!material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
+          s.obstacle_material = *material;
+        },
+        [](const RunSpec& s) {
+          return s.obstacle_material == net::Material::kNone ? YAML::Node()
+                                                             : YAML::Node(net::MaterialName(s.obstacle_material));
+        });
     return f;
   }();
   return fields;
@@ -780,6 +816,11 @@ const Fields<net::NodeRadio>& RadioFields() {
         {"tx_power", "number", "dBm", "`network.tx_power`", "[−50, 60]", "this node's transmit power"},
         [](const Field& v, net::NodeRadio& r) { r.tx_power = v.Number(-50, 60); },
         [](const net::NodeRadio& r) { return r.tx_power ? NumberNode(*r.tx_power) : YAML::Node(); });
+    f.Custom(
+        {"antenna_height", "number", "m", "`0`", "[0, 1000]",
+         "the antenna above the node's centre, for the walls between antennas only (path loss keeps its distances)"},
+        [](const Field& v, net::NodeRadio& r) { r.antenna_height = v.Number(0, 1000); },
+        [](const net::NodeRadio& r) { return r.antenna_height > 0 ? NumberNode(r.antenna_height) : YAML::Node(); });
     return f;
   }();
   return fields;
@@ -863,6 +904,32 @@ std::function<void(const Field&, S&)> ReadPointInto(Vec2 S::*m) {
 
 }  // namespace
 
+namespace {
+
+// What every obstacle may say about the radio (docs/network.md#walls).
+template <typename S>
+void AddObstacleRadioFields(Fields<S>& f) {
+  f.Custom(
+      {"material", "text", "", "`world.obstacle_material`", MaterialList("`"),
+       "what it is made of: its loss per crossing is its slab loss at its thickness and the radio's band"},
+      [](const Field& v, S& s) {
+        const std::string text = v.Text();
+        s.radio.material = net::MaterialNamed(text);
+        if (!s.radio.material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
+      },
+      Unprinted<S>());
+  f.Custom(
+      {"radio_loss_db", "number", "dB", "the material's", "[0, 1000]; not with `material`",
+       "loss of a frame per crossing, given outright"},
+      [](const Field& v, S& s) { s.radio.loss_db = v.Number(0, 1000); }, Unprinted<S>());
+  f.Custom(
+      {"radio_loss_db_per_m", "number", "dB/m", "`0`", "[0, 1000]",
+       "loss per metre of the path inside it, added to the loss per crossing"},
+      [](const Field& v, S& s) { s.radio.loss_db_per_m = v.Number(0, 1000); }, Unprinted<S>());
+}
+
+}  // namespace
+
 const Fields<BoxSettings>& BoxFields() {
   static const Fields<BoxSettings> fields = [] {
     Fields<BoxSettings> f;
@@ -878,6 +945,7 @@ const Fields<BoxSettings>& BoxFields() {
         },
         Unprinted<BoxSettings>());
     f.Number("yaw", Member(&BoxSettings::yaw), "rad", -kInf, kInf, "counter-clockwise from +x");
+    AddObstacleRadioFields(f);
     return f;
   }();
   return fields;
@@ -898,6 +966,7 @@ const Fields<WallSettings>& WallFields() {
     f.Number("height", Member(&WallSettings::height), "m", 0, 1000, "", true);
     f.Number("thickness", Member(&WallSettings::thickness), "m", 0, 1000, "split evenly on both sides of the line",
              true);
+    AddObstacleRadioFields(f);
     return f;
   }();
   return fields;

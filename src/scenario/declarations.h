@@ -56,14 +56,21 @@ const Fields<net::NodeRadio>& RadioFields();
 const Fields<sim::ControllerSpec>& ControllerFields();
 
 // Obstacles, grids, events: read into these, then into the run.
+struct ObstacleRadio {  // what an obstacle costs a radio frame, as sim::Obstacle keeps it
+  std::optional<net::Material> material;
+  std::optional<double> loss_db;
+  double loss_db_per_m = 0;
+};
 struct BoxSettings {
   Vec2 center;
   std::vector<double> size;  // length, width, height
   double yaw = 0;
+  ObstacleRadio radio;
 };
 struct WallSettings {
   Vec2 from, to;
   double height = 1.0, thickness = 0.2;
+  ObstacleRadio radio;
 };
 struct GridSettings {
   std::string name;

@@ -9,6 +9,7 @@
 #include "net/body_mobility_model.h"
 #include "net/local_transport.h"
 #include "net/wireless_network.h"
+#include "sim/radio_walls.h"
 
 namespace sanet::sim {
 namespace {
@@ -84,7 +85,7 @@ void Assembly::BuildTransport() {
     std::vector<std::string> names;
     std::vector<net::NodeRadio> radios;
     for (const NodeSpec& n : run_nodes_) names.push_back(n.name), radios.push_back(n.radio);
-    auto wireless = std::make_unique<net::WirelessNetwork>(*spec_.network, nodes, names, radios);
+    auto wireless = std::make_unique<net::WirelessNetwork>(*spec_.network, nodes, names, radios, RadioWalls(spec_));
     wireless_ = wireless.get();
     inner = std::move(wireless);
   } else {

@@ -14,6 +14,7 @@
 
 #include "agents/controller_spec.h"
 #include "net/network_spec.h"
+#include "net/wall_materials.h"
 #include "physics/physics_world.h"
 #include "robots/node_model.h"
 
@@ -38,6 +39,12 @@ inline bool RunsAsAgent(const NodeSpec& n) {
 struct Obstacle {
   std::string kind;  // "box" or "wall", for plots
   physics::StaticBox box;
+  // What it costs a radio frame crossing it (net/obstacle_loss_model.h): its material's loss
+  // (unset: the world's obstacle_material), or an explicit loss per crossing; plus a loss per
+  // metre of the path inside it.
+  std::optional<net::Material> material;
+  std::optional<double> radio_loss_db;  // dB per crossing
+  double radio_loss_db_per_m = 0;       // dB/m inside it
 };
 
 // Something that happens to a node at a given time.
@@ -59,6 +66,7 @@ struct RunSpec {
   // same step (same results as 1).
   int threads = 1;
   std::vector<Obstacle> obstacles;
+  net::Material obstacle_material = net::Material::kNone;  // of obstacles that name none
   std::vector<NodeSpec> nodes;
   // The wireless network; without one, messages are delivered locally after message_latency.
   std::optional<net::NetworkSpec> network;

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """`sanet serve --wss-port`: a client of USARSim's Wireless Simulation Server protocol, written from
 docs/protocol.md with the standard library only, registers two robots, reads a signal strength
-that falls with their simulated distance as ns-3's log-distance model says, opens a relayed TCP
+that falls with their simulated distance as ns-3's log-distance model says (and by a wall's loss
+behind a wall), opens a relayed TCP
 connection to the other robot's port and talks through it, learns who is behind it (REVERSEDNS),
 and sees it cut, and the relay port closed, once the robot drives out of range. Errors are
 answered as WSS answers them."""
@@ -20,11 +21,17 @@ from protocol_client import Client, field, serve
 SANET = sys.argv.pop(1)
 TX_POWER = 0
 RANGE = 10 ** ((TX_POWER - 46.6777 + 82) / 30)  # m, where log-distance loss meets the -82 dBm threshold
+WALL_LOSS = 12  # dB: the wall between r1 and `behind` (`beside` stands as far from r1 in the open)
 SCENARIO = f"""duration: 25
+world:
+  obstacles:
+    - wall: {{from: [-2.5, -1.5], to: [-2.5, 1.5], height: 2, radio_loss_db: {WALL_LOSS}}}
 network: {{tx_power: {TX_POWER}, routing: aodv}}
 nodes:
   - {{name: r1, model: omni3, pose: [0, 0, 0]}}
   - {{name: r2, model: omni3, pose: [8, 0, 0]}}
+  - {{name: behind, model: mote, pose: [-5, 0, 0]}}
+  - {{name: beside, model: mote, pose: [0, -5, 0]}}
 """
 
 
@@ -102,6 +109,7 @@ class WirelessSimulationServer(unittest.TestCase):
                            "dns unknown": w1.ask("DNS {Robot nobody}"), "dns self": w1.ask("DNS {Robot r1}"),
                            "dns port": w1.ask("DNS {Robot r2} {Port 1}"), "second init": w1.ask("INIT {Robot r1} {Port 1}"),
                            "reverse unknown": w2.ask("REVERSEDNS {Port 1}")})
+        cls.walled = {name: float(field(w1.ask(f"GETSS {{Robot {name}}}"), "Strength")) for name in ("behind", "beside")}
         dns = w1.ask("DNS {Robot r2}")
         cls.relay_port = int(field(dns, "Port"))
         cls.dns_again = w1.ask(f"DNS {{Robot r2}} {{Port {cls.r2_port}}}")
@@ -175,6 +183,10 @@ class WirelessSimulationServer(unittest.TestCase):
             self.assertAlmostEqual(dbm, model_dbm(x), delta=0.5)  # positions move between the two reads
         strengths = [s for _, s in self.samples]
         self.assertLess(strengths[-1], strengths[0] - 5)
+
+    def test_a_wall_lowers_the_signal_strength_by_its_loss(self):
+        self.assertAlmostEqual(self.walled["beside"], model_dbm(5), delta=0.05)
+        self.assertAlmostEqual(self.walled["behind"], self.walled["beside"] - WALL_LOSS, delta=0.01)
 
     def test_the_connection_is_cut_out_of_range_and_the_relay_comes_back(self):
         self.assertIsNotNone(self.cut_at, "the relayed connection should end when the link does")

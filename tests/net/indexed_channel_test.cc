@@ -105,6 +105,36 @@ TEST(IndexedChannel, WithTheFloorAtTheSensitivityReceivesExactlyWhatYansReceives
   EXPECT_LT(i["channel"]["receivers_considered_per_frame"].get<double>(), 60);
 }
 
+// Concrete walls across the crowded field cut its links; the indexed channel's ranges come from
+// the wall-free loss, so it still hands every frame Yans delivers: the same receptions.
+TEST(IndexedChannel, WithWallsReceivesExactlyWhatYansReceives) {
+  const auto walled = [](net::ChannelModel channel, net::Material material) {
+    sim::RunSpec spec = CrowdedField(channel);
+    for (double x : {37.5, 87.5, 137.5, 187.5}) {
+      spec.obstacles.push_back(Wall({x, -12.5}, {x, 237.5}, 3.0, 0.3));
+      spec.obstacles.back().material = material;
+    }
+    return spec;
+  };
+  std::string open_fingerprint, yans_fingerprint, indexed_fingerprint;
+  const nlohmann::json open =
+      Summary(walled(net::ChannelModel::kYans, net::Material::kNone), "open", &open_fingerprint);
+  const nlohmann::json yans =
+      Summary(walled(net::ChannelModel::kYans, net::Material::kConcrete), "walls-yans", &yans_fingerprint);
+  const nlohmann::json indexed =
+      Summary(walled(net::ChannelModel::kIndexed, net::Material::kConcrete), "walls-indexed", &indexed_fingerprint);
+  const nlohmann::json& y = yans["network"];
+  const nlohmann::json& i = indexed["network"];
+  EXPECT_LT(y["channel"]["frames_received"].get<double>(),
+            0.9 * open["network"]["channel"]["frames_received"].get<double>())
+      << "the walls cut links";
+  EXPECT_EQ(i["channel"]["frames_sent"], y["channel"]["frames_sent"]);
+  EXPECT_EQ(i["channel"]["frames_received"], y["channel"]["frames_received"]);
+  EXPECT_EQ(i["packets"], y["packets"]);
+  EXPECT_EQ(indexed_fingerprint, yans_fingerprint);
+  EXPECT_NE(yans_fingerprint, open_fingerprint);
+}
+
 // Radios on a line 10, 20, ... 150 m from a mote that broadcasts once a second, no routing (so
 // its frames are the only ones): with the default radio (16 dBm, log-distance exponent 3,
 // 46.6777 dB at 1 m) a frame arrives at the default floor (-91 dBm) at 102.6 m.

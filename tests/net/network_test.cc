@@ -212,6 +212,43 @@ TEST(Network, ARobotDrivingAwayLosesTheLinkWhereThePropagationModelSaysAndRegain
   EXPECT_LT(Norm(Probe::where_.back()), 10) << "heard again on the way home";
 }
 
+// A mote at the origin broadcasts every 0.2 s at 0 dBm (heard to 15 m); a robot drives along
+// x = 10 m from y = -11 to 11 m. A concrete wall 0.3 m thick (15.6 dB at 2.4 GHz) from (5, -4)
+// to (5, 4) shades |y| < 8.25 m there (its near corners seen from the mote): behind it the
+// mote's -80 to -78 dBm fall under the -82 dBm threshold, and no frame gets through.
+std::vector<Vec2> HeardAlongTheWall(net::Material material) {
+  std::vector<Probe::Send> beacons;
+  for (double t = 0.2; t < 30; t += 0.2) beacons.push_back({t, kBroadcast});
+  auto drive = [](Node& node) { node.Drive({node.GroundTruth()->y < 11 ? 1.0 : 0.0, 0, 0}); };
+  Probes probes({beacons, {}}, {nullptr, drive});
+  Probe::where_.clear();
+  sim::RunSpec spec = MoteLine(0, 0, net::Routing::kNone, 24);
+  spec.network->tx_power = 0;
+  spec.nodes.push_back(Robot("mote", ModelKind::kMote, {0, 0, 0}, UseController("p0", {})));
+  spec.nodes.push_back(Robot("robot", ModelKind::kOmni3, {10, -11, M_PI / 2}, UseController("p1", {})));
+  spec.obstacles.push_back(Wall({5, -4}, {5, 4}, 2.0, 0.3));
+  spec.obstacles.back().material = material;
+  sim::World world(spec, probes.registry);
+  world.Run({});
+  return Probe::where_;
+}
+
+TEST(Network, ARobotBehindAConcreteWallLosesTheMoteAndHearsItAgainPastIt) {
+  const std::vector<Vec2> heard = HeardAlongTheWall(net::Material::kConcrete);
+  ASSERT_GT(heard.size(), 20u);
+  std::size_t gap = 0;
+  for (std::size_t i = 1; i < heard.size(); ++i)
+    if (heard[i].y - heard[i - 1].y > 5) gap = i;
+  ASSERT_GT(gap, 0u) << "the wall never cut the link";
+  EXPECT_NEAR(heard[gap - 1].y, -8.25, 0.5) << "lost where the wall's shadow begins";
+  EXPECT_NEAR(heard[gap].y, 8.25, 0.5) << "heard again where it ends";
+  for (const Vec2& p : heard) EXPECT_GT(std::fabs(p.y), 7.7) << "heard through the wall";
+  EXPECT_GT(heard.back().y, 10) << "heard past the wall to the end";
+  // The same wall of no material: the robot hears the mote all the way.
+  const std::vector<Vec2> open = HeardAlongTheWall(net::Material::kNone);
+  for (std::size_t i = 1; i < open.size(); ++i) EXPECT_LT(open[i].y - open[i - 1].y, 1.0) << "a gap without loss";
+}
+
 TEST(Network, RoutingTableAgreesWithNs3AndInvalidationStartsANewDiscovery) {
   // m0 sends to m4 at 2 s; at 2.5 s, while the route is active, it compares its table with
   // ns-3's own dump, invalidates the route to m4 and sends again, which needs a new discovery.

@@ -54,6 +54,22 @@ const Case kCases[] = {
      8, "nodes[0].controller.library", "no such file"},
     {"degenerate_wall", "world:\n  obstacles:\n    - wall: {from: [1, 1], to: [1, 1]}\nnodes: []\n", 4,
      "world.obstacles[0].wall.to", "must differ"},
+    {"unknown_material",
+     "world:\n  obstacles:\n    - wall: {from: [0, 0], to: [5, 0]}\n    - wall:\n        from: [0, 1]\n"
+     "        to: [5, 1]\n        material: plaster\nnodes: []\n",
+     8, "world.obstacles[1].wall.material", "unknown material 'plaster' (expected one of: none, concrete, brick"},
+    {"negative_radio_loss",
+     "world:\n  obstacles:\n    - box: {center: [5, 2], size: [2, 2, 1], radio_loss_db: -3}\n"
+     "nodes: []\n",
+     4, "world.obstacles[0].box.radio_loss_db", "must be between 0 and 1000"},
+    {"material_and_loss",
+     "world:\n  obstacles:\n    - wall: {from: [0, 0], to: [5, 0], material: brick, radio_loss_db: 6}\nnodes: []\n", 4,
+     "world.obstacles[0].wall.radio_loss_db", "either 'material' or 'radio_loss_db'"},
+    {"unknown_default_material", "world:\n  obstacle_material: stone\nnodes: []\n", 3, "world.obstacle_material",
+     "unknown material 'stone'"},
+    {"negative_antenna_height",
+     "network: {}\nnodes:\n  - name: r\n    model: mote\n    pose: [0, 0, 0]\n    radio: {antenna_height: -1}\n", 7,
+     "nodes[0].radio.antenna_height", "must be between 0 and 1000"},
     {"duplicate_key", "seed: 1\nseed: 2\nnodes: []\n", 3, "seed", "key given twice"},
     {"robot_inside_a_box",
      "world:\n  obstacles:\n    - box: {center: [5, 2], size: [2, 2, 0.5]}\nnodes:\n  - name: r\n    model: omni3\n"

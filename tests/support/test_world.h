@@ -66,11 +66,12 @@ inline sim::RunSpec On(physics::Engine engine, sim::RunSpec spec) {
 
 inline sim::Obstacle Wall(Vec2 a, Vec2 b, double height = 1.0, double thickness = 0.2) {
   const Vec2 mid = (a + b) * 0.5;
-  return {"wall", {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}};
+  return {
+      "wall", {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}, {}, {}};
 }
 
 inline sim::Obstacle Box(Vec2 center, double lx, double ly, double h, double yaw = 0) {
-  return {"box", {{center.x, center.y, h / 2}, {lx, ly, h}, yaw}};
+  return {"box", {{center.x, center.y, h / 2}, {lx, ly, h}, yaw}, {}, {}};
 }
 
 inline agents::Registry& BuiltinRegistry() {

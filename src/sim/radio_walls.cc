@@ -1,0 +1,25 @@
+#include "sim/radio_walls.h"
+
+#include <algorithm>
+
+#include "net/wall_materials.h"
+
+namespace sanet::sim {
+
+double RadioThickness(const Obstacle& obstacle) {
+  return obstacle.kind == "wall" ? obstacle.box.size.y : std::min(obstacle.box.size.x, obstacle.box.size.y);
+}
+
+std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec) {
+  std::vector<net::RadioObstacle> walls;
+  if (!spec.network) return walls;
+  const double frequency = net::FrequencyHz(spec.network->standard);
+  for (const Obstacle& o : spec.obstacles) {
+    const double loss = o.radio_loss_db.value_or(
+        net::SlabLossDb(o.material.value_or(spec.obstacle_material), RadioThickness(o), frequency));
+    if (loss > 0 || o.radio_loss_db_per_m > 0) walls.push_back({o.box, loss, o.radio_loss_db_per_m});
+  }
+  return walls;
+}
+
+}  // namespace sanet::sim

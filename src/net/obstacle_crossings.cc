@@ -71,11 +71,12 @@ void ObstacleCrossings::Visit(std::int64_t cx, std::int64_t cy, std::vector<std:
     }
 }
 
-std::vector<Crossing> ObstacleCrossings::Crossings(const physics::Vec3& a, const physics::Vec3& b) const {
-  std::vector<Crossing> out;
-  if (obstacles_.empty()) return out;
+// The obstacles whose cells the segment's shadow crosses, each once, into `found` (unsorted).
+void ObstacleCrossings::Candidates(const physics::Vec3& a, const physics::Vec3& b,
+                                   std::vector<std::size_t>& found) const {
+  found.clear();
+  if (obstacles_.empty()) return;
   ++query_;
-  std::vector<std::size_t> found;
   // Amanatides and Woo: the cells the segment's shadow crosses, in order.
   std::int64_t cx = Cell(a.x), cy = Cell(a.y);
   const std::int64_t end_x = Cell(b.x), end_y = Cell(b.y);
@@ -96,16 +97,27 @@ std::vector<Crossing> ObstacleCrossings::Crossings(const physics::Vec3& a, const
       cy += step_y, next_y += delta_y;
     }
   }
+}
+
+std::vector<Crossing> ObstacleCrossings::Crossings(const physics::Vec3& a, const physics::Vec3& b) const {
+  std::vector<Crossing> out;
+  std::vector<std::size_t> found;
+  Candidates(a, b, found);
   std::sort(found.begin(), found.end());
   for (const std::size_t i : found)
     if (const double length = LengthInside(obstacles_[i].box, a, b); length > 0) out.push_back({i, length});
   return out;
 }
 
+// As the sum over Crossings, without building it: a frame's loss allocates nothing. The sum is
+// taken in the obstacles' order, as Crossings lists them, so both give the same bits.
 double ObstacleCrossings::LossDb(const physics::Vec3& a, const physics::Vec3& b) const {
+  Candidates(a, b, found_);
+  std::sort(found_.begin(), found_.end());
   double loss = 0;
-  for (const Crossing& c : Crossings(a, b))
-    loss += obstacles_[c.obstacle].loss_db + obstacles_[c.obstacle].loss_db_per_m * c.length;
+  for (const std::size_t i : found_)
+    if (const double length = LengthInside(obstacles_[i].box, a, b); length > 0)
+      loss += obstacles_[i].loss_db + obstacles_[i].loss_db_per_m * length;
   return loss;
 }
 

@@ -43,6 +43,7 @@ class ObstacleCrossings {
  private:
   std::int64_t Cell(double v) const { return static_cast<std::int64_t>(std::floor((v - origin_) / cell_)); }
   void Visit(std::int64_t cx, std::int64_t cy, std::vector<std::size_t>& found) const;
+  void Candidates(const physics::Vec3& a, const physics::Vec3& b, std::vector<std::size_t>& found) const;
 
   std::vector<RadioObstacle> obstacles_;
   double cell_, origin_ = 0;
@@ -50,6 +51,7 @@ class ObstacleCrossings {
   std::vector<std::vector<std::size_t>> cells_;                   // by (x - min_x) * rows + (y - min_y)
   mutable std::vector<std::uint32_t> seen_;                       // per obstacle: the query that saw it
   mutable std::uint32_t query_ = 0;
+  mutable std::vector<std::size_t> found_;  // LossDb's scratch
 };
 
 }  // namespace sanet::net

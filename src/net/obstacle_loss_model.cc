@@ -23,12 +23,9 @@ void ObstacleLossModel::SetAntennaHeight(std::uint32_t node, double height) {
   kept_.clear();
 }
 
-physics::Vec3 ObstacleLossModel::Antenna(const ns3::Ptr<ns3::MobilityModel>& mobility, const ns3::Vector& at) const {
-  double height = 0;
-  if (const ns3::Ptr<ns3::Node> node = mobility->GetObject<ns3::Node>();
-      node && node->GetId() < antenna_heights_.size())
-    height = antenna_heights_[node->GetId()];
-  return {at.x, at.y, at.z + height};
+double ObstacleLossModel::AntennaHeight(const ns3::Ptr<ns3::MobilityModel>& mobility) const {
+  const ns3::Ptr<ns3::Node> node = mobility->GetObject<ns3::Node>();
+  return node && node->GetId() < antenna_heights_.size() ? antenna_heights_[node->GetId()] : 0.0;
 }
 
 double ObstacleLossModel::LossDb(ns3::Ptr<ns3::MobilityModel> a, ns3::Ptr<ns3::MobilityModel> b) const {
@@ -40,9 +37,12 @@ double ObstacleLossModel::LossDb(ns3::Ptr<ns3::MobilityModel> a, ns3::Ptr<ns3::M
   const std::uint64_t key = std::hash<const void*>()(pa) * 0x9E3779B97F4A7C15ULL ^ std::hash<const void*>()(pb);
   auto [found, fresh] = kept_.try_emplace(key);
   Kept& kept = found->second;
-  if (!fresh && kept.from == pa && kept.to == pb && kept.a == at_a && kept.b == at_b) return kept.loss_db;
+  const bool same_pair = !fresh && kept.from == pa && kept.to == pb;
+  if (same_pair && kept.a == at_a && kept.b == at_b) return kept.loss_db;
   ++counters_.walked;  // a pair met for the first time, one that moved, or one whose slot another took
-  kept = {pa, pb, at_a, at_b, obstacles_->LossDb(Antenna(a, at_a), Antenna(b, at_b))};
+  if (!same_pair) kept = {pa, pb, {}, {}, AntennaHeight(a), AntennaHeight(b), 0};
+  kept.a = at_a, kept.b = at_b;
+  kept.loss_db = obstacles_->LossDb({at_a.x, at_a.y, at_a.z + kept.height_a}, {at_b.x, at_b.y, at_b.z + kept.height_b});
   return kept.loss_db;
 }
 

@@ -41,12 +41,13 @@ class ObstacleLossModel : public ns3::PropagationLossModel {
   struct Kept {
     const void *from = nullptr, *to = nullptr;  // the pair's mobility models
     ns3::Vector a, b;                           // their positions when it was computed
+    double height_a = 0, height_b = 0;          // their antennas' heights
     double loss_db = 0;
   };
   double DoCalcRxPower(double tx_power_dbm, ns3::Ptr<ns3::MobilityModel> a,
                        ns3::Ptr<ns3::MobilityModel> b) const override;
   int64_t DoAssignStreams(int64_t) override { return 0; }
-  physics::Vec3 Antenna(const ns3::Ptr<ns3::MobilityModel>& mobility, const ns3::Vector& at) const;
+  double AntennaHeight(const ns3::Ptr<ns3::MobilityModel>& mobility) const;
 
   std::shared_ptr<const ObstacleCrossings> obstacles_;
   std::vector<double> antenna_heights_;                   // by node id

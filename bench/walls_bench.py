@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """What the radio's walls cost (net/obstacle_loss_model.h). Runs each case three ways, the same
 seed, and prints wall time, the ratio to the first (the baseline, measured in the same run),
-frames sent and received, the wall losses asked for and computed (the rest came from the cache
-of pairs that did not move), and the extra wall time per frame sent:
+frames sent and received, and the wall losses asked for and computed (the rest came from the
+cache of pairs that did not move). The cost of one loss alone: build/bench/obstacle_loss_bench.
 
   400 motes    a 20 x 20 grid 40 m apart, AODV, 40 motes sending 64 B to a far mote every 2 s,
                with 0.2 m walls every 80 m across the field (a door every 40 m): no obstacles
@@ -59,10 +59,9 @@ def report(name, label, summary, baseline):
     channel = summary["network"]["channel"]
     walls = channel.get("walls", {})
     wall = summary["wall_time_s"]
-    per_frame = (wall - baseline["wall_time_s"]) / max(channel["frames_sent"], 1) * 1e6
     print(f"{name:>10} {label:>16} {wall:>8.2f} {wall / baseline['wall_time_s']:>6.3f} {channel['frames_sent']:>9} "
-          f"{channel['frames_received']:>9} {walls.get('losses_asked', 0):>10} {walls.get('losses_computed', 0):>10} "
-          f"{per_frame:>10.2f}", flush=True)
+          f"{channel['frames_received']:>9} {walls.get('losses_asked', 0):>10} {walls.get('losses_computed', 0):>10}",
+          flush=True)
 
 
 def main():
@@ -72,7 +71,7 @@ def main():
     parser.add_argument("--swarm-seconds", type=float, default=10, help="simulated seconds of swarm-1k")
     a = parser.parse_args()
     print(f"{'case':>10} {'walls':>16} {'wall s':>8} {'ratio':>6} {'frames':>9} {'received':>9} "
-          f"{'losses':>10} {'computed':>10} {'µs/frame':>10}")
+          f"{'losses':>10} {'computed':>10}")
     with tempfile.TemporaryDirectory() as tmp:
         results = []
         for label, material in (("no obstacles", None), ("walls of none", "none"), ("walls of 0.01 dB", 0.01),

@@ -38,7 +38,8 @@ def load(folder, min_frames):
         discoveries = [float(r["duration"]) for r in csv.DictReader(f) if r["duration"]]
     with open(os.path.join(folder, "summary.json")) as f:
         summary = json.load(f)
-    ended = f"ended at {summary['simulated_s']:.1f} s ({summary['ended_by']})"
+    ended_at = summary.get("ended_at_s", summary["simulated_s"])  # the end condition's time, before its grace
+    ended = f"ended at {ended_at:.1f} s ({summary['ended_by']})"
     return nodes, obstacles, links, discoveries, ended
 
 

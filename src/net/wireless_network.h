@@ -64,8 +64,6 @@ class WirelessNetwork : public Transport {
   void Moved(const std::vector<NodeId>& nodes) override;
   const AddressBook& addresses() const { return book_; }
   const PacketTrace& packet_trace() const { return trace_; }
-  // The walls' part of the channel's loss (null when no obstacle costs anything).
-  ns3::Ptr<const ObstacleLossModel> walls() const { return walls_; }
 
  private:
   void ConfigureRadios();

@@ -145,10 +145,7 @@ const Fields<sim::RunSpec>& WorldFields() {
           if (!material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
           s.obstacle_material = *material;
         },
-        [](const RunSpec& s) {
-          return s.obstacle_material == net::Material::kNone ? YAML::Node()
-                                                             : YAML::Node(net::MaterialName(s.obstacle_material));
-        });
+        [](const RunSpec& s) { return YAML::Node(net::MaterialName(s.obstacle_material)); });
     return f;
   }();
   return fields;

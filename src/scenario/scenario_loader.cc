@@ -4,6 +4,7 @@
 #include <net/if.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -301,6 +302,28 @@ void CheckWhereNodesStart(const Field& root, const std::vector<NodePlace>& place
   sc.warnings = FieldWarnings(sc.file, sc.run, places);
 }
 
+// What an obstacle costs the radio needs a radio, as a node's radio settings do. `none` and 0
+// cost nothing (the effective scenario prints `obstacle_material: none` for every world).
+void CheckObstacleRadioNeedsANetwork(const Field& root, const Scenario& sc) {
+  const auto world = root.Get("world");
+  if (sc.run.network || !world) return;
+  constexpr const char* kNeeds = "is a radio loss: it needs a 'network' section in the scenario";
+  const auto costs = [](const Field& f) {
+    if (!f.node().IsScalar() || f.Text() == "none") return false;
+    char* end = nullptr;
+    const double value = std::strtod(f.Text().c_str(), &end);
+    return !(end && *end == '\0' && value == 0);
+  };
+  if (const auto material = world->Get("obstacle_material"); material && costs(*material)) material->Fail(kNeeds);
+  const auto obstacles = world->Get("obstacles");
+  if (!obstacles || obstacles->node().IsNull()) return;
+  for (const Field& o : obstacles->Items())
+    for (const char* kind : {"box", "wall"})
+      if (const auto shape = o.Get(kind))
+        for (const char* key : {"material", "radio_loss_db", "radio_loss_db_per_m"})
+          if (const auto given = shape->Get(key); given && costs(*given)) given->Fail(kNeeds);
+}
+
 void ReadMessages(const Field& messages, sim::RunSpec& run) { MessagesFields().Read(messages, run); }
 
 void ReadEvents(const Field& events, sim::RunSpec& run) {
@@ -462,6 +485,7 @@ void Read(const Field& root, Scenario& sc) {
   if (!root.Get("name")) run.name = fs::path(path).stem().string();
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   if (auto world = root.Get("world")) ReadWorld(*world, run);
+  CheckObstacleRadioNeedsANetwork(root, sc);
   CheckWhereNodesStart(root, ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc), sc);
   if (auto messages = root.Get("messages")) ReadMessages(*messages, run);
   if (auto events = root.Get("events")) ReadEvents(*events, run);

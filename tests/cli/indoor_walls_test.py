@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The shipped indoor help request (scenarios/help-request-indoor.yaml), run as shipped and with
 `world.obstacle_material=none`: with its concrete walls, no link between motes crosses a wall
-farther than a frame carries through one (8.3 m at its 3 dBm), the robot is led along the
+farther than a frame carries through one (8.1 m at its 3 dBm), the robot is led along the
 corridor through doorways (every mote it steers for is in front of a door or in its room) and
 arrives; without wall loss the motes hear each other through walls (more links, some through
 walls), and the robot still arrives. tools/wall_links_figure.py draws both runs."""
@@ -40,7 +40,7 @@ def links(folder, min_frames=5):
 
 
 def walls():
-    found = re.findall(r"wall: \{from: \[([\d.]+), ([\d.]+)\], to: \[([\d.]+), ([\d.]+)\]\}", open(SCENARIO).read())
+    found = re.findall(r"wall: \{from: \[([\d.]+), ([\d.]+)\], to: \[([\d.]+), ([\d.]+)\]", open(SCENARIO).read())
     return [((float(a), float(b)), (float(c), float(d))) for a, b, c, d in found]
 
 

@@ -65,6 +65,11 @@ const Case kCases[] = {
     {"material_and_loss",
      "world:\n  obstacles:\n    - wall: {from: [0, 0], to: [5, 0], material: brick, radio_loss_db: 6}\nnodes: []\n", 4,
      "world.obstacles[0].wall.radio_loss_db", "either 'material' or 'radio_loss_db'"},
+    {"wall_loss_without_network",
+     "world:\n  obstacles:\n    - wall: {from: [0, 0], to: [5, 0]}\n    - wall: {from: [0, 1], to: [5, 1], material: "
+     "brick}\n"
+     "nodes:\n  - {name: a, model: mote, pose: [0, 5, 0]}\n",
+     5, "world.obstacles[1].wall.material", "needs a 'network' section"},
     {"unknown_default_material", "world:\n  obstacle_material: stone\nnodes: []\n", 3, "world.obstacle_material",
      "unknown material 'stone'"},
     {"negative_antenna_height",

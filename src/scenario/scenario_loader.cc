@@ -309,10 +309,11 @@ void CheckObstacleRadioNeedsANetwork(const Field& root, const Scenario& sc) {
   if (sc.run.network || !world) return;
   constexpr const char* kNeeds = "is a radio loss: it needs a 'network' section in the scenario";
   const auto costs = [](const Field& f) {
-    if (!f.node().IsScalar() || f.Text() == "none") return false;
+    if (!f.node().IsScalar()) return false;
+    const std::string text = f.Text();  // strtod's end points into it
     char* end = nullptr;
-    const double value = std::strtod(f.Text().c_str(), &end);
-    return !(end && *end == '\0' && value == 0);
+    const double value = std::strtod(text.c_str(), &end);
+    return text != "none" && !(*end == '\0' && value == 0);
   };
   if (const auto material = world->Get("obstacle_material"); material && costs(*material)) material->Fail(kNeeds);
   const auto obstacles = world->Get("obstacles");

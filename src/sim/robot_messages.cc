@@ -1,6 +1,7 @@
 #include "sim/robot_messages.h"
 
 #include <cmath>
+#include <limits>
 
 namespace sanet::sim {
 msg::geometry_msgs::Quaternion YawQuaternion(double theta) {
@@ -90,6 +91,17 @@ msg::nav_msgs::Odometry GroundTruthOf(const SensorReadings& r, const RobotFrames
   return OdometryIn("world", frames.base, r.time, r.ground_truth, InBody(r.velocity, r.ground_truth.theta));
 }
 
+namespace {
+
+// REP 117: a beam that returns nothing within the sensor's range reads +Inf, not its maximum
+// (which a consumer would take for an obstacle there). sanet's sensors read their maximum when
+// nothing is nearer, and noise is clamped to it, so a reading at the maximum is "nothing seen".
+float NothingSeenAsInfinity(double range, double max_range) {
+  return range >= max_range ? std::numeric_limits<float>::infinity() : static_cast<float>(range);
+}
+
+}  // namespace
+
 msg::sensor_msgs::LaserScan ScanOf(const RangeScan& scan, double t, const std::string& frame) {
   msg::sensor_msgs::LaserScan s;
   s.header.stamp = StampOf(t);
@@ -102,7 +114,8 @@ msg::sensor_msgs::LaserScan ScanOf(const RangeScan& scan, double t, const std::s
   }
   s.range_min = 0;
   s.range_max = static_cast<float>(scan.max_range);
-  s.ranges.assign(scan.ranges.begin(), scan.ranges.end());
+  s.ranges.reserve(scan.ranges.size());
+  for (double range : scan.ranges) s.ranges.push_back(NothingSeenAsInfinity(range, scan.max_range));
   return s;
 }
 
@@ -114,7 +127,7 @@ msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, co
   r.field_of_view = 0;
   r.min_range = 0;
   r.max_range = static_cast<float>(ir.max_range);
-  r.range = static_cast<float>(ir.ranges.at(i));
+  r.range = NothingSeenAsInfinity(ir.ranges.at(i), ir.max_range);
   r.variance = static_cast<float>(noise * noise);
   return r;
 }

@@ -18,6 +18,7 @@
 #include "ros2_agent/robot_topics.h"
 #include "ros2msg/codec.h"
 #include "scenario/yaml_reader.h"
+#include "sim/robot_messages.h"
 
 namespace sanet::ros2agent {
 namespace {
@@ -87,6 +88,27 @@ TEST(Readings, OdometryIsInTheWorldFromTheStartPoseAndScansSayNothingSeenAsMaxRa
   EXPECT_EQ(s.ranges, (std::vector<double>{1.5, 4, 4, 4, 0}));
   EXPECT_DOUBLE_EQ(s.angles[4], 1.0);
   EXPECT_DOUBLE_EQ(Seconds(StampAt(12.25)), 12.25);
+}
+
+// REP 117 both ways: the face (and the MCAP log) says "nothing seen" as +Inf, and the agent reads
+// +Inf back as the sensor's maximum, which is what the controller got in the simulation.
+TEST(Readings, NothingSeenIsInfinityOnTheWireAndTheMaximumInTheController) {
+  RangeScan laser;
+  laser.max_range = 8;
+  laser.angles = {-0.5, 0, 0.5};
+  laser.ranges = {2.5, 8, 7.999};
+  const msg::sensor_msgs::LaserScan sent = sim::ScanOf(laser, 1.0, "r/laser");
+  EXPECT_EQ(sent.ranges[0], 2.5f);
+  EXPECT_TRUE(std::isinf(sent.ranges[1]) && sent.ranges[1] > 0) << "a beam that hit nothing";
+  EXPECT_EQ(sent.ranges[2], 7.999f);
+  EXPECT_EQ(sent.range_max, 8.0f);
+  EXPECT_EQ(ScanOf(sent).ranges, (std::vector<double>{2.5, 8, static_cast<float>(7.999)}));
+  RangeScan ir;
+  ir.max_range = 0.8;
+  ir.angles = {0, 1};
+  ir.ranges = {0.8, 0.3};
+  EXPECT_TRUE(std::isinf(sim::RangeOf(ir, 0, 1.0, "r/ir_0", 0).range));
+  EXPECT_EQ(sim::RangeOf(ir, 1, 1.0, "r/ir_1", 0).range, 0.3f);
 }
 
 // Publishes as a robot would, and reads what the agent's side writes.

@@ -171,6 +171,20 @@ class DataFrames(unittest.TestCase):
             self.assertEqual(results.summary["fingerprint"], summary(out)["fingerprint"])
             with self.assertRaisesRegex(FileNotFoundError, "no routes2.csv|has no"):
                 results.table("routes2")
+            # trace.sqlite's tables, with node names beside the ids: every frame a node received
+            # from a known peer (an ACK names none) was sent by it, and the messages are
+            # messages.csv's.
+            frames = results.trace("frames")
+            received = frames[frames.direction == "rx"]
+            self.assertGreater(len(received), 100)
+            sent = frames[frames.direction == "tx"]
+            self.assertTrue(set(received.peer_name.dropna()) <= set(sent.node_name))
+            self.assertEqual(set(frames.node_name), set(results.trace("nodes").name) & set(frames.node_name))
+            traced = results.trace("messages")
+            self.assertEqual(len(traced), len(results.messages))
+            self.assertEqual(sorted(traced.from_name), sorted(results.messages["from"]))
+            with self.assertRaisesRegex(KeyError, "its tables are nodes"):
+                results.trace("frames; DROP TABLE frames")
 
     def test_a_study_reports_sanet_reports_numbers(self):
         with tempfile.TemporaryDirectory() as tmp:

@@ -37,6 +37,13 @@ std::string MaterialList(const std::string& quote = "") {
   return list;
 }
 
+net::Material ReadMaterial(const Field& v) {
+  const std::string text = v.Text();
+  const auto material = net::MaterialNamed(text);
+  if (!material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
+  return *material;
+}
+
 sim::Obstacle ReadBox(const Field& box) {
   BoxSettings b;
   BoxFields().Read(box, b);
@@ -139,12 +146,7 @@ const Fields<sim::RunSpec>& WorldFields() {
     f.Custom(
         {"obstacle_material", "text", "", "`none`", MaterialList("`"),
          "material of the obstacles that name none: `none` costs the radio nothing"},
-        [](const Field& v, RunSpec& s) {
-          const std::string text = v.Text();
-          const auto material = net::MaterialNamed(text);
-          if (!material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
-          s.obstacle_material = *material;
-        },
+        [](const Field& v, RunSpec& s) { s.obstacle_material = ReadMaterial(v); },
         [](const RunSpec& s) { return YAML::Node(net::MaterialName(s.obstacle_material)); });
     return f;
   }();
@@ -909,12 +911,7 @@ void AddObstacleRadioFields(Fields<S>& f) {
   f.Custom(
       {"material", "text", "", "`world.obstacle_material`", MaterialList("`"),
        "what it is made of: its loss per crossing is its slab loss at its thickness and the radio's band"},
-      [](const Field& v, S& s) {
-        const std::string text = v.Text();
-        s.radio.material = net::MaterialNamed(text);
-        if (!s.radio.material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
-      },
-      Unprinted<S>());
+      [](const Field& v, S& s) { s.radio.material = ReadMaterial(v); }, Unprinted<S>());
   f.Custom(
       {"radio_loss_db", "number", "dB", "the material's", "[0, 1000]; not with `material`",
        "loss of a frame per crossing, given outright"},

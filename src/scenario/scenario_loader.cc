@@ -4,7 +4,6 @@
 #include <net/if.h>
 
 #include <cctype>
-#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -302,27 +301,24 @@ void CheckWhereNodesStart(const Field& root, const std::vector<NodePlace>& place
   sc.warnings = FieldWarnings(sc.file, sc.run, places);
 }
 
-// What an obstacle costs the radio needs a radio, as a node's radio settings do. `none` and 0
-// cost nothing (the effective scenario prints `obstacle_material: none` for every world).
+// What an obstacle costs the radio needs a radio, as a node's radio settings do. The values are
+// the ones read (`none` and 0 cost nothing); the fields only say where they were written.
 void CheckObstacleRadioNeedsANetwork(const Field& root, const Scenario& sc) {
+  const sim::RunSpec& run = sc.run;
   const auto world = root.Get("world");
-  if (sc.run.network || !world) return;
+  if (run.network || !world) return;
   constexpr const char* kNeeds = "is a radio loss: it needs a 'network' section in the scenario";
-  const auto costs = [](const Field& f) {
-    if (!f.node().IsScalar()) return false;
-    const std::string text = f.Text();  // strtod's end points into it
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    return text != "none" && !(*end == '\0' && value == 0);
-  };
-  if (const auto material = world->Get("obstacle_material"); material && costs(*material)) material->Fail(kNeeds);
+  if (run.obstacle_material != net::Material::kNone) world->Require("obstacle_material").Fail(kNeeds);
   const auto obstacles = world->Get("obstacles");
   if (!obstacles || obstacles->node().IsNull()) return;
-  for (const Field& o : obstacles->Items())
-    for (const char* kind : {"box", "wall"})
-      if (const auto shape = o.Get(kind))
-        for (const char* key : {"material", "radio_loss_db", "radio_loss_db_per_m"})
-          if (const auto given = shape->Get(key); given && costs(*given)) given->Fail(kNeeds);
+  const std::vector<Field> items = obstacles->Items();  // in the order run.obstacles was read
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const sim::Obstacle& o = run.obstacles.at(i);
+    const Field shape = items[i].Require(o.kind);
+    if (o.material.value_or(net::Material::kNone) != net::Material::kNone) shape.Require("material").Fail(kNeeds);
+    if (o.radio_loss_db.value_or(0) > 0) shape.Require("radio_loss_db").Fail(kNeeds);
+    if (o.radio_loss_db_per_m > 0) shape.Require("radio_loss_db_per_m").Fail(kNeeds);
+  }
 }
 
 void ReadMessages(const Field& messages, sim::RunSpec& run) { MessagesFields().Read(messages, run); }

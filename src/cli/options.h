@@ -13,6 +13,8 @@ namespace sanet::cli {
 
 constexpr int kExitScenarioError = 2;
 constexpr int kExitRunFailed = 1;
+// The run ended without a robot it needed a client for (serve, launch): status failed.
+constexpr int kExitRobotsMissing = 3;
 constexpr int kExitInterrupted = 130;
 
 // One subcommand: its options live as long as the program, its action runs when it was chosen.

@@ -39,7 +39,8 @@ void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
 }
 
 std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
-                                                  const std::optional<sections::Ros2Spec>& section) {
+                                                  const std::optional<sections::Ros2Spec>& section,
+                                                  std::vector<std::string>& notices) {
   if (args.off || (!args.on && !section)) return nullptr;
   const sections::Ros2Spec given = section.value_or(sections::Ros2Spec{});
   ros2face::Ros2Settings settings;
@@ -58,8 +59,9 @@ std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2A
     throw CLI::ValidationError("--ros2", e.what());
   }
   face->Start();
-  std::printf("sanet: ROS 2 face on DDS domain %u%s: its robots' topics under /ROBOT/, /tf, /tf_static, /clock\n",
-              settings.domain, settings.interface.empty() ? "" : (", interface " + settings.interface).c_str());
+  notices.push_back("sanet: ROS 2 face on DDS domain " + std::to_string(settings.domain) +
+                    (settings.interface.empty() ? "" : ", interface " + settings.interface) +
+                    ": its robots' topics under /ROBOT/, /tf, /tf_static, /clock");
   return face;
 }
 

@@ -55,8 +55,10 @@ void WritePortFile(const std::string& path, std::uint16_t port, const char* opti
 
 namespace {
 
+// On the port asked for or the default one; the default being taken, on a free one, and `notice`
+// says so.
 template <typename T>
-std::unique_ptr<T> Listening(const FoxgloveArgs& f) {
+std::unique_ptr<T> Listening(const FoxgloveArgs& f, std::string& notice) {
   foxglove::HubSettings settings;
   settings.port = f.port;
   settings.limits.max_clients = static_cast<std::size_t>(f.max_clients);
@@ -67,7 +69,8 @@ std::unique_ptr<T> Listening(const FoxgloveArgs& f) {
     if (f.port_option && f.port_option->count() > 0) throw CLI::ValidationError("--foxglove-port", e.what());
   }
   settings.port = 0;  // the default port is taken (another run's stream): any free one
-  std::printf("sanet: the Foxglove port %d is taken (another run streams?); a free one instead:\n", f.port);
+  notice =
+      "sanet: the Foxglove port " + std::to_string(f.port) + " is taken (another run streams?); a free one instead:";
   try {
     return std::make_unique<T>(settings);
   } catch (const std::runtime_error& e) {
@@ -77,29 +80,37 @@ std::unique_ptr<T> Listening(const FoxgloveArgs& f) {
 
 }  // namespace
 
-std::unique_ptr<foxglove::FoxgloveHub> StartHub(const FoxgloveArgs& f) { return Listening<foxglove::FoxgloveHub>(f); }
+std::unique_ptr<foxglove::FoxgloveHub> StartHub(const FoxgloveArgs& f) {
+  std::string notice;
+  std::unique_ptr<foxglove::FoxgloveHub> hub = Listening<foxglove::FoxgloveHub>(f, notice);
+  if (!notice.empty()) std::printf("%s\n", notice.c_str());
+  return hub;
+}
 
-void LiveViews::AnnounceFoxglove() const {
-  if (!foxglove) return;
-  std::printf("sanet: Foxglove stream at ws://127.0.0.1:%d\n", foxglove->hub().port());
+void LiveViews::Announce() const {
+  if (page) std::printf("sanet: live view at http://127.0.0.1:%d/\n", page->port());
+  if (!foxglove_notice.empty()) std::printf("%s\n", foxglove_notice.c_str());
+  if (foxglove) std::printf("sanet: Foxglove stream at ws://127.0.0.1:%d\n", foxglove->hub().port());
   std::fflush(stdout);
 }
 
-std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f) {
-  std::unique_ptr<foxglove::FoxgloveLive> live = Listening<foxglove::FoxgloveLive>(f);
+static std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f,
+                                                             std::string& notice) {
+  std::unique_ptr<foxglove::FoxgloveLive> live = Listening<foxglove::FoxgloveLive>(f, notice);
   WritePortFile(f.port_file, static_cast<std::uint16_t>(live->hub().port()), "--foxglove-port-file");
   world.driver().AddMessageSink(*live);
   world.AddObserver(*live);
   return live;
 }
 
-LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce, bool foxglove_anyway) {
+LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool foxglove_anyway) {
   LiveViews views;
   if (!v.on) {
-    if (foxglove_anyway) views.foxglove = StartFoxglove(world, v.foxglove);
+    if (foxglove_anyway) views.foxglove = StartFoxglove(world, v.foxglove, views.foxglove_notice);
     return views;
   }
-  views.foxglove = StartFoxglove(world, v.foxglove);  // first: a port refused stops nothing started
+  // First: a port refused stops nothing started.
+  views.foxglove = StartFoxglove(world, v.foxglove, views.foxglove_notice);
   view::LiveSettings settings;
   settings.port = v.port;
   try {
@@ -109,8 +120,6 @@ LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce, bo
   }
   WritePortFile(v.port_file, static_cast<std::uint16_t>(views.page->port()), "--view-port-file");
   world.AddObserver(*views.page);
-  if (announce) std::printf("sanet: live view at http://127.0.0.1:%d/\n", views.page->port());
-  std::fflush(stdout);
   return views;
 }
 

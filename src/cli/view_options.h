@@ -41,17 +41,16 @@ void AddFoxgloveOptions(CLI::App* cmd, FoxgloveArgs& f, bool replay);
 struct LiveViews {
   std::unique_ptr<view::LiveView> page;
   std::unique_ptr<foxglove::FoxgloveLive> foxglove;
+  std::string foxglove_notice;  // why the stream is not on the default port, if it is not
   void Finish() {
     if (page) page->Finish();
   }
-  // Says where Foxglove connects (after what the command prints first, which scripts read).
-  void AnnounceFoxglove() const;
+  // Says where the page and Foxglove are, after what the command prints first (which scripts read).
+  void Announce() const;
 };
 // Both views, watching `world`; none without --view, or only the Foxglove stream if `foxglove_anyway`
-// (`sanet serve`, whose world runs in real time). `announce`: print the page's address.
-LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool announce = true, bool foxglove_anyway = false);
-// The Foxglove stream alone (`sanet serve` has it with or without --view).
-std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f);
+// (`sanet serve`, whose world runs in real time). Prints nothing: LiveViews::Announce does.
+LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool foxglove_anyway = false);
 
 // The Foxglove replay of `results`/trace.mcap, on `hub`; null if the folder has no trace.mcap.
 std::unique_ptr<foxglove::McapReplay> StartReplay(const std::string& results, foxglove::FoxgloveHub& hub,

@@ -18,8 +18,10 @@
 
 #include "core/atomic_file.h"
 #include "core/closest_names.h"
+#include "launch/launch_verdict.h"
 #include "launch/namespaces.h"
 #include "launch/radio_taps.h"
+#include "launch/run_slot.h"
 
 namespace sanet::hil {
 namespace {
@@ -52,10 +54,11 @@ void RequireSimulatedRadio() {
 }
 
 // Real links between namespaces where the machine allows it; loopback (null) otherwise.
-std::unique_ptr<NetworkNamespaces> MakeNamespaces(const sections::LoopSpec& loop, const std::vector<NodeId>& robots) {
+std::unique_ptr<NetworkNamespaces> MakeNamespaces(const RunSlot& slot, const sections::LoopSpec& loop,
+                                                  const std::vector<NodeId>& robots) {
   if (SimulatedRadio(loop)) {
     RequireSimulatedRadio();
-    auto namespaces = std::make_unique<NetworkNamespaces>(robots, sections::LinkShaping{}, false);
+    auto namespaces = std::make_unique<NetworkNamespaces>(slot, robots, sections::LinkShaping{}, false);
     std::printf("sanet: each agent in its own network namespace; their traffic crosses the simulated radio (%s)\n",
                 kRadioInterface);
     return namespaces;
@@ -73,7 +76,7 @@ std::unique_ptr<NetworkNamespaces> MakeNamespaces(const sections::LoopSpec& loop
   const bool wants_shaping = s.delay > 0 || s.jitter > 0 || s.loss > 0 || s.rate > 0;
   std::string no_shaping;
   const bool shape = wants_shaping && NetworkNamespaces::ShapingPermitted(&no_shaping);
-  auto namespaces = std::make_unique<NetworkNamespaces>(robots, s, shape);
+  auto namespaces = std::make_unique<NetworkNamespaces>(slot, robots, s, shape);
   std::printf("sanet: each agent in its own network namespace, linked by veth pairs and a bridge\n");
   if (wants_shaping && !shape)
     std::printf(
@@ -100,7 +103,7 @@ std::optional<int> WaitForPort(const std::string& path, pid_t server) {
 // a file, not through text meant for people.
 std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchSettings& settings,
                                           const std::string& bind, const std::vector<std::string>& taps,
-                                          bool namespaces) {
+                                          bool namespaces, int dds_domain) {
   char port_dir[] = "/tmp/sanet-launch-XXXXXX";
   if (!::mkdtemp(port_dir)) throw std::runtime_error("cannot create a temporary folder for the server's port");
   const std::string port_file = std::string(port_dir) + "/port";
@@ -111,6 +114,9 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
     if (settings.duration) args.insert(args.end(), {"--duration", std::to_string(*settings.duration)});
     for (const std::string& set : settings.sets) args.insert(args.end(), {"--set", set});
     if (settings.force) args.push_back("--force");
+    if (settings.view) args.push_back("--view");
+    if (!settings.view) args.push_back("--no-foxglove");  // launch says nothing of Foxglove unless asked
+    if (settings.ros2_face) args.insert(args.end(), {"--ros2-domain", std::to_string(dds_domain)});
     for (const std::string& tap : taps) args.insert(args.end(), {"--tap", tap});
     // The scenario's folder is the server's own: the rest of the agents' Python path.
     for (std::size_t i = 1; i < settings.python_path.size(); ++i)
@@ -133,29 +139,31 @@ std::pair<pid_t, std::string> StartServer(const std::string& self, const LaunchS
   return {server, bind + ":" + std::to_string(*port)};
 }
 
-pid_t StartAgent(const std::string& self, const LaunchSettings& settings, const std::string& robot,
-                 const std::string& address, const std::string& namespace_name, const std::string& subnet) {
-  const pid_t agent = ::fork();
-  if (agent != 0) return agent;
+void StartAgent(AgentProcesses& agents, const std::string& self, const LaunchSettings& settings,
+                const std::string& robot, const std::string& address, const std::string& namespace_name,
+                const std::string& subnet, int udp_base) {
   // The agent fetches the scenario from the server, as one on another computer does.
   std::vector<std::string> args = {"sanet",          "agent", "--server",   address,
-                                   "--robot",        robot,   "--udp-base", std::to_string(settings.udp_base),
+                                   "--robot",        robot,   "--udp-base", std::to_string(udp_base),
                                    "--shared-clock", "-q"};
   for (const std::string& folder : settings.python_path) args.insert(args.end(), {"--python-path", folder});
-  if (namespace_name.empty()) Exec(self, args);
-  args.insert(args.end(), {"--udp-subnet", subnet});
-  args[0] = self;  // ip runs the program itself: its path, not a name, comes first
-  args.insert(args.begin(), {"ip", "netns", "exec", namespace_name});
-  Exec("ip", args);
+  if (!namespace_name.empty()) {
+    args.insert(args.end(), {"--udp-subnet", subnet});
+    args[0] = self;  // ip runs the program itself: its path, not a name, comes first
+    args.insert(args.begin(), {"ip", "netns", "exec", namespace_name});
+  }
+  agents.Start(robot, [&] { namespace_name.empty() ? Exec(self, args) : Exec("ip", args); });
 }
 
 // The user's program, in `robot`'s namespace when it has one, told where it runs through its
-// environment: SANET_ROBOT (the robot's name), SANET_SERVER (the server's host:port) and, over
-// the simulated radio, SANET_RADIO_ADDRESS (the robot's address on it).
+// environment: SANET_ROBOT (the robot's name), SANET_SERVER (the server's host:port), over the
+// simulated radio SANET_RADIO_ADDRESS (the robot's address on it) and, with the ROS 2 face,
+// ROS_DOMAIN_ID (the face's DDS domain).
 pid_t StartProgram(const std::vector<std::string>& command, const std::string& robot, NodeId id,
-                   const std::string& server, bool radio, const std::string& namespace_name) {
+                   const std::string& server, bool radio, const std::string& namespace_name, int dds_domain) {
   const pid_t program = ::fork();
   if (program != 0) return program;
+  if (dds_domain >= 0) ::setenv("ROS_DOMAIN_ID", std::to_string(dds_domain).c_str(), 1);
   ::setenv("SANET_ROBOT", robot.c_str(), 1);
   ::setenv("SANET_SERVER", server.c_str(), 1);
   if (radio) ::setenv("SANET_RADIO_ADDRESS", RadioAddress(id).c_str(), 1);
@@ -201,10 +209,11 @@ std::vector<int> StopChildren(const std::vector<pid_t>& children) {
 }
 
 // Waits for the server's run to end; Ctrl-C asks it to end the run and write its results.
-int WaitForServer(pid_t server) {
+int WaitForServer(pid_t server, AgentProcesses& agents) {
   int status = 0;
   bool forwarded = false;
   while (::waitpid(server, &status, WNOHANG) == 0) {
+    agents.Watch();
     if (g_interrupted && !forwarded) {
       ::kill(server, SIGINT);
       forwarded = true;
@@ -222,6 +231,40 @@ void SayHowTheRunEnded(const std::string& results) {
   const std::string why = summary.value("ended_by", std::string("duration"));
   std::printf("  ended at %.1f s: %s\n", summary["ended_at_s"].get<double>(),
               why == "duration" ? "its duration" : why.c_str());
+}
+
+// Ends the programs and the agents still running (the server's run is over) and says how the
+// programs ended.
+void StopAll(const std::vector<pid_t>& programs, AgentProcesses& agents, const sim::RunSpec& spec,
+             const LaunchSettings& settings) {
+  std::vector<pid_t> children = programs;
+  const std::vector<pid_t> running = agents.StillRunning();
+  children.insert(children.end(), running.begin(), running.end());
+  const std::vector<int> ended = StopChildren(children);
+  for (std::size_t i = 0; i < running.size(); ++i) agents.Stopped(running[i], ended[programs.size() + i]);
+  for (std::size_t i = 0; i < programs.size(); ++i)
+    ReportProgram(settings.exec_command.front(), spec.nodes[settings.exec_robots[i]].name, ended[i]);
+}
+
+// The exit code: the server's when it failed or was interrupted; kExitRobotsMissing when a robot's
+// agent failed the run (summary.json names the robot and the agent's last word); else 0.
+int Verdict(int server_status, const std::string& results, const AgentProcesses& agents) {
+  SayHowTheRunEnded(results);
+  std::vector<std::string> failures;
+  try {
+    failures = JudgeAgents(results, agents.agents());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sanet: cannot add the agents' ends to %s/summary.json: %s\n", results.c_str(), e.what());
+  }
+  for (const std::string& failure : failures) std::fprintf(stderr, "sanet: %s\n", failure.c_str());
+  std::printf("  results in %s/\n", results.c_str());
+  if (server_status != 0 && server_status != kExitRobotsMissing) return server_status;
+  if (!failures.empty()) {
+    std::fprintf(stderr, "sanet: the run failed without %s (status: failed; %s/summary.json)\n",
+                 failures.size() == 1 ? "one of its robots" : "some of its robots", results.c_str());
+    return kExitRobotsMissing;
+  }
+  return server_status;
 }
 
 }  // namespace
@@ -260,18 +303,26 @@ std::vector<NodeId> ExecRobots(const sim::RunSpec& spec, bool ros2_face, const s
 }
 
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
+  const RunSlot slot = RunSlot::Take();
   const std::vector<NodeId> robots = LaunchedRobots(spec, settings.ros2_face);
-  const std::unique_ptr<NetworkNamespaces> namespaces = MakeNamespaces(settings.loop, robots);
-  const std::string bind = namespaces ? NetworkNamespaces::ServerAddress() : "127.0.0.1";
+  const std::unique_ptr<NetworkNamespaces> namespaces = MakeNamespaces(slot, settings.loop, robots);
+  const std::string bind = namespaces ? namespaces->ServerAddress() : "127.0.0.1";
   const std::string self = std::filesystem::read_symlink("/proc/self/exe");
+  // Without namespaces the agents' UDP ports are on loopback, which every launch shares.
+  const int udp_base = namespaces ? settings.udp_base : slot.UdpBase(settings.udp_base, spec.nodes.size());
+  const int dds_domain = settings.ros2_domain >= 0 ? settings.ros2_domain : slot.DdsDomain();
   std::signal(SIGINT, [](int) { g_interrupted = 1; });
   std::signal(SIGTERM, [](int) { g_interrupted = 1; });
   std::vector<std::string> taps;
   if (SimulatedRadio(settings.loop))
     for (NodeId id : robots) taps.push_back(spec.nodes[id].name + "=" + namespaces->Namespace(id));
-  const auto [server, address] = StartServer(self, settings, bind, taps, namespaces != nullptr);
-  const std::string subnet = SimulatedRadio(settings.loop) ? kRadioSubnet : NetworkNamespaces::Subnet();
-  std::vector<pid_t> agents, programs;
+  const auto [server, address] = StartServer(self, settings, bind, taps, namespaces != nullptr, dds_domain);
+  if (settings.ros2_face)
+    std::printf("  ROS 2 face on DDS domain %d%s\n", dds_domain,
+                settings.ros2_domain >= 0 ? " (the scenario's ros2.domain)" : " (this launch's own)");
+  if (!namespaces) std::printf("  agents on loopback: node i listens on UDP port %d + i\n", udp_base);
+  const std::string subnet = SimulatedRadio(settings.loop) ? kRadioSubnet : namespaces ? namespaces->Subnet() : "";
+  AgentProcesses agents;
   for (NodeId id : robots) {
     const std::string& name = spec.nodes[id].name;
     const std::string where = namespaces ? namespaces->Namespace(id) : "";
@@ -280,27 +331,23 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
                   where.empty() ? "" : (", namespace " + where).c_str());
       continue;
     }
-    agents.push_back(StartAgent(self, settings, name, address, where, subnet));
-    std::printf("  agent %s: process %d%s\n", name.c_str(), agents.back(),
+    const bool unreachable = name == settings.test_unreachable;  // port 9 (discard): nothing listens
+    StartAgent(agents, self, settings, name, unreachable ? "127.0.0.1:9" : address, where, subnet, udp_base);
+    std::printf("  agent %s: process %d%s\n", name.c_str(), agents.agents().back().pid,
                 where.empty() ? "" : (" in namespace " + where).c_str());
   }
+  std::vector<pid_t> programs;
   for (NodeId id : settings.exec_robots) {
     const std::string where = namespaces ? namespaces->Namespace(id) : "";
-    programs.push_back(
-        StartProgram(settings.exec_command, spec.nodes[id].name, id, address, SimulatedRadio(settings.loop), where));
+    programs.push_back(StartProgram(settings.exec_command, spec.nodes[id].name, id, address,
+                                    SimulatedRadio(settings.loop), where, settings.ros2_face ? dds_domain : -1));
     std::printf("  program %s (%s): process %d%s\n", settings.exec_command.front().c_str(), spec.nodes[id].name.c_str(),
                 programs.back(), where.empty() ? "" : (" in namespace " + where).c_str());
   }
   std::fflush(stdout);
-  const int status = WaitForServer(server);
-  std::vector<pid_t> children = programs;
-  children.insert(children.end(), agents.begin(), agents.end());
-  const std::vector<int> ended = StopChildren(children);
-  for (std::size_t i = 0; i < programs.size(); ++i)
-    ReportProgram(settings.exec_command.front(), spec.nodes[settings.exec_robots[i]].name, ended[i]);
-  SayHowTheRunEnded(settings.output);
-  std::printf("  results in %s/\n", settings.output.c_str());
-  return status;
+  const int status = WaitForServer(server, agents);
+  StopAll(programs, agents, spec, settings);
+  return Verdict(status, settings.output, agents);
 }
 
 }  // namespace sanet::hil

@@ -19,6 +19,10 @@ struct LaunchSettings {
   bool force = false;             // the server writes beside files no sanet run wrote
   sections::LoopSpec loop;        // the scenario's loop section
   int udp_base = 47000;
+  int ros2_domain = -1;  // the scenario's ros2.domain; -1: the launch's own (RunSlot::DdsDomain)
+  bool view = false;     // the server's live page and Foxglove stream (--view); none otherwise
+  // For tests: this robot's agent is given an address where no server listens.
+  std::string test_unreachable;
   std::optional<double> duration;  // overrides the scenario's
   // The scenario has a ros2 section: the server's ROS 2 face drives the robots without
   // controllers, which get namespaces (and radio taps) too; the face's DDS uses the bridge.
@@ -40,7 +44,14 @@ std::vector<NodeId> LaunchedRobots(const sim::RunSpec& spec, bool ros2_face);
 // std::invalid_argument saying which name is not and what the choices are.
 std::vector<NodeId> ExecRobots(const sim::RunSpec& spec, bool ros2_face, const std::string& which);
 
-// Returns the server's exit code.
+// The exit code of a run that ended without a robot that needed a client (`sanet serve`'s too):
+// one never driven, or whose agent ended before the run did.
+constexpr int kExitRobotsMissing = 3;
+
+// Runs the launch on a slot of its own (launch/run_slot.h). Returns the exit code: 0 when the run
+// completed with every agent's robot driven to the end; the server's code when it failed or was
+// interrupted; kExitRobotsMissing when an agent failed the run (summary.json names the robot and
+// the cause).
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings);
 
 }  // namespace sanet::hil

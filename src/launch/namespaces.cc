@@ -41,9 +41,9 @@ bool NetworkNamespaces::ShapingPermitted(std::string* why) {
   return ok;
 }
 
-NetworkNamespaces::NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sections::LinkShaping& shaping,
-                                     bool shape)
-    : tag_("sa" + std::to_string(::getpid() % 100000)), nodes_(nodes), shape_(shape) {
+NetworkNamespaces::NetworkNamespaces(const RunSlot& slot, const std::vector<std::uint32_t>& nodes,
+                                     const sections::LinkShaping& shaping, bool shape)
+    : tag_(slot.NamePrefix()), subnet_(slot.Subnet()), nodes_(nodes), shape_(shape) {
   try {
     Run("ip link add " + tag_ + "br type bridge");
     bridge_ = true;

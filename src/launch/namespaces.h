@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "launch/run_slot.h"
 #include "sections/loop_section.h"
 
 namespace sanet::hil {
@@ -17,22 +18,24 @@ class NetworkNamespaces {
   // Whether netem can shape links here (the kernel may lack it).
   static bool ShapingPermitted(std::string* why);
 
-  // One namespace per node id in `nodes` (ids < 253); throws std::runtime_error naming the
-  // command that failed (everything made so far is removed).
-  NetworkNamespaces(const std::vector<std::uint32_t>& nodes, const sections::LinkShaping& shaping, bool shape);
+  // One namespace per node id in `nodes` (ids < 253), named after `slot` and on its subnet; throws
+  // std::runtime_error naming the command that failed (everything made so far is removed).
+  NetworkNamespaces(const RunSlot& slot, const std::vector<std::uint32_t>& nodes, const sections::LinkShaping& shaping,
+                    bool shape);
   ~NetworkNamespaces();
 
   std::string Namespace(std::uint32_t node) const;
   // Every namespace's link to the bridge has this one name, so that configurations (Cyclone DDS's
   // interface for the ROS 2 face's domain) name it alike in every namespace and every launch.
   static constexpr const char* kSimulatorInterface = "sim0";
-  static std::string Subnet() { return "10.77.0"; }  // node i is Subnet().(i+1)
-  static std::string ServerAddress() { return "10.77.0.254"; }
+  const std::string& Subnet() const { return subnet_; }  // node i is Subnet().(i+1)
+  std::string ServerAddress() const { return subnet_ + ".254"; }
 
  private:
   void Run(const std::string& command);
   void Remove();
-  std::string tag_;
+  std::string tag_;     // the slot's name prefix
+  std::string subnet_;  // the slot's
   std::vector<std::uint32_t> nodes_;
   bool shape_;
   bool bridge_ = false;

@@ -35,7 +35,20 @@ std::size_t DefaultMaxClients(const sim::RunSpec& spec) {
   return std::max<std::size_t>(64, 2 * static_cast<std::size_t>(robots));
 }
 
-SimServer::SimServer(sim::Driver& driver, ServerSettings settings) : driver_(driver), settings_(std::move(settings)) {
+namespace {
+
+// The names of the robots only a client can run (those with a controller), by node id.
+std::vector<std::string> AgentRobots(const sim::Driver& driver) {
+  std::vector<std::string> names(driver.NodeCount());
+  for (NodeId id = 0; id < names.size(); ++id)
+    if (sim::RunsAsAgent(driver.Spec(id))) names[id] = driver.NameOf(id);
+  return names;
+}
+
+}  // namespace
+
+SimServer::SimServer(sim::Driver& driver, ServerSettings settings)
+    : driver_(driver), settings_(std::move(settings)), attendance_(AgentRobots(driver)) {
   driver_.SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
   LineServer::Events events;
   events.connected = [this](ConnectionId id) { Greet(id); };
@@ -53,6 +66,7 @@ SimServer::SimServer(sim::Driver& driver, ServerSettings settings) : driver_(dri
         ProtocolMessage{"ERR"}.Add("Message", "line longer than " + std::to_string(max_line) + " bytes: closing"));
   };
   events.refusal_line = [](const std::string& why) { return FormatLine(ProtocolMessage{"ERR"}.Add("Message", why)); };
+  events.silence_line = events.refusal_line;  // ERR {Message connection closed: silent for 3 s after connecting}
   LineServerSettings lines;
   lines.bind = settings_.bind;
   lines.port = settings_.port;
@@ -205,10 +219,10 @@ void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
   if (usarsim_class && !spawned_as.empty() && !sections::SameClass(*usarsim_class, spawned_as))
     return Error(c, "INIT refused: robot '" + name + "' is a " + spawned_as + ", not a " + *usarsim_class);
   if (const auto refused = driver_.Claim(id, Owner(c))) return Error(c, "INIT refused: " + *refused);
-  ever_claimed_.resize(driver_.NodeCount());
-  ever_claimed_[id] = true;
+  attendance_.Joined(id, driver_.Now());
   if (settings_.announce) std::printf("sanet: client %s drives %s\n", c.peer.c_str(), name.c_str());
   c.robot = id;
+  lines_->Register(c.id);  // a client that drives a robot keeps its slot when the cap is full
   c.next_sensors = c.next_status = driver_.Now();
   // sanet extension: the run's key for the datagrams agents send each other (wire/agent_datagram.h).
   Send(c, ProtocolMessage{"KEY"}.Add("Datagrams", datagram_key_.Hex()));
@@ -383,6 +397,7 @@ void SimServer::Gone(ConnectionId id, const std::string& why) {
   if (!c.robot) return;
   NodeOf(c).Drive({});  // a robot without its client stops
   driver_.Release(*c.robot, Owner(c));
+  attendance_.Left(*c.robot, driver_.Now(), why);
   driver_.Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");
   if (settings_.announce)
     std::printf("sanet: client %s of %s gone (%s)\n", c.peer.c_str(), driver_.NameOf(*c.robot).c_str(), why.c_str());
@@ -489,14 +504,6 @@ void SimServer::WriteAgentTable(trace::ResultsFolder& folder) const {
     for (const StatsKey& k : kStatsKeys) row += "," + JsonText((*it)[k.name]);
     table.Row(row);
   }
-}
-
-std::vector<std::string> SimServer::NeverDriven() const {
-  std::vector<std::string> names;
-  for (NodeId id = 0; id < driver_.spec().nodes.size(); ++id)
-    if (sim::RunsAsAgent(driver_.Spec(id)) && !(id < ever_claimed_.size() && ever_claimed_[id]))
-      names.push_back(driver_.NameOf(id));
-  return names;
 }
 
 SimServer::Client* SimServer::ClientOf(NodeId robot) {

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "robot_server/attendance.h"
 #include "sections/spawn_section.h"
 #include "sim/driver.h"
 #include "trace/results_folder.h"
@@ -71,8 +72,9 @@ class SimServer : public sim::RunObserver {
   // The same as a table, agents.csv (nothing without agents), and the agents' clock estimates
   // through the run, clock.csv.
   void WriteAgentTable(trace::ResultsFolder& folder) const;
-  // Robots with a controller (agents' robots) that no client drove during the run.
-  std::vector<std::string> NeverDriven() const;
+  // Which robots with a controller (agents' robots) clients drove, and when.
+  const Attendance& attendance() const { return attendance_; }
+  Attendance& attendance() { return attendance_; }
   // The time service's port and the clock's origin, for summary.json.
   nlohmann::ordered_json ClockSummary() const;
 
@@ -130,7 +132,7 @@ class SimServer : public sim::RunObserver {
   ServerSettings settings_;
   std::map<ConnectionId, Client> clients_;
   std::unique_ptr<LineServer> lines_;
-  std::vector<bool> ever_claimed_;
+  Attendance attendance_;
   const DatagramKey datagram_key_ = DatagramKey::Random();  // new for every run
   std::vector<double> lags_;                                // s, per physics step
   nlohmann::ordered_json agent_stats_ = nlohmann::ordered_json::object();

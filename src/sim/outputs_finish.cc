@@ -157,6 +157,9 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
                               std::to_string(trace_->mcap_topics_left_out()) + " more were left out of it");
   if (!moved_motes.empty()) extra["motes_moved"] = moved_motes;
   std::vector<std::string> all = said_before_;
+  // The front end's own (RunOptions::add_results), after the run's.
+  if (extra.contains("warnings"))
+    for (const auto& w : extra["warnings"]) result.warnings.push_back(w.get<std::string>());
   all.insert(all.end(), result.warnings.begin(), result.warnings.end());
   extra["warnings"] = all;
   if (!folder_.writes()) return;

@@ -34,7 +34,9 @@ struct RunOptions {
   std::vector<std::string> warnings = {};
   std::optional<Provenance> provenance = std::nullopt;  // written first into the folder
   // Adds fields of its own to summary.json and files of its own to the results folder (the
-  // server adds its lag and the agents' reports), once the run has ended.
+  // server adds its lag and the agents' reports), once the run has ended. Its "warnings" join the
+  // run's (and RunResult::warnings); its other fields replace the run's (the server's "status"
+  // when robots it expected never came).
   std::function<void(nlohmann::ordered_json& summary, trace::ResultsFolder& folder)> add_results = nullptr;
 };
 

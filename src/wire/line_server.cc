@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "wire/sockets.h"
 #include "wire/tcp_window.h"
@@ -33,14 +34,22 @@ std::string ShortSeconds(double s) {
 
 struct LineServer::Connection {
   Connection(int socket, std::size_t max_line, double now)
-      : fd(socket), peer(PeerOf(socket, &host)), reader(max_line), last_caught_up(now), last_heard(now) {}
+      : fd(socket),
+        peer(PeerOf(socket, &host)),
+        reader(max_line),
+        last_caught_up(now),
+        last_heard(now),
+        connected_at(now) {}
   int fd;
   std::string host;
   std::string peer;
   LineReader reader;
   std::string out;
   double last_caught_up;            // wall clock (s) when it last had nothing of ours left unread
-  double last_heard;                // wall clock (s) of its last line
+  double last_heard;                // wall clock (s) of its last line (of its accepting until it speaks)
+  double connected_at;              // wall clock (s) when it was accepted
+  bool spoke = false;               // it has sent a line: the handshake time no longer closes it
+  bool registered = false;          // its owner says it has registered (Register): never evicted
   std::uint32_t widest_window = 0;  // the largest receive window it has advertised (bytes)
   std::uint32_t last_window = 0;    // the window at the last poll
   bool chatter = false;             // silence ends it (ExpectChatter)
@@ -91,6 +100,7 @@ void LineServer::Write() {
   for (auto& [id, c] : connections_) {
     if (c.fd >= 0) Flush(id, c);
     if (c.fd >= 0) CheckReading(id, c, now);
+    if (c.fd >= 0) CheckHandshake(id, c, now);
   }
   for (auto it = connections_.begin(); it != connections_.end();)
     it = it->second.fd < 0 ? connections_.erase(it) : std::next(it);
@@ -112,6 +122,7 @@ void LineServer::Drop(ConnectionId id, const std::string& why) {
   if (!c.out.empty()) ::send(c.fd, c.out.data(), c.out.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
   Linger(c.fd);
   c.fd = -1;
+  --open_;
   if (events_.gone) events_.gone(id, why);
 }
 
@@ -119,30 +130,83 @@ const std::string& LineServer::Peer(ConnectionId id) const { return connections_
 const std::string& LineServer::PeerHost(ConnectionId id) const { return connections_.at(id).host; }
 void LineServer::ExpectChatter(ConnectionId id) { connections_.at(id).chatter = true; }
 
+void LineServer::Register(ConnectionId id) {
+  const auto it = connections_.find(id);
+  if (it != connections_.end()) it->second.registered = true;
+}
+
 void LineServer::Accept() {
+  std::vector<ConnectionId> evictable;  // listed once per poll, when the cap is first reached
+  bool listed = false;
   // Bounded, so that a storm of connections cannot hold the poll; the rest wait in the backlog.
   for (std::size_t accepted = 0; accepted < settings_.max_clients; ++accepted) {
     const int fd = AcceptClient(listener_);
     if (fd < 0) return;
-    if (connections_.size() >= settings_.max_clients) {
-      Refuse(fd);
-      continue;
+    if (open_ >= settings_.max_clients) {
+      if (!listed) evictable = Evictable(MonotonicSeconds()), listed = true;
+      MakeRoom(evictable);
     }
-    // A small kernel buffer: what a client leaves unread piles up where the server can see it.
-    ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
-    const ConnectionId id = next_id_++;
-    connections_.emplace(id, Connection(fd, settings_.max_line, MonotonicSeconds()));
-    if (events_.connected) events_.connected(id);
+    if (open_ >= settings_.max_clients)
+      Refuse(fd);
+    else
+      Admit(fd);
+  }
+}
+
+void LineServer::Admit(int fd) {
+  // A small kernel buffer: what a client leaves unread piles up where the server can see it.
+  ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof kSendBuffer);
+  const ConnectionId id = next_id_++;
+  connections_.emplace(id, Connection(fd, settings_.max_line, MonotonicSeconds()));
+  ++open_;
+  if (events_.connected) events_.connected(id);
+}
+
+// The connections a newcomer may take the slot of: not registered and past their handshake time,
+// the longest silent last. Newcomers admitted in the same poll are inside theirs, so the list
+// holds for the whole poll.
+std::vector<ConnectionId> LineServer::Evictable(double now) const {
+  std::vector<std::pair<double, ConnectionId>> silent_since;
+  for (const auto& [id, c] : connections_)
+    if (c.fd >= 0 && !c.registered && now - c.connected_at > settings_.handshake_timeout)
+      silent_since.emplace_back(c.last_heard, id);
+  std::sort(silent_since.begin(), silent_since.end(), std::greater<>());
+  std::vector<ConnectionId> ids;
+  for (const auto& [heard, id] : silent_since) ids.push_back(id);
+  return ids;
+}
+
+// Drops the longest silent of `evictable` (telling it why) until a slot is free or none is left.
+void LineServer::MakeRoom(std::vector<ConnectionId>& evictable) {
+  const std::string timeout = ShortSeconds(settings_.handshake_timeout);
+  const std::string why = "closed to make room: no " + settings_.registration + " within " + timeout +
+                          " s of connecting and the server is full";
+  while (open_ >= settings_.max_clients && !evictable.empty()) {
+    const ConnectionId id = evictable.back();
+    evictable.pop_back();
+    Send(id, Notice(events_.refusal_line, why + CapText()));
+    Drop(id, why);
   }
 }
 
 void LineServer::Refuse(int fd) {
   const std::string n = std::to_string(settings_.max_clients);
-  std::string refusal = "connection refused: the server already has " + n + " connections (its cap";
-  refusal += settings_.cap_option.empty() ? ")" : ", " + settings_.cap_option + " " + n + ")";
-  const std::string line = events_.refusal_line ? events_.refusal_line(refusal) : refusal + "\r\n";
+  const std::string line =
+      Notice(events_.refusal_line, "connection refused: the server already has " + n + " connections" + CapText());
   ::send(fd, line.data(), line.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
   Linger(fd);
+}
+
+// " (its cap, --max-clients 64)": the option that sets it, for the client's operator.
+std::string LineServer::CapText() const {
+  const std::string n = std::to_string(settings_.max_clients);
+  return settings_.cap_option.empty() ? " (its cap)" : " (its cap, " + settings_.cap_option + " " + n + ")";
+}
+
+// The owner's line for `text`, or the text alone.
+std::string LineServer::Notice(const std::function<std::string(const std::string&)>& format,
+                               const std::string& text) const {
+  return format ? format(text) : text + "\r\n";
 }
 
 // The server stops writing and waits (briefly) for the client to hang up before it closes: closing
@@ -194,7 +258,10 @@ bool LineServer::TakeLines(ConnectionId id, Connection& c) {
     events_.line(id, *line);
     if (c.fd < 0) return false;
   }
-  if (taken > 0) c.last_heard = MonotonicSeconds();  // once a turn, not for every line
+  if (taken > 0) {  // once a turn, not for every line
+    c.last_heard = MonotonicSeconds();
+    c.spoke = true;
+  }
   if (too_long) {
     if (events_.line_too_long) Send(id, events_.line_too_long(settings_.max_line));
     Drop(id, "line too long");
@@ -237,6 +304,16 @@ void LineServer::CheckReading(ConnectionId id, Connection& c, double now) {
     Drop(id, "not reading for " + ShortSeconds(settings_.stall_timeout) + " s");
   else if (c.chatter && now - c.last_heard > settings_.stall_timeout)
     Drop(id, "an agent silent for " + ShortSeconds(settings_.stall_timeout) + " s");
+}
+
+// A connection that has said nothing within the handshake time holds a slot for nothing (a
+// client of either protocol speaks first after the greeting): it is closed, whatever the cap, as
+// nginx's client_header_timeout and sshd's LoginGraceTime close theirs.
+void LineServer::CheckHandshake(ConnectionId id, Connection& c, double now) {
+  if (c.spoke || now - c.connected_at <= settings_.handshake_timeout) return;
+  const std::string why = "silent for " + ShortSeconds(settings_.handshake_timeout) + " s after connecting";
+  Send(id, Notice(events_.silence_line, "connection closed: " + why));
+  Drop(id, why);
 }
 
 }  // namespace sanet::hil

@@ -1,11 +1,20 @@
 // A TCP server of text lines that no client can stall or exhaust, for every line protocol sanet
-// serves (the USARSim robot server, the WSS endpoint). Sockets are non-blocking; connections are
-// capped (the one over the cap is told why and closed) with a listen backlog to match; clients
-// take turns of bounded lines and bytes within a time budget per poll; input and output are
-// bounded (a line too long, or output a client leaves unread past the backlog, ends it); a client
-// whose TCP window shows that it stopped reading is dropped after `stall_timeout`; and a
-// connection the server ends lingers until the client hangs up, so that a last ERR is not lost
-// to a reset. What the lines mean is the owner's business (LineServer::Events).
+// serves (the USARSim robot server, the WSS endpoint). Sockets are non-blocking; clients take
+// turns of bounded lines and bytes within a time budget per poll; input and output are bounded (a
+// line too long, or output a client leaves unread past the backlog, ends it); a client whose TCP
+// window shows that it stopped reading is dropped after `stall_timeout`; and a connection the
+// server ends lingers until the client hangs up, so that a last ERR is not lost to a reset.
+//
+// Slots are for clients that speak. Connections are capped (`max_clients`, with a listen backlog
+// to match), and a connection that has sent no complete line within `handshake_timeout` (3 s by
+// default) of being accepted is closed, whatever the cap. The owner says when a connection has
+// completed its protocol's registration (Register: an INIT that took a robot). When the cap is
+// full, a newcomer takes the slot of the unregistered connection silent the longest among those
+// past their handshake time, which is told why and dropped (its `gone` runs); the newcomer is
+// refused (told why and closed) only when every slot holds a registered connection or one still
+// inside its handshake time. Registered connections are never evicted, and one that has spoken is
+// never closed by the handshake time, however slowly it goes on (an agent fetching the scenario
+// before its INIT). What the lines mean is the owner's business (LineServer::Events).
 #pragma once
 
 #include <cstdint>
@@ -23,6 +32,8 @@ struct LineServerSettings {
   std::uint16_t port = 0;              // 0: any free port
   std::size_t max_clients = 64;        // connections at once (at least 1)
   std::string cap_option;              // the option that sets the cap, named in the refusal
+  std::string registration = "INIT";   // what registers a connection, named to one evicted
+  double handshake_timeout = 3.0;      // s a new connection has to send its first line (or it is closed)
   std::size_t max_line = 4096;         // bytes; a longer line ends the connection
   std::size_t max_backlog = 1 << 20;   // bytes waiting for a client that does not read: then it is dropped
   double stall_timeout = 2.0;          // s a client may leave its lines unread before it is dropped
@@ -40,7 +51,8 @@ class LineServer {
     std::function<void(ConnectionId, const std::string& line)> line;      // a line that is not blank
     std::function<void(ConnectionId, const std::string& why)> gone;       // dropped or hung up: forget it
     std::function<std::string(std::size_t max_line)> line_too_long;       // the last line it is sent
-    std::function<std::string(const std::string& refusal)> refusal_line;  // formats the cap's refusal
+    std::function<std::string(const std::string& refusal)> refusal_line;  // formats the cap's refusal (and eviction)
+    std::function<std::string(const std::string& why)> silence_line;      // formats the handshake time's close
   };
 
   // Listens; throws std::runtime_error naming the address and the reason.
@@ -67,7 +79,10 @@ class LineServer {
   // A client that must speak (an agent reads and writes in one loop): silence for stall_timeout
   // ends it, whatever TCP shows.
   void ExpectChatter(ConnectionId id);
-  std::size_t size() const { return connections_.size(); }
+  // The connection has completed its protocol's registration (e.g. an INIT that took a robot): it
+  // keeps its slot when the cap is full. A connection that is gone ignores it.
+  void Register(ConnectionId id);
+  std::size_t size() const { return open_; }  // connections holding a slot
   const LineServerSettings& settings() const { return settings_; }
 
  private:
@@ -77,18 +92,25 @@ class LineServer {
     double close_by;  // wall clock (s)
   };
   void Accept();
+  void Admit(int fd);
   void Refuse(int fd);
+  std::vector<ConnectionId> Evictable(double now) const;
+  void MakeRoom(std::vector<ConnectionId>& evictable);
   void Linger(int fd);
   void CloseLingering();
   bool TakeLines(ConnectionId id, Connection& c);  // one turn; true if it has more
   void Flush(ConnectionId id, Connection& c);
   void CheckReading(ConnectionId id, Connection& c, double now);
+  void CheckHandshake(ConnectionId id, Connection& c, double now);
+  std::string CapText() const;
+  std::string Notice(const std::function<std::string(const std::string&)>& format, const std::string& text) const;
 
   LineServerSettings settings_;
   Events events_;
   int listener_ = -1;
   std::uint16_t port_ = 0;
-  std::map<ConnectionId, Connection> connections_;
+  std::map<ConnectionId, Connection> connections_;  // with the dropped ones until the next Write
+  std::size_t open_ = 0;                            // connections not dropped: the slots taken
   ConnectionId next_id_ = 1;
   ConnectionId next_turn_ = 0;  // the connection whose turn comes first in the next poll
   std::vector<Closing> closing_;

@@ -43,6 +43,9 @@ WssServer::WssServer(sim::Driver& driver, WssSettings settings) : driver_(driver
   events.refusal_line = [](const std::string& why) {
     return FormatLine(ProtocolMessage("ERROR").Add("Reason", "Too.Many.Connections: " + why));
   };
+  events.silence_line = [](const std::string& why) {
+    return FormatLine(ProtocolMessage("ERROR").Add("Reason", "Handshake.Timeout: " + why));
+  };
   LineServerSettings lines;
   lines.bind = settings_.bind;
   lines.port = settings_.port;
@@ -96,6 +99,7 @@ void WssServer::Init(Robot& r, const ProtocolMessage& m) {
   r.name = *name;
   r.node = *node;
   r.ports = *list;
+  lines_->Register(r.id);  // a registered robot keeps its slot when the cap is full
   Send(r, ProtocolMessage("INITREPLY").Add("Status", "OK"));
 }
 

@@ -238,8 +238,9 @@ Command AddServe(CLI::App& app) {
       "Once listening, write the port number to this file (for programs that start the server with --port 0)");
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   cmd->add_option("--max-clients", a->max_clients,
-                  "Connections served at once (default: twice the scenario's robots, at least 64); one more is "
-                  "answered ERR and closed")
+                  "Connections served at once (default: twice the scenario's robots, at least 64); a connection "
+                  "silent for 3 s is closed, and one more takes the slot of a client that has not INITed within 3 s, "
+                  "or else is answered ERR and closed")
       ->check(CLI::Range(1, 10000));
   cmd->add_flag("-q,--quiet", a->quiet,
                 "Print only the serving line, warnings and errors (not the WSS, ROS 2 and view addresses)");
@@ -256,8 +257,9 @@ Command AddServe(CLI::App& app) {
       ->check(CLI::Range(0, 65535));
   cmd->add_option("--wss-port-file", a->wss_port_file, "Once listening, write the WSS port number to this file");
   cmd->add_option("--wss-max-clients", a->wss_max_clients,
-                  "WSS control connections served at once (default: twice the scenario's robots, at least 64); one "
-                  "more is answered ERROR and closed")
+                  "WSS control connections served at once (default: twice the scenario's robots, at least 64); a "
+                  "connection silent for 3 s is closed, and one more takes the slot of a client that has not "
+                  "registered (INIT) within 3 s, or else is answered ERROR and closed")
       ->check(CLI::Range(1, 10000));
   AddViewOptions(cmd, a->view);
   cmd->add_flag("--no-foxglove", a->no_foxglove,

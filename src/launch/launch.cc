@@ -321,6 +321,9 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
     std::printf("  ROS 2 face on DDS domain %d%s\n", dds_domain,
                 settings.ros2_domain >= 0 ? " (the scenario's ros2.domain)" : " (this launch's own)");
   if (!namespaces) std::printf("  agents on loopback: node i listens on UDP port %d + i\n", udp_base);
+  if (namespaces)
+    std::printf("  bridge %sbr: the server at %s, node i at %s.(i+1) on sim0\n", slot.NamePrefix().c_str(),
+                bind.c_str(), namespaces->Subnet().c_str());
   const std::string subnet = SimulatedRadio(settings.loop) ? kRadioSubnet : namespaces ? namespaces->Subnet() : "";
   AgentProcesses agents;
   for (NodeId id : robots) {

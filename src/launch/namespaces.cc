@@ -80,8 +80,12 @@ NetworkNamespaces::NetworkNamespaces(const RunSlot& slot, const std::vector<std:
 
 NetworkNamespaces::~NetworkNamespaces() { Remove(); }
 
+// The veth pairs first, by their host ends: deleting a namespace takes its pair along, but only
+// when the kernel gets round to freeing the namespace, so that a launch on the same slot just
+// after this one could find the name still taken.
 void NetworkNamespaces::Remove() {
-  for (const std::string& ns : made_) RunQuietly("ip netns del " + ns);  // takes its veth pair along
+  for (std::uint32_t node : nodes_) RunQuietly("ip link del " + tag_ + "h" + std::to_string(node));
+  for (const std::string& ns : made_) RunQuietly("ip netns del " + ns);
   made_.clear();
   if (bridge_) RunQuietly("ip link del " + tag_ + "br");
   bridge_ = false;

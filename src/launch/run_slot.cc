@@ -58,13 +58,15 @@ Leftovers FindLeftovers() {
   return found;
 }
 
+// Interfaces first (a namespace's veth pair goes with it only when the kernel frees the namespace,
+// later), then the namespaces.
 int RemoveLeftovers(int slot, const Leftovers& found) {
   int removed = 0;
-  if (const auto it = found.namespaces.find(slot); it != found.namespaces.end())
-    for (const std::string& ns : it->second) removed += RunQuietly("ip netns del " + ns) == 0;  // takes its veths
   if (const auto it = found.interfaces.find(slot); it != found.interfaces.end())
     for (const std::string& link : it->second)
       if (fs::exists("/sys/class/net/" + link)) removed += RunQuietly("ip link del " + link) == 0;
+  if (const auto it = found.namespaces.find(slot); it != found.namespaces.end())
+    for (const std::string& ns : it->second) removed += RunQuietly("ip netns del " + ns) == 0;
   return removed;
 }
 

@@ -15,7 +15,7 @@ std::string Seconds(double s) {
 }  // namespace
 
 void Attendance::Joined(NodeId robot, double now) {
-  if (Expected(robot)) stints_[robot].push_back({now});
+  if (Expected(robot)) stints_[robot].push_back({now, -1, ""});
 }
 
 void Attendance::Left(NodeId robot, double now, const std::string& why) {

@@ -3,7 +3,8 @@
 help-request controllers, the robot's as its own process whose node is its ns-3 node over the
 simulated radio. The target's call reaches the robot through the motes' routes; the robot
 chooses each hop from its routing table (fetched from the server), steers by the served
-bearing of the hop mote and arrives, close to the time `sanet run` of the same scenario gives.
+bearing of the hop mote and arrives, close to the time `sanet run` of the same scenario gives, by
+its route. Two launches run at once, side by side, each as one alone.
 Needs root and /dev/net/tun (the simulated radio's taps): skipped elsewhere (exit 77). About
 two minutes of real time."""
 import csv
@@ -28,30 +29,44 @@ def results(out):
 
 
 class HelpRequestInTheLoop(unittest.TestCase):
-    def test_the_robot_follows_the_routing_tables_over_the_simulated_radio_and_arrives(self):
+    def check_launch(self, run, looped):
+        loop, transitions = results(looped)
+        self.assertEqual(loop["status"], "completed")
+        self.assertEqual(loop["ended_by"], "'arrived' logged by robot")
+        robot = [t for t in transitions if t["node"] == "robot"]
+        self.assertIn("help request from target", [t["why"] for t in robot], "the call was routed to it")
+        hops = [t["why"].split()[2] for t in robot if t["why"].startswith("next hop ")]
+        motes = {"m0", "m1", "m2", "m3", "m4", "m5", "n0", "n1", "target"}
+        self.assertGreaterEqual(len(hops), 4, robot)
+        self.assertTrue(set(hops) <= motes, hops)
+        reached = [t["why"] for t in robot if t["why"].startswith("reached ")]
+        self.assertEqual(reached[-1], "reached target")
+        self.assertEqual(len(reached), len(hops), "every hop reached by its bearing")
+        self.assertEqual(loop["agents"]["robot"]["steps_missed"], 0)
+        self.assertGreater(loop["network"]["route_discoveries"]["established"], 0)
+        # Beside the simulated run: the same way, within a few control periods of its time.
+        self.assertLess(abs(loop["ended_at_s"] - run["ended_at_s"]), 0.1 * run["ended_at_s"],
+                        (loop["ended_at_s"], run["ended_at_s"]))
+        return hops
+
+    def test_two_launches_at_once_follow_the_routing_tables_over_the_simulated_radio_and_arrive(self):
+        """Two launches side by side (slots of their own: bridges, namespaces, taps), each as one
+        alone: the route of the simulated run, and its arrival."""
         with tempfile.TemporaryDirectory() as tmp:
-            simulated, looped = os.path.join(tmp, "run"), os.path.join(tmp, "launch")
+            simulated = os.path.join(tmp, "run")
             subprocess.run([SANET, "run", SCENARIO, "-o", simulated, "-q"], check=True, timeout=120)
-            out = subprocess.run([SANET, "launch", SCENARIO, "-o", looped], capture_output=True, text=True,
-                                 timeout=400)
-            self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
-            (run, _), (loop, transitions) = results(simulated), results(looped)
-            self.assertEqual(loop["ended_by"], "'arrived' logged by robot")
-            robot = [t for t in transitions if t["node"] == "robot"]
-            self.assertIn("help request from target", [t["why"] for t in robot], "the call was routed to it")
-            hops = [t["why"].split()[2] for t in robot if t["why"].startswith("next hop ")]
-            motes = {"m0", "m1", "m2", "m3", "m4", "m5", "n0", "n1", "target"}
-            self.assertGreaterEqual(len(hops), 4, robot)
-            self.assertTrue(set(hops) <= motes, hops)
-            reached = [t["why"] for t in robot if t["why"].startswith("reached ")]
-            self.assertEqual(reached[-1], "reached target")
-            self.assertEqual(len(reached), len(hops), "every hop reached by its bearing")
-            self.assertEqual(loop["agents"]["robot"]["steps_missed"], 0)
-            self.assertGreater(loop["network"]["route_discoveries"]["established"], 0)
-            # Beside the simulated run: the same way, within a few control periods of its time.
+            run, run_transitions = results(simulated)
             self.assertEqual(run["ended_by"], "'arrived' logged by robot")
-            self.assertLess(abs(loop["ended_at_s"] - run["ended_at_s"]), 0.1 * run["ended_at_s"],
-                            (loop["ended_at_s"], run["ended_at_s"]))
+            run_hops = [t["why"].split()[2] for t in run_transitions
+                        if t["node"] == "robot" and t["why"].startswith("next hop ")]
+            folders = [os.path.join(tmp, "launch%d" % i) for i in range(2)]
+            launches = [subprocess.Popen([SANET, "launch", SCENARIO, "-o", out], stdout=subprocess.PIPE,
+                                         stderr=subprocess.STDOUT, text=True) for out in folders]
+            for p in launches:
+                output = p.communicate(timeout=400)[0]
+                self.assertEqual(p.returncode, 0, output)
+            for looped in folders:
+                self.assertEqual(self.check_launch(run, looped), run_hops, "the simulated run's route")
 
 
 if __name__ == "__main__":

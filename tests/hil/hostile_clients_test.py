@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The simulation server against clients that flood it, crowd it or stop reading (docs/protocol.md,
 Safety): the others keep their replies and sensor lines on time, the server keeps its deadlines,
-its memory and its signals, every connection is greeted or refused, and a client that stops
-reading loses its robot within the documented 2 s (plus the time its lines take to show)."""
+its memory and its signals, every connection is greeted or refused, a cap full of registered
+clients (INIT) refuses a newcomer and keeps them past their handshake time, and a client that
+stops reading loses its robot within the documented 2 s (plus the time its lines take to show)."""
 import csv
 import json
 import os
@@ -26,6 +27,11 @@ nodes:
   - {name: r2, model: diffdrive, pose: [0, 3, 0]}
   - {name: r3, model: diffdrive, pose: [0, -3, 0]}
 """
+HUNDRED_ROBOTS = """duration: 30
+nodes:
+  - {grid: {name: r, rows: 10, cols: 10, spacing: 3}, model: diffdrive}
+"""
+HANDSHAKE_TIME = 3  # s: a connection that has not spoken by then is closed (docs/protocol.md, Safety)
 
 
 class Flooder(threading.Thread):
@@ -53,6 +59,34 @@ class Flooder(threading.Thread):
                 self.sent += self.sock.send(self.blob)
         except OSError:
             pass
+
+
+class Reader:
+    """A client that has sent INIT and reads every line the server sends, in a thread of its own
+    (so that it is not dropped for not reading): whether it drives its robot, when its last sensor
+    line came, whether the server closed it."""
+
+    def __init__(self, sock, f):
+        self.sock, self.file = sock, f
+        self.lines, self.last_sensor = [], 0.0
+        self.driving, self.closed = threading.Event(), threading.Event()
+        threading.Thread(target=self.read, daemon=True).start()
+
+    def read(self):
+        try:
+            for raw in iter(self.file.readline, b""):
+                line = raw.decode().strip()
+                self.lines.append(line)
+                if line.startswith("SEN"):
+                    self.last_sensor = time.time()
+                    self.driving.set()
+        except OSError:
+            pass
+        self.closed.set()
+
+    def close(self):
+        self.sock.shutdown(socket.SHUT_RDWR)  # its reader holds the socket open otherwise
+        self.sock.close()
 
 
 def peak_memory_mb(pid):
@@ -132,7 +166,10 @@ class HostileClients(unittest.TestCase):
         self.assertLessEqual(len(rows), 2 * (time.time() - started) + 1, "at most one every 0.5 s")
 
     def test_200_clients_at_once_are_each_greeted_or_refused(self):
-        self.server, port, out = serve(SANET, SCENARIO, self.tmp.name, "--max-clients", "100")
+        """A storm of 200 connections against a cap of 100: each is greeted or refused. The greeted
+        ones INIT (a robot each), so that past their handshake time they still hold the cap: a
+        newcomer is refused with the cap's message, and none of them loses its robot for it."""
+        self.server, port, out = serve(SANET, HUNDRED_ROBOTS, self.tmp.name, "--max-clients", "100")
         sockets = [socket.socket() for _ in range(200)]
         for s in sockets:
             s.setblocking(False)
@@ -141,19 +178,63 @@ class HostileClients(unittest.TestCase):
         for s in sockets:
             s.setblocking(True)
             s.settimeout(10)
-            first = s.makefile("rb").readline().decode()
-            (greeted if first.startswith("NFO") else refused).append((s, first))
+            f = s.makefile("rwb")
+            first = f.readline().decode()
+            if first.startswith("NFO"):
+                f.write(f"INIT {{Name r{len(greeted)}}}\r\n".encode())
+                f.flush()
+                greeted.append(Reader(s, f))
+            else:
+                refused.append((s, first))
         self.assertEqual(len(greeted), 100)
         self.assertEqual(len(refused), 100)
         for s, line in refused:
             self.assertTrue(line.startswith("ERR"), line)
             self.assertIn("--max-clients 100", line)
             self.assertEqual(s.recv(100), b"", "a refused connection is closed")
-        for s, _ in greeted + refused:
+        for r in greeted:
+            self.assertTrue(r.driving.wait(10), r.lines[:3])
+        time.sleep(HANDSHAKE_TIME + 0.5)  # every client past its handshake time: only registration keeps it
+        newcomer = socket.create_connection(("127.0.0.1", port), timeout=10)
+        line = newcomer.makefile("rb").readline().decode()
+        self.assertTrue(line.startswith("ERR {Message connection refused: the server already has 100 connections "
+                                        "(its cap, --max-clients 100)}"), line)
+        self.assertEqual(newcomer.recv(100), b"", "the newcomer is closed")
+        time.sleep(0.5)
+        for r in greeted:
+            self.assertFalse(r.closed.is_set(), r.lines[-3:])
+            self.assertLess(time.time() - r.last_sensor, 0.5, "its robot's sensor lines still come")
+        for s, _ in refused:
             s.close()
+        newcomer.close()
+        for r in greeted:
+            r.close()
         time.sleep(0.2)
         again = Client(port)  # the slots are free again
         again.send("INIT {Name r2}")
+        self.assertIsNotNone(again.sensor("GroundTruth"))
+
+    def test_a_cap_full_of_registered_clients_refuses_a_newcomer_and_keeps_them(self):
+        self.server, port, out = serve(SANET, SCENARIO, self.tmp.name, "--max-clients", "3")
+        readers = []
+        for name in ("r1", "r2", "r3"):
+            c = Client(port)
+            c.send(f"INIT {{Name {name}}}")
+            readers.append(Reader(c.sock, c.file))
+        for r in readers:
+            self.assertTrue(r.driving.wait(10), r.lines[:3])
+        time.sleep(HANDSHAKE_TIME + 0.5)  # past their handshake time: only registration keeps them
+        newcomer = socket.create_connection(("127.0.0.1", port), timeout=10)
+        self.assertEqual(newcomer.makefile("rb").read().decode(),
+                         "ERR {Message connection refused: the server already has 3 connections "
+                         "(its cap, --max-clients 3)}\r\n")
+        for r in readers:
+            self.assertFalse(r.closed.is_set(), r.lines[-3:])
+            self.assertLess(time.time() - r.last_sensor, 0.5, "a registered client keeps its slot and its robot")
+        readers[0].close()  # one leaves: its slot is free for the next
+        time.sleep(0.2)
+        again = Client(port)
+        again.send("INIT {Name r1}")
         self.assertIsNotNone(again.sensor("GroundTruth"))
 
     def test_a_cap_beyond_the_descriptor_limit_is_refused_up_front(self):

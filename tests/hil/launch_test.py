@@ -3,6 +3,7 @@
 shortened to 25 s: the robots keep their distances and the followers hear the leader."""
 import json
 import os
+import re
 import socket
 import struct
 import subprocess
@@ -12,6 +13,23 @@ import threading
 import time
 
 sanet, source = sys.argv[1], sys.argv[2]
+
+
+def slots_held(slots):
+    """Whether every one of these launch slots is held by a launch running now (which may have
+    made namespaces of the same names since)."""
+    import fcntl
+    folder = "/run/lock/sanet" if os.access("/run/lock", os.W_OK) else "/tmp/sanet-locks"
+    for slot in slots:
+        fd = os.open(os.path.join(folder, "slot-%s.lock" % slot), os.O_RDONLY)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            return False
+        except BlockingIOError:
+            pass
+        finally:
+            os.close(fd)
+    return True
 
 
 def forge(port, count):
@@ -29,13 +47,24 @@ def forge(port, count):
 
 
 with tempfile.TemporaryDirectory() as tmp:
-    forger = threading.Thread(target=forge, args=(47501, 150), daemon=True)
+    launch = subprocess.Popen([sanet, "launch", os.path.join(source, "scenarios", "formation-hil.yaml"), "--duration",
+                               "25", "-o", tmp, "--udp-base", "47500"], stdout=subprocess.PIPE,
+                              stderr=subprocess.STDOUT, text=True)
+    said = []
+    for line in launch.stdout:  # another launch on this machine shifts the ports: this one says where
+        said.append(line)
+        if "agents on loopback" in line:
+            base = int(line.split("UDP port ")[1].split()[0])
+            assert base == 47500 or (base - 47500) % 256 == 0, line
+            break
+    forger = threading.Thread(target=forge, args=(base + 1, 150), daemon=True)
     forger.start()
-    out = subprocess.run([sanet, "launch", os.path.join(source, "scenarios", "formation-hil.yaml"), "--duration", "25",
-                          "-o", tmp, "--udp-base", "47500"], capture_output=True, text=True, timeout=120)
+    said.append(launch.stdout.read())  # through the same buffer as the lines above
+    launch.wait(timeout=120)
+    out = subprocess.CompletedProcess(launch.args, launch.returncode, "".join(said), "".join(said))
     print(out.stdout, out.stderr)
     assert out.returncode == 0, out.returncode
-    assert out.stdout.count("agent ") == 4, out.stdout
+    assert len(re.findall(r"^  agent \S+: process", out.stdout, re.M)) == 4, out.stdout
     summary = json.load(open(os.path.join(tmp, "summary.json")))
     assert summary["min_distance"]["min_m"] > 0.4, summary["min_distance"]
     assert summary["min_distance"]["fraction_within_10_percent"] > 0.8, summary["min_distance"]
@@ -110,8 +139,10 @@ with tempfile.TemporaryDirectory() as tmp:
     missed = summary["metrics"]["f1"]["pose_missed"]["mean"]
     assert delay["count"] > 50 and 0.045 < delay["median"] < 0.1, delay  # 50 ms added
     assert 0.1 < missed < 0.45, missed  # a fifth lost: about 0.25 missed per pose received
-    assert subprocess.run(["ip", "netns", "list"], capture_output=True, text=True).stdout.count("sa") == 0, \
-        "namespaces removed"
+    made = set(re.findall(r"in namespace (sanet\d+-\d+)", out.stdout))
+    left = made & set(subprocess.run(["ip", "netns", "list"], capture_output=True, text=True).stdout.split())
+    slots = {name.split("-")[0][len("sanet"):] for name in left}
+    assert not left or slots_held(slots), ("namespaces removed", left)
 
 # An agent's robot and a mote that lives only in the server talk through the robot's own ns-3
 # node: the agent's SEND crosses the simulated network to the mote, the mote's messages reach

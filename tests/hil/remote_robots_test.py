@@ -28,7 +28,7 @@ import unittest
 SANET = sys.argv.pop(1)
 SOURCE = sys.argv.pop(1)
 ROBOTS = ["leader", "f1", "f2", "f3"]
-SERVER = "10.77.0.1"
+SERVER = "10.79.0.1"  # this test's own LAN, in namespaces of its own
 PORT = 3000
 PEER_PORT = 47000  # loop.udp_port: node i listens on + i
 SKEW = {"leader": 1000.0, "f2": -3.5}  # s added to these agents' clocks
@@ -58,7 +58,7 @@ class Topology:
         self.server = self.namespace(tag + "srv", [("lan0", tag + "s", "lan", SERVER)])
         self.agents = {}
         for i, robot in enumerate(ROBOTS):
-            self.agents[robot] = self.namespace(tag + "a%d" % i, [("lan0", tag + "l%d" % i, "lan", "10.77.0.%d" % (10 + i)),
+            self.agents[robot] = self.namespace(tag + "a%d" % i, [("lan0", tag + "l%d" % i, "lan", "10.79.0.%d" % (10 + i)),
                                                                   ("radio0", tag + "r%d" % i, "rad", "10.78.0.%d" % (1 + i))])
 
     def namespace(self, name, links):

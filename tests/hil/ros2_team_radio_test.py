@@ -64,12 +64,13 @@ class TeamOverTheRadio(unittest.TestCase):
                                    "--team", "leader,f1,f2", "--route", "24,0:8,0", "--log", cls.heard],
                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
         cls.lines = []
-        for line in launch.stdout:  # the namespaces are named before the programs start
+        for line in launch.stdout:  # the bridge is named before the programs start
             cls.lines.append(line)
-            m = re.match(r"\s*robot leader: driven over ROS 2, namespace (\S+)", line)
+            m = re.match(r"\s*bridge (\S+): the server at (\S+),", line)  # this launch's own
             if m:
-                cls.sniffer = BridgeSniffer(m.group(1).split("-")[0] + "br")
+                cls.sniffer = BridgeSniffer(m.group(1))
                 cls.sniffer.start()
+                cls.server_address = m.group(2)
                 break
         cls.lines += launch.communicate(timeout=200)[0].splitlines(keepends=True)
         cls.sniffer.finish()
@@ -119,7 +120,7 @@ class TeamOverTheRadio(unittest.TestCase):
                 for d in pcap_datagrams(os.path.join(self.out, "pcap", robot + ".pcap")) if d[4]}
 
     def test_the_face_uses_the_bridge_and_the_team_never_does(self):
-        face = self.sniffer.addresses["10.77.0.254"]
+        face = self.sniffer.addresses[self.server_address]
         self.assertEqual(len(face), 1, "the server has one participant, the face's")
         self.assertGreater(self.sniffer.senders[next(iter(face))], 1000, "ground truth of three robots at 10 Hz")
         team = self.team_participants()

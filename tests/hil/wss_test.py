@@ -21,6 +21,7 @@ from protocol_client import Client, field, serve
 SANET = sys.argv.pop(1)
 TX_POWER = 0
 RANGE = 10 ** ((TX_POWER - 46.6777 + 82) / 30)  # m, where log-distance loss meets the -82 dBm threshold
+HANDSHAKE_TIME = 3  # s: a connection that has not spoken by then is closed (docs/protocol.md, Safety)
 WALL_LOSS = 12  # dB: the wall between r1 and `behind` (`beside` stands as far from r1 in the open)
 SCENARIO = f"""duration: 25
 world:
@@ -196,9 +197,10 @@ class WirelessSimulationServer(unittest.TestCase):
 
 
 class WssUnderLoad(unittest.TestCase):
-    """The WSS endpoint is a line server like the robot server: connections over its cap are told
-    why and closed, a client that floods (without line ends, or with lines it never reads the
-    answers to) does not stall the others, and a well-behaved client is answered throughout."""
+    """The WSS endpoint is a line server like the robot server: connections over a cap full of
+    registered robots are told why and closed, a client that floods (without line ends, or with
+    lines it never reads the answers to) does not stall the others, and a well-behaved client is
+    answered throughout."""
 
     def test_cap_and_flooders(self):
         with tempfile.TemporaryDirectory() as tmp:
@@ -225,13 +227,19 @@ class WssUnderLoad(unittest.TestCase):
             pass
         self.assertIn(read_to_end(endless), (b"", None), "the flooder's connection is closed")
         self.assertTrue(w1.ask("GETSS {Robot r2}").startswith("SS {Robot r2}"))
-        # Two more fill the cap of three; the fourth is told why and closed.
-        w2, idle = Wss(port), Wss(port)
+        # Two more robots register and fill the cap of three. Past their handshake time a newcomer
+        # would take the slot of one that never registered; registered ones keep theirs, so the
+        # fourth is told why and closed.
+        w2, w3 = Wss(port), Wss(port)
         self.assertEqual(w2.ask("INIT {Robot r2} {Port 5000}"), "INITREPLY {Status OK}")
+        self.assertEqual(w3.ask("INIT {Robot behind} {Port 5001}"), "INITREPLY {Status OK}")
+        time.sleep(HANDSHAKE_TIME + 0.5)
         refused = socket.create_connection(("127.0.0.1", port), timeout=5)
         self.assertEqual(read_to_end(refused), b"ERROR {Reason Too.Many.Connections: connection refused: the server "
                                                b"already has 3 connections (its cap, --wss-max-clients 3)}\r\n")
-        idle.sock.close()
+        for w, other in ((w1, "r2"), (w2, "r1"), (w3, "r1")):
+            self.assertTrue(w.ask(f"GETSS {{Robot {other}}}").startswith(f"SS {{Robot {other}}}"), "it stays")
+        w3.sock.close()
         time.sleep(0.1)
         # A client that sends lines and never reads the answers, while w1 asks and is answered.
         flooder = socket.create_connection(("127.0.0.1", port), timeout=5)

@@ -51,9 +51,12 @@ class Server:
         return subprocess.run([SANET, "agent", "--server", self.address, "--robot", robot, *extra],
                               capture_output=True, text=True, timeout=timeout)
 
-    def finish(self):
+    def finish(self, undriven=()):
+        """The server's end: exit status 0, or 3 naming the robots no client drove (status failed)."""
         out, err = self.process.communicate(timeout=120)
-        assert self.process.returncode == 0, err
+        assert self.process.returncode == (3 if undriven else 0), (self.process.returncode, err)
+        if undriven:
+            assert "sanet: no client drove " + ", ".join(undriven) + ", so " in err, err
         self.stdout = out
         with open(os.path.join(self.out, "summary.json")) as f:
             return json.load(f)
@@ -112,7 +115,7 @@ class RemoteAgent(unittest.TestCase):
         self.assertIn("'c' is not a robot with a controller in the scenario of the server at 127.0.0.1:",
                       unknown.stderr)
         self.assertIn("(those are: a, b)", unknown.stderr)
-        server.finish()
+        server.finish(undriven=("a", "b"))
         self.assertNotEqual(out.returncode, 0)
         self.assertIn("speaks sanet's protocol 1 (sanet ", out.stderr)
         self.assertIn("the server protocol 2 (sanet ", out.stderr)
@@ -121,12 +124,15 @@ class RemoteAgent(unittest.TestCase):
         server = Server(self.tmp.name, self.scenario, 4, quiet=False)
         refused = server.agent("b", "--test-protocol-version", "1", timeout=30)
         driven = server.agent("a", timeout=30)
-        server.finish()
+        server.finish(undriven=("b",))
         self.assertNotEqual(refused.returncode, 0)
         self.assertEqual(driven.returncode, 0, driven.stderr)
         self.assertRegex(server.stdout, r"sanet: client 127\.0\.0\.1:[0-9]+ refused: this agent speaks sanet's protocol 1")
         self.assertRegex(server.stdout, r"sanet: client 127\.0\.0\.1:[0-9]+ drives a\n")
-        self.assertIn("no client drove b: their controllers never ran", server.stdout)
+        summary = json.load(open(os.path.join(server.out, "summary.json")))
+        self.assertEqual(summary["status"], "failed: no client drove b, so its controller never ran")
+        self.assertEqual(summary["attendance"]["b"]["driven"], [])
+        self.assertEqual(len(summary["attendance"]["a"]["driven"]), 1)
 
     def test_another_scenario_is_refused_naming_both_fingerprints(self):
         mine = os.path.join(self.tmp.name, "mine.yaml")
@@ -135,7 +141,7 @@ class RemoteAgent(unittest.TestCase):
         server = Server(self.tmp.name, self.scenario, 4)
         other = server.agent("a", "--scenario", mine, timeout=30)
         same = server.agent("a", "--scenario", self.scenario, "--test-protocol-version", "2", timeout=30)
-        server.finish()
+        server.finish(undriven=("b",))
         self.assertNotEqual(other.returncode, 0)
         self.assertRegex(other.stderr, r"this agent's scenario has fingerprint [0-9a-f]{16}, the server's [0-9a-f]{16}")
         self.assertEqual(same.returncode, 0, same.stderr)
@@ -147,7 +153,7 @@ class RemoteAgent(unittest.TestCase):
             f.write(b"another build")
         server = Server(self.tmp.name, self.scenario, 4)
         out = server.agent("a", "--library", other, timeout=30)
-        server.finish()
+        server.finish(undriven=("a", "b"))
         self.assertNotEqual(out.returncode, 0)
         self.assertRegex(out.stderr, r"the server's .* has SHA-256 [0-9a-f]{16}\.\.\., this computer's .*other\.so "
                                      r"[0-9a-f]{16}\.\.\.")

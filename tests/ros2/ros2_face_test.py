@@ -26,8 +26,8 @@ DOMAIN = 21  # its own: tests run side by side (ros2_agent has 22; launches take
 SCENARIO = """name: ros2-face
 duration: {duration}
 nodes:
-  - {{name: r1, model: diffdrive, pose: [0, 0, 0], controller: {{name: constant_velocity, params: {{vx: 0}}}}}}
-  - {{name: r2, model: omni3, pose: [0, 4, 0], controller: {{name: constant_velocity, params: {{vx: 0}}}}}}
+  - {{name: r1, model: diffdrive, pose: [0, 0, 0]}}
+  - {{name: r2, model: omni3, pose: [0, 4, 0]}}
   - {{name: m0, model: mote, pose: [6, 0, 0]}}
 """
 

@@ -8,17 +8,12 @@
 
 #include "core/atomic_file.h"
 #include "core/json_text.h"
+#include "core/seconds_text.h"
 
 namespace sanet::hil {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string Seconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f s", s);
-  return text;
-}
 
 bool EndedWell(const AgentProcess& a) { return WIFEXITED(a.status) && WEXITSTATUS(a.status) == 0; }
 
@@ -40,7 +35,7 @@ std::string Failure(const AgentProcess& a, const Json& driven) {
   const std::string word = a.last_line.empty() ? "" : ": " + a.last_line;
   if (!on_its_own) return "robot " + a.robot + " was never driven: its agent was still running and never claimed it";
   const std::string when =
-      never ? " before driving it" : " at " + Seconds(driven.back()["to_s"].get<double>()) + " of the run";
+      never ? " before driving it" : " at " + SecondsText(driven.back()["to_s"].get<double>()) + " of the run";
   return "robot " + a.robot + ": its agent " + (EndedWell(a) ? "ended" : HowItEnded(a.status)) + when + word;
 }
 

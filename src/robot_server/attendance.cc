@@ -3,17 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/seconds_text.h"
+
 namespace sanet::hil {
-namespace {
-
-std::string Seconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f s", s);
-  return text;
-}
-
-}  // namespace
-
 void Attendance::Joined(NodeId robot, double now) {
   if (Expected(robot)) stints_[robot].push_back({now, -1, ""});
 }
@@ -43,14 +35,14 @@ std::vector<std::string> Attendance::Warnings(double end) const {
     const std::string& name = expected_[id];
     const std::vector<Stint>& stints = stints_[id];
     if (stints.front().from > kLateAfter)
-      warnings.push_back("robot " + name + " joined late: first driven at " + Seconds(stints.front().from) +
+      warnings.push_back("robot " + name + " joined late: first driven at " + SecondsText(stints.front().from) +
                          " (its controller did not run before)");
     for (std::size_t i = 0; i < stints.size(); ++i) {
       const Stint& s = stints[i];
       if (s.to < 0 || s.to >= end) continue;
       const bool back = i + 1 < stints.size();
-      warnings.push_back("robot " + name + " dropped out at " + Seconds(s.to) + " (its client: " + s.why + ")" +
-                         (back ? ", driven again from " + Seconds(stints[i + 1].from) : ", not driven again"));
+      warnings.push_back("robot " + name + " dropped out at " + SecondsText(s.to) + " (its client: " + s.why + ")" +
+                         (back ? ", driven again from " + SecondsText(stints[i + 1].from) : ", not driven again"));
     }
   }
   return warnings;

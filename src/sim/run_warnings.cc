@@ -3,14 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/seconds_text.h"
+
 namespace sanet::sim {
 namespace {
-
-std::string Seconds(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f s", t);
-  return text;
-}
 
 std::string Metres(double m) {
   char text[32];
@@ -46,7 +42,7 @@ std::vector<std::string> RunWarnings::Sentences(const nlohmann::ordered_json& mo
   std::vector<std::string> out;
   for (const Kind& k : kinds_) {
     std::string s = k.text + " (" + std::to_string(k.count) + (k.count == 1 ? " time, at " : " times, from ") +
-                    Seconds(k.first) + (k.count == 1 ? "" : " to " + Seconds(k.last)) + ")";
+                    SecondsText(k.first, 3) + (k.count == 1 ? "" : " to " + SecondsText(k.last, 3)) + ")";
     if (!k.contacts.empty()) {
       s += "; in contact then:";
       for (std::size_t i = 0; i < k.contacts.size() && i < 8; ++i) s += (i ? ", " : " ") + k.contacts[i];

@@ -67,19 +67,23 @@ Command AddLaunch(CLI::App& app) {
   auto a = std::make_shared<LaunchArgs>();
   CLI::App* cmd = app.add_subcommand("launch",
                                      "Start a server and one agent process per robot on this machine, run "
-                                     "the scenario in real time, stop them all (also on Ctrl-C)");
+                                     "the scenario in real time, stop them all (also on Ctrl-C); exit status 3 "
+                                     "when a robot's agent never drove it or ended early (docs/protocol.md)");
   AddScenario(cmd, a->file);
   AddSet(cmd, a->sets);
   AddPythonPath(cmd);
   cmd->add_option("-o,--output", a->output, "Results folder (default: the scenario's)");
   AddDuration(cmd, a->duration);
-  cmd->add_option("--udp-base", a->udp_base, "UDP port of node 0 (default: the scenario's loop.udp_port, 47000)")
+  cmd->add_option("--udp-base", a->udp_base,
+                  "UDP port of node 0 on loopback (default: the scenario's loop.udp_port, 47000; a launch beside "
+                  "others moves it by 256 for each slot below its own)")
       ->check(CLI::Range(1024, 60000));
   cmd->add_option("--exec", a->exec_robot,
                   "Run the program given after -- beside the agents, once per robot named (ROBOT,ROBOT... or all: "
                   "robots with controllers and, with a ros2 section, the others too), in its network namespace "
-                  "(with loop.namespaces or loop.network: simulated), with SANET_ROBOT, SANET_SERVER and "
-                  "SANET_RADIO_ADDRESS set; stopped when the run ends");
+                  "(with loop.namespaces or loop.network: simulated), with SANET_ROBOT and SANET_SERVER set (and, "
+                  "over the simulated radio, SANET_RADIO_ADDRESS; with a ros2 section, ROS_DOMAIN_ID); stopped when "
+                  "the run ends");
   cmd->add_option("command", a->command, "The program and its arguments for --exec, after --");
   AddForce(cmd, a->force);
   cmd->add_flag("--view", a->view,

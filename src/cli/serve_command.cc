@@ -127,7 +127,7 @@ void JudgeAttendance(nlohmann::ordered_json& j, hil::Attendance& attendance, con
   const std::vector<std::string> never = attendance.NeverDriven();
   if (!never.empty() && !interrupted)
     j["status"] = "failed: no client drove " + NamesOf(never) + ", so " + (never.size() == 1 ? "its" : "their") +
-                  " controller never ran";
+                  " controller" + (never.size() == 1 ? "" : "s") + " never ran";
 }
 
 // The world with its servers listening; their notices wait for the serving line, which comes first.
@@ -173,12 +173,13 @@ int ServeEnd(sim::World& world, hil::SimServer& server, const std::string& resul
   }
   const std::vector<std::string> never = server.attendance().NeverDriven();
   if (never.empty()) return 0;
-  std::fprintf(stderr, "sanet: no client drove %s, so %s controller never ran (status: failed; %s/summary.json)\n",
-               NamesOf(never).c_str(), never.size() == 1 ? "its" : "their", results.c_str());
+  std::fprintf(stderr, "sanet: no client drove %s, so %s never ran (status: failed; %s/summary.json)\n",
+               NamesOf(never).c_str(), never.size() == 1 ? "its controller" : "their controllers", results.c_str());
   return kExitRobotsMissing;
 }
 
 int Serve(const ServeArgs& a, agents::Registry& registry) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // its lines and stderr's in the order they happen, also piped
   scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
   // Agents with their own copy of the file compare this; how long the server runs is its own affair.
   scenario::EffectiveScenario effective = scenario::Effective(sc);
@@ -197,10 +198,9 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   InstallStopHandlers();
   std::printf("sanet: serving %s on %s:%u for %.1f s\n", sc.run.name.c_str(), a.bind.c_str(), s.server->port(),
               sc.run.duration);
-  if (!a.quiet) {
+  if (!a.quiet)
     for (const std::string& notice : s.notices) std::printf("%s\n", notice.c_str());
-    s.live.Announce();
-  }
+  if (!a.quiet || a.view.on) s.live.Announce();  // asked for a view, one needs to know where it is
   std::fflush(stdout);
   sim::RunOptions options = ServeOptions(a, sc, effective, results);
   options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
@@ -243,7 +243,8 @@ Command AddServe(CLI::App& app) {
                   "or else is answered ERR and closed")
       ->check(CLI::Range(1, 10000));
   cmd->add_flag("-q,--quiet", a->quiet,
-                "Print only the serving line, warnings and errors (not the WSS, ROS 2 and view addresses)");
+                "Print only the serving line, warnings and errors (not the WSS and ROS 2 addresses; the view's "
+                "only with --view)");
   AddForce(cmd, a->force);
   AddDuration(cmd, a->duration);
   cmd->add_option("--tap", a->taps,

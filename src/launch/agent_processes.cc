@@ -75,6 +75,12 @@ void AgentProcesses::Watch() {
     if (a.ended || ::waitpid(a.pid, &a.status, WNOHANG) != a.pid) continue;
     a.ended = true;
     a.ended_after = Now() - started_;
+    // At the run's end an agent exits 0 (the server ended it); otherwise the run has lost its robot.
+    if (!WIFEXITED(a.status) || WEXITSTATUS(a.status) != 0)
+      std::fprintf(stderr,
+                   "sanet: the agent of %s %s: the run goes on without %s and will end failed (Ctrl-C ends it "
+                   "now, with its results)\n",
+                   a.robot.c_str(), HowItEnded(a.status).c_str(), a.robot.c_str());
   }
   std::fflush(stderr);
 }

@@ -303,6 +303,7 @@ std::vector<NodeId> ExecRobots(const sim::RunSpec& spec, bool ros2_face, const s
 }
 
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // its lines, its server's and its agents' in order, also piped
   const RunSlot slot = RunSlot::Take();
   const std::vector<NodeId> robots = LaunchedRobots(spec, settings.ros2_face);
   const std::unique_ptr<NetworkNamespaces> namespaces = MakeNamespaces(slot, settings.loop, robots);
@@ -320,7 +321,9 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
   if (settings.ros2_face)
     std::printf("  ROS 2 face on DDS domain %d%s\n", dds_domain,
                 settings.ros2_domain >= 0 ? " (the scenario's ros2.domain)" : " (this launch's own)");
-  if (!namespaces) std::printf("  agents on loopback: node i listens on UDP port %d + i\n", udp_base);
+  const bool any_agent =
+      std::any_of(robots.begin(), robots.end(), [&](NodeId id) { return sim::RunsAsAgent(spec.nodes[id]); });
+  if (!namespaces && any_agent) std::printf("  agents on loopback: node i listens on UDP port %d + i\n", udp_base);
   if (namespaces)
     std::printf("  bridge %sbr: the server at %s, node i at %s.(i+1) on sim0\n", slot.NamePrefix().c_str(),
                 bind.c_str(), namespaces->Subnet().c_str());
@@ -330,14 +333,16 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
     const std::string& name = spec.nodes[id].name;
     const std::string where = namespaces ? namespaces->Namespace(id) : "";
     if (!sim::RunsAsAgent(spec.nodes[id])) {
-      std::printf("  robot %s: driven over ROS 2%s\n", name.c_str(),
-                  where.empty() ? "" : (", namespace " + where).c_str());
+      std::printf("  robot %s: driven over ROS 2%s%s\n", name.c_str(),
+                  where.empty() ? "" : (", namespace " + where).c_str(),
+                  SimulatedRadio(settings.loop) ? (" (radio0 " + RadioAddress(id) + ")").c_str() : "");
       continue;
     }
     const bool unreachable = name == settings.test_unreachable;  // port 9 (discard): nothing listens
     StartAgent(agents, self, settings, name, unreachable ? "127.0.0.1:9" : address, where, subnet, udp_base);
-    std::printf("  agent %s: process %d%s\n", name.c_str(), agents.agents().back().pid,
-                where.empty() ? "" : (" in namespace " + where).c_str());
+    std::printf("  agent %s: process %d%s%s\n", name.c_str(), agents.agents().back().pid,
+                where.empty() ? "" : (" in namespace " + where).c_str(),
+                SimulatedRadio(settings.loop) ? (" (radio0 " + RadioAddress(id) + ")").c_str() : "");
   }
   std::vector<pid_t> programs;
   for (NodeId id : settings.exec_robots) {

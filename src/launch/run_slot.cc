@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -61,6 +62,11 @@ Leftovers FindLeftovers() {
 // Interfaces first (a namespace's veth pair goes with it only when the kernel frees the namespace,
 // later), then the namespaces.
 int RemoveLeftovers(int slot, const Leftovers& found) {
+  std::string names;
+  for (const auto* kind : {&found.interfaces, &found.namespaces})
+    if (const auto it = kind->find(slot); it != kind->end())
+      for (const std::string& name : it->second) names += " " + name;
+  if (!names.empty()) std::printf("sanet: removing what a launch that died left behind:%s\n", names.c_str());
   int removed = 0;
   if (const auto it = found.interfaces.find(slot); it != found.interfaces.end())
     for (const std::string& link : it->second)

@@ -88,6 +88,9 @@ class LaunchWithoutItsRobots(unittest.TestCase):
             self.assertIn("robot " + robot, status)
         self.assertNotIn("robot good", status)
         self.assertIn("the run failed without", self.launch.stderr)
+        # Said as it happened, not only at the end.
+        self.assertIn("sanet: the agent of thrower exited with status 1: the run goes on without thrower and will "
+                      "end failed", self.launch.stderr)
 
     def test_each_robot_is_named_with_its_agents_last_error_line(self):
         attendance = self.summary["attendance"]
@@ -125,7 +128,7 @@ class ServeWithoutItsRobots(unittest.TestCase):
             self.assertEqual(out.returncode, 3, out.stdout + out.stderr)
             self.assertIn("no client drove good, thrower", out.stderr)
             summary = summary_of(os.path.join(tmp, "out"))
-            self.assertEqual(summary["status"], "failed: no client drove good, thrower, so their controller never ran")
+            self.assertEqual(summary["status"], "failed: no client drove good, thrower, so their controllers never ran")
             self.assertEqual(summary["attendance"]["good"]["driven"], [])
 
     def test_the_serving_line_comes_first_while_the_foxglove_port_is_taken(self):

@@ -128,6 +128,8 @@ class SideBySide(unittest.TestCase):
             after = launch(scenario(tmp, 4, True), os.path.join(tmp, "after"))
             stdout, stderr = after.communicate(timeout=120)
             self.assertEqual(after.returncode, 0, stdout + stderr)
+            self.assertIn("sanet: removing what a launch that died left behind:", stdout)
+            self.assertIn(" sanet%dbr" % slot, stdout)
             self.assertEqual(summary(os.path.join(tmp, "after"))["status"], "completed")
             if slot_is_free(slot):  # unless a launch of another test holds it by now
                 self.assertEqual(slot_names(slot), set(), "the dead launch's leftovers are gone")

@@ -17,8 +17,10 @@ import unittest
 
 SANET, LIBRARY = sys.argv.pop(1), os.path.abspath(sys.argv.pop(1))
 
+# Its agents run without launch, on loopback: ports of their own, away from launches' (47000 up).
 SCENARIO = """name: remote-agent
 duration: 30
+loop: {{udp_port: 52000}}
 nodes:
   - name: a
     model: diffdrive

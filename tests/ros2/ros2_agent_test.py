@@ -134,7 +134,7 @@ def csv_rows(path):
 ONE_ROBOT = """name: one
 duration: 60
 world: {size: [20, 20]}
-loop: {udp_port: 47630}
+loop: {udp_port: 52630}  # away from launches' loopback ports (47000 up)
 nodes:
   - name: r1
     model: diffdrive
@@ -275,7 +275,7 @@ class Remapping(unittest.TestCase):
 
 PAIR = """name: pair
 duration: 60
-loop: {udp_port: 47610}
+loop: {udp_port: 52610}
 nodes:
   - name: r1
     model: diffdrive

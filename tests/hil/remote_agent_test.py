@@ -82,7 +82,7 @@ class RemoteAgent(unittest.TestCase):
         self.assertEqual(b.returncode, 0, b.stderr)
         self.assertIn("sanet agent b: server 127.0.0.1:", b.stdout)  # it says what it found
         self.assertIn("scenario remote-agent fetched", b.stdout)
-        self.assertRegex(b.stdout, r"peers reach it at 127\.0\.0\.1:47001; clock estimated, offset -?[0-9.]+ s")
+        self.assertRegex(b.stdout, r"peers reach it at 127\.0\.0\.1:52001; clock estimated, offset -?[0-9.]+ s")
         self.assertIn("the run is over", b.stdout)
         self.assertEqual(a.wait(timeout=60), 0, a.stderr.read())
         summary = server.finish()

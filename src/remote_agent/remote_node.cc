@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "robots/kinematics.h"
+#include "robots/node_model.h"
 #include "sanet/codec.h"
 #include "wire/message_lines.h"
 #include "wire/sockets.h"
@@ -186,20 +187,17 @@ std::optional<BearingReading> RemoteNode::Bearing(NodeId target) {
   return it->second;
 }
 
+// Within the model's limits, as the simulated node: the server clamps nothing for wheel speeds.
 bool RemoteNode::ApplyDrive(const Twist2D& v) {
   const auto& model = spec_.nodes[id_].model;
   ProtocolMessage drive("DRIVE");
+  const Twist2D c = robots::LimitDrive(model, v);
   if (model.kind == robots::ModelKind::kDiffDrive) {
-    // The server clamps nothing for wheel speeds: apply the model's limits here, as the
-    // simulated node does.
-    Twist2D c = v;
-    c.vx = std::clamp(c.vx, -model.max_speed, model.max_speed);
-    c.omega = std::clamp(c.omega, -model.max_turn_rate, model.max_turn_rate);
     const auto w =
         robots::DiffDriveKinematics(model.diffdrive.axle_length, model.diffdrive.wheel_radius).WheelSpeeds(c);
     drive.Add("Left", w[0]).Add("Right", w[1]);
   } else if (model.kind == robots::ModelKind::kOmni3) {
-    drive.Add("LinearVelocity", v.vx).Add("LateralVelocity", -v.vy).Add("RotationalVelocity", -v.omega);
+    drive.Add("LinearVelocity", c.vx).Add("LateralVelocity", -c.vy).Add("RotationalVelocity", -c.omega);
   } else {
     return false;
   }

@@ -123,17 +123,21 @@ bool Finite(const std::vector<double>& values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
 
+Twist2D LimitDrive(const ModelSpec& model, const Twist2D& velocity) {
+  Twist2D v = velocity;
+  if (model.kind != ModelKind::kOmni3) v.vy = 0;  // only the omni wheels move sideways
+  const double speed = std::hypot(v.vx, v.vy);
+  if (speed > model.max_speed) {
+    v.vx *= model.max_speed / speed;
+    v.vy *= model.max_speed / speed;
+  }
+  v.omega = std::clamp(v.omega, -model.max_turn_rate, model.max_turn_rate);
+  return v;
+}
+
 bool NodeModel::Drive(const Twist2D& velocity) {
   if (!vehicle_ || !Finite({velocity.vx, velocity.vy, velocity.omega})) return false;
-  Twist2D v = velocity;
-  if (!kinematics_->holonomic()) v.vy = 0;
-  const double speed = std::hypot(v.vx, v.vy);
-  if (speed > spec_.max_speed) {
-    v.vx *= spec_.max_speed / speed;
-    v.vy *= spec_.max_speed / speed;
-  }
-  v.omega = std::clamp(v.omega, -spec_.max_turn_rate, spec_.max_turn_rate);
-  return SetWheelSpeeds(kinematics_->WheelSpeeds(v));
+  return SetWheelSpeeds(kinematics_->WheelSpeeds(LimitDrive(spec_, velocity)));
 }
 
 bool NodeModel::SetWheelSpeeds(const std::vector<double>& rad_per_s) {

@@ -54,6 +54,11 @@ double InscribedRadius(const ModelSpec& model);
 // No NaN and no infinity among `values`: a command the motors can take.
 bool Finite(const std::vector<double>& values);
 
+// The model's drive limits, the one rule every mode applies (the simulated node, an agent, a ROS 2
+// robot): no sideways motion for a robot that cannot make it, the speed over the ground scaled
+// down to max_speed (keeping the direction), the turn rate clamped to max_turn_rate.
+Twist2D LimitDrive(const ModelSpec& model, const Twist2D& velocity);
+
 class NodeModel {
  public:
   // `seed` and `stream_prefix` give each sensor its own random stream.

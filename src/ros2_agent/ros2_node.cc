@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "robots/kinematics.h"
+#include "robots/node_model.h"
 
 namespace sanet::ros2agent {
 
@@ -52,13 +53,7 @@ void Ros2Node::Flood(const Bytes& payload) { ToEveryAgent(Delivery::kFlood, payl
 bool Ros2Node::ApplyDrive(const Twist2D& v) {
   const robots::ModelSpec& model = spec_.nodes[id_].model;
   if (model.kind == robots::ModelKind::kMote) return false;
-  Twist2D c = v;
-  if (model.kind == robots::ModelKind::kDiffDrive) {
-    c.vx = std::clamp(c.vx, -model.max_speed, model.max_speed);
-    c.vy = 0;
-    c.omega = std::clamp(c.omega, -model.max_turn_rate, model.max_turn_rate);
-  }
-  robot_.Drive(c, ClockNow());
+  robot_.Drive(robots::LimitDrive(model, v), ClockNow());
   return true;
 }
 

@@ -155,6 +155,11 @@ void StartAgent(AgentProcesses& agents, const std::string& self, const LaunchSet
   agents.Start(robot, [&] { namespace_name.empty() ? Exec(self, args) : Exec("ip", args); });
 }
 
+// " (radio0 10.0.0.3)": where a robot's programs are on the simulated radio, when there is one.
+std::string RadioNote(const LaunchSettings& settings, NodeId id) {
+  return SimulatedRadio(settings.loop) ? " (radio0 " + RadioAddress(id) + ")" : "";
+}
+
 // The user's program, in `robot`'s namespace when it has one, told where it runs through its
 // environment: SANET_ROBOT (the robot's name), SANET_SERVER (the server's host:port), over the
 // simulated radio SANET_RADIO_ADDRESS (the robot's address on it) and, with the ROS 2 face,
@@ -334,15 +339,13 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
     const std::string where = namespaces ? namespaces->Namespace(id) : "";
     if (!sim::RunsAsAgent(spec.nodes[id])) {
       std::printf("  robot %s: driven over ROS 2%s%s\n", name.c_str(),
-                  where.empty() ? "" : (", namespace " + where).c_str(),
-                  SimulatedRadio(settings.loop) ? (" (radio0 " + RadioAddress(id) + ")").c_str() : "");
+                  where.empty() ? "" : (", namespace " + where).c_str(), RadioNote(settings, id).c_str());
       continue;
     }
     const bool unreachable = name == settings.test_unreachable;  // port 9 (discard): nothing listens
     StartAgent(agents, self, settings, name, unreachable ? "127.0.0.1:9" : address, where, subnet, udp_base);
     std::printf("  agent %s: process %d%s%s\n", name.c_str(), agents.agents().back().pid,
-                where.empty() ? "" : (" in namespace " + where).c_str(),
-                SimulatedRadio(settings.loop) ? (" (radio0 " + RadioAddress(id) + ")").c_str() : "");
+                where.empty() ? "" : (" in namespace " + where).c_str(), RadioNote(settings, id).c_str());
   }
   std::vector<pid_t> programs;
   for (NodeId id : settings.exec_robots) {

@@ -61,19 +61,17 @@ Leftovers FindLeftovers() {
 
 // Interfaces first (a namespace's veth pair goes with it only when the kernel frees the namespace,
 // later), then the namespaces.
-int RemoveLeftovers(int slot, const Leftovers& found) {
+void RemoveLeftovers(int slot, const Leftovers& found) {
   std::string names;
   for (const auto* kind : {&found.interfaces, &found.namespaces})
     if (const auto it = kind->find(slot); it != kind->end())
       for (const std::string& name : it->second) names += " " + name;
   if (!names.empty()) std::printf("sanet: removing what a launch that died left behind:%s\n", names.c_str());
-  int removed = 0;
   if (const auto it = found.interfaces.find(slot); it != found.interfaces.end())
     for (const std::string& link : it->second)
-      if (fs::exists("/sys/class/net/" + link)) removed += RunQuietly("ip link del " + link) == 0;
+      if (fs::exists("/sys/class/net/" + link)) RunQuietly("ip link del " + link);
   if (const auto it = found.namespaces.find(slot); it != found.namespaces.end())
-    for (const std::string& ns : it->second) removed += RunQuietly("ip netns del " + ns) == 0;
-  return removed;
+    for (const std::string& ns : it->second) RunQuietly("ip netns del " + ns);
 }
 
 // The folder, made if need be and writable by every user (sticky, as /tmp), so that launches of

@@ -71,6 +71,8 @@ class Reader {
     return s;
   }
   bool ok() const { return ok_; }
+  // Marks what was read as malformed (a value no writer writes), as reading past the end does.
+  void Fail() { ok_ = false; }
   bool at_end() const { return pos_ == bytes_.size(); }
 
  private:

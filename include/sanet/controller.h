@@ -21,6 +21,9 @@ class Controller {
     (void)node;
     (void)message;
   }
+  // Called once when the run ends, in every mode, while the node can still log and record
+  // metrics (its results are written after): a place for end-of-run statistics.
+  virtual void Finish(Node& node) { (void)node; }
 };
 
 struct ControllerInfo {

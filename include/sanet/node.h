@@ -7,25 +7,14 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sanet/geometry.h"
 #include "sanet/message.h"
+#include "sanet/readings.h"
 
 namespace sanet {
-
-// Ranges from a ring of IR sensors or a planar laser, in the robot frame.
-struct RangeScan {
-  std::vector<double> angles;  // rad, counter-clockwise from the robot's forward axis
-  std::vector<double> ranges;  // m, max_range where nothing was seen
-  double max_range = 0;        // m
-};
-
-// Where another node lies, seen from this robot.
-struct BearingReading {
-  double distance = 0;  // m
-  double bearing = 0;   // rad, in the robot frame (0 = straight ahead, positive = left)
-};
 
 // One entry of the node's routing table.
 struct RouteEntry {
@@ -62,12 +51,25 @@ class Node {
   virtual std::string NameOf(NodeId id) const = 0;  // "" for an unknown id
   virtual std::size_t NodeCount() const = 0;
 
-  // Sensors: empty when the node has no such sensor (or, for the bearing, when the target is out
-  // of the sensor's range).
-  virtual std::optional<RangeScan> Ir() = 0;
-  virtual std::optional<RangeScan> Laser() = 0;
-  virtual std::optional<Pose2D> Odometry() = 0;     // pose integrated from wheel rotation
-  virtual std::optional<Pose2D> GroundTruth() = 0;  // true pose (simulation and tracked robots)
+  // Sensors. Sensor(name) reads the sensor the scenario names `name` (a kind's own name, such as
+  // "laser", for its default instance; or an instance's name, such as "laser_rear"): empty when
+  // the node has no sensor of that name. Which reading type a kind gives is listed by
+  // `sanet list --sensors`; SensorAs<T> reads one and keeps it only if it is a T.
+  virtual std::optional<SensorReading> Sensor(const std::string& name) = 0;
+  template <typename T>
+  std::optional<T> SensorAs(const std::string& name) {
+    std::optional<SensorReading> reading = Sensor(name);
+    if (!reading) return std::nullopt;
+    if (T* value = std::get_if<T>(&*reading)) return std::move(*value);
+    return std::nullopt;
+  }
+  // The default instances of the first kinds, as before Sensor(name).
+  std::optional<RangeScan> Ir() { return SensorAs<RangeScan>("ir"); }
+  std::optional<RangeScan> Laser() { return SensorAs<RangeScan>("laser"); }
+  std::optional<Pose2D> Odometry() { return SensorAs<Pose2D>("odometry"); }         // from wheel rotation
+  std::optional<Pose2D> GroundTruth() { return SensorAs<Pose2D>("ground_truth"); }  // the true pose
+  // One node's bearing, read on its own (Sensor("bearing") reads every node in range): empty
+  // without a bearing sensor or when `target` is out of its range.
   virtual std::optional<BearingReading> Bearing(NodeId target) = 0;
 
   // Actuators. Drive takes a body velocity in the robot frame (vx forward, vy left, omega
@@ -99,6 +101,11 @@ class Node {
   virtual void Broadcast(const Bytes& payload) = 0;
   virtual void Flood(const Bytes& payload) = 0;
   virtual NetworkView& Network() = 0;
+  // Puts the node's radio to sleep (true) or wakes it (false), as the MAC's power save does:
+  // asleep, it neither receives nor transmits, and what the node sends meanwhile is queued or
+  // dropped as its MAC does (docs/controllers.md says which, per mode). False where the node's
+  // radio cannot sleep (the node's log says why).
+  virtual bool SetRadioSleep(bool asleep) = 0;
 
   // A uniform random number in [0, 1) from this node's own seeded stream: the same run
   // draws the same numbers.

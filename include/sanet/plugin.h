@@ -15,7 +15,9 @@
 // Bump whenever a header under include/sanet changes in a way that breaks binary compatibility.
 // 4: Node::Transition and Node::Metric. 5: Node::Drive and SetWheelSpeeds are checked by Node
 // itself and call the protected ApplyDrive / ApplyWheelSpeeds (docs/controllers.md, migration).
-#define SANET_CONTROLLER_API_VERSION 5
+// 6: Node::Sensor(name) and sanet/readings.h (Ir, Laser, Odometry, GroundTruth read through it),
+// Node::SetRadioSleep, Controller::Finish.
+#define SANET_CONTROLLER_API_VERSION 6
 
 // The entry points stay visible when a library hides its other symbols (-fvisibility=hidden).
 #define SANET_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))

@@ -8,12 +8,15 @@ studies as pandas DataFrames (docs/python-module.md).
     print(sanet.Results("out").trajectories.head())
 
 The classes a Python controller is given (Node, Params, Pose, RangeScan, Bearing, Route,
-NetworkView, Message, ParamError) are here too (docs/python.md).
+NetworkView, Message, ParamError, and the readings of Node.sensor: NodeBearing, BatteryReading,
+ImuReading, FixReading, JointStatesReading, ImageReading) are here too (docs/python.md).
 """
-from ._sanet import (Bearing, FolderRefused, Message, NetworkView, Node, ParamError, Params, Pose, RangeScan,
-                     ReportError, Route, ScenarioError, Simulation, StudyReader)
+from ._sanet import (BatteryReading, Bearing, FixReading, FolderRefused, ImageReading, ImuReading, JointStatesReading,
+                     Message, NetworkView, Node, NodeBearing, ParamError, Params, Pose, RangeScan, ReportError, Route,
+                     ScenarioError, Simulation, StudyReader)
 from .results import Results
 from .study import Study
 
 __all__ = ["Simulation", "Results", "Study", "ScenarioError", "FolderRefused", "ReportError", "Node", "Params",
-           "ParamError", "Pose", "RangeScan", "Bearing", "Route", "NetworkView", "Message"]
+           "ParamError", "Pose", "RangeScan", "Bearing", "Route", "NetworkView", "Message", "NodeBearing",
+           "BatteryReading", "ImuReading", "FixReading", "JointStatesReading", "ImageReading"]

@@ -62,7 +62,16 @@ void ControllerHost::Guard(const char* where, Call call) {
   }
 }
 
+// A switched-off node's controller finishes too (its statistics are the run's).
+void ControllerHost::Finish() {
+  if (!controller_ || failed_ || !started_) return;
+  off_ = false;
+  Guard(" to finish", [&] { controller_->Finish(node_); });
+  off_ = true;
+}
+
 void ControllerHost::Start() {
+  started_ = true;
   Guard(" to start", [&] { controller_->Start(node_); });
 }
 

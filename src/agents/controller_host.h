@@ -52,6 +52,10 @@ class ControllerHost {
 
   void Start();
   void Step();
+  // The run ended: the controller's Finish, once (also after a switch-off; not after a failure,
+  // nor for a controller that never started).
+  // No steps or messages follow.
+  void Finish();
   // A message reached the node: impaired, then recorded and given to the controller.
   void Receive(const Message& message);
   // From now on the controller gets no steps and no messages (messages are still recorded).
@@ -69,7 +73,7 @@ class ControllerHost {
   RandomStream impairment_stream_;
   HostClock& clock_;
   Hooks hooks_;
-  bool failed_ = false, off_ = false;
+  bool failed_ = false, off_ = false, started_ = false;
 };
 
 }  // namespace sanet::agents

@@ -21,7 +21,7 @@ namespace sanet::agents {
 namespace {
 
 // What crosses the socket. The parent asks the child to run a controller call (kStart, kStep,
-// kMessage); while it runs, the child asks the parent for node calls (the call list of
+// kMessage, kFinish); while it runs, the child asks the parent for node calls (the call list of
 // agents/node_calls.h) and gets one answer for each; the call ends with kDone or kFailed (the text
 // of what the controller threw).
 #define SANET_CALL_NUMBER(name, ...) k##name,
@@ -31,6 +31,7 @@ enum Call : std::uint8_t {
   kStart,
   kStep,
   kMessage,
+  kFinish,
   kDone,
   kFailed,
   kAnswer,
@@ -164,6 +165,7 @@ void Answer(Node& node, Call call, Reader& r, Writer& w) {
       if (call == kStart) controller->Start(*node);
       if (call == kStep) controller->ControlStep(*node);
       if (call == kMessage) controller->OnMessage(*node, node_calls::Get<Message>(r));
+      if (call == kFinish) controller->Finish(*node);
       SendPacket(fd, Writer().U8(kDone).bytes());
     } catch (...) {
       SendPacket(fd, Writer().U8(kFailed).Text(CurrentExceptionText()).bytes());
@@ -183,6 +185,7 @@ class IsolatedController : public Controller {
   }
   void Start(Node& node) override { Run(node, Request(node, kStart)); }
   void ControlStep(Node& node) override { Run(node, Request(node, kStep)); }
+  void Finish(Node& node) override { Run(node, Request(node, kFinish)); }
   void OnMessage(Node& node, const Message& m) override {
     Writer request = Request(node, kMessage);
     node_calls::Put(request, m);

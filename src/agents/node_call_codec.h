@@ -3,9 +3,13 @@
 // result type that include/sanet/node.h uses, so that a call list names types and nothing more.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <tuple>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "sanet/codec.h"
@@ -22,10 +26,36 @@ inline void Put(Writer& w, const std::string& v) { w.Text(v); }
 inline void Put(Writer& w, const Twist2D& v) { w.F64(v.vx).F64(v.vy).F64(v.omega); }
 inline void Put(Writer& w, const Pose2D& v) { w.F64(v.x).F64(v.y).F64(v.theta); }
 inline void Put(Writer& w, const BearingReading& v) { w.F64(v.distance).F64(v.bearing); }
+inline void Put(Writer& w, float v) { w.F64(v); }
+
+// The readings of sanet/readings.h, member by member (Put and Get both go through Members).
+inline auto Members(NodeBearing& v) { return std::tie(v.node, v.reading); }
+inline auto Members(BearingsReading& v) { return std::tie(v.in_range); }
+inline auto Members(Vector3& v) { return std::tie(v.x, v.y, v.z); }
+inline auto Members(Quaternion& v) { return std::tie(v.x, v.y, v.z, v.w); }
+inline auto Members(BatteryReading& v) { return std::tie(v.remaining_j, v.fraction, v.voltage, v.charging); }
+inline auto Members(ImuReading& v) {
+  return std::tie(v.angular_velocity, v.linear_acceleration, v.orientation, v.angular_velocity_covariance,
+                  v.linear_acceleration_covariance, v.orientation_covariance);
+}
+inline auto Members(FixReading& v) {
+  return std::tie(v.latitude, v.longitude, v.altitude, v.status, v.position_covariance);
+}
+inline auto Members(JointStatesReading& v) { return std::tie(v.names, v.angles, v.speeds); }
+inline auto Members(ImageReading& v) { return std::tie(v.width, v.height, v.encoding, v.data, v.depth); }
+template <typename T>
+using HasMembers = decltype(Members(std::declval<T&>()));
+
 template <typename T>
 void Put(Writer& w, const std::vector<T>& v);
 template <typename T>
 void Put(Writer& w, const std::optional<T>& v);
+template <typename T, std::size_t N>
+void Put(Writer& w, const std::array<T, N>& v);
+template <typename... T>
+void Put(Writer& w, const std::variant<T...>& v);
+template <typename T, typename = HasMembers<T>>
+void Put(Writer& w, const T& v);
 inline void Put(Writer& w, const RangeScan& v);
 inline void Put(Writer& w, const RouteEntry& v);
 inline void Put(Writer& w, const Message& v);
@@ -39,6 +69,19 @@ template <typename T>
 void Put(Writer& w, const std::optional<T>& v) {
   w.Bool(v.has_value());
   if (v) Put(w, *v);
+}
+template <typename T, std::size_t N>
+void Put(Writer& w, const std::array<T, N>& v) {
+  for (const T& x : v) Put(w, x);
+}
+template <typename... T>
+void Put(Writer& w, const std::variant<T...>& v) {
+  w.U8(static_cast<std::uint8_t>(v.index()));
+  std::visit([&w](const auto& alternative) { Put(w, alternative); }, v);
+}
+template <typename T, typename>
+void Put(Writer& w, const T& v) {
+  std::apply([&w](const auto&... member) { (Put(w, member), ...); }, Members(const_cast<T&>(v)));
 }
 inline void Put(Writer& w, const RangeScan& v) {
   Put(w, v.angles);
@@ -54,9 +97,17 @@ inline void Put(Writer& w, const Message& v) {
   Put(w, v.payload);
 }
 
-// Get<T>(r): reads what Put(w, T) wrote.
+// Get<T>(r): reads what Put(w, T) wrote. Without a specialisation, a reading read member by member.
 template <typename T>
-struct Codec;
+T Get(Reader& r);
+template <typename T>
+struct Codec {
+  static T Read(Reader& r) {
+    T v;
+    std::apply([&r](auto&... member) { ((member = Get<std::decay_t<decltype(member)>>(r)), ...); }, Members(v));
+    return v;
+  }
+};
 template <typename T>
 T Get(Reader& r) {
   return Codec<T>::Read(r);
@@ -108,6 +159,30 @@ struct Codec<BearingReading> {
     BearingReading b;
     b.distance = r.F64(), b.bearing = r.F64();
     return b;
+  }
+};
+template <>
+struct Codec<float> {
+  static float Read(Reader& r) { return static_cast<float>(r.F64()); }
+};
+template <typename T, std::size_t N>
+struct Codec<std::array<T, N>> {
+  static std::array<T, N> Read(Reader& r) {
+    std::array<T, N> v;
+    for (T& x : v) x = Get<T>(r);
+    return v;
+  }
+};
+// The alternative the index names; an index out of range reads as a bad packet.
+template <typename... T>
+struct Codec<std::variant<T...>> {
+  static std::variant<T...> Read(Reader& r) {
+    const std::size_t index = r.U8();
+    std::variant<T...> out;
+    std::size_t i = 0;
+    const bool found = ((i++ == index ? (out = Get<T>(r), true) : false) || ...);
+    if (!found) r.Fail();
+    return out;
   }
 };
 template <typename T>

@@ -10,16 +10,14 @@
   CALL(Now, Now, double, (), (), const)                                                                        \
   CALL(Lookup, Lookup, std::optional<NodeId>, (const std::string& name), (name), const)                        \
   CALL(NameOf, NameOf, std::string, (NodeId id), (id), const)                                                  \
-  CALL(Ir, Ir, std::optional<RangeScan>, (), (), )                                                             \
-  CALL(Laser, Laser, std::optional<RangeScan>, (), (), )                                                       \
-  CALL(Odometry, Odometry, std::optional<Pose2D>, (), (), )                                                    \
-  CALL(GroundTruth, GroundTruth, std::optional<Pose2D>, (), (), )                                              \
+  CALL(Sensor, Sensor, std::optional<SensorReading>, (const std::string& name), (name), )                      \
   CALL(Bearing, Bearing, std::optional<BearingReading>, (NodeId target), (target), )                           \
   CALL(Drive, ApplyDrive, bool, (const Twist2D& velocity), (velocity), )                                       \
   CALL(SetWheelSpeeds, ApplyWheelSpeeds, bool, (const std::vector<double>& rad_per_s), (rad_per_s), )          \
   CALL(Send, Send, void, (NodeId to, const Bytes& payload), (to, payload), )                                   \
   CALL(Broadcast, Broadcast, void, (const Bytes& payload), (payload), )                                        \
   CALL(Flood, Flood, void, (const Bytes& payload), (payload), )                                                \
+  CALL(SetRadioSleep, SetRadioSleep, bool, (bool asleep), (asleep), )                                          \
   CALL(Random, Random, double, (), (), )                                                                       \
   CALL(Log, Log, void, (const std::string& text), (text), )                                                    \
   CALL(Transition, Transition, void, (const std::string& from, const std::string& to, const std::string& why), \

@@ -2,9 +2,33 @@
 
 namespace sanet::agents {
 
+sensors::ReadContext SimulatedNode::Context(std::optional<NodeId> target) const {
+  return {id_, directory_.NodeCount(), [this](NodeId node) { return directory_.TruePose(node); }, target};
+}
+
+std::optional<SensorReading> SimulatedNode::Sensor(const std::string& name) {
+  if (!sensors_.Has(name)) return std::nullopt;
+  std::optional<SensorReading> reading = sensors_.Read(name, Context());
+  last_.time = Now();
+  last_.readings[name] = reading;
+  if (reading) directory_.ReadSensor(id_, name, sensors_.KindOf(name), *reading);
+  return reading;
+}
+
+// The default bearing sensor aimed at one node: one draw of noise, for that node only.
 std::optional<BearingReading> SimulatedNode::Bearing(NodeId target) {
-  if (target >= directory_.NodeCount() || target == id_) return std::nullopt;
-  return model_.Bearing(directory_.TruePose(target));
+  if (target >= directory_.NodeCount() || target == id_ || sensors_.KindOf("bearing") != "bearing") return std::nullopt;
+  const std::optional<SensorReading> reading = sensors_.Read("bearing", Context(target));
+  const auto* bearings = reading ? std::get_if<BearingsReading>(&*reading) : nullptr;
+  if (!bearings || bearings->in_range.empty()) return std::nullopt;
+  return bearings->in_range.front().reading;
+}
+
+bool SimulatedNode::SetRadioSleep(bool asleep) {
+  if (off_) return false;  // switched off for good
+  if (transport_.SetSleep(id_, asleep)) return true;
+  Log("radio sleep refused: this run has no radio model (no `network` section)");
+  return false;
 }
 
 bool SimulatedNode::ApplyDrive(const Twist2D& velocity) { return !off_ && model_.Drive(velocity); }

@@ -4,6 +4,7 @@
 // run, such as switch-off, hold for all of them.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "agents/host_clock.h"
@@ -11,6 +12,7 @@
 #include "net/transport.h"
 #include "robots/node_model.h"
 #include "sanet/node.h"
+#include "sensors/sensor_set.h"
 
 namespace sanet::agents {
 
@@ -25,20 +27,21 @@ class NodeDirectory {
   virtual void Log(NodeId node, const std::string& text) = 0;
   virtual void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) = 0;
   virtual void Metric(NodeId node, const std::string& name, double value) = 0;
-  // What a node's driver read, now, for the run's log: readings are recorded as taken, never read
-  // again (a noisy sensor draws from the node's random stream).
-  enum class Scanner { kIr, kLaser };
-  virtual void ReadScan(NodeId /*node*/, Scanner /*which*/, const RangeScan& /*scan*/) {}
-  virtual void ReadOdometry(NodeId /*node*/, const Pose2D& /*pose*/) {}
+  // What a node's driver read, now, from its sensor `instance` of `kind`, for the run's log:
+  // readings are recorded as taken, never read again (a noisy sensor draws from the node's
+  // random stream).
+  virtual void ReadSensor(NodeId /*node*/, const std::string& /*instance*/, const std::string& /*kind*/,
+                          const SensorReading& /*reading*/) {}
 };
 
 class SimulatedNode : public Node {
  public:
-  SimulatedNode(NodeId id, std::string name, robots::NodeModel& model, net::Transport& transport,
-                NodeDirectory& directory, const HostClock& clock, RandomStream random)
+  SimulatedNode(NodeId id, std::string name, robots::NodeModel& model, sensors::SensorSet& sensors,
+                net::Transport& transport, NodeDirectory& directory, const HostClock& clock, RandomStream random)
       : id_(id),
         name_(std::move(name)),
         model_(model),
+        sensors_(sensors),
         transport_(transport),
         directory_(directory),
         clock_(clock),
@@ -51,26 +54,19 @@ class SimulatedNode : public Node {
   std::string NameOf(NodeId id) const override { return directory_.NameOf(id); }
   std::size_t NodeCount() const override { return directory_.NodeCount(); }
 
-  // Each read is also kept (LastReads), for a script that looks at the run between steps.
-  std::optional<RangeScan> Ir() override { return Told(NodeDirectory::Scanner::kIr, Kept(last_.ir, model_.Ir())); }
-  std::optional<RangeScan> Laser() override {
-    return Told(NodeDirectory::Scanner::kLaser, Kept(last_.laser, model_.Laser()));
-  }
-  std::optional<Pose2D> Odometry() override {
-    std::optional<Pose2D> pose = Kept(last_.odometry, model_.Odometry());
-    if (pose) directory_.ReadOdometry(id_, *pose);
-    return pose;
-  }
-  std::optional<Pose2D> GroundTruth() override { return Kept(last_.ground_truth, model_.GroundTruth()); }
+  // Each read is told to the run (NodeDirectory::ReadSensor) and kept (LastReads), for a script
+  // that looks at the run between steps.
+  std::optional<SensorReading> Sensor(const std::string& name) override;
+  std::optional<BearingReading> Bearing(NodeId target) override;
 
-  // What the node's controller read last, and when (-1: never); reading this draws no noise.
+  // What the node's driver read last from each sensor, and when (-1: never); reading this draws
+  // no noise.
   struct LastReads {
     double time = -1;
-    std::optional<RangeScan> ir, laser;
-    std::optional<Pose2D> odometry, ground_truth;
+    std::map<std::string, std::optional<SensorReading>> readings;  // by instance
   };
   const LastReads& last_reads() const { return last_; }
-  std::optional<BearingReading> Bearing(NodeId target) override;
+  sensors::SensorSet& sensors() { return sensors_; }
 
   bool Holonomic() const override { return model_.holonomic(); }
 
@@ -85,6 +81,7 @@ class SimulatedNode : public Node {
     if (!off_) transport_.Flood(id_, payload);
   }
   NetworkView& Network() override { return transport_.View(id_); }
+  bool SetRadioSleep(bool asleep) override;
   void Log(const std::string& text) override { directory_.Log(id_, text); }
   void Transition(const std::string& from, const std::string& to, const std::string& why) override {
     directory_.Transition(id_, from, to, why);
@@ -104,22 +101,13 @@ class SimulatedNode : public Node {
   bool ApplyWheelSpeeds(const std::vector<double>& w) override;
 
  private:
-  template <typename T>
-  std::optional<T> Kept(std::optional<T>& slot, std::optional<T> value) {
-    last_.time = Now();
-    slot = value;
-    return value;
-  }
-  std::optional<Pose2D> Kept(std::optional<Pose2D>& slot, Pose2D value) { return Kept(slot, std::optional(value)); }
-  std::optional<RangeScan> Told(NodeDirectory::Scanner which, std::optional<RangeScan> scan) {
-    if (scan) directory_.ReadScan(id_, which, *scan);
-    return scan;
-  }
+  sensors::ReadContext Context(std::optional<NodeId> target = std::nullopt) const;
   LastReads last_;
 
   NodeId id_;
   std::string name_;
   robots::NodeModel& model_;
+  sensors::SensorSet& sensors_;
   net::Transport& transport_;
   NodeDirectory& directory_;
   const HostClock& clock_;

@@ -126,7 +126,7 @@ int Validate(const std::string& file, const std::vector<std::string>& sets, bool
   }
   std::size_t robots = 0, controlled = 0;
   for (const auto& n : sc.run.nodes) {
-    robots += n.model.kind != robots::ModelKind::kMote;
+    robots += robots::HasDrive(n.model);
     controlled += n.controller.has_value();
   }
   std::printf("%s: valid: %s (%s, %zu with controllers), %s, %.1f s, seed %llu\n", file.c_str(),
@@ -145,8 +145,8 @@ agents::ControllerSpec PythonSpec(const std::string& module_class) {
   return spec;
 }
 
-int List(agents::Registry& registry, bool markdown) {
-  std::fputs((markdown ? scenario::ReferenceMarkdown() : scenario::Catalogue(registry)).c_str(), stdout);
+int List(agents::Registry& registry, bool markdown, scenario::CatalogueSections sections) {
+  std::fputs((markdown ? scenario::ReferenceMarkdown() : scenario::Catalogue(registry, sections)).c_str(), stdout);
   return 0;
 }
 
@@ -263,18 +263,26 @@ Command AddList(CLI::App& app) {
   auto markdown = std::make_shared<bool>(false);
   auto pythons = std::make_shared<std::vector<std::string>>();
   CLI::App* cmd = app.add_subcommand("list",
-                                     "List the models (with their body keys), sensors (with their keys) and "
-                                     "controllers (with their parameters) that sanet knows");
+                                     "List the models (with their sensors, limits and body keys), sensor kinds "
+                                     "(with their readings, ROS 2 messages and keys) and controllers (with their "
+                                     "parameters) that sanet knows");
   cmd->add_option("--library", *libraries, "Also load this controller library (repeatable)");
   cmd->add_option("--python", *pythons,
                   "Also import this Python controller, MODULE:CLASS (repeatable; the module on --python-path or "
                   "in the current folder)");
   AddPythonPath(cmd);
   cmd->add_flag("--markdown", *markdown, "Print the scenario format's reference tables (as in docs/scenario.md)");
-  return {cmd, [libraries, pythons, markdown](agents::Registry& r) {
+  auto only = std::make_shared<scenario::CatalogueSections>(scenario::CatalogueSections{false, false, false});
+  cmd->add_flag("--models", only->models, "Print only the models (what each carries, its limits, its body keys)");
+  cmd->add_flag("--sensors", only->sensors,
+                "Print only the sensor kinds (what each measures, its reading type and units, its ROS 2 message, "
+                "its keys)");
+  cmd->add_flag("--controllers", only->controllers, "Print only the controllers and their parameters");
+  return {cmd, [libraries, pythons, markdown, only](agents::Registry& r) {
             for (const auto& lib : *libraries) r.LoadLibrary(lib);
             for (const auto& python : *pythons) r.LoadPython(PythonSpec(python));
-            return List(r, *markdown);
+            const bool some = only->models || only->sensors || only->controllers;
+            return List(r, *markdown, some ? *only : scenario::CatalogueSections{});
           }};
 }
 

@@ -12,6 +12,7 @@
 #include "ros2_options.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/yaml_reader.h"
+#include "sensors/range_fan.h"
 
 namespace sanet::cli {
 namespace {
@@ -38,7 +39,7 @@ hil::DatagramKey TeamKey(const Ros2AgentArgs& args) {
 }
 
 ros2agent::RobotTopics TopicsOf(const sim::NodeSpec& node, const Ros2AgentArgs& args) {
-  const auto& ir = node.model.sensors.ir;
+  const auto& ir = sensors::DefaultFan(node.model, "ir");
   ros2agent::RobotTopics topics = ros2agent::DefaultTopics(node.name, ir ? ir->angles.size() : 0);
   if (!args.robot_file.empty()) ros2agent::ReadRobotFile(args.robot_file, topics);
   for (const std::string& remap : args.remaps) try {

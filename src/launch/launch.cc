@@ -277,8 +277,7 @@ int Verdict(int server_status, const std::string& results, const AgentProcesses&
 std::vector<NodeId> LaunchedRobots(const sim::RunSpec& spec, bool ros2_face) {
   std::vector<NodeId> robots;
   for (NodeId i = 0; i < spec.nodes.size(); ++i)
-    if (sim::RunsAsAgent(spec.nodes[i]) || (ros2_face && spec.nodes[i].model.kind != robots::ModelKind::kMote))
-      robots.push_back(i);
+    if (sim::RunsAsAgent(spec.nodes[i]) || (ros2_face && robots::HasDrive(spec.nodes[i].model))) robots.push_back(i);
   return robots;
 }
 

@@ -26,6 +26,14 @@ class Transport {
   virtual NetworkView& View(NodeId node) = 0;
   // The node's radio goes silent: it neither sends nor receives from now on.
   virtual void SwitchOff(NodeId node) = 0;
+  // Puts the node's radio to sleep or wakes it (802.11 power save: asleep, it neither receives
+  // nor transmits; frames sent meanwhile wait in the MAC's queue, which drops those that wait too
+  // long). False where there is no radio to sleep.
+  virtual bool SetSleep(NodeId node, bool asleep) {
+    (void)node;
+    (void)asleep;
+    return false;
+  }
 
   // Before the run: open the traces written as the run goes (packet logs, pcap) in `folder`.
   virtual void Open(trace::ResultsFolder& folder) { (void)folder; }

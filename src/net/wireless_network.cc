@@ -394,6 +394,14 @@ void WirelessNetwork::SwitchOff(NodeId node) {
   ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy()->SetOffMode();
 }
 
+bool WirelessNetwork::SetSleep(NodeId node, bool asleep) {
+  ns3::Ptr<ns3::WifiPhy> phy = ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy();
+  if (phy->IsStateOff()) return false;
+  if (asleep && !phy->IsStateSleep()) phy->SetSleepMode();
+  if (!asleep && phy->IsStateSleep()) phy->ResumeFromSleep();
+  return true;
+}
+
 void WirelessNetwork::Open(trace::ResultsFolder& folder) {
   trace_.Open(folder);
   if (!folder.writes()) return;

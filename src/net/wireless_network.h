@@ -57,6 +57,7 @@ class WirelessNetwork : public Transport {
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId node) override { return *views_.at(node); }
   void SwitchOff(NodeId node) override;
+  bool SetSleep(NodeId node, bool asleep) override;
   void Open(trace::ResultsFolder& folder) override;
   void Close() override;
   std::optional<NetworkTraces> Traces() const override;

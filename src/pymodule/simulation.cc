@@ -272,7 +272,7 @@ py::dict Simulation::Finish() {
   return out;
 }
 
-py::object ScanOrNone(const std::optional<RangeScan>& scan) {
+py::object ScanOrNone(const RangeScan* scan) {
   if (!scan) return py::none();
   return py::dict("angles"_a = py::array_t<double>(scan->angles.size(), scan->angles.data()),
                   "ranges"_a = py::array_t<double>(scan->ranges.size(), scan->ranges.data()),
@@ -280,21 +280,34 @@ py::object ScanOrNone(const std::optional<RangeScan>& scan) {
 }
 
 // The readings of a node as the script sees them (a controller's last reads, or the driver's).
-template <typename Reads>
-py::dict ReadingsDict(const Reads& r) {
-  return py::dict("time"_a = r.time, "ground_truth"_a = r.ground_truth, "odometry"_a = r.odometry,
-                  "ir"_a = ScanOrNone(r.ir), "laser"_a = ScanOrNone(r.laser));
+py::dict ReadingsDict(const sim::SensorReadings& r, const std::optional<Pose2D>& ground_truth) {
+  return py::dict("time"_a = r.time, "ground_truth"_a = ground_truth, "odometry"_a = r.odometry(),
+                  "ir"_a = ScanOrNone(r.ir()), "laser"_a = ScanOrNone(r.laser()));
+}
+
+// A controller's last reads, as the driver's readings hold them.
+sim::SensorReadings AsReadings(const agents::SimulatedNode::LastReads& last) {
+  sim::SensorReadings r;
+  r.time = last.time;
+  for (const auto& [name, reading] : last.readings)
+    if (reading) r.by_instance.emplace_back(name, *reading);
+  return r;
 }
 
 py::dict Simulation::Readings(const std::string& node) {
   const NodeId id = Id(node);
-  if (Live().driver().Spec(id).controller) return ReadingsDict(Live().parts().node(id).last_reads());
+  if (Live().driver().Spec(id).controller) {
+    const sim::SensorReadings last = AsReadings(Live().parts().node(id).last_reads());
+    const Pose2D* truth = last.Get<Pose2D>("ground_truth");
+    return ReadingsDict(last, truth ? std::optional<Pose2D>(*truth) : std::nullopt);
+  }
   Driven(node);  // the script's node: its sensors now
   const sim::SensorReadings& r = Live().driver().TakeReadings(id, kScript);
   py::list bearings;
-  for (const auto& [other, b] : r.bearings.value_or(std::vector<std::pair<NodeId, BearingReading>>{}))
-    bearings.append(py::make_tuple(Live().NameOf(other), b.distance, b.bearing));
-  py::dict out = ReadingsDict(r);
+  if (const BearingsReading* in_range = r.Get<BearingsReading>("bearing"))
+    for (const NodeBearing& b : in_range->in_range)
+      bearings.append(py::make_tuple(Live().NameOf(b.node), b.reading.distance, b.reading.bearing));
+  py::dict out = ReadingsDict(r, r.ground_truth);
   out["bearings"] = bearings;
   return out;
 }

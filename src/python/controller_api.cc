@@ -32,11 +32,15 @@ struct PyMessage {
   std::optional<int> hops;
 };
 
+}  // namespace
+
 py::object ScanOrNone(const std::optional<RangeScan>& scan) {
   if (!scan) return py::none();
   return py::cast(Scan{py::array_t<double>(scan->angles.size(), scan->angles.data()),
                        py::array_t<double>(scan->ranges.size(), scan->ranges.data()), scan->max_range});
 }
+
+namespace {
 
 // ---- Params: a read-only mapping that notes every read, so that unknown keys are found and
 // `sanet list` can show what a Python controller reads, as for C++ controllers.
@@ -254,6 +258,10 @@ void BindNode(py::module_& m) {
       .def("ground_truth", &Node::GroundTruth)
       .def("bearing", &Node::Bearing, "target"_a)
       .def(
+          "sensor", [](Node& n, const std::string& name) { return SensorToPython(n.Sensor(name)); }, "name"_a,
+          "The sensor the scenario names `name` (a kind's name, or an instance's), None if the node has none")
+      .def("set_radio_sleep", &Node::SetRadioSleep, "asleep"_a)
+      .def(
           "drive",
           [](Node& n, double vx, double vy, double omega) {
             return n.Drive({vx, vy, omega});
@@ -281,6 +289,7 @@ void BindControllerApi(py::module_& module) {
   module.doc() = "sanet's controller interface: the node a Python controller drives (docs/python.md)";
   BindParams(module);
   BindReadings(module);
+  BindSensorReadings(module);
   BindNetworkView(module);
   BindNode(module);
 }

@@ -1,18 +1,28 @@
 // The controller interface (include/sanet/) as Python sees it, in the module `sanet`: the node a
 // controller drives (the C++ Node's calls in snake_case: now, id, name, lookup, name_of,
-// node_count, ir, laser, odometry, ground_truth, bearing, drive, set_wheel_speeds, holonomic,
-// send, broadcast, flood, network, random, log, transition, metric), its readings (Pose,
-// RangeScan with numpy arrays, Bearing), its network view (NetworkView, Route), messages
-// (Message), the parameters a controller is built with (Params: a read-only mapping that notes
-// what the controller reads) and ParamError. docs/python.md documents each.
+// node_count, sensor, ir, laser, odometry, ground_truth, bearing, drive, set_wheel_speeds,
+// holonomic, send, broadcast, flood, set_radio_sleep, network, random, log, transition, metric),
+// its readings (Pose, RangeScan with numpy arrays, Bearing, and python/sensor_readings.cc's), its network view
+// (NetworkView, Route), messages (Message), the parameters a controller is built with (Params: a read-only mapping that
+// notes what the controller reads) and ParamError. docs/python.md documents each.
 #pragma once
 
 #include <pybind11/pybind11.h>
 
+#include <optional>
+
 #include "sanet/message.h"
 #include "sanet/params.h"
+#include "sanet/readings.h"
 
 namespace sanet::python {
+
+// A range scan as the Python classes give it (numpy arrays), None for none.
+pybind11::object ScanOrNone(const std::optional<RangeScan>& scan);
+// Node.sensor's answer: the reading as its Python class (python/sensor_readings.cc), None for none.
+pybind11::object SensorToPython(const std::optional<SensorReading>& reading);
+// Adds the reading classes of sanet/readings.h beyond RangeScan, Pose and Bearing.
+void BindSensorReadings(pybind11::module_& module);
 
 // Adds the classes above to `module` (the embedded `sanet` module; the extension module too).
 void BindControllerApi(pybind11::module_& module);

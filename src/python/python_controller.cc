@@ -16,7 +16,7 @@ namespace py = pybind11;
 namespace sanet::python {
 namespace {
 
-// A Python object's method, or None when it has none (start and on_message are optional).
+// A Python object's method, or None when it has none (start, on_message and finish are optional).
 py::object MethodOrNone(const py::object& instance, const char* name) {
   if (!py::hasattr(instance, name)) return py::none();
   return instance.attr(name);
@@ -29,7 +29,8 @@ class PythonController : public Controller {
         instance_(std::move(instance)),
         start_(MethodOrNone(instance_, "start")),
         control_step_(instance_.attr("control_step")),
-        on_message_(MethodOrNone(instance_, "on_message")) {}
+        on_message_(MethodOrNone(instance_, "on_message")),
+        finish_(MethodOrNone(instance_, "finish")) {}
   ~PythonController() override {
     // Python objects go while the interpreter holds them; nothing may throw from here.
     node_ = py::object();
@@ -43,6 +44,9 @@ class PythonController : public Controller {
   }
   void OnMessage(Node& node, const Message& message) override {
     if (!on_message_.is_none()) Call("on_message", [&] { on_message_(Wrapped(node), ToPython(message)); });
+  }
+  void Finish(Node& node) override {
+    if (!finish_.is_none()) Call("finish", [&] { finish_(Wrapped(node)); });
   }
 
  private:
@@ -61,7 +65,7 @@ class PythonController : public Controller {
   }
 
   std::string name_;
-  py::object instance_, start_, control_step_, on_message_, node_;
+  py::object instance_, start_, control_step_, on_message_, finish_, node_;
 };
 
 struct ModuleClass {

@@ -117,6 +117,10 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   }
   StepGrid grid(controller.rate);
   RunSteps(node, host, clock, grid, deliver, received);
+  if (failure.empty() && node.ended()) {  // the server said END: the controller finishes, then says so
+    host.Finish();
+    node.Report(ProtocolMessage{"FINISHED"});
+  }
   if (failure.empty()) {  // the server ended the run
     if (!settings.quiet) SayHowItEnded(node, grid);
     return 0;

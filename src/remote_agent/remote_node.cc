@@ -21,17 +21,11 @@
 #include "robots/node_model.h"
 #include "sanet/codec.h"
 #include "wire/message_lines.h"
+#include "wire/sensor_lines.h"
 #include "wire/sockets.h"
 #include "wire/time_service.h"
 
 namespace sanet::hil {
-namespace {
-
-// USARSim frame (y right, yaw clockwise) back to sanet's.
-Pose2D FromUsarsim(double x, double y, double yaw) { return {x, -y, -yaw}; }
-
-}  // namespace
-
 RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings, std::unique_ptr<ServerLink> link)
     : spec_(spec),
       id_(robot),
@@ -92,7 +86,7 @@ bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
   const bool open = link_->Read(lines);
   for (const ProtocolMessage& m : lines) Take(m, deliver);
   peer_socket_->Read(deliver);
-  return open;
+  return open && !ended_;
 }
 
 // Lines from the server: sensors, status, messages from its nodes, errors.
@@ -116,6 +110,7 @@ void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const M
     if (const std::string* hex = m.Get("Datagrams"))
       if (const auto key = DatagramKey::FromHex(*hex)) peer_socket_->SetKey(*key);
   if (m.type == "PEER") TakePeer(m);
+  if (m.type == "END") ended_ = true;
 }
 
 // PEER {Name n} {Address a} {Port p}: where another agent listens (it said so to the server).
@@ -132,59 +127,39 @@ void RemoteNode::TakePeer(const ProtocolMessage& m) {
   }
 }
 
+// A SEN line, read by the part of the kind it belongs to (wire/sensor_lines.h) into the reading of
+// the instance it names; lines of sensors this robot does not have are ignored.
 void RemoteNode::TakeSensor(const ProtocolMessage& m) {
-  const std::string* type = m.Get("Type");
-  if (!type) return;
-  if (*type == "GroundTruth") {
-    const auto at = m.Numbers("Location"), o = m.Numbers("Orientation");
-    if (at && o && at->size() >= 2 && o->size() >= 3) truth_ = FromUsarsim((*at)[0], (*at)[1], (*o)[2]);
-  } else if (*type == "Odometry") {
-    const auto p = m.Numbers("Pose");
-    if (p && p->size() >= 3) odometry_ = FromUsarsim((*p)[0], (*p)[1], (*p)[2]);
-  } else if (*type == "RangeScanner") {
-    const auto ranges = m.Numbers("Range");
-    const auto fov = m.Number("FOV");
-    const auto& laser = spec_.nodes[id_].model.sensors.laser;
-    if (!ranges || !fov || ranges->empty()) return;
-    RangeScan scan;
-    scan.ranges = *ranges;
-    scan.max_range = laser ? laser->max_range : 0;
-    for (std::size_t i = 0; i < ranges->size(); ++i)  // right to left
-      scan.angles.push_back(ranges->size() == 1 ? 0 : -*fov / 2 + *fov * i / (ranges->size() - 1));
-    laser_ = scan;
-  } else if (*type == "IR") {
-    const auto& ir = spec_.nodes[id_].model.sensors.ir;
-    if (!ir) return;
-    RangeScan scan;
-    scan.angles = ir->angles;
-    scan.max_range = ir->max_range;
-    for (const auto& [key, value] : m.fields)  // {Name IR0 Range 0.8}
-      if (key == "Name") {
-        const auto at = value.rfind(' ');
-        scan.ranges.push_back(at == std::string::npos ? 0 : std::atof(value.c_str() + at + 1));
-      }
-    if (scan.ranges.size() == scan.angles.size()) ir_ = scan;
-  } else if (*type == "Bearing") {
-    TakeBearings(m);
+  const LineContext context{0, 0, [this](NodeId node) { return NameOf(node); },
+                            [this](const std::string& name) { return Lookup(name); }};
+  const robots::SensorConfigs& sensors = spec_.nodes[id_].model.sensors;
+  for (const auto& [instance, config] : sensors) {
+    const SensorLines* kind = LinesOf(config.kind);
+    if (!kind || kind->InstanceOf(m) != instance) continue;
+    if (std::optional<SensorReading> reading = kind->Read(m, config.settings, context))
+      readings_[instance] = std::move(*reading);
+    return;
   }
 }
 
-// {Name R Distance d Bearing b} per node in range; b in USARSim's frame (clockwise).
-void RemoteNode::TakeBearings(const ProtocolMessage& m) {
-  bearings_.clear();
-  for (const auto& [key, value] : m.fields) {
-    if (key != "Name") continue;
-    char name[128];
-    double distance = 0, angle = 0;
-    if (std::sscanf(value.c_str(), "%127s Distance %lf Bearing %lf", name, &distance, &angle) != 3) continue;
-    if (const auto node = Lookup(name)) bearings_[*node] = BearingReading{distance, -angle};
-  }
+std::optional<SensorReading> RemoteNode::Sensor(const std::string& name) {
+  const auto it = readings_.find(name);
+  if (it == readings_.end()) return std::nullopt;
+  return it->second;
+}
+
+// The radio is the simulator's: the server puts it to sleep (and says ERR if it cannot).
+bool RemoteNode::SetRadioSleep(bool asleep) {
+  Command(ProtocolMessage{"RADIO"}.Add("Sleep", asleep ? "true" : "false"));
+  return true;
 }
 
 std::optional<BearingReading> RemoteNode::Bearing(NodeId target) {
-  const auto it = bearings_.find(target);
-  if (it == bearings_.end()) return std::nullopt;
-  return it->second;
+  const auto it = readings_.find("bearing");
+  if (it == readings_.end()) return std::nullopt;
+  for (const NodeBearing& b : std::get<BearingsReading>(it->second).in_range)
+    if (b.node == target) return b.reading;
+  return std::nullopt;
 }
 
 // Within the model's limits, as the simulated node: the server clamps nothing for wheel speeds.
@@ -192,11 +167,11 @@ bool RemoteNode::ApplyDrive(const Twist2D& v) {
   const auto& model = spec_.nodes[id_].model;
   ProtocolMessage drive("DRIVE");
   const Twist2D c = robots::LimitDrive(model, v);
-  if (model.kind == robots::ModelKind::kDiffDrive) {
-    const auto w =
-        robots::DiffDriveKinematics(model.diffdrive.axle_length, model.diffdrive.wheel_radius).WheelSpeeds(c);
+  const std::string steering = model.model().UsarsimSteering();
+  if (steering == "SkidSteered") {
+    const auto w = model.model().MakeKinematics(model)->WheelSpeeds(c);
     drive.Add("Left", w[0]).Add("Right", w[1]);
-  } else if (model.kind == robots::ModelKind::kOmni3) {
+  } else if (steering == "OmniDrive") {
     drive.Add("LinearVelocity", c.vx).Add("LateralVelocity", -c.vy).Add("RotationalVelocity", -c.omega);
   } else {
     return false;
@@ -206,7 +181,7 @@ bool RemoteNode::ApplyDrive(const Twist2D& v) {
 }
 
 bool RemoteNode::ApplyWheelSpeeds(const std::vector<double>& w) {
-  if (spec_.nodes[id_].model.kind != robots::ModelKind::kDiffDrive || w.size() != 2) return false;
+  if (std::string(spec_.nodes[id_].model.model().UsarsimSteering()) != "SkidSteered" || w.size() != 2) return false;
   ProtocolMessage drive("DRIVE");
   drive.Add("Left", w[0]).Add("Right", w[1]);
   Command(drive);

@@ -44,7 +44,7 @@ class RemoteNode : public Node {
   // Reads what arrived on TCP and UDP; messages go to `deliver` as they arrived (the controller's
   // host applies the scenario's impairments). False once the server is gone.
   bool Poll(const std::function<void(const Message&)>& deliver);
-  bool HasPose() const { return truth_.has_value(); }
+  bool HasPose() const { return readings_.count("ground_truth") > 0; }
   // Inside a control step, Now() is the step's time on the shared clock's grid, not the moment
   // the process happened to wake (as in a simulated run); nullopt outside steps.
   void SetStepTime(std::optional<double> t) { step_time_ = t; }
@@ -61,6 +61,8 @@ class RemoteNode : public Node {
   bool IsAgent(NodeId node) const;
   // Reports to the server (a sanet extension line), e.g. the agent's STATS.
   void Report(const ProtocolMessage& m) { Command(m); }
+  // The server said END: the run is over, the controller may finish (then FINISHED).
+  bool ended() const { return ended_; }
 
   double Now() const override;
   NodeId Id() const override { return id_; }
@@ -68,13 +70,12 @@ class RemoteNode : public Node {
   std::optional<NodeId> Lookup(const std::string& name) const override;
   std::string NameOf(NodeId id) const override { return id < spec_.nodes.size() ? spec_.nodes[id].name : ""; }
   std::size_t NodeCount() const override { return spec_.nodes.size(); }
-  std::optional<RangeScan> Ir() override { return ir_; }
-  std::optional<RangeScan> Laser() override { return laser_; }
-  std::optional<Pose2D> Odometry() override { return odometry_; }
-  std::optional<Pose2D> GroundTruth() override { return truth_; }
+  // From the server's last sensor lines.
+  std::optional<SensorReading> Sensor(const std::string& name) override;
   // From the server's last bearing line (nodes within the sensor's range then).
   std::optional<BearingReading> Bearing(NodeId target) override;
-  bool Holonomic() const override { return spec_.nodes[id_].model.kind == robots::ModelKind::kOmni3; }
+  bool SetRadioSleep(bool asleep) override;
+  bool Holonomic() const override { return robots::Holonomic(spec_.nodes[id_].model); }
   void Send(NodeId to, const Bytes& payload) override;
   void Broadcast(const Bytes& payload) override;
   void Flood(const Bytes& payload) override;
@@ -92,7 +93,6 @@ class RemoteNode : public Node {
   void Command(const ProtocolMessage& m);
   void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
   void TakeSensor(const ProtocolMessage& m);
-  void TakeBearings(const ProtocolMessage& m);
   void SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload);
   void TakePeer(const ProtocolMessage& m);
 
@@ -105,11 +105,10 @@ class RemoteNode : public Node {
   std::unique_ptr<PeerSocket> peer_socket_;
   std::unique_ptr<LoopNetworkView> view_;
   RandomStream random_;
-  std::optional<Pose2D> truth_, odometry_;
-  std::map<NodeId, BearingReading> bearings_;
-  std::optional<RangeScan> laser_, ir_;
+  std::map<std::string, SensorReading> readings_;  // by instance: the server's last line of each
   std::optional<double> step_time_;
   std::uint64_t messages_sent_ = 0;
+  bool ended_ = false;
 };
 
 }  // namespace sanet::hil

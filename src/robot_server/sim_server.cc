@@ -7,31 +7,26 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 
 #include "core/json_text.h"
 #include "core/statistics.h"
 #include "robot_server/spawn_policy.h"
 #include "wire/agent_datagram.h"
 #include "wire/message_lines.h"
+#include "wire/sensor_lines.h"
 #include "wire/sockets.h"
 
 namespace sanet::hil {
-namespace {
-
-// sanet's frame is z up (x forward, y left, angles counter-clockwise); USARSim's is z down
-// (x forward, y right, yaw clockwise): y and yaw change sign at the boundary.
-std::vector<double> ToUsarsim(const Pose2D& p) { return {p.x, -p.y, -p.theta}; }
-
-}  // namespace
-
 std::size_t DefaultMaxClients(const sim::RunSpec& spec) {
   const auto robots = std::count_if(spec.nodes.begin(), spec.nodes.end(),
-                                    [](const sim::NodeSpec& n) { return n.model.kind != robots::ModelKind::kMote; });
+                                    [](const sim::NodeSpec& n) { return robots::HasDrive(n.model); });
   return std::max<std::size_t>(64, 2 * static_cast<std::size_t>(robots));
 }
 
@@ -86,6 +81,45 @@ SimServer::~SimServer() { driver_.SetRemoteInbox(nullptr); }
 void SimServer::Start() {
   driver_.Every(settings_.poll_period, [this] { Poll(); });
   driver_.AddObserver(*this);
+  driver_.AtEnd([this] { FinishAgents(); });
+}
+
+// The run is over (sanet extension): every client that speaks sanet's lines and drives a robot
+// is told END, and its controller's Finish may log, measure and record transitions until it says
+// FINISHED, it goes, or finish_wait s pass; the results are written after.
+void SimServer::FinishAgents() {
+  run_over_ = true;
+  std::vector<ConnectionId> told;
+  for (auto& [id, c] : clients_)
+    if (c.open && c.robot && c.sanet) {
+      Send(c, ProtocolMessage{"END"}.Add("Time", FormatNumber(driver_.Now())));
+      told.push_back(id);
+    }
+  const auto finishing = [&] {
+    return std::any_of(told.begin(), told.end(), [&](ConnectionId id) {
+      const auto it = clients_.find(id);
+      return it != clients_.end() && it->second.open && !it->second.finished;
+    });
+  };
+  const double give_up = MonotonicSeconds() + settings_.finish_wait;
+  while (finishing() && MonotonicSeconds() < give_up) {
+    lines_->Write();
+    lines_->Read();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  for (ConnectionId id : told)
+    if (const auto it = clients_.find(id); it != clients_.end() && it->second.open && !it->second.finished)
+      driver_.Log(*it->second.robot, "its client did not say FINISHED within " + FormatNumber(settings_.finish_wait) +
+                                         " s of the run's end: what its controller's Finish logged later is lost");
+}
+
+// RADIO {Sleep true|false} (sanet extension): the robot's radio sleeps or wakes, as
+// Node::SetRadioSleep; a refusal is an ERR line and the node's log says why.
+void SimServer::SetRadioSleep(Client& c, const ProtocolMessage& m) {
+  const std::string* sleep = m.Get("Sleep");
+  if (!sleep || (*sleep != "true" && *sleep != "false")) return Error(c, "RADIO needs {Sleep true} or {Sleep false}");
+  if (!NodeOf(c).SetRadioSleep(*sleep == "true"))
+    Error(c, "the radio of " + driver_.NameOf(*c.robot) + " cannot sleep");
 }
 
 // The lag of every physics step behind the wall clock.
@@ -143,8 +177,8 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
     int count = 0;
     for (NodeId id = 0; id < driver_.NodeCount(); ++id) {
       const sim::NodeSpec& node = driver_.Spec(id);
-      if (node.model.kind == robots::ModelKind::kMote || driver_.IsSpawned(id)) continue;
-      const auto p = ToUsarsim(node.pose);
+      if (!robots::HasDrive(node.model) || driver_.IsSpawned(id)) continue;
+      const auto p = UsarsimPose(node.pose);
       poses += (count++ ? " " : "") + driver_.NameOf(id) + " " + FormatNumber(p[0]) + "," + FormatNumber(p[1]) +
                ",0.0000 0.0000,0.0000," + FormatNumber(p[2]);
     }
@@ -161,6 +195,8 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "PEER") return TakePeer(c, m);
   if (m.type == "CLOCK") return TakeClock(c, m);
   if (m.type == "GETNET") return AskNetwork(c);
+  if (m.type == "RADIO") return SetRadioSleep(c, m);
+  if (m.type == "FINISHED") return void(c.finished = true);
   if (m.type == "INVALIDATEROUTE" || m.type == "REQUESTROUTE") return ChangeRoute(c, m);
   if (m.type == "RECV") {
     const std::string* from = m.Get("From");
@@ -172,18 +208,17 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
     ProtocolMessage reply{"CONF"};
     reply.Add("Type", "GroundVehicle")
         .Add("Name", driver_.NameOf(id))
-        .Add("SteeringType", spec.kind == robots::ModelKind::kOmni3 ? "OmniDrive" : "SkidSteered")
+        .Add("SteeringType", spec.model().UsarsimSteering())
         .Add("MaxSpeed", spec.max_speed)
         .Add("MaxTurnRate", spec.max_turn_rate);
     return Send(c, reply);
   }
   if (m.type == "GETGEO") {
     ProtocolMessage reply{"GEO"};
-    const bool omni = spec.kind == robots::ModelKind::kOmni3;
     reply.Add("Type", "GroundVehicle")
         .Add("Name", driver_.NameOf(id))
-        .Add("WheelRadius", omni ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius)
-        .Add("WheelSeparation", omni ? 2 * spec.omni3.wheel_distance : spec.diffdrive.axle_length);
+        .Add("WheelRadius", spec.model().WheelRadius(spec))
+        .Add("WheelSeparation", spec.model().WheelSeparation(spec));
     return Send(c, reply);
   }
   Error(c, "unknown command " + m.type);
@@ -211,7 +246,7 @@ void SimServer::Init(Client& c, const ProtocolMessage& m) {
 
 void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
   const std::string name = driver_.NameOf(id);
-  if (driver_.Spec(id).model.kind == robots::ModelKind::kMote)
+  if (!robots::HasDrive(driver_.Spec(id).model))
     return Error(c, "INIT refused: the name '" + name + "' is taken by a mote of this scenario");
   if (const auto owner = driver_.OwnerOf(id); owner && *owner != Owner(c))
     return Error(c, "INIT refused: robot '" + name + "' is already driven by another client");
@@ -265,12 +300,10 @@ void SimServer::Drive(Client& c, const ProtocolMessage& m) {
     double l = *left, r = *right;
     if (const std::string* normalized = m.Get("Normalized");
         normalized && (*normalized == "True" || *normalized == "true")) {
-      const double radius =
-          spec.kind == robots::ModelKind::kOmni3 ? spec.omni3.wheel_radius : spec.diffdrive.wheel_radius;
-      const double top = spec.max_speed / radius;  // rad/s at 100 %
+      const double top = spec.max_speed / spec.model().WheelRadius(spec);  // rad/s at 100 %
       l = std::clamp(l, -100.0, 100.0) / 100 * top, r = std::clamp(r, -100.0, 100.0) / 100 * top;
     }
-    if (spec.kind != robots::ModelKind::kDiffDrive)
+    if (std::string(spec.model().UsarsimSteering()) != "SkidSteered")
       return Error(c, "{Left} {Right} drive a diffdrive; use {LinearVelocity} ... for omni3");
     node.SetWheelSpeeds({l, r});
     return;
@@ -292,7 +325,8 @@ void SimServer::Drive(Client& c, const ProtocolMessage& m) {
 void SimServer::SendSensors(Client& c, double now) {
   if (now + 1e-9 >= c.next_sensors) {
     c.next_sensors = now + settings_.sensor_period;
-    for (const ProtocolMessage& line : SensorLines(driver_.TakeReadings(*c.robot, Owner(c)), c.sanet)) Send(c, line);
+    for (const ProtocolMessage& line : SenLines(*c.robot, driver_.TakeReadings(*c.robot, Owner(c)), c.sanet))
+      Send(c, line);
   }
   if (now + 1e-9 >= c.next_status) {
     c.next_status = now + settings_.status_period;
@@ -309,53 +343,17 @@ void SimServer::SendSensors(Client& c, double now) {
   }
 }
 
-// sanet extension: SEN {Time t} {Type Bearing} {Name R Distance d Bearing b} ..., one Name per
-// node within the sensor's range, the angle in USARSim's frame (clockwise: left is negative).
-ProtocolMessage SimServer::BearingLine(const sim::SensorReadings& r) const {
-  ProtocolMessage line{"SEN"};
-  line.Add("Time", FormatNumber(r.time)).Add("Type", "Bearing");
-  for (const auto& [node, b] : *r.bearings)
-    line.Add("Name",
-             driver_.NameOf(node) + " Distance " + FormatNumber(b.distance) + " Bearing " + FormatNumber(-b.bearing));
-  return line;
-}
-
-std::vector<ProtocolMessage> SimServer::SensorLines(const sim::SensorReadings& r, bool sanet) const {
+std::vector<ProtocolMessage> SimServer::SenLines(NodeId robot, const sim::SensorReadings& r, bool sanet) const {
+  const LineContext context{r.time, r.height, [this](NodeId node) { return driver_.NameOf(node); },
+                            [this](const std::string& name) { return driver_.Lookup(name); }};
+  const robots::SensorConfigs& sensors = driver_.Spec(robot).model.sensors;
   std::vector<ProtocolMessage> lines;
-  const std::string time = FormatNumber(r.time);
-  const auto p = ToUsarsim(r.ground_truth);
-  lines.push_back(ProtocolMessage{"SEN"}
-                      .Add("Time", time)
-                      .Add("Type", "GroundTruth")
-                      .Add("Name", "GroundTruth")
-                      .Add("Location", std::vector<double>{p[0], p[1], r.height})
-                      .Add("Orientation", std::vector<double>{0, 0, p[2]}));
-  if (r.odometry)
-    lines.push_back(ProtocolMessage{"SEN"}
-                        .Add("Time", time)
-                        .Add("Type", "Odometry")
-                        .Add("Name", "Odometry")
-                        .Add("Pose", ToUsarsim(*r.odometry)));
-  if (r.laser) {
-    const RangeScan& scan = *r.laser;
-    const double resolution = scan.angles.size() > 1 ? scan.angles[1] - scan.angles[0] : 0;
-    const double fov = scan.angles.empty() ? 0 : scan.angles.back() - scan.angles.front();
-    lines.push_back(ProtocolMessage{"SEN"}
-                        .Add("Time", time)
-                        .Add("Type", "RangeScanner")
-                        .Add("Name", "Scanner1")
-                        .Add("Resolution", resolution)
-                        .Add("FOV", fov)
-                        .Add("Range", scan.ranges));
+  for (const auto& [instance, reading] : r.by_instance) {
+    const auto config = sensors.find(instance);
+    const SensorLines* kind = config == sensors.end() ? nullptr : LinesOf(config->second.kind);
+    if (!kind || (kind->Extension() && !sanet)) continue;
+    for (ProtocolMessage& line : kind->Write(instance, reading, context)) lines.push_back(std::move(line));
   }
-  if (r.ir) {
-    ProtocolMessage sonar{"SEN"};
-    sonar.Add("Time", time).Add("Type", "IR");
-    for (std::size_t i = 0; i < r.ir->ranges.size(); ++i)
-      sonar.Add("Name", "IR" + std::to_string(i) + " Range " + FormatNumber(r.ir->ranges[i]));
-    lines.push_back(sonar);
-  }
-  if (sanet && r.bearings) lines.push_back(BearingLine(r));
   return lines;
 }
 
@@ -395,7 +393,8 @@ void SimServer::Gone(ConnectionId id, const std::string& why) {
   Client& c = clients_.at(id);
   c.open = false;
   if (!c.robot) return;
-  NodeOf(c).Drive({});  // a robot without its client stops
+  if (run_over_) return driver_.Release(*c.robot, Owner(c));  // it finished after END: driven to the end
+  NodeOf(c).Drive({});                                        // a robot without its client stops
   driver_.Release(*c.robot, Owner(c));
   attendance_.Left(*c.robot, driver_.Now(), why);
   driver_.Log(*c.robot, "client " + c.peer + " gone (" + why + "): robot stopped");

@@ -43,6 +43,7 @@ struct ServerSettings {
   std::size_t max_clients = 64;        // connections at once; more are told ERR and closed
   std::size_t lines_per_turn = 32;     // lines taken from one client before the next has its turn
   std::size_t bytes_per_turn = 16384;  // bytes read from one client per turn
+  double finish_wait = 5.0;            // s the controllers of agents may take to finish (END .. FINISHED)
   double poll_budget = 0.0015;         // s of line handling per poll; the rest waits for the next poll
   // What agents fetch and compare (sanet extensions): the effective scenario and its fingerprint.
   std::string scenario_yaml, scenario_fingerprint;
@@ -91,9 +92,12 @@ class SimServer : public sim::RunObserver {
     bool agent = false;      // it has sent STATS: a sanet agent, which speaks five times a second
     bool sanet = false;      // it has said SANET: it understands sanet's extension lines
     bool net_asked = false;  // it has sent GETNET, not answered yet
+    bool finished = false;   // it has said FINISHED after the run's END
     double next_net = 0;     // the rate limit's: no NET answer before this time
   };
   void Poll();
+  void FinishAgents();
+  void SetRadioSleep(Client& c, const ProtocolMessage& m);
   void Greet(ConnectionId id);
   void Gone(ConnectionId id, const std::string& why);
   void Handle(Client& c, const ProtocolMessage& m);
@@ -121,9 +125,9 @@ class SimServer : public sim::RunObserver {
   Node& NodeOf(const Client& c) { return driver_.NodeOf(*c.robot, Owner(c)); }
   std::string Owner(const Client& c) const { return "client " + c.peer; }
   void SendSensors(Client& c, double now);
-  // `sanet`: the client understands sanet's extension lines (the bearing sensor's).
-  std::vector<ProtocolMessage> SensorLines(const sim::SensorReadings& readings, bool sanet) const;
-  ProtocolMessage BearingLine(const sim::SensorReadings& readings) const;
+  // `sanet`: the client said SANET: it understands sanet's extension lines (SensorLines::Extension).
+  // The SEN lines of a robot's readings, each instance's by its kind (wire/sensor_lines.h).
+  std::vector<ProtocolMessage> SenLines(NodeId robot, const sim::SensorReadings& readings, bool sanet) const;
   void Send(Client& c, const ProtocolMessage& m);
   void Error(Client& c, const std::string& why);
   void Drop(Client& c, const std::string& why);
@@ -131,6 +135,7 @@ class SimServer : public sim::RunObserver {
   sim::Driver& driver_;
   ServerSettings settings_;
   std::map<ConnectionId, Client> clients_;
+  bool run_over_ = false;  // END was sent: clients that go now finished, they did not drop out
   std::unique_ptr<LineServer> lines_;
   Attendance attendance_;
   const DatagramKey datagram_key_ = DatagramKey::Random();  // new for every run

@@ -203,9 +203,10 @@ int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& s
   agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
   hil::StepGrid grid(controller.rate);
-  if (const std::string missing = WaitForTheRobot(robot, settings, now, spec.duration); missing.empty())
+  if (const std::string missing = WaitForTheRobot(robot, settings, now, spec.duration); missing.empty()) {
     RunSteps({robot, node, peers, host, clock, grid}, spec, settings, ending);
-  else
+    host.Finish();  // the controller's end of run, into the agent's own record
+  } else
     ending.by = missing;
   robot.Drive({}, now());  // whatever ended the run, the robot stops
   ending.at = now();

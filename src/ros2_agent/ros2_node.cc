@@ -50,19 +50,28 @@ void Ros2Node::Broadcast(const Bytes& payload) { ToEveryAgent(Delivery::kBroadca
 void Ros2Node::Flood(const Bytes& payload) { ToEveryAgent(Delivery::kFlood, payload); }
 
 // As the simulated node: within the model's limits, then cmd_vel (x forward, y left, z up).
+std::optional<SensorReading> Ros2Node::Sensor(const std::string& name) {
+  const auto as_reading = [](const auto& value) { return value ? std::optional<SensorReading>(*value) : std::nullopt; };
+  if (name == "ground_truth") return as_reading(robot_.GroundTruth());
+  if (name == "odometry") return as_reading(robot_.Odometry());
+  if (name == "laser") return as_reading(robot_.Laser());
+  if (name == "ir") return as_reading(robot_.Ir());
+  return std::nullopt;
+}
+
 bool Ros2Node::ApplyDrive(const Twist2D& v) {
   const robots::ModelSpec& model = spec_.nodes[id_].model;
-  if (model.kind == robots::ModelKind::kMote) return false;
+  if (!robots::HasDrive(model)) return false;
   robot_.Drive(robots::LimitDrive(model, v), ClockNow());
   return true;
 }
 
-// A differential drive's wheel speeds as the body's motion (ROS 2 robots take cmd_vel).
+// Wheel speeds as the body's motion, through the model's kinematics (ROS 2 robots take cmd_vel).
 bool Ros2Node::ApplyWheelSpeeds(const std::vector<double>& w) {
   const robots::ModelSpec& model = spec_.nodes[id_].model;
-  if (model.kind != robots::ModelKind::kDiffDrive || w.size() != 2) return false;
-  robot_.Drive(robots::DiffDriveKinematics(model.diffdrive.axle_length, model.diffdrive.wheel_radius).BodyTwist(w),
-               ClockNow());
+  const std::unique_ptr<robots::Kinematics> kinematics = model.model().MakeKinematics(model);
+  if (!kinematics || w.size() != kinematics->WheelSpeeds({}).size()) return false;
+  robot_.Drive(kinematics->BodyTwist(w), ClockNow());
   return true;
 }
 

@@ -41,12 +41,15 @@ class Ros2Node : public Node {
   std::optional<NodeId> Lookup(const std::string& name) const override;
   std::string NameOf(NodeId id) const override { return id < spec_.nodes.size() ? spec_.nodes[id].name : ""; }
   std::size_t NodeCount() const override { return spec_.nodes.size(); }
-  std::optional<RangeScan> Ir() override { return robot_.Ir(); }
-  std::optional<RangeScan> Laser() override { return robot_.Laser(); }
-  std::optional<Pose2D> Odometry() override { return robot_.Odometry(); }
-  std::optional<Pose2D> GroundTruth() override { return robot_.GroundTruth(); }
+  // The robot's topics: its IR sensors, laser, odometry and ground truth.
+  std::optional<SensorReading> Sensor(const std::string& name) override;
   std::optional<BearingReading> Bearing(NodeId) override { return std::nullopt; }
-  bool Holonomic() const override { return spec_.nodes[id_].model.kind == robots::ModelKind::kOmni3; }
+  // The robot's own radio is not the controller's to switch.
+  bool SetRadioSleep(bool) override {
+    Log("radio sleep refused: a ROS 2 robot's radio is its own, not sanet's");
+    return false;
+  }
+  bool Holonomic() const override { return robots::Holonomic(spec_.nodes[id_].model); }
   void Send(NodeId to, const Bytes& payload) override;
   void Broadcast(const Bytes& payload) override;
   void Flood(const Bytes& payload) override;

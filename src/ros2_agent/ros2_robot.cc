@@ -4,6 +4,7 @@
 
 #include "ros2_agent/readings.h"
 #include "ros2msg/codec.h"
+#include "sensors/range_fan.h"
 
 namespace sanet::ros2agent {
 namespace {
@@ -19,7 +20,7 @@ Ros2Robot::Ros2Robot(Ros2RobotSettings settings)
     : settings_(std::move(settings)), dds_(settings_.domain, settings_.interface) {
   const RobotTopics& t = settings_.topics;
   odom_ = Subscribe(t.odom, DdsName<msg::nav_msgs::Odometry>());
-  if (settings_.model.sensors.laser) scan_ = Subscribe(t.scan, DdsName<msg::sensor_msgs::LaserScan>());
+  if (sensors::DefaultFan(settings_.model, "laser")) scan_ = Subscribe(t.scan, DdsName<msg::sensor_msgs::LaserScan>());
   for (const Topic& ir : t.ir) ir_.push_back(Subscribe(ir, DdsName<msg::sensor_msgs::Range>()));
   ranges_.resize(ir_.size());
   if (t.ground_truth_type == GroundTruthType::kOdometry)
@@ -95,7 +96,7 @@ void Ros2Robot::TakeGroundTruth() {
 }
 
 std::optional<RangeScan> Ros2Robot::Ir() const {
-  const auto& ir = settings_.model.sensors.ir;
+  const auto& ir = sensors::DefaultFan(settings_.model, "ir");
   if (!ir || ranges_.empty()) return std::nullopt;
   RangeScan scan;
   scan.angles = ir->angles;

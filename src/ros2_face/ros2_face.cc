@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "ros2msg/codec.h"
+#include "sim/sensor_messages.h"
 
 namespace sanet::ros2face {
 namespace {
@@ -25,9 +26,9 @@ struct Ros2Face::Robot {
   std::string name;
   RobotFrames frames;
   Pose2D start;
-  DdsDomain::Entity odom = 0, truth = 0, scan = 0, cmd_vel = 0;
-  std::vector<DdsDomain::Entity> ir;
-  double period = 0.1;  // s between its sensor messages
+  DdsDomain::Entity cmd_vel = 0;
+  std::map<std::string, std::vector<DdsDomain::Entity>> sensors;  // by instance: a writer per topic
+  double period = 0.1;                                            // s between its sensor messages
   double next_sensors = 0;
   std::uint64_t last_writer = 0;
   double last_writer_at = -1e9;  // simulated time of its last sample
@@ -51,7 +52,7 @@ Ros2Face::~Ros2Face() = default;
 void Ros2Face::AddRobots() {
   for (NodeId id = static_cast<NodeId>(nodes_seen_); id < driver_.NodeCount(); ++id) {
     const sim::NodeSpec& node = driver_.Spec(id);
-    if (node.model.kind == robots::ModelKind::kMote) continue;
+    if (!robots::HasDrive(node.model)) continue;
     auto r = std::make_unique<Robot>();
     r->id = id;
     r->name = node.name;
@@ -70,16 +71,14 @@ void Ros2Face::AddRobots() {
       std::fprintf(stderr, "sanet: ROS 2: %s (left out)\n", why.c_str());
       continue;
     }
-    r->frames = FramesOf(name, node.model);
+    r->frames = FramesOf(name);
     r->start = node.pose;
     const std::string ns = "/" + name;
-    r->odom = dds_.Writer(ns + "/odom", DdsType<msg::nav_msgs::Odometry>(), Qos::kDefault);
-    r->truth = dds_.Writer(ns + "/ground_truth", DdsType<msg::nav_msgs::Odometry>(), Qos::kSensorData);
-    if (node.model.sensors.laser)
-      r->scan = dds_.Writer(ns + "/scan", DdsType<msg::sensor_msgs::LaserScan>(), Qos::kSensorData);
-    for (std::size_t i = 0; i < r->frames.ir.size(); ++i)
-      r->ir.push_back(
-          dds_.Writer(ns + "/ir_" + std::to_string(i), DdsType<msg::sensor_msgs::Range>(), Qos::kSensorData));
+    for (const auto& [instance, config] : sensors::PresentationOrder(node.model))
+      if (const sim::SensorMessages* kind = sim::MessagesOf(config->kind))
+        for (const sim::SensorTopic& t : kind->Topics(instance, config->settings))
+          r->sensors[instance].push_back(
+              dds_.Writer(ns + "/" + t.name, t.dds_type, t.reliable ? Qos::kDefault : Qos::kSensorData));
     r->cmd_vel = dds_.Reader(
         ns + "/cmd_vel",
         settings_.twist_stamped ? DdsType<msg::geometry_msgs::TwistStamped>() : DdsType<msg::geometry_msgs::Twist>(),
@@ -127,22 +126,22 @@ void Ros2Face::Publish(Robot& r) {
   const sim::SensorReadings& readings = mine ? driver_.TakeReadings(r.id, kOwner) : driver_.LastReadings(r.id);
   if (mine) driver_.Release(r.id, kOwner);
   if (readings.time < 0) return;  // its owner has read nothing yet
-  dds_.Write(r.odom, ros2msg::Encode(OdometryOf(readings, r.start, r.frames)));
-  dds_.Write(r.truth, ros2msg::Encode(GroundTruthOf(readings, r.frames)));
   msg::tf2_msgs::TFMessage tf;
-  tf.transforms.push_back(OdomToBase(readings, r.start, r.frames));
+  tf.transforms.push_back(OdomToBase(readings.time, readings.odometry(), r.start, r.frames));
   dds_.Write(tf_, ros2msg::Encode(tf));
-  r.published += 3;
-  if (r.scan && readings.laser) {
-    dds_.Write(r.scan, ros2msg::Encode(ScanOf(*readings.laser, readings.time, r.frames.laser)));
-    ++r.published;
-  }
-  const auto& ir_spec = driver_.Spec(r.id).model.sensors.ir;
-  if (readings.ir && ir_spec)
-    for (std::size_t i = 0; i < r.ir.size() && i < readings.ir->ranges.size(); ++i) {
-      dds_.Write(r.ir[i], ros2msg::Encode(RangeOf(*readings.ir, i, readings.time, r.frames.ir[i], ir_spec->noise)));
+  ++r.published;
+  const sim::MessageContext context{readings.time, &r.frames, r.start, readings.ground_truth, readings.velocity};
+  const robots::SensorConfigs& sensors = driver_.Spec(r.id).model.sensors;
+  for (const auto& [instance, reading] : readings.by_instance) {
+    const auto writers = r.sensors.find(instance);
+    const auto config = sensors.find(instance);
+    if (writers == r.sensors.end() || config == sensors.end()) continue;
+    for (const sim::SensorMessage& m :
+         sim::MessagesOf(config->second.kind)->Messages(instance, config->second.settings, reading, context)) {
+      dds_.Write(writers->second.at(m.topic), m.cdr);
       ++r.published;
     }
+  }
 }
 
 void Ros2Face::TakeCommands(Robot& r) {

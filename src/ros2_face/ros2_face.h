@@ -28,8 +28,7 @@
 namespace sanet::ros2face {
 
 namespace msg = ros2msg;
-using sim::FramesOf, sim::GroundTruthOf, sim::OdometryOf, sim::OdomToBase, sim::RangeOf, sim::RobotFrames, sim::ScanOf,
-    sim::StampOf, sim::StaticTransforms;
+using sim::FramesOf, sim::OdomToBase, sim::RobotFrames, sim::StampOf, sim::StaticTransforms;
 
 struct Ros2Settings {
   std::uint32_t domain = 0;                 // ROS_DOMAIN_ID

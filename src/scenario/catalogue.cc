@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "scenario/declarations.h"
+#include "sensors/sensor_registry.h"
 
 namespace sanet::scenario {
 namespace {
@@ -53,31 +54,58 @@ std::string ParamLines(const ControllerInfo& info) {
   return out + note;
 }
 
-const std::vector<std::pair<std::string, std::string>> kSensors = {{"ir", "sensors.ir"},
-                                                                   {"laser", "sensors.laser"},
-                                                                   {"odometry", "sensors.odometry"},
-                                                                   {"ground_truth", "sensors.ground_truth"},
-                                                                   {"bearing", "sensors.bearing"}};
+std::vector<FieldInfo> Table(const std::string& name) {
+  for (const SectionTable& t : SectionTables())
+    if (t.name == name) return t.fields;
+  return {};
+}
+
+std::string Joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+// Each model: what it is, what it carries, its drive limits, its body keys.
+std::string ModelSection() {
+  std::string out = "models (body keys with their defaults):\n";
+  for (robots::ModelKind kind : robots::AllModels()) {
+    const robots::ModelSpec model = robots::ModelSpec::Defaults(kind);
+    out += Line("  %-10s %s\n", robots::ModelName(kind), robots::ModelOf(kind).Summary());
+    out += Line("      %-20s %s\n", "sensors", Joined(robots::DefaultSensorKinds(model)));
+    if (robots::HasDrive(model))
+      out += Line("      %-20s %s\n", "drive limits",
+                  ShortNumber(model.max_speed) + " m/s, " + ShortNumber(model.max_turn_rate) + " rad/s");
+    out += FieldLines(Table(std::string("body.") + robots::ModelName(kind)));
+  }
+  return out;
+}
+
+// Each sensor kind: what it measures, what Node::Sensor gives, its ROS 2 message, its keys.
+std::string SensorSection() {
+  std::string out = "sensors (keys under a node's `sensors`; more of a kind under another name with `kind: KIND`):\n";
+  for (const sensors::SensorKind* kind : sensors::AllKinds()) {
+    const sensors::SensorInfo& info = kind->Info();
+    out += Line("  %-12s %s\n", info.name, info.summary);
+    out += Line("      %-20s %s\n", "reading", info.reading + " (" + info.units + ")");
+    out += Line("      %-20s %s\n", "ROS 2",
+                info.ros2_type.empty() ? "none" : info.ros2_type + " on /<robot>/" + info.topic);
+    out += FieldLines(Table("sensors." + info.name));
+  }
+  return out;
+}
+
+std::string ControllerSection(const agents::Registry& registry) {
+  std::string out = "controllers (parameters as each reads them):\n";
+  for (const ControllerInfo* c : registry.List()) out += Line("  %-18s %s\n", c->name, c->description) + ParamLines(*c);
+  return out;
+}
 
 }  // namespace
 
-std::string Catalogue(const agents::Registry& registry) {
-  const std::vector<SectionTable> tables = SectionTables();
-  const auto table = [&](const std::string& name) {
-    for (const SectionTable& t : tables)
-      if (t.name == name) return t.fields;
-    return std::vector<FieldInfo>{};
-  };
-  std::string out = "models (body keys with their defaults):\n";
-  for (robots::ModelKind kind : robots::kAllModels) {
-    out += Line("  %-10s %s\n", robots::ModelName(kind), robots::ModelSummary(kind));
-    out += FieldLines(table(std::string("body.") + robots::ModelName(kind)));
-  }
-  out += "sensors (keys under a node's `sensors`):\n";
-  for (const auto& [name, section] : kSensors) out += Line("  %s\n%s", name, FieldLines(table(section)));
-  out += "controllers (parameters as each reads them):\n";
-  for (const ControllerInfo* c : registry.List()) out += Line("  %-18s %s\n", c->name, c->description) + ParamLines(*c);
-  return out;
+std::string Catalogue(const agents::Registry& registry, CatalogueSections sections) {
+  return (sections.models ? ModelSection() : "") + (sections.sensors ? SensorSection() : "") +
+         (sections.controllers ? ControllerSection(registry) : "");
 }
 
 std::string ReferenceMarkdown() {

@@ -9,7 +9,11 @@
 
 namespace sanet::scenario {
 
-std::string Catalogue(const agents::Registry& registry);
+// Which sections `sanet list` prints (all by default; --models, --sensors, --controllers pick).
+struct CatalogueSections {
+  bool models = true, sensors = true, controllers = true;
+};
+std::string Catalogue(const agents::Registry& registry, CatalogueSections sections = {});
 // Each table between `<!-- fields: NAME -->` and `<!-- /fields -->` lines, as in docs/scenario.md.
 std::string ReferenceMarkdown();
 

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "scenario/sensor_fields.h"
+
 namespace sanet::scenario {
 namespace {
 
@@ -93,11 +95,6 @@ YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
     list.push_back(item);
   }
   return list;
-}
-
-template <typename S, typename T>
-std::function<T&(S&)> Member(T S::*m) {
-  return [m](S& s) -> T& { return s.*m; };
 }
 
 }  // namespace
@@ -595,217 +592,20 @@ const Fields<Scenario>& OutputsFields() {
   return fields;
 }
 
-namespace {
-
-// `m.omni3.body_radius` and the like, as an accessor of the model spec.
-#define SANET_BODY(part, key) [](ModelSpec& m) -> double& { return m.part.key; }
-
 void DriveLimits(Fields<ModelSpec>& f, const char* speed_meaning, const char* turn_meaning) {
   f.Number("max_speed", Member(&ModelSpec::max_speed), "m/s", 0, 100, speed_meaning);
   f.Number("max_turn_rate", Member(&ModelSpec::max_turn_rate), "rad/s", 0, 100, turn_meaning);
 }
 
-Fields<ModelSpec> MoteBody() {
-  Fields<ModelSpec> f;
-  f.Number("size", SANET_BODY(mote, size), "m", 0.005, 10, "side of the cube");
-  f.Number("mass", SANET_BODY(mote, mass), "kg", 0.001, 1000, "");
-  return f;
-}
-
-Fields<ModelSpec> Omni3Body() {
-  Fields<ModelSpec> f;
-  f.Number("body_radius", SANET_BODY(omni3, body_radius), "m", 0.02, 5,
-           "radius of the lower cylinder; the upper cylinder is 80 % of it");
-  f.Number("body_height", SANET_BODY(omni3, body_height), "m", 0.02, 5, "both cylinders together, each half of it");
-  f.Number("body_mass", SANET_BODY(omni3, body_mass), "kg", 0.01, 1000, "");
-  f.Number("ground_clearance", SANET_BODY(omni3, ground_clearance), "m", 0, 1, "gap under the lower cylinder");
-  f.Number("wheel_radius", SANET_BODY(omni3, wheel_radius), "m", 0.005, 1, "");
-  f.Number("wheel_mass", SANET_BODY(omni3, wheel_mass), "kg", 0.001, 100, "for each wheel");
-  f.Number("wheel_distance", SANET_BODY(omni3, wheel_distance), "m", 0.01, 5,
-           "from the centre to each wheel; must be less than `body_radius + wheel_radius`");
-  f.Number("max_wheel_torque", SANET_BODY(omni3, max_wheel_torque), "N·m", 0.001, 1000, "motor limit");
-  f.Number("grip_friction", SANET_BODY(omni3, grip_friction), "", 0, 10,
-           "friction along each wheel's rolling direction");
-  f.Number("slip_friction", SANET_BODY(omni3, slip_friction), "", 0, 10,
-           "friction along each wheel's axle, standing in for the rollers");
-  DriveLimits(f, "limit on the magnitude of (`vx`, `vy`) given to `Drive`", "limit on `omega` given to `Drive`");
-  return f;
-}
-
-Fields<ModelSpec> DiffDriveBody() {
-  Fields<ModelSpec> f;
-  f.Number("body_length", SANET_BODY(diffdrive, body_length), "m", 0.02, 10, "box chassis, along x");
-  f.Number("body_width", SANET_BODY(diffdrive, body_width), "m", 0.02, 10, "along y");
-  f.Number("body_height", SANET_BODY(diffdrive, body_height), "m", 0.02, 10, "");
-  f.Number("body_mass", SANET_BODY(diffdrive, body_mass), "kg", 0.01, 10000, "");
-  f.Number("ground_clearance", SANET_BODY(diffdrive, ground_clearance), "m", 0, 1, "gap under the chassis");
-  f.Number("wheel_radius", SANET_BODY(diffdrive, wheel_radius), "m", 0.005, 2, "");
-  f.Number("wheel_mass", SANET_BODY(diffdrive, wheel_mass), "kg", 0.001, 100, "for each wheel");
-  f.Number("axle_length", SANET_BODY(diffdrive, axle_length), "m", 0.02, 10, "between the two wheels' contact points");
-  f.Number("caster_offset", SANET_BODY(diffdrive, caster_offset), "m", 0.01, 10,
-           "how far the caster sits behind the axle");
-  f.Number("caster_radius", SANET_BODY(diffdrive, caster_radius), "m", 0.005, 1, "frictionless caster");
-  f.Number("max_wheel_torque", SANET_BODY(diffdrive, max_wheel_torque), "N·m", 0.001, 10000, "motor limit");
-  f.Number("wheel_friction", SANET_BODY(diffdrive, wheel_friction), "", 0, 10, "");
-  DriveLimits(f, "limit on `vx` given to `Drive`", "limit on `omega` given to `Drive`");
-  return f;
-}
-
-#undef SANET_BODY
-
-}  // namespace
-
 const Fields<ModelSpec>& BodyFields(ModelKind kind) {
-  static const Fields<ModelSpec> mote = MoteBody(), omni3 = Omni3Body(), diffdrive = DiffDriveBody();
   switch (kind) {
-    case ModelKind::kMote:
-      return mote;
-    case ModelKind::kOmni3:
-      return omni3;
-    case ModelKind::kDiffDrive:
-      return diffdrive;
+#define SANET_BODY_FIELDS_CASE(name, Name, kind) \
+  case ModelKind::kind:                          \
+    return Name##BodyFields();
+    SANET_ROBOT_MODELS(SANET_BODY_FIELDS_CASE)
+#undef SANET_BODY_FIELDS_CASE
   }
-  return mote;
-}
-
-IrSettings IrSettingsOf(const robots::RangeSensorSpec& ir) {
-  return {ir.angles, ir.max_range, ir.mount_height, ir.noise};
-}
-
-robots::RangeSensorSpec ApplyIr(const IrSettings& settings, robots::RangeSensorSpec ir) {
-  ir.angles = settings.angles;
-  ir.max_range = settings.max_range;
-  ir.mount_height = settings.height;
-  ir.noise = settings.noise;
-  return ir;
-}
-
-// A fan's fov and beam count when its directions are exactly those of such a fan; its
-// directions otherwise.
-LaserSettings LaserSettingsOf(const robots::RangeSensorSpec& laser) {
-  LaserSettings s{0, 0, {}, laser.max_range, laser.mount_height, laser.mount_x, laser.noise};
-  const int beams = static_cast<int>(laser.angles.size());
-  const double fov = beams > 1 ? laser.angles.back() - laser.angles.front() : kPi;
-  if (beams > 0 && robots::RangeSensorSpec::Fan(fov, beams, 0, 0, 1).angles == laser.angles)
-    s.fov = fov, s.beams = beams;
-  else
-    s.angles = laser.angles;
-  return s;
-}
-
-robots::RangeSensorSpec ApplyLaser(const LaserSettings& s) {
-  robots::RangeSensorSpec laser = robots::RangeSensorSpec::Fan(s.fov, s.beams, s.mount_x, s.height, s.max_range);
-  if (!s.angles.empty()) laser.angles = s.angles;
-  laser.noise = s.noise;
-  return laser;
-}
-
-namespace {
-
-YAML::Node AngleList(const std::vector<double>& angles) {
-  YAML::Node out(YAML::NodeType::Sequence);
-  for (double a : angles) out.push_back(NumberNode(a));
-  out.SetStyle(YAML::EmitterStyle::Flow);
-  return out;
-}
-
-std::vector<double> ReadAngles(const Field& v) {
-  std::vector<double> angles;
-  for (const Field& a : v.Items()) angles.push_back(a.Number(-2 * kPi, 2 * kPi));
-  if (angles.empty()) v.Fail("needs at least one angle");
-  return angles;
-}
-
-}  // namespace
-
-const Fields<IrSettings>& IrFields() {
-  static const Fields<IrSettings> fields = [] {
-    Fields<IrSettings> f;
-    f.Custom(
-        {"count", "whole number", "", "`6`", "[1, 360]", "sensors evenly spaced, sensor 0 forward"},
-        [](const Field& v, IrSettings& s) {
-          s.angles = robots::RangeSensorSpec::Ring(v.Integer(1, 360), 0, 0, 1).angles;
-        },
-        [](const IrSettings&) { return YAML::Node(); });
-    f.Custom(
-        {"angles", "list of numbers", "rad", "evenly spaced", "each in [−2π, 2π]; not with `count`",
-         "each sensor's direction"},
-        [](const Field& v, IrSettings& s) { s.angles = ReadAngles(v); },
-        [](const IrSettings& s) { return AngleList(s.angles); });
-    f.Number("max_range", Member(&IrSettings::max_range), "m", 0, 100, "", true);
-    f.Number("height", Member(&IrSettings::height), "m", 0, 10, "above the ground");
-    f.Number("noise", Member(&IrSettings::noise), "m", 0, 100, "standard deviation of each range");
-    return f;
-  }();
-  return fields;
-}
-
-const Fields<LaserSettings>& LaserFields() {
-  static const Fields<LaserSettings> fields = [] {
-    Fields<LaserSettings> f;
-    f.Custom(
-        {"fov", "number", "rad", "`π`", "(0, 2π]", "spread of the fan"},
-        [](const Field& v, LaserSettings& s) { s.fov = v.NumberAbove(0, 2 * kPi); },
-        [](const LaserSettings& s) { return s.angles.empty() ? NumberNode(s.fov) : YAML::Node(); });
-    f.Custom(
-        {"beams", "whole number", "", "`181`", "[1, 10000]", "evenly spread from −fov/2 to +fov/2"},
-        [](const Field& v, LaserSettings& s) { s.beams = v.Integer(1, 10000); },
-        [](const LaserSettings& s) { return s.angles.empty() ? YAML::Node(s.beams) : YAML::Node(); });
-    f.Custom(
-        {"angles", "list of numbers", "rad", "none", "each in [−2π, 2π]; not with `fov` or `beams`",
-         "instead of a fan: each beam's direction, right to left"},
-        [](const Field& v, LaserSettings& s) { s.angles = ReadAngles(v); },
-        [](const LaserSettings& s) { return s.angles.empty() ? YAML::Node() : AngleList(s.angles); });
-    f.Number("max_range", Member(&LaserSettings::max_range), "m", 0, 1000, "", true);
-    f.Number("height", Member(&LaserSettings::height), "m", 0, 10, "above the ground");
-    f.Custom(
-        {"mount_x", "number", "m",
-         "the front of the body: `body_length / 2 − caster_offset / 4 + 0.01` (0.18) on diffdrive, "
-         "`body_radius` on omni3",
-         "[−10, 10]", "where the beams start, ahead of the reference point"},
-        [](const Field& v, LaserSettings& s) { s.mount_x = v.Number(-10, 10); },
-        [](const LaserSettings& s) { return NumberNode(s.mount_x); });
-    f.Number("noise", Member(&LaserSettings::noise), "m", 0, 100, "standard deviation of each range");
-    return f;
-  }();
-  return fields;
-}
-
-const Fields<robots::SensorSuite>& OdometryFields() {
-  static const Fields<robots::SensorSuite> fields = [] {
-    Fields<robots::SensorSuite> f;
-    f.Number("noise", Member(&robots::SensorSuite::odometry_noise), "relative", 0, 10,
-             "standard deviation of each increment's relative error");
-    return f;
-  }();
-  return fields;
-}
-
-const Fields<robots::SensorSuite>& GroundTruthFields() {
-  static const Fields<robots::SensorSuite> fields = [] {
-    Fields<robots::SensorSuite> f;
-    f.Number("noise_position", Member(&robots::SensorSuite::ground_truth_noise_position), "m", 0, 1000,
-             "standard deviation added to x and y");
-    f.Number("noise_angle", Member(&robots::SensorSuite::ground_truth_noise_angle), "rad", 0, 10,
-             "standard deviation added to theta");
-    return f;
-  }();
-  return fields;
-}
-
-const Fields<robots::BearingSpec>& BearingFields() {
-  using robots::BearingSpec;
-  static const Fields<BearingSpec> fields = [] {
-    Fields<BearingSpec> f;
-    f.Custom(
-        {"range", "number", "m", "required", "(0, 1e6]", "beyond it the sensor answers nothing"},
-        [](const Field& v, BearingSpec& s) { s.range = v.NumberAbove(0, 1e6); },
-        [](const BearingSpec& s) { return NumberNode(s.range); });
-    f.Number("noise_distance", Member(&BearingSpec::noise_distance), "m", 0, 1000, "standard deviation");
-    f.Number("noise_angle", Member(&BearingSpec::noise_angle), "rad", 0, 10, "standard deviation");
-    return f;
-  }();
-  return fields;
+  return MoteBodyFields();
 }
 
 const Fields<net::NodeRadio>& RadioFields() {
@@ -1093,9 +893,7 @@ const Fields<Keys>& SpawnClassFields() {
 }
 
 std::vector<SectionTable> SectionTables() {
-  const ModelSpec omni3 = ModelSpec::Defaults(ModelKind::kOmni3),
-                  diffdrive = ModelSpec::Defaults(ModelKind::kDiffDrive);
-  return {
+  std::vector<SectionTable> tables = {
       {"top", TopLevelFields().Describe(Scenario{})},
       {"world", WorldFields().Describe(sim::RunSpec{})},
       {"obstacles.box", BoxFields().Describe(BoxSettings{})},
@@ -1106,14 +904,6 @@ std::vector<SectionTable> SectionTables() {
       {"nodes.node", NodeFields().Describe(Keys{})},
       {"nodes.grid_item", GridItemFields().Describe(Keys{})},
       {"nodes.grid", GridFields().Describe(GridSettings{})},
-      {"body.mote", BodyFields(ModelKind::kMote).Describe(ModelSpec::Defaults(ModelKind::kMote))},
-      {"body.omni3", BodyFields(ModelKind::kOmni3).Describe(omni3)},
-      {"body.diffdrive", BodyFields(ModelKind::kDiffDrive).Describe(diffdrive)},
-      {"sensors.ir", IrFields().Describe(IrSettingsOf(robots::DefaultIr(omni3)))},
-      {"sensors.laser", LaserFields().Describe(LaserSettingsOf(robots::DefaultLaser(diffdrive)))},
-      {"sensors.odometry", OdometryFields().Describe(robots::SensorSuite{})},
-      {"sensors.ground_truth", GroundTruthFields().Describe(robots::SensorSuite{})},
-      {"sensors.bearing", BearingFields().Describe(robots::BearingSpec{})},
       {"radio", RadioFields().Describe(net::NodeRadio{})},
       {"controller", ControllerFields().Describe(sim::ControllerSpec{})},
       {"messages", MessagesFields().Describe(sim::RunSpec{})},
@@ -1128,6 +918,17 @@ std::vector<SectionTable> SectionTables() {
       {"ros2.robots", Ros2RobotFields().Describe(sections::Ros2Robot{})},
       {"outputs", OutputsFields().Describe(Scenario{})},
   };
+  // Each model's body (src/models/<model>/<model>_fields.cc), then each sensor kind's
+  // (scenario/sensor_fields.h), before the radio's.
+  std::vector<SectionTable> parts;
+  for (ModelKind kind : robots::AllModels())
+    parts.push_back(
+        {std::string("body.") + robots::ModelName(kind), BodyFields(kind).Describe(ModelSpec::Defaults(kind))});
+  for (auto& [name, fields] : SensorTables()) parts.push_back({name, std::move(fields)});
+  const auto radio =
+      std::find_if(tables.begin(), tables.end(), [](const SectionTable& t) { return t.name == "radio"; });
+  tables.insert(radio, parts.begin(), parts.end());
+  return tables;
 }
 
 }  // namespace sanet::scenario

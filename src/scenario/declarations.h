@@ -29,29 +29,14 @@ const Fields<sections::SpawnSpec>& SpawnFields();
 const Fields<sections::Ros2Spec>& Ros2Fields();
 const Fields<sections::Ros2Robot>& Ros2RobotFields();
 const Fields<Scenario>& OutputsFields();
-// A model's `body` keys (with its drive limits for robots).
+// A model's `body` keys (with its drive limits for robots): each model's folder defines its own,
+// src/models/<model>/<model>_fields.cc.
 const Fields<robots::ModelSpec>& BodyFields(robots::ModelKind kind);
-// The keys of the IR ring and the laser, on top of a sensor they change (the model's default,
-// or the one already there): `ApplyIr`/`ApplyLaser` build the sensor from them.
-struct IrSettings {
-  std::vector<double> angles;  // rad
-  double max_range = 0, height = 0, noise = 0;
-};
-struct LaserSettings {
-  double fov = 0;
-  int beams = 0;
-  std::vector<double> angles;  // given instead of fov and beams: the beams' directions, right to left
-  double max_range = 0, height = 0, mount_x = 0, noise = 0;
-};
-IrSettings IrSettingsOf(const robots::RangeSensorSpec& ir);
-robots::RangeSensorSpec ApplyIr(const IrSettings& settings, robots::RangeSensorSpec ir);
-LaserSettings LaserSettingsOf(const robots::RangeSensorSpec& laser);
-robots::RangeSensorSpec ApplyLaser(const LaserSettings& settings);
-const Fields<IrSettings>& IrFields();
-const Fields<LaserSettings>& LaserFields();
-const Fields<robots::SensorSuite>& OdometryFields();
-const Fields<robots::SensorSuite>& GroundTruthFields();
-const Fields<robots::BearingSpec>& BearingFields();
+#define SANET_DECLARE_BODY_FIELDS(name, Name, kind) const Fields<robots::ModelSpec>& Name##BodyFields();
+SANET_ROBOT_MODELS(SANET_DECLARE_BODY_FIELDS)
+#undef SANET_DECLARE_BODY_FIELDS
+// The keys every robot's body has: its drive limits.
+void DriveLimits(Fields<robots::ModelSpec>& fields, const char* speed_meaning, const char* turn_meaning);
 const Fields<net::NodeRadio>& RadioFields();
 const Fields<sim::ControllerSpec>& ControllerFields();
 

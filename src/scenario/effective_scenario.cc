@@ -2,26 +2,16 @@
 
 #include "core/fingerprint.h"
 #include "scenario/declarations.h"
+#include "scenario/sensor_fields.h"
 
 namespace sanet::scenario {
 namespace {
-
-YAML::Node Sensors(const robots::ModelSpec& m) {
-  YAML::Node out;
-  const robots::SensorSuite& s = m.sensors;
-  out["ir"] = s.ir ? IrFields().Print(IrSettingsOf(*s.ir)) : YAML::Node(false);
-  out["laser"] = s.laser ? LaserFields().Print(LaserSettingsOf(*s.laser)) : YAML::Node(false);
-  if (m.kind != robots::ModelKind::kMote) out["odometry"] = OdometryFields().Print(s);
-  out["ground_truth"] = GroundTruthFields().Print(s);
-  if (s.bearing) out["bearing"] = BearingFields().Print(*s.bearing);
-  return out;
-}
 
 // model, body, sensors and radio, as a node and a spawn class give them.
 void PutRobot(YAML::Node& out, const robots::ModelSpec& model, const net::NodeRadio& radio, bool has_network) {
   out["model"] = robots::ModelName(model.kind);
   out["body"] = BodyFields(model.kind).Print(model);
-  out["sensors"] = Sensors(model);
+  out["sensors"] = PrintSensors(model);
   if (has_network && radio.tx_power) out["radio"] = RadioFields().Print(radio);
 }
 

@@ -30,6 +30,12 @@ std::string RangeText(double min, double max, bool min_exclusive);
 // A markdown table of fields: | Key | Type | Unit | Default | Range | Meaning |
 std::string MarkdownTable(const std::vector<FieldInfo>& fields);
 
+// Access to a member of S, for a field's reader and printer: Member(&RunSpec::duration).
+template <typename S, typename T>
+std::function<T&(S&)> Member(T S::*m) {
+  return [m](S& s) -> T& { return s.*m; };
+}
+
 template <typename S>
 class Fields {
  public:
@@ -94,8 +100,11 @@ class Fields {
   }
   // Reads every declared key present in the mapping `f` (after checking that it has no others).
   // A field whose default is "required" must be there.
-  void Read(const Field& f, S& s) const {
-    f.ExpectKeys(Keys());
+  // `also_allowed`: keys the caller reads itself (a sensor instance's `kind`).
+  void Read(const Field& f, S& s, const std::vector<std::string>& also_allowed = {}) const {
+    std::vector<std::string> keys = Keys();
+    keys.insert(keys.end(), also_allowed.begin(), also_allowed.end());
+    f.ExpectKeys(keys);
     for (const Entry& e : entries_)
       if (e.info.default_text == kRequired) f.Require(e.info.key);
     for (const Entry& e : entries_)

@@ -10,6 +10,8 @@
 
 #include "scenario/declarations.h"
 #include "scenario/placement.h"
+#include "scenario/sensor_fields.h"
+#include "sensors/sensor_registry.h"
 #include "sim/world.h"
 
 namespace sanet::scenario {
@@ -18,15 +20,12 @@ namespace {
 namespace fs = std::filesystem;
 using robots::ModelKind;
 using robots::ModelSpec;
-using robots::RangeSensorSpec;
 
 ModelKind ReadModel(const Field& f) {
   const std::string name = f.Text();
+  if (const auto kind = robots::FindModel(name)) return *kind;
   std::string known;
-  for (ModelKind k : robots::kAllModels) {
-    if (name == robots::ModelName(k)) return k;
-    known += std::string(known.empty() ? "" : ", ") + robots::ModelName(k);
-  }
+  for (ModelKind k : robots::AllModels()) known += std::string(known.empty() ? "" : ", ") + robots::ModelName(k);
   f.Fail("unknown model '" + name + "' (known: " + known + ")");
 }
 
@@ -34,62 +33,6 @@ void ReadBody(const Field& f, ModelSpec& m) {
   BodyFields(m.kind).Read(f, m);
   if (m.kind == ModelKind::kOmni3 && m.omni3.wheel_distance >= m.omni3.body_radius + m.omni3.wheel_radius)
     f.Fail("wheel_distance must keep the wheels under the body (less than body_radius + wheel_radius)");
-}
-
-// `ir: false` removes a sensor, `ir: true` adds the default one, a mapping changes the keys it
-// names on the default (or already present) sensor.
-void ReadIr(const Field& ir, ModelSpec& m) {
-  auto& sensor = m.sensors.ir;
-  if (ir.IsScalar()) {
-    sensor.reset();
-    if (ir.Bool()) sensor = robots::DefaultIr(m);
-    return;
-  }
-  if (ir.IsMap() && ir.Get("count") && ir.Get("angles"))
-    ir.Get("angles")->Fail("give either count (evenly spaced) or angles, not both");
-  const RangeSensorSpec base = sensor ? *sensor : robots::DefaultIr(m);
-  IrSettings settings = IrSettingsOf(base);
-  IrFields().Read(ir, settings);
-  sensor = ApplyIr(settings, base);
-}
-
-void ReadLaser(const Field& laser, ModelSpec& m) {
-  auto& sensor = m.sensors.laser;
-  if (laser.IsScalar()) {
-    sensor.reset();
-    if (laser.Bool()) sensor = robots::DefaultLaser(m);
-    return;
-  }
-  if (laser.IsMap() && laser.Get("angles") && (laser.Get("fov") || laser.Get("beams")))
-    laser.Get("angles")->Fail("give either fov and beams (a fan) or angles, not both");
-  // A mapping changes the keys it names on the fan of the sensor there (or the default one).
-  const RangeSensorSpec base = sensor ? *sensor : robots::DefaultLaser(m);
-  LaserSettings settings{base.angles.back() - base.angles.front(),
-                         static_cast<int>(base.angles.size()),
-                         {},
-                         base.max_range,
-                         base.mount_height,
-                         base.mount_x,
-                         base.noise};
-  LaserFields().Read(laser, settings);
-  sensor = ApplyLaser(settings);
-}
-
-void ReadSensors(const Field& f, ModelSpec& m) {
-  f.ExpectKeys({"ir", "laser", "odometry", "ground_truth", "bearing"});
-  if (auto ir = f.Get("ir")) ReadIr(*ir, m);
-  if (auto laser = f.Get("laser")) ReadLaser(*laser, m);
-  if (auto odo = f.Get("odometry")) {
-    if (m.kind == ModelKind::kMote) odo->Fail("a mote has no wheels, so no odometry");
-    OdometryFields().Read(*odo, m.sensors);
-  }
-  if (auto gt = f.Get("ground_truth")) GroundTruthFields().Read(*gt, m.sensors);
-  if (auto b = f.Get("bearing")) {
-    b->Require("range");
-    robots::BearingSpec bearing;
-    BearingFields().Read(*b, bearing);
-    m.sensors.bearing = bearing;
-  }
 }
 
 ParamValue ReadParamValue(const Field& f) {
@@ -179,12 +122,12 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_netw
     if (!has_network) radio->Fail("a node's radio needs a 'network' section in the scenario");
     RadioFields().Read(*radio, t.radio);
   }
-  t.model = ModelSpec::Defaults(ReadModel(f.Require("model")));
+  t.model = sensors::DefaultModel(ReadModel(f.Require("model")));
   if (auto body = f.Get("body")) {
     ReadBody(*body, t.model);
     // The default sensors sit on the body: follow its new dimensions.
-    if (t.model.sensors.ir) t.model.sensors.ir = robots::DefaultIr(t.model);
-    if (t.model.sensors.laser) t.model.sensors.laser = robots::DefaultLaser(t.model);
+    t.model.sensors = sensors::DefaultModel(t.model.kind).sensors;
+    for (auto& [name, config] : t.model.sensors) config.settings = sensors::FindKind(name)->DefaultSettings(t.model);
   }
   if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
   if (auto c = f.Get("controller")) {

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "sensors/sensor_registry.h"
+
 namespace sanet::sections {
 
 bool SameClass(const std::string& a, const std::string& b) {
@@ -13,13 +15,11 @@ bool SameClass(const std::string& a, const std::string& b) {
 }
 
 std::vector<SpawnClass> DefaultSpawnClasses() {
-  using robots::ModelKind;
-  using robots::ModelSpec;
   std::vector<SpawnClass> classes;
   for (const char* pioneer : {"USARBot.P2DX", "USARBot.P2AT", "USARBot.P3AT"})
-    classes.push_back({pioneer, ModelSpec::Defaults(ModelKind::kDiffDrive), {}});
-  classes.push_back({"sanet.DiffDrive", ModelSpec::Defaults(ModelKind::kDiffDrive), {}});
-  classes.push_back({"sanet.Omni3", ModelSpec::Defaults(ModelKind::kOmni3), {}});
+    classes.push_back({pioneer, sensors::DefaultModel(*robots::FindModel("diffdrive")), {}});
+  classes.push_back({"sanet.DiffDrive", sensors::DefaultModel(*robots::FindModel("diffdrive")), {}});
+  classes.push_back({"sanet.Omni3", sensors::DefaultModel(*robots::FindModel("omni3")), {}});
   return classes;
 }
 

@@ -69,8 +69,14 @@ void Assembly::BuildBodies() {
   physics_ = std::make_unique<physics::PipelinedWorld>(physics::CreatePhysicsWorld(spec_.physics), spec_.threads == 2,
                                                        kStepsAhead);
   for (const Obstacle& o : spec_.obstacles) physics_->add_static_box(o.box);
-  for (const NodeSpec& n : run_nodes_)
-    models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose, spec_.seed, "node/" + n.name));
+  for (const NodeSpec& n : run_nodes_) AddBody(n);
+}
+
+// A node's body and its sensors (whose noise streams are named after the node).
+void Assembly::AddBody(const NodeSpec& n) {
+  models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose));
+  sensors_.push_back(
+      std::make_unique<sensors::SensorSet>(*physics_, *models_.back(), n.pose, spec_.seed, "node/" + n.name));
 }
 
 // One ns-3 node per body, in node order (ns-3's node ids are sanet's).
@@ -98,7 +104,7 @@ void Assembly::BuildTransport() {
 }
 
 bool Assembly::remote(NodeId id) const {
-  return drivers_ == RobotDrivers::kFrontEnds && run_nodes_.at(id).model.kind != robots::ModelKind::kMote;
+  return drivers_ == RobotDrivers::kFrontEnds && robots::HasDrive(run_nodes_.at(id).model);
 }
 
 void Assembly::BuildNodes(agents::Registry& registry) {
@@ -117,7 +123,8 @@ void Assembly::BuildNodes(agents::Registry& registry) {
 // The simulated node and the controller's host of node `id`, whose body exists.
 void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
   const NodeSpec& n = run_nodes_[id];
-  nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *transport_, *this, *clock_,
+  nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *sensors_[id], *transport_, *this,
+                                                           *clock_,
                                                            RandomStream(spec_.seed, "node/" + n.name + "/controller")));
   const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
   hosts_.push_back(std::make_unique<agents::ControllerHost>(*nodes_.back(), std::move(controller),
@@ -128,8 +135,7 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
 
 NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why) {
   const NodeId id = run_nodes_.Add(node, spawned_as);
-  models_.push_back(
-      std::make_unique<robots::NodeModel>(*physics_, node.model, node.pose, spec_.seed, "node/" + node.name));
+  AddBody(node);
   ns3::Ptr<ns3::Node> ns3_node = Ns3Node();
   FollowBody(id, ns3::PeekPointer(ns3_node->GetObject<net::BodyMobilityModel>()));
   if (wireless_) wireless_->AddNode(ns3_node, node.name, node.radio);

@@ -45,6 +45,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   agents::SimulatedNode& node(NodeId id) { return *nodes_.at(id); }
   agents::ControllerHost& host(NodeId id) { return *hosts_.at(id); }
   robots::NodeModel& model(NodeId id) { return *models_.at(id); }
+  sensors::SensorSet& sensors(NodeId id) { return *sensors_.at(id); }
   // The bodies' world; with `world.threads: 2` its steps run on a thread of their own.
   physics::PipelinedWorld& physics() { return *physics_; }
   MessageLedger& transport() { return *transport_; }
@@ -88,11 +89,9 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void Log(NodeId node, const std::string& text) override;
   void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) override;
   void Metric(NodeId node, const std::string& name, double value) override;
-  void ReadScan(NodeId node, Scanner which, const RangeScan& scan) override {
-    if (events_) events_->ReadScan(node, which, scan);
-  }
-  void ReadOdometry(NodeId node, const Pose2D& odometry) override {
-    if (events_) events_->ReadOdometry(node, odometry, Body(node));
+  void ReadSensor(NodeId node, const std::string& instance, const std::string& kind,
+                  const SensorReading& reading) override {
+    if (events_) events_->ReadSensor(node, instance, kind, reading, Body(node));
   }
 
   // SnapshotSource
@@ -103,6 +102,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
 
  private:
   void BuildBodies();
+  void AddBody(const NodeSpec& node);
   void BuildTransport();
   void BuildNodes(agents::Registry& registry);
   void AddNode(NodeId id, std::unique_ptr<Controller> controller);
@@ -115,6 +115,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   const RobotDrivers drivers_;
   std::unique_ptr<physics::PipelinedWorld> physics_;
   std::vector<std::unique_ptr<robots::NodeModel>> models_;
+  std::vector<std::unique_ptr<sensors::SensorSet>> sensors_;
   std::unique_ptr<PosePipeline> poses_;
   std::unique_ptr<MessageLedger> transport_;
   net::WirelessNetwork* wireless_ = nullptr;  // the inner transport, when it is ns-3's network

@@ -96,25 +96,15 @@ const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owne
   readings_.resize(NodeCount());
   SensorReadings& r = readings_[robot];
   if (r.time == Now()) return r;  // read already at this instant: a second read would draw noise again
-  robots::NodeModel& model = parts_.model(robot);
+  // Read as a controller reads (one path: the run's log records what the owner read).
+  agents::SimulatedNode& node = parts_.node(robot);
   r.time = Now();
-  r.ground_truth = model.GroundTruth();
-  r.height = model.body().position3().z;
+  r.height = parts_.model(robot).body().position3().z;
   r.velocity = parts_.Body(robot).velocity;
-  r.odometry = model.Odometry();
-  r.laser = model.Laser();
-  r.ir = model.Ir();
-  // The run's log records what the owner read (NodeDirectory), as a controller's reads.
-  if (r.odometry) parts_.ReadOdometry(robot, *r.odometry);
-  if (r.laser) parts_.ReadScan(robot, agents::NodeDirectory::Scanner::kLaser, *r.laser);
-  if (r.ir) parts_.ReadScan(robot, agents::NodeDirectory::Scanner::kIr, *r.ir);
-  r.bearings.reset();
-  if (model.spec().sensors.bearing) {
-    r.bearings.emplace();
-    for (NodeId other = 0; other < NodeCount(); ++other)
-      if (other != robot)
-        if (const auto b = model.Bearing(parts_.TruePose(other))) r.bearings->push_back({other, *b});
-  }
+  r.by_instance.clear();
+  for (const std::string& name : node.sensors().names())
+    if (std::optional<SensorReading> reading = node.Sensor(name)) r.by_instance.emplace_back(name, std::move(*reading));
+  if (const Pose2D* truth = r.Get<Pose2D>("ground_truth")) r.ground_truth = *truth;
   return r;
 }
 

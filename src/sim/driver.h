@@ -23,16 +23,29 @@ namespace sanet::sim {
 
 class Assembly;
 
-// A robot's sensors, read once by its owner.
+// A robot's sensors, read once by its owner: every instance, as Node::Sensor gives it.
 struct SensorReadings {
-  double time = -1;  // s, simulated; -1 before the first read
-  Pose2D ground_truth;
-  double height = 0;  // m, of the body's centre
-  Twist2D velocity;   // world frame
-  std::optional<Pose2D> odometry;
-  std::optional<RangeScan> laser, ir;
-  // With a bearing sensor: every other node within its range, as Node::Bearing would give it.
-  std::optional<std::vector<std::pair<NodeId, BearingReading>>> bearings;
+  double time = -1;     // s, simulated; -1 before the first read
+  Pose2D ground_truth;  // the ground_truth sensor's reading
+  double height = 0;    // m, of the body's centre
+  Twist2D velocity;     // world frame
+  // Every instance that gave a reading, in the order of sensors::PresentationOrder.
+  std::vector<std::pair<std::string, SensorReading>> by_instance;
+
+  // Instance `name`'s reading if it is a T; null otherwise.
+  template <typename T>
+  const T* Get(const std::string& name) const {
+    for (const auto& [instance, reading] : by_instance)
+      if (instance == name) return std::get_if<T>(&reading);
+    return nullptr;
+  }
+  // The default instances of the first kinds.
+  std::optional<Pose2D> odometry() const {
+    const Pose2D* pose = Get<Pose2D>("odometry");
+    return pose ? std::optional<Pose2D>(*pose) : std::nullopt;
+  }
+  const RangeScan* laser() const { return Get<RangeScan>("laser"); }
+  const RangeScan* ir() const { return Get<RangeScan>("ir"); }
 };
 
 class Driver {
@@ -107,6 +120,13 @@ class Driver {
   // Ends the run at once (from inside it) or before its next piece (between World::RunUntil
   // calls); results are written as usual and summary.json's ended_by says `why`.
   void Stop(const std::string& why = "stopped by a front end");
+  // When the run has ended (the run's own controllers have finished, Controller::Finish) and
+  // before its results are written: `action`, so that a front end lets the controllers it serves
+  // finish too and records what they log. Added before the run starts; World calls RunEnded.
+  void AtEnd(std::function<void()> action) { at_end_.push_back(std::move(action)); }
+  void RunEnded() {
+    for (const auto& action : at_end_) action();
+  }
   const std::optional<std::string>& stop_requested() const { return stop_; }
 
  private:
@@ -121,6 +141,7 @@ class Driver {
   std::vector<SensorReadings> readings_;
   std::vector<NodeId> tapped_;
   std::optional<std::string> stop_;
+  std::vector<std::function<void()>> at_end_;
 };
 
 }  // namespace sanet::sim

@@ -144,7 +144,7 @@ void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
 
 void Outputs::Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity) {
   last_recorded_[id] = Recorded{p, now};
-  if (spec_.figures && nodes_[id].model.kind != robots::ModelKind::kMote) {
+  if (spec_.figures && robots::HasDrive(nodes_[id].model)) {
     trace::Track& track = tracks_[id];
     track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
   }

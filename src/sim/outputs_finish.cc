@@ -182,7 +182,7 @@ void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::op
     in.obstacles.push_back({o.kind, {o.box.center.x, o.box.center.y}, {o.box.size.x, o.box.size.y}, o.box.yaw});
   for (NodeId id = 0; id < nodes_.size(); ++id) {
     const NodeSpec& n = nodes_[id];
-    const bool mote = n.model.kind == robots::ModelKind::kMote;
+    const bool mote = !robots::HasDrive(n.model);
     const bool pushed = mote && Norm(final_poses.at(id).position() - n.pose.position()) > RunWarnings::kMoteMoved;
     in.nodes.push_back({n.name, mote, n.pose, final_poses.at(id), pushed});
   }

@@ -1,43 +1,46 @@
-// A robot's readings as the ROS 2 messages a ROS 2 robot publishes (REP 103 axes: x forward,
-// y left, z up, angles counter-clockwise, as sanet's; REP 105 frames): pure functions of what
-// the robot's owner read, so that the face, the run's log and a stream publish the same.
+// What a robot's ROS 2 messages share, whichever sensor they carry (REP 103 axes: x forward, y
+// left, z up, angles counter-clockwise, as sanet's; REP 105 frames): stamps, frames, transforms,
+// odometry messages. Each sensor kind's own messages are its part (sim/sensor_messages.h); these
+// are pure functions of what the robot's owner read, so that the face, the run's log and a stream
+// publish the same.
 //
 // Frames, per robot R: R/odom (fixed in the world at R's start pose, the origin of its
-// odometry), R/base_link (the body), R/laser and R/ir_<i> (the sensors where they are mounted);
-// world for ground truth, motes and the start poses.
+// odometry), R/base_link (the body), R/<sensor> where each sensor is mounted; world for ground
+// truth, motes and the start poses.
 #pragma once
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ros2msg/messages.h"
-#include "sim/driver.h"
+#include "sim/run_spec.h"
 
 namespace sanet::sim {
 
 namespace msg = ros2msg;
 
 struct RobotFrames {
-  std::string odom, base, laser;
-  std::vector<std::string> ir;
+  std::string prefix;  // R: the robot's name or namespace
+  std::string odom, base;
+  // The frame of a sensor mounted as `name` ("laser", "ir_0", "laser_rear").
+  std::string Sensor(const std::string& name) const { return prefix + "/" + name; }
 };
-RobotFrames FramesOf(const std::string& robot, const robots::ModelSpec& model);
+RobotFrames FramesOf(const std::string& robot);
 
 msg::builtin_interfaces::Time StampOf(double t);             // s of simulated time
 msg::geometry_msgs::Quaternion YawQuaternion(double theta);  // a turn of `theta` rad about z
 
-// Wheel odometry in R/odom (relative to the start pose), with the body's velocity in R/base_link.
-msg::nav_msgs::Odometry OdometryOf(const SensorReadings& r, const Pose2D& start, const RobotFrames& frames);
-// The true pose in world, child R/base_link.
-msg::nav_msgs::Odometry GroundTruthOf(const SensorReadings& r, const RobotFrames& frames);
-msg::sensor_msgs::LaserScan ScanOf(const RangeScan& scan, double t, const std::string& frame);
-// IR sensor `i`: one ray (field of view 0), its noise's variance.
-msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, const std::string& frame, double noise);
+// A pose in `frame` with a velocity in the body's frame (`child`).
+msg::nav_msgs::Odometry OdometryIn(const std::string& frame, const std::string& child, double t, const Pose2D& pose,
+                                   const Twist2D& body_velocity);
+// A world-frame velocity in the frame of a body heading `theta`.
+Twist2D InBody(const Twist2D& world, double theta);
 
-// R/odom -> R/base_link now.
-msg::geometry_msgs::TransformStamped OdomToBase(const SensorReadings& r, const Pose2D& start,
+// R/odom -> R/base_link at `t`, from the odometry's pose (the start pose without one).
+msg::geometry_msgs::TransformStamped OdomToBase(double t, const std::optional<Pose2D>& odometry, const Pose2D& start,
                                                 const RobotFrames& frames);
 // What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor, for every
 // robot (`frames`: each robot's, by node; FramesOf for the others); world -> M for every mote, of

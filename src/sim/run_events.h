@@ -23,8 +23,8 @@ class RunEvents {
   // A node joined the running world (a robot a front end spawned, as the class it names).
   virtual void Spawned(NodeId node, const std::string& spawned_as) = 0;
   // What a node's driver read (agents::NodeDirectory), with where the body truly is now.
-  virtual void ReadScan(NodeId /*node*/, agents::NodeDirectory::Scanner /*which*/, const RangeScan& /*scan*/) {}
-  virtual void ReadOdometry(NodeId /*node*/, const Pose2D& /*odometry*/, const BodyState& /*body*/) {}
+  virtual void ReadSensor(NodeId /*node*/, const std::string& /*instance*/, const std::string& /*kind*/,
+                          const SensorReading& /*reading*/, const BodyState& /*body*/) {}
 };
 
 }  // namespace sanet::sim

@@ -6,15 +6,13 @@
 
 #include "core/delivery.h"
 #include "ros2msg/codec.h"
+#include "sim/sensor_messages.h"
 
 namespace sanet::sim {
 namespace {
 
 // Frames delivered within this many seconds of simulated time are drawn together, for as long.
 constexpr double kRadioWindow = 0.25;
-constexpr std::size_t kOdometry = 0, kIr = 1, kLaser = 2;
-// A node's topics, by slot: ground truth, odometry, laser, then each IR sensor.
-constexpr std::size_t kTruthTopic = 0, kOdomTopic = 1, kScanTopic = 2, kFirstIrTopic = 3;
 
 // A node's name as a ROS name token (letters, digits, underscores, not starting with a digit),
 // so that every topic is one ROS 2 accepts: "P2DX-1" is published as "/P2DX_1/odom".
@@ -41,16 +39,6 @@ msg::rcl_interfaces::Log LogLine(double t, const std::string& node, const std::s
   return line;
 }
 
-// The log's ground truth and /tf carry the true pose: a reading whose odometry is the truth.
-SensorReadings Truth(double t, const Pose2D& pose, const Twist2D& velocity) {
-  SensorReadings r;
-  r.time = t;
-  r.ground_truth = pose;
-  r.odometry = pose;
-  r.velocity = velocity;
-  return r;
-}
-
 }  // namespace
 
 RunMessages::RunMessages(const RunSpec& spec, const RunNodes& nodes) : spec_(spec), nodes_(nodes) { Statics(0); }
@@ -66,34 +54,35 @@ void RunMessages::AddSink(MessageSink& sink) {
   }
 }
 
-template <typename M>
-const Topic& RunMessages::TopicOf(const std::string& name) {
+const Topic& RunMessages::TopicOf(const std::string& name, const std::string& type, const std::string& definition) {
   if (const auto known = topics_.find(name); known != topics_.end()) return known->second;
   Topic& topic = topics_[name];
   topic.id = static_cast<std::uint32_t>(topics_.size());
   topic.name = name;
-  topic.type = ros2msg::TypeOf<M>::kName;
-  topic.definition = ros2msg::TypeOf<M>::Definition();
+  topic.type = type;
+  topic.definition = definition;
   topic.latched = name == "/tf_static" || name == "/world";
   for (MessageSink* sink : sinks_) sink->Advertise(topic);
   return topic;
 }
 
 template <typename M>
-const Topic& RunMessages::NodeTopic(NodeId node, std::size_t slot, const char* suffix) {
-  if (node_topics_.size() <= node) node_topics_.resize(node + 1);
-  std::vector<const Topic*>& topics = node_topics_[node];
-  if (topics.size() <= slot) topics.resize(slot + 1, nullptr);
-  if (!topics[slot]) topics[slot] = &TopicOf<M>("/" + RosToken(nodes_[node].name) + suffix);
-  return *topics[slot];
+const Topic& RunMessages::TopicOf(const std::string& name) {
+  return TopicOf(name, ros2msg::TypeOf<M>::kName, ros2msg::TypeOf<M>::Definition());
+}
+
+bool RunMessages::Listened(const Topic& topic) const {
+  return topic.latched || std::any_of(sinks_.begin(), sinks_.end(), [](MessageSink* s) { return s->Active(); });
+}
+
+void RunMessages::Publish(const Topic& topic, double t, const std::vector<std::uint8_t>& cdr) {
+  if (topic.latched) latched_[topic.id] = {Nanoseconds(t), cdr};
+  for (MessageSink* sink : sinks_) sink->Publish(topic, Nanoseconds(t), cdr);
 }
 
 template <typename M>
 void RunMessages::Publish(const Topic& topic, double t, const M& message) {
-  if (!topic.latched && std::none_of(sinks_.begin(), sinks_.end(), [](MessageSink* s) { return s->Active(); })) return;
-  const std::vector<std::uint8_t> cdr = ros2msg::Encode(message);
-  if (topic.latched) latched_[topic.id] = {Nanoseconds(t), cdr};
-  for (MessageSink* sink : sinks_) sink->Publish(topic, Nanoseconds(t), cdr);
+  if (Listened(topic)) Publish(topic, t, ros2msg::Encode(message));
 }
 
 template <typename M>
@@ -104,17 +93,19 @@ void RunMessages::Publish(const std::string& name, double t, const M& message) {
 const RobotFrames& RunMessages::FramesOf(NodeId node) {
   while (frames_.size() <= node) {
     const NodeSpec& n = nodes_[frames_.size()];
-    frames_.push_back(sim::FramesOf(n.name, n.model));
-    if (n.model.kind == robots::ModelKind::kMote) frames_.back().base = n.name;  // its frame in /tf_static
+    frames_.push_back(sim::FramesOf(n.name));
+    if (!robots::HasDrive(n.model)) frames_.back().base = n.name;  // its frame in /tf_static
   }
   return frames_[node];
 }
 
-// Whether this is the node's first read of `what` at time `t` (a controller may read twice).
-bool RunMessages::FirstAt(double t, NodeId node, std::size_t what) {
-  if (last_read_.size() <= node) last_read_.resize(node + 1, {-1, -1, -1});
-  if (last_read_[node][what] == t) return false;
-  last_read_[node][what] = t;
+// Whether this is the node's first read of sensor `instance` at time `t` (a controller may read
+// twice).
+bool RunMessages::FirstAt(double t, NodeId node, const std::string& instance) {
+  if (last_read_.size() <= node) last_read_.resize(node + 1);
+  auto [at, added] = last_read_[node].try_emplace(instance, t);
+  if (!added && at->second == t) return false;
+  at->second = t;
   return true;
 }
 
@@ -126,7 +117,7 @@ void RunMessages::Statics(double t) {
   transforms.erase(std::remove_if(transforms.begin(), transforms.end(),
                                   [this](const msg::geometry_msgs::TransformStamped& tf) {
                                     const auto node = nodes_.Find(tf.child_frame_id);
-                                    return node && nodes_[*node].model.kind == robots::ModelKind::kMote;
+                                    return node && !robots::HasDrive(nodes_[*node].model);
                                   }),
                    transforms.end());
   Publish("/tf_static", t, statics);
@@ -153,54 +144,56 @@ void RunMessages::AdvertiseShared() {
   TopicOf<msg::sanet_msgs::RouteChange>("/routes");
 }
 
+// Each sensor instance's topics under /<node>/ (sim/sensor_messages.h), in topic order.
 void RunMessages::AdvertiseNode(NodeId node) {
-  NodeTopic<msg::nav_msgs::Odometry>(node, kTruthTopic, "/ground_truth");
-  const robots::ModelSpec& model = nodes_[node].model;
-  if (model.kind == robots::ModelKind::kMote) return;
-  NodeTopic<msg::nav_msgs::Odometry>(node, kOdomTopic, "/odom");
-  if (model.sensors.laser) NodeTopic<msg::sensor_msgs::LaserScan>(node, kScanTopic, "/scan");
-  if (model.sensors.ir)
-    for (std::size_t i = 0; i < model.sensors.ir->angles.size(); ++i) {
-      const std::string suffix = "/ir_" + std::to_string(i);
-      NodeTopic<msg::sensor_msgs::Range>(node, kFirstIrTopic + i, suffix.c_str());
-    }
+  if (sensor_topics_.size() <= node) sensor_topics_.resize(node + 1);
+  const std::string ns = "/" + RosToken(nodes_[node].name) + "/";
+  for (const auto& [instance, config] : sensors::PresentationOrder(nodes_[node].model)) {
+    const SensorMessages* kind = MessagesOf(config->kind);
+    if (!kind) continue;
+    std::vector<const Topic*>& topics = sensor_topics_[node][instance];
+    for (const SensorTopic& t : kind->Topics(instance, config->settings))
+      topics.push_back(&TopicOf(ns + t.name, t.type, t.definition));
+  }
 }
 
 void RunMessages::Spawned(double t) { Statics(t); }
 
+MessageContext RunMessages::ContextOf(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
+  return {t, &FramesOf(node), nodes_[node].pose, pose, velocity};
+}
+
+// The true pose on the node's ground truth topic, and its body in /tf.
 void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
   const RobotFrames& frames = FramesOf(node);
-  const SensorReadings truth = Truth(t, pose, velocity);
-  Publish(NodeTopic<msg::nav_msgs::Odometry>(node, kTruthTopic, "/ground_truth"), t, GroundTruthOf(truth, frames));
+  PublishReading(node, "ground_truth", pose, ContextOf(t, node, pose, velocity));
   msg::tf2_msgs::TFMessage tf;
-  if (nodes_[node].model.kind == robots::ModelKind::kMote)
+  if (!robots::HasDrive(nodes_[node].model))
     tf.transforms.push_back(Transform("world", frames.base, t, pose.x, pose.y, 0, pose.theta));
   else
-    tf.transforms.push_back(OdomToBase(truth, nodes_[node].pose, frames));
+    tf.transforms.push_back(OdomToBase(t, pose, nodes_[node].pose, frames));
   Publish("/tf", t, tf);
   if (node < where_.size()) where_[node] = {pose.x, pose.y};
 }
 
-void RunMessages::Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body) {
-  if (!FirstAt(t, node, kOdometry)) return;
-  SensorReadings r = Truth(t, body.pose, body.velocity);
-  r.odometry = odometry;
-  Publish(NodeTopic<msg::nav_msgs::Odometry>(node, kOdomTopic, "/odom"), t,
-          OdometryOf(r, nodes_[node].pose, FramesOf(node)));
+// The kind's own ground truth is the trajectory's (Pose), not the reads'.
+void RunMessages::Read(double t, NodeId node, const std::string& instance, const std::string& kind,
+                       const SensorReading& reading, const BodyState& body) {
+  if (instance == "ground_truth" && kind == "ground_truth") return;
+  if (!FirstAt(t, node, instance)) return;
+  PublishReading(node, instance, reading, ContextOf(t, node, body.pose, body.velocity));
 }
 
-void RunMessages::Scan(double t, NodeId node, Scanner which, const RangeScan& scan) {
-  if (!FirstAt(t, node, which == Scanner::kIr ? kIr : kLaser)) return;
-  const RobotFrames& frames = FramesOf(node);
-  if (which == Scanner::kLaser)
-    return Publish(NodeTopic<msg::sensor_msgs::LaserScan>(node, kScanTopic, "/scan"), t, ScanOf(scan, t, frames.laser));
-  const auto& ir = nodes_[node].model.sensors.ir;
-  const double noise = ir ? ir->noise : 0;
-  for (std::size_t i = 0; i < scan.ranges.size() && i < frames.ir.size(); ++i) {
-    const std::string suffix = "/ir_" + std::to_string(i);
-    Publish(NodeTopic<msg::sensor_msgs::Range>(node, kFirstIrTopic + i, suffix.c_str()), t,
-            RangeOf(scan, i, t, frames.ir[i], noise));
-  }
+void RunMessages::PublishReading(NodeId node, const std::string& instance, const SensorReading& reading,
+                                 const MessageContext& context) {
+  if (node >= sensor_topics_.size()) return;
+  const auto topics = sensor_topics_[node].find(instance);
+  const auto config = nodes_[node].model.sensors.find(instance);
+  if (topics == sensor_topics_[node].end() || config == nodes_[node].model.sensors.end()) return;
+  const SensorMessages* kind = MessagesOf(config->second.kind);
+  if (!kind || topics->second.empty() || !Listened(*topics->second.front())) return;
+  for (const SensorMessage& m : kind->Messages(instance, config->second.settings, reading, context))
+    Publish(*topics->second.at(m.topic), context.time, m.cdr);
 }
 
 void RunMessages::Frame(const net::FrameEvent& f) {

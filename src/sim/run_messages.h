@@ -20,6 +20,7 @@
 #include "sim/run_nodes.h"
 #include "sim/run_observer.h"
 #include "sim/run_spec.h"
+#include "sim/sensor_messages.h"
 #include "sim/snapshot.h"
 #include "sim/world_markers.h"
 
@@ -27,7 +28,6 @@ namespace sanet::sim {
 
 class RunMessages {
  public:
-  using Scanner = agents::NodeDirectory::Scanner;
   // Publishes what stands at time 0 (/tf_static, the world's markers) to the sinks added later.
   RunMessages(const RunSpec& spec, const RunNodes& nodes);
   // From now on `sink` gets every message; it is told of every topic so far and gets the last
@@ -38,8 +38,10 @@ class RunMessages {
   void Spawned(double t);
   // A true pose the trace records (a row of trajectories.csv).
   void Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity);
-  void Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body);
-  void Scan(double t, NodeId node, Scanner which, const RangeScan& scan);
+  // A reading a node's driver took: published on its instance's topics by its kind's part
+  // (sim/sensor_messages.h).
+  void Read(double t, NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,
+            const BodyState& body);
   void Frame(const net::FrameEvent& frame);
   // An application message at `t` (when it was delivered, or reached a radio but no controller).
   void Message(double t, const sanet::Message& m, NodeId to, bool delivered);
@@ -54,14 +56,18 @@ class RunMessages {
  private:
   template <typename M>
   void Publish(const std::string& topic, double t, const M& message);
+  const Topic& TopicOf(const std::string& name, const std::string& type, const std::string& definition);
   template <typename M>
   const Topic& TopicOf(const std::string& name);
   template <typename M>
-  const Topic& NodeTopic(NodeId node, std::size_t slot, const char* suffix);
-  template <typename M>
   void Publish(const Topic& topic, double t, const M& message);
+  void Publish(const Topic& topic, double t, const std::vector<std::uint8_t>& cdr);
+  bool Listened(const Topic& topic) const;  // latched, or a sink is active
   const RobotFrames& FramesOf(NodeId node);
-  bool FirstAt(double t, NodeId node, std::size_t what);
+  bool FirstAt(double t, NodeId node, const std::string& instance);
+  MessageContext ContextOf(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity);
+  void PublishReading(NodeId node, const std::string& instance, const SensorReading& reading,
+                      const MessageContext& context);
   void FlushRadio(double until);
   void Statics(double t);
   void AdvertiseShared();
@@ -70,11 +76,11 @@ class RunMessages {
   const RunSpec& spec_;
   const RunNodes& nodes_;
   std::vector<MessageSink*> sinks_;
-  std::map<std::string, Topic> topics_;                 // by name
-  std::vector<std::vector<const Topic*>> node_topics_;  // by node and slot (NodeTopic)
+  std::map<std::string, Topic> topics_;                                                   // by name
+  std::vector<std::map<std::string, std::vector<const Topic*>>> sensor_topics_;           // by node and instance
   std::map<std::uint32_t, std::pair<std::uint64_t, std::vector<std::uint8_t>>> latched_;  // by topic id
   std::vector<RobotFrames> frames_;
-  std::vector<std::array<double, 3>> last_read_;          // per node: odometry, IR, laser (-1: never)
+  std::vector<std::map<std::string, double>> last_read_;  // per node and instance: when it was read last
   std::vector<Vec2> where_;                               // per node: where it stood last, for the radio's lines
   std::map<std::pair<NodeId, NodeId>, RadioLine> radio_;  // by sender and receiver, in the window
   double last_frame_ = 0;                                 // s, the last frame's time

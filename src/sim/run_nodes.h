@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sanet/message.h"
 #include "sim/run_spec.h"
 
 namespace sanet::sim {

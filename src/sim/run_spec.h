@@ -32,9 +32,7 @@ struct NodeSpec {
 
 // A robot with a controller: `sanet launch` runs it as an agent process, which talks to the
 // other agents over UDP and to the server's nodes through the server.
-inline bool RunsAsAgent(const NodeSpec& n) {
-  return n.model.kind != robots::ModelKind::kMote && n.controller.has_value();
-}
+inline bool RunsAsAgent(const NodeSpec& n) { return robots::HasDrive(n.model) && n.controller.has_value(); }
 
 struct Obstacle {
   std::string kind;  // "box" or "wall", for plots

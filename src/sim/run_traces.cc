@@ -99,12 +99,9 @@ void RunTraces::Event(double t, NodeId node, const char* kind, const std::string
   Timed(mcap_seconds_, [&] { messages_.Event(t, node, kind, detail); });
 }
 
-void RunTraces::Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body) {
-  Timed(mcap_seconds_, [&] { messages_.Odometry(t, node, odometry, body); });
-}
-
-void RunTraces::Scan(double t, NodeId node, Scanner which, const RangeScan& scan) {
-  Timed(mcap_seconds_, [&] { messages_.Scan(t, node, which, scan); });
+void RunTraces::Read(double t, NodeId node, const std::string& instance, const std::string& kind,
+                     const SensorReading& reading, const BodyState& body) {
+  Timed(mcap_seconds_, [&] { messages_.Read(t, node, instance, kind, reading, body); });
 }
 
 void RunTraces::Close() {

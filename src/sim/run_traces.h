@@ -22,7 +22,6 @@ namespace sanet::sim {
 
 class RunTraces {
  public:
-  using Scanner = RunMessages::Scanner;
   // Starts both files in `folder` (none: no files, only sinks added) with what does not change:
   // the run, its nodes where they start, the obstacles.
   RunTraces(const RunSpec& spec, const RunNodes& nodes, trace::ResultsFolder* folder);
@@ -40,8 +39,8 @@ class RunTraces {
   void Metric(double t, NodeId node, const std::string& name, double value);
   void Event(double t, NodeId node, const char* kind, const std::string& detail);
   // Readings as their owner took them (the SQLite trace keeps none).
-  void Odometry(double t, NodeId node, const Pose2D& odometry, const BodyState& body);
-  void Scan(double t, NodeId node, Scanner which, const RangeScan& scan);
+  void Read(double t, NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,
+            const BodyState& body);
   void Close();
   // Wall time spent writing each file so far (for trace.mcap: making the messages too), s.
   double sqlite_seconds() const { return sqlite_seconds_; }

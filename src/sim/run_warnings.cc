@@ -28,7 +28,7 @@ void RunWarnings::EngineMessage(double t, const std::string& kind, const std::st
 nlohmann::ordered_json RunWarnings::MovedMotes(const RunNodes& nodes, const std::vector<Pose2D>& final_poses) {
   std::vector<std::pair<double, NodeId>> moved;
   for (NodeId id = 0; id < nodes.size() && id < final_poses.size(); ++id) {
-    if (nodes[id].model.kind != robots::ModelKind::kMote) continue;
+    if (robots::HasDrive(nodes[id].model)) continue;
     const double distance = Norm(final_poses[id].position() - nodes[id].pose.position());
     if (distance > kMoteMoved) moved.push_back({distance, id});
   }

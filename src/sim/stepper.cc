@@ -105,6 +105,8 @@ void Stepper::StopNow(const std::string& why) {
 }
 
 void Stepper::End() {
+  // Controllers finish while the run can still record what they log and measure.
+  for (NodeId id = 0; id < world_.size(); ++id) world_.host(id).Finish();
   profile_.physics_wait = world_.physics().waited();
   world_.transport().Close();
   outputs_.Sample(Now(), /*final_row=*/true, Poses());
@@ -224,7 +226,7 @@ void Stepper::Integrate(StepOutcome& outcome) {
   {
     StageTimer timer(profile_.sensing);
     for (NodeId id : moved_)
-      if (world_.model(id).mobile()) world_.model(id).AfterPhysicsStep();
+      if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep();
   }
   outcome.poses = world_.RadioPoses(moved_);
   outcome.messages = world_.physics().TakeMessages();

@@ -60,11 +60,9 @@ class Stepper : public RunEvents {
   void Lost(NodeId to, const Message& message, const std::string& why) override;
   void Failed(const std::string& why) override;
   void Spawned(NodeId node, const std::string& spawned_as) override;
-  void ReadScan(NodeId node, agents::NodeDirectory::Scanner which, const RangeScan& scan) override {
-    if (RunTraces* trace = outputs_.trace()) trace->Scan(Now(), node, which, scan);
-  }
-  void ReadOdometry(NodeId node, const Pose2D& odometry, const BodyState& body) override {
-    if (RunTraces* trace = outputs_.trace()) trace->Odometry(Now(), node, odometry, body);
+  void ReadSensor(NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,
+                  const BodyState& body) override {
+    if (RunTraces* trace = outputs_.trace()) trace->Read(Now(), node, instance, kind, reading, body);
   }
   // The node stops for good (a scenario's switch-off event, or a script's), recorded as an event.
   void SwitchOff(NodeId node);

@@ -91,6 +91,7 @@ RunResult World::Finish() {
   Outputs& outputs = run->outputs;
   if (!stepper.ended()) stepper.StopNow("finished early by whoever stepped it (World::Finish)");
   stepper.End();
+  driver().RunEnded();
   RunResult result;
   result.simulated = std::min(stepper.Now(), spec().duration);
   result.wall = stepper.wall();

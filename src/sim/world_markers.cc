@@ -53,19 +53,18 @@ Marker MoteMarker(const NodeSpec& node, int id, double t) {
 
 // In the robot's own frame, which /tf moves: the body needs no update while the robot drives.
 Marker BodyMarker(const NodeSpec& node, int id, double t) {
-  const RobotFrames frames = FramesOf(node.name, node.model);
+  const RobotFrames frames = FramesOf(node.name);
   Marker m = Shape(frames.base, t, "bodies", id, Marker::CYLINDER);
   m.frame_locked = true;
   m.color = Colour(0.2f, 0.45f, 0.9f);
-  if (node.model.kind == robots::ModelKind::kDiffDrive) {
-    const auto& d = node.model.diffdrive;
+  const robots::BodyShape shape = node.model.model().Shape(node.model);
+  Place(m, 0, 0, shape.base + shape.height / 2, 0);
+  m.scale.z = shape.height;
+  if (shape.box) {
     m.type = Marker::CUBE;
-    Place(m, 0, 0, d.ground_clearance + d.body_height / 2, 0);
-    m.scale.x = d.body_length, m.scale.y = d.body_width, m.scale.z = d.body_height;
+    m.scale.x = shape.length, m.scale.y = shape.width;
   } else {
-    const auto& o = node.model.omni3;
-    Place(m, 0, 0, o.ground_clearance + o.body_height / 2, 0);
-    m.scale.x = m.scale.y = 2 * o.body_radius, m.scale.z = o.body_height;
+    m.scale.x = m.scale.y = 2 * shape.radius;
   }
   return m;
 }
@@ -95,12 +94,12 @@ MarkerArray WorldMarkers(const RunSpec& spec, const RunNodes& nodes, double t) {
   for (NodeId n = 0; n < nodes.size(); ++n) {
     const NodeSpec& node = nodes[n];
     const int marker = static_cast<int>(n);
-    if (node.model.kind == robots::ModelKind::kMote) {
+    if (!robots::HasDrive(node.model)) {
       out.markers.push_back(MoteMarker(node, marker, t));
       out.markers.push_back(NameMarker(node, node.name, marker, t));
     } else {
       out.markers.push_back(BodyMarker(node, marker, t));
-      out.markers.push_back(NameMarker(node, FramesOf(node.name, node.model).base, marker, t));
+      out.markers.push_back(NameMarker(node, FramesOf(node.name).base, marker, t));
     }
   }
   return out;

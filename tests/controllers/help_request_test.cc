@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scenario/scenario_loader.h"
+#include "sensors/bearing/bearing.h"
 #include "support/test_world.h"
 
 namespace sanet {
@@ -58,7 +59,7 @@ sim::RunSpec SmallHelpRequest() {
   for (auto& n : spec.nodes) n.pose.x *= k, n.pose.y *= k;
   for (auto& o : spec.obstacles) o.box.center.x *= k, o.box.center.y *= k, o.box.size.x *= k;
   spec.network->tx_power = 20;
-  spec.nodes.back().model.sensors.bearing->range = 70;
+  SensorSettings<sensors::BearingSettings>(spec.nodes.back(), "bearing").range = 70;
   spec.figures = true;
   return spec;
 }
@@ -105,10 +106,8 @@ class TableWitness : public Node {
   std::optional<NodeId> Lookup(const std::string& n) const override { return inner_.Lookup(n); }
   std::string NameOf(NodeId id) const override { return inner_.NameOf(id); }
   std::size_t NodeCount() const override { return inner_.NodeCount(); }
-  std::optional<RangeScan> Ir() override { return inner_.Ir(); }
-  std::optional<RangeScan> Laser() override { return inner_.Laser(); }
-  std::optional<Pose2D> Odometry() override { return inner_.Odometry(); }
-  std::optional<Pose2D> GroundTruth() override { return inner_.GroundTruth(); }
+  std::optional<SensorReading> Sensor(const std::string& name) override { return inner_.Sensor(name); }
+  bool SetRadioSleep(bool asleep) override { return inner_.SetRadioSleep(asleep); }
   std::optional<BearingReading> Bearing(NodeId t) override { return inner_.Bearing(t); }
   bool ApplyDrive(const Twist2D& v) override { return inner_.Drive(v); }
   bool ApplyWheelSpeeds(const std::vector<double>& w) override { return inner_.SetWheelSpeeds(w); }
@@ -223,7 +222,7 @@ sim::NodeSpec HelpMote(const std::string& name, double request_at, Vec2 at = {0,
 sim::NodeSpec HelpRobot(const std::string& name, Vec2 at, double hop_time = 300) {
   sim::NodeSpec n = Robot(name, ModelKind::kOmni3, {at.x, at.y, 0},
                           UseController("help_request_robot", {{"hop_time", Scalar(hop_time)}}));
-  n.model.sensors.bearing = robots::BearingSpec{100, 0, 0};
+  n.model.sensors["bearing"] = {"bearing", sensors::BearingSettings{100, 0, 0}};
   return n;
 }
 

@@ -32,6 +32,9 @@ expect_not_found sanet_upward_include_probe net sim/world.h net/transport.h
 expect_not_found sanet_agent_server_probe remote_agent robot_server/sim_server.h remote_agent/remote_node.h
 # sim never sees the scenario's sections for front ends (loop, spawn).
 expect_not_found sanet_sim_section_probe sim sections/spawn_section.h sim/driver.h
+# A sensor kind's folder holds files of several layers; each layer sees only its own and those
+# below (src/CMakeLists.txt, sanet_part_links): the kernel part cannot include the ROS 2 part.
+expect_not_found sanet_sensor_part_probe sensors sensors/laser/laser_ros2.h sensors/range_fan.h
 
 # Front ends reach a running world through sim/driver.h only: none includes the assembly, nor
 # World and the stepper and outputs behind it.

@@ -216,5 +216,60 @@ class Readings(unittest.TestCase):
             self.assertGreater(len(scan["ranges"]), 10)
 
 
+# Named sensor instances beside their kinds' own, and the sonar, read by a Python controller.
+NAMED = """name: named
+duration: 1
+world:
+  obstacles:
+    - {box: {center: [2.2, 0], size: [0.2, 2, 1]}}
+nodes:
+  - name: r
+    model: diffdrive
+    pose: [0, 0, 0]
+    sensors:
+      laser_rear: {kind: laser, fov: 1.5, beams: 31, mount_x: -0.2}
+      ir_low: {kind: ir, count: 4}
+      sonar: {}
+    controller: {python: "reader:Reader", rate: 5}
+"""
+READER = """class Reader:
+    def __init__(self, params):
+        pass
+
+    def control_step(self, node):
+        for name in ("laser", "laser_rear", "ir_low", "sonar"):
+            node.sensor(name)
+"""
+
+
+class NamedInstances(unittest.TestCase):
+    def test_each_instance_has_its_topics_and_frames(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, text in (("named.yaml", NAMED), ("reader.py", READER)):
+                with open(os.path.join(tmp, name), "w") as f:
+                    f.write(text)
+            out = os.path.join(tmp, "out")
+            run(os.path.join(tmp, "named.yaml"), out, "--set", "outputs.trace=true")
+            log = decode(os.path.join(out, "trace.mcap"))
+            self.assertEqual(log["errorCount"], 0, log["errors"])
+            counts = log["counts"]
+            for topic in ("/r/scan", "/r/laser_rear", "/r/ir_low_0", "/r/ir_low_3", "/r/sonar"):
+                self.assertEqual(counts.get(topic), 6, f"{topic}: one message per step, t = 0 to 1 s at 5 Hz")
+            self.assertNotIn("/r/ir_low_4", counts)
+            rear = log["first"]["/r/laser_rear"]
+            self.assertEqual((rear["header"]["frame_id"], len(rear["ranges"])), ("r/laser_rear", 31))
+            self.assertEqual(log["first"]["/r/ir_low_2"]["header"]["frame_id"], "r/ir_low_2")
+            sonar = log["first"]["/r/sonar"]
+            self.assertEqual((sonar["header"]["frame_id"], sonar["radiation_type"]), ("r/sonar", 0), "ULTRASOUND")
+            self.assertAlmostEqual(sonar["field_of_view"], 0.5, places=5)
+            self.assertAlmostEqual(sonar["range"], 2.1 - 0.19, delta=0.05, msg="the box face, from the body edge")
+            mounts = {tf["child_frame_id"]: tf["transform"]["translation"]
+                      for tf in log["last"]["/tf_static"]["transforms"]}
+            self.assertAlmostEqual(mounts["r/laser_rear"]["x"], -0.2)
+            self.assertIn("r/laser", mounts)
+            self.assertIn("r/ir_low_3", mounts)
+            self.assertAlmostEqual(mounts["r/sonar"]["x"], 0.19, msg="at the body edge, body_width / 2")
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "sim/assembly.h"
 #include "support/test_world.h"
 
 namespace sanet {
@@ -67,7 +68,7 @@ TEST_P(Drive, Omni3OdometryFollowsTheTruePose) {
                    BuiltinRegistry());
   world.Run({});
   const Pose2D truth = world.model(0).body().pose();
-  const Pose2D odo = *world.model(0).Odometry();
+  const Pose2D odo = *world.parts().node(0).Odometry();
   EXPECT_GT(Norm(truth.position() - Vec2{1, 2}), 1.5);
   EXPECT_LT(Norm(truth.position() - odo.position()), 0.1);
   EXPECT_LT(std::fabs(WrapAngle(truth.theta - odo.theta)), 0.05);

@@ -51,6 +51,14 @@ class Talker:
             node.send(self.peer_id, b"to you %d" % self.steps)
         node.broadcast(bytearray(b"all"))
 
+    def finish(self, node):
+        """Once, at the end: what Node.sensor gives by name, and a radio that may sleep."""
+        bearings = node.sensor("bearing")
+        near = [(node.name_of(b.node), round(b.reading.distance)) for b in bearings] if bearings is not None else None
+        node.log(f"finish steps={self.steps} truth={type(node.sensor('ground_truth')).__name__} "
+                 f"ir={type(node.sensor('ir')).__name__} nothing={node.sensor('nothing')} bearings={near} "
+                 f"wake={node.set_radio_sleep(False)}")
+
     def on_message(self, node, message):
         node.transition("listening", "heard", f"{node.name_of(message.sender)} {message.delivery} "
                                               f"{message.payload.decode()} to={message.to} "

@@ -107,6 +107,10 @@ class EveryMode(unittest.TestCase):
         self.assertGreater(xs[-1], xs[0] + 0.3, "it drove")
         distances = [float(m["value"]) for m in metrics if m["name"] == "bearing_distance"]
         self.assertTrue(distances and all(2 < d < 4 for d in distances), distances)
+        finish = [t for t in a if t.startswith("finish")]
+        self.assertEqual(len(finish), 1, "finish runs once")
+        self.assertRegex(finish[0], r"^finish steps=41 truth=Pose ir=RangeScan nothing=None bearings=\[\('b', \d\)\] "
+                                    r"wake=True$", "after the last step, every sensor by name")
 
     def test_isolated_and_again_give_the_same_run(self):
         prints = {tag: summary(out)["fingerprint"] for tag, out in self.runs.items()}
@@ -124,6 +128,9 @@ class EveryMode(unittest.TestCase):
         heard = {r["why"].split(" to=")[0] for r in rows(out, "transitions.csv") if r["node"] == "b"}
         self.assertIn("a unicast to you 5", heard)
         self.assertIn("a broadcast all", heard)
+        finish = [t for t in a if t.startswith("finish")]
+        self.assertEqual(len(finish), 1, "the agent's finish reaches the server's log before the results")
+        self.assertRegex(finish[0], r"truth=Pose ir=RangeScan nothing=None bearings=\[\('b', \d\)\]")
 
 
 class Determinism(unittest.TestCase):

@@ -18,6 +18,9 @@
 #include "ros2_agent/robot_topics.h"
 #include "ros2msg/codec.h"
 #include "scenario/yaml_reader.h"
+#include "sensors/ir/ir_ros2.h"
+#include "sensors/laser/laser_ros2.h"
+#include "sensors/range_fan.h"
 #include "sim/robot_messages.h"
 
 namespace sanet::ros2agent {
@@ -151,8 +154,8 @@ std::uint32_t TestDomain() { return 150 + static_cast<std::uint32_t>(::getpid() 
 TEST(Ros2Robot, ReadsTheRobotsTopicsAndDrivesItsCmdVel) {
   Ros2RobotSettings settings;
   settings.domain = TestDomain();
-  settings.model = robots::ModelSpec::Defaults(robots::ModelKind::kOmni3);
-  settings.topics = DefaultTopics("r1", settings.model.sensors.ir->angles.size());
+  settings.model = sensors::DefaultModel(robots::ModelKind::kOmni3);
+  settings.topics = DefaultTopics("r1", sensors::DefaultFan(settings.model, "ir")->angles.size());
   settings.topics.use_sim_time = true;
   settings.start = {2, 0, M_PI};
   Ros2Robot robot(settings);
@@ -176,7 +179,7 @@ TEST(Ros2Robot, ReadsTheRobotsTopicsAndDrivesItsCmdVel) {
   EXPECT_NEAR(robot.Odometry()->x, 1, 1e-9) << "1 m ahead of a start at x = 2 facing -x";
   EXPECT_NEAR(robot.GroundTruth()->x, 1, 1e-9) << "ground truth is in the world as it comes";
   EXPECT_NEAR(robot.Ir()->ranges[3], 0.3, 1e-6);
-  EXPECT_EQ(robot.Ir()->angles, settings.model.sensors.ir->angles);
+  EXPECT_EQ(robot.Ir()->angles, sensors::DefaultFan(settings.model, "ir")->angles);
   EXPECT_DOUBLE_EQ(*robot.SimTime(), 7.5);
   EXPECT_EQ(*robot.OdometryAt(), 1.0);
   std::vector<msg::geometry_msgs::Twist> heard;
@@ -194,7 +197,7 @@ TEST(Ros2Robot, ReadsTheRobotsTopicsAndDrivesItsCmdVel) {
 TEST(Ros2Robot, TwistStampedAndAPoseStampedGroundTruthAndBadSamplesCounted) {
   Ros2RobotSettings settings;
   settings.domain = TestDomain() + 30;
-  settings.model = robots::ModelSpec::Defaults(robots::ModelKind::kDiffDrive);
+  settings.model = sensors::DefaultModel(robots::ModelKind::kDiffDrive);
   settings.topics = DefaultTopics("r2", 0);
   Remap("ground_truth=/mocap/r2", settings.topics);
   settings.topics.ground_truth_type = GroundTruthType::kPoseStamped;

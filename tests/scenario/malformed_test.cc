@@ -5,6 +5,9 @@
 #include <fstream>
 
 #include "scenario/scenario_loader.h"
+#include "sensors/range_fan.h"
+#include "sim/assembly.h"
+#include "sim/world.h"
 #include "support/test_world.h"
 
 namespace sanet {
@@ -91,8 +94,8 @@ const Case kCases[] = {
      "spacing: [1, 1]}\n    model: mote\n",
      4, "nodes[1].grid", "m2 at (2.00, 0.00) overlaps r at (2.00, 0.00) (line 3)"},
     {"negative_seed", "seed: -4\nnodes: []\n", 2, "seed", "whole number >= 0"},
-    {"unknown_sensor", "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    sensors: {sonar: {}}\n", 6,
-     "nodes[0].sensors.sonar", "unknown key"},
+    {"unknown_sensor", "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    sensors: {radar: {}}\n", 6,
+     "nodes[0].sensors.radar", "unknown sensor 'radar'"},
     {"body_param_of_other_model",
      "nodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n    body: {axle_length: 0.3}\n", 6,
      "nodes[0].body.axle_length", "unknown key"},
@@ -197,12 +200,53 @@ TEST(Scenario, DefaultSensorsFollowTheBodyAndTrueAddsOne) {
   std::ofstream(path) << "duration: 1\nnodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n"
                          "    body: {body_radius: 0.3}\n    sensors: {laser: true, ir: {noise: 0.01}}\n";
   const scenario::Scenario sc = scenario::LoadScenario(path);
-  const auto& s = sc.run.nodes[0].model.sensors;
-  ASSERT_TRUE(s.ir && s.laser);
-  EXPECT_DOUBLE_EQ(s.ir->mount_radius, 0.3);
-  EXPECT_EQ(s.ir->angles.size(), 6u);
-  EXPECT_DOUBLE_EQ(s.ir->noise, 0.01);
-  EXPECT_EQ(s.laser->angles.size(), 181u);
+  const auto* ir = sensors::DefaultFan(sc.run.nodes[0].model, "ir");
+  const auto* laser = sensors::DefaultFan(sc.run.nodes[0].model, "laser");
+  ASSERT_TRUE(ir && laser);
+  EXPECT_DOUBLE_EQ(ir->mount_radius, 0.3);
+  EXPECT_EQ(ir->angles.size(), 6u);
+  EXPECT_DOUBLE_EQ(ir->noise, 0.01);
+  EXPECT_EQ(laser->angles.size(), 181u);
+}
+
+TEST(Scenario, NamedInstancesAddMoreSensorsOfAKind) {
+  const std::string path = ::testing::TempDir() + "/named-sensors.yaml";
+  std::ofstream(path) << "duration: 1\nnodes:\n  - name: r\n    model: diffdrive\n    pose: [0, 0, 0]\n"
+                         "    sensors: {laser_rear: {kind: laser, fov: 1.5, beams: 31, mount_x: -0.2}}\n";
+  const scenario::Scenario sc = scenario::LoadScenario(path);
+  const robots::ModelSpec& model = sc.run.nodes[0].model;
+  const auto* front = sensors::DefaultFan(model, "laser");
+  const auto* rear = sensors::SettingsOf<sensors::RangeFan>(model, "laser_rear", "laser");
+  ASSERT_TRUE(front && rear) << "the default laser stays beside the named one";
+  EXPECT_EQ(front->angles.size(), 181u);
+  EXPECT_EQ(rear->angles.size(), 31u);
+  EXPECT_DOUBLE_EQ(rear->mount_x, -0.2);
+  sim::World world(sc.run, testing::BuiltinRegistry());
+  const auto scan = world.parts().node(0).SensorAs<RangeScan>("laser_rear");
+  ASSERT_TRUE(scan);
+  EXPECT_EQ(scan->ranges.size(), 31u);
+  EXPECT_FALSE(world.parts().node(0).Sensor("laser_left")) << "no such instance";
+}
+
+TEST(Scenario, SensorInstancesAreCheckedByKind) {
+  const std::string path = ::testing::TempDir() + "/bad-sensors.yaml";
+  const auto error = [&](const std::string& sensors_yaml) {
+    std::ofstream(path) << "duration: 1\nnodes:\n  - name: r\n    model: diffdrive\n    pose: [0, 0, 0]\n"
+                           "    sensors: "
+                        << sensors_yaml << "\n";
+    try {
+      scenario::LoadScenario(path);
+    } catch (const scenario::ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error("{radar: {max_range: 2}}").find("unknown sensor 'radar'"), std::string::npos);
+  EXPECT_NE(error("{rear: {kind: radar}}").find("unknown sensor kind 'radar' (known: ir, laser"), std::string::npos);
+  EXPECT_NE(error("{laser: {kind: ir}}").find("give this ir another name"), std::string::npos);
+  EXPECT_NE(error("{rear: {kind: laser, colour: red}}").find("unknown key"), std::string::npos);
+  EXPECT_NE(error("{ground_truth: false}").find("every node has its ground_truth"), std::string::npos);
+  EXPECT_NE(error("{bearing: true}").find("needs its keys"), std::string::npos);
 }
 
 TEST(Scenario, IrAnglesReplaceTheEvenRing) {
@@ -210,7 +254,7 @@ TEST(Scenario, IrAnglesReplaceTheEvenRing) {
   std::ofstream(path) << "duration: 1\nnodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n"
                          "    sensors: {ir: {angles: [0, 1.5708, -1.5708], max_range: 1.5}}\n";
   const scenario::Scenario sc = scenario::LoadScenario(path);
-  const auto& ir = *sc.run.nodes[0].model.sensors.ir;
+  const auto& ir = *sensors::DefaultFan(sc.run.nodes[0].model, "ir");
   ASSERT_EQ(ir.angles.size(), 3u);
   EXPECT_DOUBLE_EQ(ir.angles[2], -1.5708);
   EXPECT_DOUBLE_EQ(ir.max_range, 1.5);

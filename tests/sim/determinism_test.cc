@@ -6,6 +6,9 @@
 #include <sstream>
 
 #include "scenario/scenario_loader.h"
+#include "sensors/ground_truth/ground_truth.h"
+#include "sensors/odometry/odometry.h"
+#include "sensors/range_fan.h"
 #include "support/test_world.h"
 
 namespace sanet {
@@ -29,8 +32,8 @@ sim::RunSpec NoisyScenario(std::uint64_t seed) {
   sim::RunSpec spec = scenario::LoadScenario(SANET_SOURCE_DIR "/scenarios/around-the-wall.yaml").run;
   spec.duration = 40;
   spec.seed = seed;
-  spec.nodes[0].model.sensors.ir->noise = 0.02;
-  spec.nodes[0].model.sensors.ground_truth_noise_position = 0.01;
+  SensorSettings<sensors::RangeFan>(spec.nodes[0], "ir").noise = 0.02;
+  SensorSettings<sensors::GroundTruthSettings>(spec.nodes[0], "ground_truth").noise_position = 0.01;
   return spec;
 }
 
@@ -57,7 +60,7 @@ TEST(Determinism, OdometryReadsGiveTheSameBytesOnTwoThreads) {
   ParamValue odometry;
   odometry.rows = {{"odometry"}};
   spec.nodes[0].controller->params.Set("localization", odometry);
-  spec.nodes[0].model.sensors.odometry_noise = 0.02;
+  SensorSettings<sensors::OdometrySettings>(spec.nodes[0], "odometry").noise = 0.02;
   const Outputs one = RunScenario(spec, "odometry-1");
   spec.threads = 2;
   const Outputs two = RunScenario(spec, "odometry-2");

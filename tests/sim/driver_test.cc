@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sensors/ground_truth/ground_truth.h"
+#include "sensors/odometry/odometry.h"
 #include "sim/world.h"
 #include "support/test_world.h"
 
@@ -15,8 +17,9 @@ namespace {
 sim::RunSpec TwoRobots() {
   sim::RunSpec spec = testing::Spec(1, {testing::Robot("r1", robots::ModelKind::kDiffDrive, {0, 0, 0}),
                                         testing::Robot("r2", robots::ModelKind::kOmni3, {3, 0, 0})});
-  spec.nodes[0].model.sensors.odometry_noise = 0.05;
-  spec.nodes[0].model.sensors.ground_truth_noise_position = 0.1;  // noisy: a second read would draw again
+  testing::SensorSettings<sensors::OdometrySettings>(spec.nodes[0], "odometry").noise = 0.05;
+  testing::SensorSettings<sensors::GroundTruthSettings>(spec.nodes[0], "ground_truth").noise_position =
+      0.1;  // noisy: a second read would draw again
   return spec;
 }
 
@@ -45,10 +48,10 @@ TEST(Driver, OnlyTheOwnerReadsTheSensorsAndOthersSeeItsReading) {
   EXPECT_THROW(driver.TakeReadings(r1, "viewer"), std::logic_error);
   ASSERT_FALSE(driver.Claim(r1, "owner"));
   const sim::SensorReadings taken = driver.TakeReadings(r1, "owner");
-  ASSERT_TRUE(taken.odometry);
+  ASSERT_TRUE(taken.odometry());
   const sim::SensorReadings& seen = driver.LastReadings(r1);
   EXPECT_EQ(seen.time, taken.time);
-  EXPECT_EQ(seen.odometry->x, taken.odometry->x);
+  EXPECT_EQ(seen.odometry()->x, taken.odometry()->x);
   EXPECT_EQ(seen.ground_truth.x, taken.ground_truth.x);
   EXPECT_NE(taken.ground_truth.x, 0) << "the noisy ground truth drew";
   EXPECT_EQ(driver.TakeReadings(r1, "owner").ground_truth.x, taken.ground_truth.x)

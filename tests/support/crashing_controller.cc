@@ -2,7 +2,8 @@
 // a broken plugin would (`how`: segfault, abort or exit; or throws, `how: throw`) after `after` seconds; `wander`
 // drives with the node's random numbers, logs, reports a metric and reads its sensors, so that a run with and without
 // isolation can be compared byte for byte; `nan_driver` gives its node commands that are not numbers during its first
-// second, between ones that are (the Node contract); `network_probe` logs its node's network view at every step.
+// second, between ones that are (the Node contract); `network_probe` logs its node's network view at every step;
+// `api_probe` uses what controller API 6 added (Node::Sensor, SetRadioSleep, Controller::Finish).
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -91,9 +92,53 @@ class NetworkProbe : public sanet::Controller {
   double invalidate_at_;
 };
 
+// Reads a named sensor instance, one that does not exist and the ground truth through
+// Node::Sensor; puts its radio to sleep from `sleep_from` to `sleep_to` s (metrics sleep_taken,
+// wake_taken); broadcasts at every step and records each message it hears (metric
+// heard_<sender>, valued the time it heard it); in Finish, how many it heard (finished_heard).
+class ApiProbe : public sanet::Controller {
+ public:
+  explicit ApiProbe(const sanet::Params& p)
+      : sleep_from_(p.Number("sleep_from", -1)), sleep_to_(p.Number("sleep_to", -1)) {}
+  void Start(sanet::Node& node) override {
+    const auto rear = node.SensorAs<sanet::RangeScan>("laser_rear");
+    node.Metric("rear_beams", rear ? static_cast<double>(rear->ranges.size()) : -1);
+    node.Metric("unknown_sensor", node.Sensor("no_such_sensor") ? 1 : 0);
+    node.Metric("truth_is_pose", node.SensorAs<sanet::Pose2D>("ground_truth") ? 1 : 0);
+    const auto sonar = node.SensorAs<sanet::RangeScan>("sonar");
+    node.Metric("sonar_range", sonar ? sonar->ranges.at(0) : -1);
+  }
+  void ControlStep(sanet::Node& node) override {
+    if (sleep_from_ >= 0 && state_ == 0 && node.Now() >= sleep_from_) {
+      state_ = 1;
+      node.Metric("sleep_taken", node.SetRadioSleep(true) ? 1 : 0);
+    }
+    if (state_ == 1 && node.Now() >= sleep_to_) {
+      state_ = 2;
+      node.Metric("wake_taken", node.SetRadioSleep(false) ? 1 : 0);
+    }
+    node.Broadcast({1});
+  }
+  void OnMessage(sanet::Node& node, const sanet::Message& m) override {
+    node.Metric("heard_" + node.NameOf(m.from), node.Now());
+    ++heard_;
+  }
+  void Finish(sanet::Node& node) override {
+    node.Metric("finished_heard", heard_);
+    node.Log("finished at " + std::to_string(node.Now()));
+  }
+
+ private:
+  double sleep_from_, sleep_to_;
+  int state_ = 0;  // 0 awake, 1 asleep, 2 woken
+  int heard_ = 0;
+};
+
 }  // namespace
 
 SANET_CONTROLLER_PLUGIN(registry) {
+  registry.Add({"api_probe", "uses Node::Sensor, SetRadioSleep and Controller::Finish",
+                [](const sanet::Params& p) { return std::make_unique<ApiProbe>(p); }});
   registry.Add({"crash_after", "drives, then crashes its process",
                 [](const sanet::Params& p) { return std::make_unique<CrashAfter>(p); }});
   registry.Add({"nan_driver", "gives its node commands that are not numbers, between ones that are",

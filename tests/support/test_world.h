@@ -11,6 +11,7 @@
 
 #include "agents/controller_registry.h"
 #include "builtin.h"
+#include "sensors/sensor_registry.h"
 #include "sim/run_spec.h"
 #include "sim/world.h"
 
@@ -43,7 +44,14 @@ inline sim::ControllerSpec UseController(std::string name, std::vector<std::pair
 
 inline sim::NodeSpec Robot(std::string name, robots::ModelKind kind, Pose2D pose,
                            std::optional<sim::ControllerSpec> controller = std::nullopt) {
-  return {std::move(name), robots::ModelSpec::Defaults(kind), pose, std::move(controller), {}};
+  return {std::move(name), sensors::DefaultModel(kind), pose, std::move(controller), {}};
+}
+
+// The settings of a node's sensor instance, as its kind keeps them (sensors::RangeFan for ir and
+// laser, sensors::BearingSettings, ...).
+template <typename T>
+T& SensorSettings(sim::NodeSpec& node, const std::string& instance) {
+  return std::any_cast<T&>(node.model.sensors.at(instance).settings);
 }
 
 inline sim::RunSpec Spec(double duration, std::vector<sim::NodeSpec> nodes) {

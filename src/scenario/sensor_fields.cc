@@ -1,0 +1,113 @@
+#include "scenario/sensor_fields.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "sensors/sensor_registry.h"
+
+namespace sanet::scenario {
+namespace {
+
+const SensorFields& FieldsOf(const std::string& kind) {
+#define SANET_FIELDS_IF(name, Name) \
+  if (kind == #name) return Name##SensorFields();
+  SANET_SENSOR_KINDS(SANET_FIELDS_IF)
+#undef SANET_FIELDS_IF
+  throw std::logic_error("sensor kind " + kind + " has no scenario fields");
+}
+
+// The kind of the instance `name`: its `kind` key, or its own name (a kind's default instance).
+const sensors::SensorKind& KindOf(const std::string& name, const Field& value) {
+  const sensors::SensorKind* own = sensors::FindKind(name);
+  const std::optional<Field> key = value.IsMap() ? value.Get("kind") : std::nullopt;
+  if (!key) {
+    if (!own)
+      value.Fail("unknown sensor '" + name + "': a sensor is a kind's name (" + sensors::KindNames() +
+                 ") or another name with `kind:`");
+    return *own;
+  }
+  const std::string kind = key->Text();
+  const sensors::SensorKind* named = sensors::FindKind(kind);
+  if (!named) key->Fail("unknown sensor kind '" + kind + "' (known: " + sensors::KindNames() + ")");
+  if (own && own != named)
+    key->Fail("'" + name + "' is the " + name + " sensor's own name: give this " + kind + " another name");
+  return *named;
+}
+
+void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec& model) {
+  const sensors::SensorKind& kind = KindOf(name, value);
+  const std::string& kind_name = kind.Info().name;
+  if (value.IsScalar() && !value.Bool()) {
+    if (!kind.Removable()) value.Fail("every node has its " + name + ": give it keys (noise) instead of false");
+    model.sensors.erase(name);
+    return;
+  }
+  if (const auto why = kind.Refuses(model)) value.Fail(*why);
+  const auto it = model.sensors.find(name);
+  std::any settings = kind.DefaultSettings(model);
+  if (value.IsScalar()) {  // true: the kind's default instance
+    if (FieldsOf(kind_name).NeedsKeys())
+      value.Fail("a " + kind_name + " sensor needs its keys (see sanet list --sensors)");
+  } else {
+    if (it != model.sensors.end() && it->second.kind == kind_name) settings = it->second.settings;
+    FieldsOf(kind_name).Read(value, settings);
+  }
+  model.sensors[name] = {kind_name, std::move(settings)};
+}
+
+// The instance as the effective scenario prints it: a named one starts with its kind.
+YAML::Node PrintInstance(const std::string& name, const robots::SensorConfig& config) {
+  const YAML::Node keys = FieldsOf(config.kind).Print(config.settings);
+  if (name == config.kind) return keys;
+  YAML::Node out(YAML::NodeType::Map);
+  out["kind"] = config.kind;
+  for (const auto& entry : keys) out[entry.first.Scalar()] = entry.second;
+  return out;
+}
+
+}  // namespace
+
+void ReadSensors(const Field& field, robots::ModelSpec& model) {
+  if (!field.IsMap())
+    field.Fail("expected a mapping of sensors by name (" + sensors::KindNames() + ", or a name with `kind:`)");
+  for (const auto& entry : field.node()) {
+    const std::string name = entry.first.Scalar();
+    ReadInstance(name, *field.Get(name), model);
+  }
+}
+
+YAML::Node PrintSensors(const robots::ModelSpec& model) {
+  YAML::Node out(YAML::NodeType::Map);
+  const std::vector<std::string> carried = robots::DefaultSensorKinds(model);
+  const auto instances = sensors::OrderedSensors(model);
+  for (const sensors::SensorKind* kind : sensors::AllKinds()) {
+    const std::string& name = kind->Info().name;
+    const auto own = model.sensors.find(name);
+    const bool has_own = own != model.sensors.end() && own->second.kind == name;
+    const bool is_carried = std::find(carried.begin(), carried.end(), name) != carried.end();
+    if (!has_own && (FieldsOf(name).PrintsAbsence() || is_carried)) out[name] = false;
+    for (const auto& [instance, config] : instances)
+      if (config->kind == name) out[instance] = PrintInstance(instance, *config);
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, std::vector<FieldInfo>>> SensorTables() {
+  std::vector<std::pair<std::string, std::vector<FieldInfo>>> tables;
+  for (const sensors::SensorKind* kind : sensors::AllKinds()) {
+    const std::string& name = kind->Info().name;
+    // The defaults of the first model that carries the kind (any model's, if none does).
+    robots::ModelSpec example = robots::ModelSpec::Defaults(robots::AllModels().front());
+    for (robots::ModelKind model : robots::AllModels()) {
+      const auto carried = robots::DefaultSensorKinds(robots::ModelSpec::Defaults(model));
+      if (std::find(carried.begin(), carried.end(), name) != carried.end()) {
+        example = robots::ModelSpec::Defaults(model);
+        break;
+      }
+    }
+    tables.push_back({"sensors." + name, FieldsOf(name).Describe(kind->DefaultSettings(example))});
+  }
+  return tables;
+}
+
+}  // namespace sanet::scenario

@@ -1,0 +1,35 @@
+// Odometry as USARSim's Odometry sensor: {Pose x,y,yaw}.
+#include "wire/sensor_lines.h"
+
+namespace sanet::hil {
+namespace {
+
+class OdometryLines : public SensorLines {
+ public:
+  std::vector<ProtocolMessage> Write(const std::string& instance, const SensorReading& reading,
+                                     const LineContext& context) const override {
+    return {SenLine(context.time, "Odometry")
+                .Add("Name", WireName(instance, "odometry", "Odometry"))
+                .Add("Pose", UsarsimPose(std::get<Pose2D>(reading)))};
+  }
+  std::optional<std::string> InstanceOf(const ProtocolMessage& line) const override {
+    const std::string *type = line.Get("Type"), *name = line.Get("Name");
+    if (!type || *type != "Odometry") return std::nullopt;
+    return InstanceNamed(name ? *name : "Odometry", "odometry", "Odometry");
+  }
+  std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& /*settings*/,
+                                    const LineContext& /*context*/) const override {
+    const auto p = line.Numbers("Pose");
+    if (!p || p->size() < 3) return std::nullopt;
+    return SanetPose((*p)[0], (*p)[1], (*p)[2]);
+  }
+};
+
+}  // namespace
+
+const SensorLines& OdometrySensorLines() {
+  static const OdometryLines lines;
+  return lines;
+}
+
+}  // namespace sanet::hil

@@ -1,0 +1,71 @@
+// A kind of sensor as the simulation kernel knows it: what it is (for `sanet list`), where a
+// model carries it by default and with which settings, and how one instance on a node reads the
+// world. Each kind is one folder, sensors/<kind>/, registered once in sensors/sensor_kinds.h;
+// its other layers' parts (scenario fields, USARSim lines, ROS 2 messages) sit beside it.
+#pragma once
+
+#include <any>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/random_stream.h"
+#include "physics/physics_world.h"
+#include "robots/node_model.h"
+#include "sanet/readings.h"
+
+namespace sanet::sensors {
+
+// What `sanet list --sensors` says of a kind.
+struct SensorInfo {
+  std::string name;       // the kind's name, and its default instance's
+  std::string summary;    // what it measures, in a line
+  std::string reading;    // the C++ reading type (sanet/readings.h) Node::Sensor gives
+  std::string units;      // of the reading's fields
+  std::string ros2_type;  // the ROS 2 message it is published as ("" if none)
+  std::string topic;      // its default instance's topic under /<robot>
+};
+
+// What a read may look at besides its own node: the other nodes, and a target when the read is
+// aimed at one node (Node::Bearing).
+struct ReadContext {
+  NodeId self = 0;
+  std::size_t node_count = 0;
+  std::function<Pose2D(NodeId)> true_pose;
+  std::optional<NodeId> target;
+};
+
+// One sensor on one node.
+class SensorInstance {
+ public:
+  virtual ~SensorInstance() = default;
+  // Empty when the sensor has nothing to say (a target out of range).
+  virtual std::optional<SensorReading> Read(const ReadContext& context) = 0;
+  // After every physics step of a moving node: for sensors that integrate (odometry).
+  virtual void AfterPhysicsStep() {}
+};
+
+// Where an instance sits and what it draws its noise from.
+struct Mount {
+  physics::PhysicsWorld& world;
+  const robots::NodeModel& model;
+  Pose2D start;         // the node's pose when the run began
+  RandomStream random;  // the instance's own stream
+};
+
+class SensorKind {
+ public:
+  virtual ~SensorKind() = default;
+  virtual const SensorInfo& Info() const = 0;
+  // The settings of the kind on `model` when the scenario gives none (or says `true`).
+  virtual std::any DefaultSettings(const robots::ModelSpec& model) const = 0;
+  // Whether a scenario may take the kind's default instance off a node (`ground_truth: false` is
+  // refused: front ends report every robot's pose).
+  virtual bool Removable() const { return true; }
+  // Why the kind cannot sit on `model` ("a mote has no wheels, so no odometry"); empty if it can.
+  virtual std::optional<std::string> Refuses(const robots::ModelSpec& /*model*/) const { return std::nullopt; }
+  virtual std::unique_ptr<SensorInstance> Create(const std::any& settings, Mount mount) const = 0;
+};
+
+}  // namespace sanet::sensors

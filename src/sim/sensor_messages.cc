@@ -1,0 +1,13 @@
+#include "sim/sensor_messages.h"
+
+namespace sanet::sim {
+
+const SensorMessages* MessagesOf(const std::string& kind) {
+#define SANET_MESSAGES_IF(name, Name) \
+  if (kind == #name) return &Name##SensorMessages();
+  SANET_SENSOR_KINDS(SANET_MESSAGES_IF)
+#undef SANET_MESSAGES_IF
+  return nullptr;
+}
+
+}  // namespace sanet::sim

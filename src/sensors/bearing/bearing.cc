@@ -43,9 +43,10 @@ class Bearing : public SensorKind {
  public:
   const SensorInfo& Info() const override {
     static const SensorInfo info{"bearing",
-                                 "distance and direction to every other node within range",
-                                 "BearingsReading (Node::Bearing(target) reads one node)",
-                                 "distance in m, bearing in rad (robot frame)",
+                                 "distance and direction to every other node within range (Node::Bearing(target) "
+                                 "reads one node)",
+                                 "BearingsReading",
+                                 "distance in m, bearing in rad, robot frame",
                                  "",
                                  ""};
     return info;

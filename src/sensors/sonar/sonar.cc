@@ -44,8 +44,8 @@ class Sonar : public SensorKind {
   const SensorInfo& Info() const override {
     static const SensorInfo info{"sonar",
                                  "an ultrasonic range finder: the nearest thing within a cone",
-                                 "RangeScan (one range, at the cone's direction)",
-                                 "range in m, direction in rad",
+                                 "RangeScan",
+                                 "one range in m, at the cone's direction in rad",
                                  "sensor_msgs/msg/Range (ULTRASOUND)",
                                  "sonar"};
     return info;

@@ -72,7 +72,8 @@ std::string ModelSection() {
   for (robots::ModelKind kind : robots::AllModels()) {
     const robots::ModelSpec model = robots::ModelSpec::Defaults(kind);
     out += Line("  %-10s %s\n", robots::ModelName(kind), robots::ModelOf(kind).Summary());
-    out += Line("      %-20s %s\n", "sensors", Joined(robots::DefaultSensorKinds(model)));
+    out += Line("      %-20s %s\n", "carries",
+                Joined(robots::DefaultSensorKinds(model)) + " (any other kind may be added)");
     if (robots::HasDrive(model))
       out += Line("      %-20s %s\n", "drive limits",
                   ShortNumber(model.max_speed) + " m/s, " + ShortNumber(model.max_turn_rate) + " rad/s");
@@ -83,7 +84,9 @@ std::string ModelSection() {
 
 // Each sensor kind: what it measures, what Node::Sensor gives, its ROS 2 message, its keys.
 std::string SensorSection() {
-  std::string out = "sensors (keys under a node's `sensors`; more of a kind under another name with `kind: KIND`):\n";
+  std::string out =
+      "sensors (keys under a node's `sensors`; more of a kind under another name with `kind: KIND`, whose topics\n"
+      "take its name in place of the kind's; Python's node.sensor(name) gives the same reading, scans as numpy):\n";
   for (const sensors::SensorKind* kind : sensors::AllKinds()) {
     const sensors::SensorInfo& info = kind->Info();
     out += Line("  %-12s %s\n", info.name, info.summary);

@@ -1,9 +1,12 @@
 #include "scenario/sensor_fields.h"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <stdexcept>
 
 #include "sensors/sensor_registry.h"
+#include "sim/sensor_messages.h"
 
 namespace sanet::scenario {
 namespace {
@@ -34,11 +37,32 @@ const sensors::SensorKind& KindOf(const std::string& name, const Field& value) {
   return *named;
 }
 
+// "noise_position, noise_angle": the kind's keys (those without a default only, if `required`).
+std::string KeysOf(const sensors::SensorKind& kind, const robots::ModelSpec& model, bool required) {
+  std::string keys;
+  for (const FieldInfo& f : FieldsOf(kind.Info().name).Describe(kind.DefaultSettings(model)))
+    if (!required || f.default_text == kRequired) keys += (keys.empty() ? "" : ", ") + f.key;
+  return keys;
+}
+
+// A letter, then letters, digits and _: the name is part of the sensor's topics and frames.
+bool IsToken(const std::string& name) {
+  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0]))) return false;
+  return std::all_of(name.begin(), name.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
 void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec& model) {
+  if (!IsToken(name))
+    value.Fail(
+        "a sensor's name is letters, digits and _, starting with a letter: it names its ROS 2 topics and "
+        "frames");
   const sensors::SensorKind& kind = KindOf(name, value);
   const std::string& kind_name = kind.Info().name;
   if (value.IsScalar() && !value.Bool()) {
-    if (!kind.Removable()) value.Fail("every node has its " + name + ": give it keys (noise) instead of false");
+    if (!kind.Removable())
+      value.Fail("every node has its " + name + ", which cannot be taken off; its keys are " +
+                 KeysOf(kind, model, false));
     model.sensors.erase(name);
     return;
   }
@@ -47,12 +71,31 @@ void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec
   std::any settings = kind.DefaultSettings(model);
   if (value.IsScalar()) {  // true: the kind's default instance
     if (FieldsOf(kind_name).NeedsKeys())
-      value.Fail("a " + kind_name + " sensor needs its keys (see sanet list --sensors)");
+      value.Fail("a " + kind_name + " sensor needs " + KeysOf(kind, model, true) + ": give {" +
+                 KeysOf(kind, model, true) + ": ...} instead of true");
   } else {
     if (it != model.sensors.end() && it->second.kind == kind_name) settings = it->second.settings;
     FieldsOf(kind_name).Read(value, settings);
   }
   model.sensors[name] = {kind_name, std::move(settings)};
+}
+
+// No two instances publish on one topic (`scan: {kind: sonar}` beside the laser's /R/scan).
+void CheckTopics(const Field& field, const robots::ModelSpec& model) {
+  std::map<std::string, std::string> publisher;  // topic -> instance
+  for (const auto& [instance, config] : sensors::PresentationOrder(model)) {
+    const sim::SensorMessages* kind = sim::MessagesOf(config->kind);
+    if (!kind) continue;
+    for (const sim::SensorTopic& topic : kind->Topics(instance, config->settings)) {
+      const auto [other, fresh] = publisher.emplace(topic.name, instance);
+      if (fresh) continue;
+      const std::string named = instance == config->kind ? other->second : instance;
+      const std::optional<Field> at = field.Get(named);
+      (at ? *at : field)
+          .Fail("sensors '" + other->second + "' and '" + instance + "' would both publish /<robot>/" + topic.name +
+                ": give '" + named + "' another name");
+    }
+  }
 }
 
 // The instance as the effective scenario prints it: a named one starts with its kind.
@@ -70,10 +113,11 @@ YAML::Node PrintInstance(const std::string& name, const robots::SensorConfig& co
 void ReadSensors(const Field& field, robots::ModelSpec& model) {
   if (!field.IsMap())
     field.Fail("expected a mapping of sensors by name (" + sensors::KindNames() + ", or a name with `kind:`)");
-  for (const auto& entry : field.node()) {
-    const std::string name = entry.first.Scalar();
-    ReadInstance(name, *field.Get(name), model);
-  }
+  std::vector<std::string> names;
+  for (const auto& entry : field.node()) names.push_back(entry.first.Scalar());
+  field.ExpectKeys(names);  // each name once
+  for (const std::string& name : names) ReadInstance(name, *field.Get(name), model);
+  CheckTopics(field, model);
 }
 
 YAML::Node PrintSensors(const robots::ModelSpec& model) {

@@ -28,11 +28,13 @@ std::optional<SensorReading> RangeFanSensor::Read(const ReadContext& /*context*/
   const Pose2D pose = self.pose();
   RangeScan scan;
   scan.angles = fan_.angles;
+  if (fan_.direction != 0)
+    for (double& angle : scan.angles) angle += fan_.direction;
   scan.max_range = fan_.max_range;
   const Vec2 mount = ToWorld(pose, {fan_.mount_x, 0});
   std::vector<physics::PhysicsWorld::Ray> rays;
   rays.reserve(fan_.angles.size());
-  for (double angle : fan_.angles) {
+  for (double angle : scan.angles) {
     const double heading = pose.theta + angle;
     const Vec2 dir{std::cos(heading), std::sin(heading)};
     const Vec2 origin = mount + dir * fan_.mount_radius;

@@ -10,7 +10,8 @@
 namespace sanet::sensors {
 
 struct RangeFan {
-  std::vector<double> angles;  // rad, robot frame, one per beam
+  std::vector<double> angles;  // rad, one per beam, from `direction`
+  double direction = 0;        // rad, robot frame: where the fan points (0 ahead); a reading's angles include it
   double max_range = 1.0;      // m
   double mount_x = 0;          // m, robot frame, where the rays start (before `mount_radius`)
   double mount_radius = 0;     // m, rays start this far out along their own direction

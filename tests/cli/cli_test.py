@@ -78,7 +78,7 @@ class Cli(unittest.TestCase):
         self.assertNotIn("models (", sensors)
         models = sanet("list", "--models").stdout
         self.assertTrue(models.startswith("models ("), models[:40])
-        self.assertIn("sensors              ir, odometry, ground_truth", models, "omni3 carries these")
+        self.assertIn("carries              ir, odometry, ground_truth", models, "omni3 carries these")
         self.assertIn("drive limits         1.2 m/s, 3 rad/s", models, "diffdrive's")
         self.assertNotIn("sensors (keys", models)
         both = sanet("list", "--models", "--sensors").stdout

@@ -227,7 +227,7 @@ nodes:
     model: diffdrive
     pose: [0, 0, 0]
     sensors:
-      laser_rear: {kind: laser, fov: 1.5, beams: 31, mount_x: -0.2}
+      laser_rear: {kind: laser, direction: 3.141592653589793, fov: 1.5, beams: 31, mount_x: -0.2}
       ir_low: {kind: ir, count: 4}
       sonar: {}
     controller: {python: "reader:Reader", rate: 5}
@@ -266,6 +266,9 @@ class NamedInstances(unittest.TestCase):
             mounts = {tf["child_frame_id"]: tf["transform"]["translation"]
                       for tf in log["last"]["/tf_static"]["transforms"]}
             self.assertAlmostEqual(mounts["r/laser_rear"]["x"], -0.2)
+            turned = {tf["child_frame_id"]: tf["transform"]["rotation"] for tf in log["last"]["/tf_static"]["transforms"]}
+            self.assertAlmostEqual(abs(turned["r/laser_rear"]["z"]), 1.0, msg="the rear laser's frame is turned by pi")
+            self.assertAlmostEqual(rear["angle_min"], -0.75, places=5, msg="its angles in its own frame")
             self.assertIn("r/laser", mounts)
             self.assertIn("r/ir_low_3", mounts)
             self.assertAlmostEqual(mounts["r/sonar"]["x"], 0.19, msg="at the body edge, body_width / 2")

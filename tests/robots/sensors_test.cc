@@ -84,6 +84,23 @@ TEST_P(RangeSensors, SonarReadsTheNearestThingInItsCone) {
   EXPECT_NEAR(side->angles[0], kPi / 2, 1e-12);
 }
 
+// A laser turned by `direction` looks backwards; its angles are in the robot frame.
+TEST_P(RangeSensors, ATurnedLaserLooksWhereItPoints) {
+  sim::RunSpec spec = On(GetParam(), Spec(0.2, {Robot("r", ModelKind::kDiffDrive, {0, 0, 0})}));
+  robots::ModelSpec& model = spec.nodes[0].model;
+  sensors::RangeFan rear = sensors::RangeFan::Fan(1.0, 11, -0.25, 0.2, 8);
+  rear.direction = kPi;
+  model.sensors["laser_rear"] = {"laser", rear};
+  spec.obstacles = {Wall({-2.1, -3}, {-2.1, 3})};  // face at x = -2.0, behind
+  sim::World world(spec, BuiltinRegistry());
+  Settle(world);
+  const auto scan = world.parts().node(0).SensorAs<RangeScan>("laser_rear");
+  ASSERT_TRUE(scan);
+  EXPECT_NEAR(scan->angles[5], kPi, 1e-12) << "the middle beam points backwards";
+  EXPECT_NEAR(scan->ranges[5], 2.0 - 0.25, kTolerance) << "from the mount at the rear";
+  EXPECT_DOUBLE_EQ(world.parts().node(0).Laser()->ranges[90], 8) << "nothing ahead";
+}
+
 INSTANTIATE_TEST_SUITE_P(BothEngines, RangeSensors, kEngines, EngineName);
 
 TEST(Laser, NoiseChangesReadingsAroundTheTruth) {

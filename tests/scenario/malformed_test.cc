@@ -245,8 +245,20 @@ TEST(Scenario, SensorInstancesAreCheckedByKind) {
   EXPECT_NE(error("{rear: {kind: radar}}").find("unknown sensor kind 'radar' (known: ir, laser"), std::string::npos);
   EXPECT_NE(error("{laser: {kind: ir}}").find("give this ir another name"), std::string::npos);
   EXPECT_NE(error("{rear: {kind: laser, colour: red}}").find("unknown key"), std::string::npos);
-  EXPECT_NE(error("{ground_truth: false}").find("every node has its ground_truth"), std::string::npos);
-  EXPECT_NE(error("{bearing: true}").find("needs its keys"), std::string::npos);
+  EXPECT_NE(error("{ground_truth: false}")
+                .find("every node has its ground_truth, which cannot be taken off; its keys are noise_position, "
+                      "noise_angle"),
+            std::string::npos);
+  EXPECT_NE(error("{bearing: true}").find("a bearing sensor needs range: give {range: ...} instead of true"),
+            std::string::npos);
+  EXPECT_NE(error("{sonar: {}, sonar: {fov: 1}}").find("'nodes[0].sensors.sonar': key given twice"), std::string::npos);
+  EXPECT_NE(error("{laser rear: {kind: laser}}").find("a sensor's name is letters, digits and _"), std::string::npos);
+  EXPECT_NE(error("{scan: {kind: sonar}}")
+                .find("'nodes[0].sensors.scan': sensors 'laser' and 'scan' would both publish /<robot>/scan: give "
+                      "'scan' another name"),
+            std::string::npos);
+  EXPECT_EQ(error("{odometry: false, sonar_left: {kind: sonar, direction: 1.5}}"), "no error")
+      << "a robot may go without odometry, and carry a second sonar";
 }
 
 TEST(Scenario, IrAnglesReplaceTheEvenRing) {

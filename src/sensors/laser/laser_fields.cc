@@ -12,12 +12,13 @@ struct LaserSettings {
   int beams = 0;
   std::vector<double> angles;  // given instead of fov and beams: the beams' directions, right to left
   double max_range = 0, height = 0, mount_x = 0, noise = 0;
+  double direction = 0;  // rad: where the fan or the angles point
 };
 
 // A fan's fov and beam count when its directions are exactly those of such a fan; its
 // directions otherwise.
 LaserSettings PrintedSettings(const sensors::RangeFan& laser) {
-  LaserSettings s{0, 0, {}, laser.max_range, laser.mount_height, laser.mount_x, laser.noise};
+  LaserSettings s{0, 0, {}, laser.max_range, laser.mount_height, laser.mount_x, laser.noise, laser.direction};
   const int beams = static_cast<int>(laser.angles.size());
   const double fov = beams > 1 ? laser.angles.back() - laser.angles.front() : kPi;
   if (beams > 0 && sensors::RangeFan::Fan(fov, beams, 0, 0, 1).angles == laser.angles)
@@ -53,6 +54,12 @@ const Fields<LaserSettings>& LaserFields() {
         [](const Field& v, LaserSettings& s) { s.mount_x = v.Number(-10, 10); },
         [](const LaserSettings& s) { return NumberNode(s.mount_x); });
     f.Number("noise", Member(&LaserSettings::noise), "m", 0, 100, "standard deviation of each range");
+    // Printed only when turned, so that the effective copy of a forward laser stays as it was.
+    f.Custom(
+        {"direction", "number", "rad", "`0`", "[−2π, 2π]",
+         "where the laser points, robot frame (π: backwards); `fov` and `angles` are around it"},
+        [](const Field& v, LaserSettings& s) { s.direction = v.Number(-2 * kPi, 2 * kPi); },
+        [](const LaserSettings& s) { return s.direction != 0 ? NumberNode(s.direction) : YAML::Node(); });
     return f;
   }();
   return fields;
@@ -71,11 +78,13 @@ class LaserKeys : public SensorFields {
                     base.max_range,
                     base.mount_height,
                     base.mount_x,
-                    base.noise};
+                    base.noise,
+                    base.direction};
     LaserFields().Read(field, s, {"kind"});
     sensors::RangeFan laser = sensors::RangeFan::Fan(s.fov, s.beams, s.mount_x, s.height, s.max_range);
     if (!s.angles.empty()) laser.angles = s.angles;
     laser.noise = s.noise;
+    laser.direction = s.direction;
     settings = laser;
   }
   YAML::Node Print(const std::any& settings) const override {

@@ -34,16 +34,20 @@ class LaserMessages : public SensorMessages {
   std::vector<SensorTopic> Topics(const std::string& instance, const std::any& /*settings*/) const override {
     return {TopicFor<msg::sensor_msgs::LaserScan>(TopicName(instance, "laser", "scan"))};
   }
-  std::vector<SensorMessage> Messages(const std::string& instance, const std::any& /*settings*/,
+  std::vector<SensorMessage> Messages(const std::string& instance, const std::any& settings,
                                       const SensorReading& reading, const MessageContext& context) const override {
     const std::string frame = context.frames->Sensor(FrameName(instance));
-    return {MessageOn(0, ScanOf(std::get<RangeScan>(reading), context.time, frame))};
+    const double direction = std::any_cast<const sensors::RangeFan&>(settings).direction;
+    if (direction == 0) return {MessageOn(0, ScanOf(std::get<RangeScan>(reading), context.time, frame))};
+    RangeScan in_its_frame = std::get<RangeScan>(reading);  // a turned laser's frame is turned with it
+    for (double& angle : in_its_frame.angles) angle -= direction;
+    return {MessageOn(0, ScanOf(in_its_frame, context.time, frame))};
   }
   void Mounts(const std::string& instance, const std::any& settings, const RobotFrames& frames, double t,
               std::vector<msg::geometry_msgs::TransformStamped>& out) const override {
     const auto& laser = std::any_cast<const sensors::RangeFan&>(settings);
-    out.push_back(
-        Transform(frames.base, frames.Sensor(FrameName(instance)), t, laser.mount_x, 0, laser.mount_height, 0));
+    out.push_back(Transform(frames.base, frames.Sensor(FrameName(instance)), t, laser.mount_x, 0, laser.mount_height,
+                            laser.direction));
   }
 };
 

@@ -23,17 +23,22 @@ class LaserLines : public SensorLines {
     if (!type || *type != "RangeScanner") return std::nullopt;
     return InstanceNamed(name ? *name : "Scanner1", "laser", "Scanner1");
   }
-  // The directions from the line's FOV, the range limit from the scenario.
+  // The directions from the scenario's laser (from the line's FOV, evenly, if the counts differ),
+  // as is the range limit.
   std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& settings,
                                     const LineContext& /*context*/) const override {
     const auto ranges = line.Numbers("Range");
     const auto fov = line.Number("FOV");
     if (!ranges || !fov || ranges->empty()) return std::nullopt;
+    const auto& laser = std::any_cast<const sensors::RangeFan&>(settings);
     RangeScan scan;
     scan.ranges = *ranges;
-    scan.max_range = std::any_cast<const sensors::RangeFan&>(settings).max_range;
-    for (std::size_t i = 0; i < ranges->size(); ++i)
-      scan.angles.push_back(ranges->size() == 1 ? 0 : -*fov / 2 + *fov * i / (ranges->size() - 1));
+    scan.max_range = laser.max_range;
+    const std::size_t n = ranges->size();
+    for (std::size_t i = 0; i < n; ++i)
+      scan.angles.push_back(n == laser.angles.size() ? laser.angles[i] : n == 1 ? 0 : -*fov / 2 + *fov * i / (n - 1));
+    if (laser.direction != 0)
+      for (double& angle : scan.angles) angle += laser.direction;
     return scan;
   }
 };

@@ -30,7 +30,7 @@ class Echo : public SensorInstance {
  private:
   static RangeFan Rays(const SonarSettings& s) {
     RangeFan fan = RangeFan::Fan(s.fov, s.rays, 0, s.height, s.max_range);
-    for (double& angle : fan.angles) angle += s.direction;
+    fan.direction = s.direction;
     fan.mount_radius = s.mount_radius;
     return fan;
   }

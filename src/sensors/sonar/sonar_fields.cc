@@ -23,7 +23,8 @@ const Fields<SonarSettings>& SonarFields() {
     f.Number("max_range", Member(&SonarSettings::max_range), "m", 0, 100, "", true);
     f.Number("height", Member(&SonarSettings::height), "m", 0, 10, "above the ground");
     f.Custom(
-        {"mount_radius", "number", "m", "the body's edge (`body_radius` on omni3, `body_width / 2` on diffdrive)",
+        {"mount_radius", "number", "m",
+         "the model's edge radius: `body_radius` on omni3, `body_width / 2` on diffdrive (whatever the direction)",
          "[0, 10]", "how far out from the reference point, along `direction`, the cone starts"},
         [](const Field& v, SonarSettings& s) { s.mount_radius = v.Number(0, 10); },
         [](const SonarSettings& s) { return NumberNode(s.mount_radius); });

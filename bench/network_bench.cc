@@ -26,6 +26,7 @@
 #include "agents/controller_registry.h"
 #include "builtin.h"
 #include "net/wireless_network.h"
+#include "sensors/sensor_registry.h"
 #include "sim/world.h"
 
 namespace {
@@ -58,7 +59,7 @@ double RunSanet(int count, double duration, agents::Registry& registry, net::Cha
   spec.network->channel = channel;
   for (int i = 0; i < count; ++i)
     spec.nodes.push_back({"m" + std::to_string(i),
-                          robots::ModelSpec::Defaults(robots::ModelKind::kMote),
+                          sensors::DefaultModel(robots::ModelKind::kMote),
                           {kSpacing * (i % layout.side), kSpacing * (i / layout.side), 0},
                           std::nullopt,
                           {}});

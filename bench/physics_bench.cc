@@ -15,6 +15,7 @@
 
 #include "agents/controller_registry.h"
 #include "builtin.h"
+#include "sensors/sensor_registry.h"
 #include "sim/world.h"
 
 namespace {
@@ -34,7 +35,7 @@ sim::RunSpec Robots(int count, double duration, physics::Solver solver,
   const int side = static_cast<int>(std::ceil(std::sqrt(count)));
   for (int i = 0; i < count; ++i) {
     sim::NodeSpec n{"r" + std::to_string(i),
-                    robots::ModelSpec::Defaults(kind),
+                    sensors::DefaultModel(kind),
                     {3.0 * (i % side), 3.0 * (i / side), 0},
                     sim::ControllerSpec{},
                     {}};
@@ -54,7 +55,7 @@ sim::RunSpec Motes(int count, double duration) {
   spec.duration = duration;
   for (int i = 0; i < count; ++i)
     spec.nodes.push_back({"m" + std::to_string(i),
-                          robots::ModelSpec::Defaults(robots::ModelKind::kMote),
+                          sensors::DefaultModel(robots::ModelKind::kMote),
                           {10.0 * (i % 20), 10.0 * (i / 20), 0},
                           std::nullopt,
                           {}});

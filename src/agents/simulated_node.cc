@@ -25,7 +25,10 @@ std::optional<BearingReading> SimulatedNode::Bearing(NodeId target) {
 }
 
 bool SimulatedNode::SetRadioSleep(bool asleep) {
-  if (off_) return false;  // switched off for good
+  if (off_) {
+    Log("radio sleep refused: the node is switched off (its radio with it)");
+    return false;
+  }
   if (transport_.SetSleep(id_, asleep)) return true;
   Log("radio sleep refused: this run has no radio model (no `network` section)");
   return false;

@@ -394,12 +394,31 @@ void WirelessNetwork::SwitchOff(NodeId node) {
   ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy()->SetOffMode();
 }
 
+// The state asked for is kept, and the PHY brought to it only while it is neither sending nor
+// receiving: ns-3's own SetSleepMode would otherwise defer itself to the end of the frame and
+// could put to sleep a radio woken in the meantime (or one switched off).
 bool WirelessNetwork::SetSleep(NodeId node, bool asleep) {
-  ns3::Ptr<ns3::WifiPhy> phy = ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy();
-  if (phy->IsStateOff()) return false;
-  if (asleep && !phy->IsStateSleep()) phy->SetSleepMode();
-  if (!asleep && phy->IsStateSleep()) phy->ResumeFromSleep();
+  if (Phy(node)->IsStateOff()) return false;
+  if (sleep_wanted_.size() <= node) sleep_wanted_.resize(node + 1, false);
+  sleep_wanted_[node] = asleep;
+  ApplySleep(node);
   return true;
+}
+
+ns3::Ptr<ns3::WifiPhy> WirelessNetwork::Phy(NodeId node) const {
+  return ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy();
+}
+
+void WirelessNetwork::ApplySleep(NodeId node) {
+  ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
+  const bool wanted = sleep_wanted_[node];
+  if (phy->IsStateOff() || wanted == phy->IsStateSleep()) return;
+  if (!wanted) return phy->ResumeFromSleep();
+  if (phy->IsStateTx() || phy->IsStateRx() || phy->IsStateSwitching()) {  // after this frame, if still wanted
+    ns3::Simulator::Schedule(phy->GetDelayUntilIdle(), &WirelessNetwork::ApplySleep, this, node);
+    return;
+  }
+  phy->SetSleepMode();
 }
 
 void WirelessNetwork::Open(trace::ResultsFolder& folder) {

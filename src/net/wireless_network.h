@@ -11,6 +11,7 @@
 #include <ns3/random-variable-stream.h>
 #include <ns3/socket.h>
 #include <ns3/wifi-helper.h>
+#include <ns3/wifi-phy.h>
 #include <ns3/yans-wifi-helper.h>
 
 #include <memory>
@@ -67,6 +68,8 @@ class WirelessNetwork : public Transport {
   const PacketTrace& packet_trace() const { return trace_; }
 
  private:
+  ns3::Ptr<ns3::WifiPhy> Phy(NodeId node) const;
+  void ApplySleep(NodeId node);  // brings the PHY to sleep_wanted_ when it can (SetSleep)
   void ConfigureRadios();
   ns3::NetDeviceContainer InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio);
   void CountFrames(ns3::Ptr<ns3::WifiPhy> phy);
@@ -89,6 +92,7 @@ class WirelessNetwork : public Transport {
   std::int64_t next_stream_ = 0;  // the first random stream nobody uses yet
   ns3::NodeContainer nodes_;
   ns3::NetDeviceContainer devices_;
+  std::vector<bool> sleep_wanted_;  // per node: what SetSleep asked for last
   AddressBook book_;
   std::vector<std::string> names_;
   PacketTrace trace_;

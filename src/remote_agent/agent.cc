@@ -119,7 +119,12 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   RunSteps(node, host, clock, grid, deliver, received);
   if (failure.empty() && node.ended()) {  // the server said END: the controller finishes, then says so
     host.Finish();
+    if (!failure.empty()) node.Log(failure);  // before FINISHED, while the server still records
     node.Report(ProtocolMessage{"FINISHED"});
+    if (!failure.empty()) {
+      std::fprintf(stderr, "sanet agent: %s\n", failure.c_str());
+      return 1;
+    }
   }
   if (failure.empty()) {  // the server ended the run
     if (!settings.quiet) SayHowItEnded(node, grid);

@@ -135,7 +135,7 @@ void RemoteNode::TakeSensor(const ProtocolMessage& m) {
   const robots::SensorConfigs& sensors = spec_.nodes[id_].model.sensors;
   for (const auto& [instance, config] : sensors) {
     const SensorLines* kind = LinesOf(config.kind);
-    if (!kind || kind->InstanceOf(m) != instance) continue;
+    if (!kind || !kind->IsFrom(m, instance)) continue;
     if (std::optional<SensorReading> reading = kind->Read(m, config.settings, context))
       readings_[instance] = std::move(*reading);
     return;

@@ -166,7 +166,21 @@ void SimServer::Greet(ConnectionId id) {
   Send(c, hello);
 }
 
+namespace {
+
+// What a client may still say between the run's END and its FINISHED: what its controller's
+// Finish records, nothing that moves a robot or the network.
+bool TakenAfterEnd(const std::string& type) {
+  for (const char* taken : {"LOG", "METRIC", "TRANSITION", "STATS", "RECV", "FINISHED"})
+    if (type == taken) return true;
+  return false;
+}
+
+}  // namespace
+
 void SimServer::Handle(Client& c, const ProtocolMessage& m) {
+  if (run_over_ && !TakenAfterEnd(m.type))
+    return Error(c, "the run is over: only LOG, METRIC, TRANSITION, STATS, RECV and FINISHED are taken now");
   if (m.type == "INIT") return Init(c, m);
   if (m.type == "SANET") return Hello(c, m);
   if (m.type == "GETSCENARIO") return SendScenario(c, m);

@@ -65,7 +65,9 @@ void Ros2Robot::Poll(double now) {
     ++counts_.odometry;
   });
   TakeAll<msg::sensor_msgs::LaserScan>(scan_, FullName(t, t.scan), [&](const msg::sensor_msgs::LaserScan& m) {
-    laser_ = ScanOf(m);
+    laser_ = ScanOf(m);  // in the laser's frame, which a turned laser turns with it
+    if (const auto* laser = sensors::DefaultFan(settings_.model, "laser"))
+      for (double& angle : laser_->angles) angle += laser->direction;
     ++counts_.scans;
   });
   for (std::size_t i = 0; i < ir_.size(); ++i)

@@ -45,9 +45,11 @@ std::string KeysOf(const sensors::SensorKind& kind, const robots::ModelSpec& mod
   return keys;
 }
 
-// A letter, then letters, digits and _: the name is part of the sensor's topics and frames.
+// A lower-case letter, then letters, digits and _: the name is part of the sensor's topics and
+// frames, and the lower-case start keeps it apart from USARSim's sensor names on SEN lines
+// (Scanner1, IR0, GroundTruth).
 bool IsToken(const std::string& name) {
-  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0]))) return false;
+  if (name.empty() || !std::islower(static_cast<unsigned char>(name[0]))) return false;
   return std::all_of(name.begin(), name.end(),
                      [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
@@ -55,10 +57,11 @@ bool IsToken(const std::string& name) {
 void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec& model) {
   if (!IsToken(name))
     value.Fail(
-        "a sensor's name is letters, digits and _, starting with a letter: it names its ROS 2 topics and "
-        "frames");
+        "a sensor's name is letters, digits and _, starting with a lower-case letter: it names its ROS 2 "
+        "topics and frames");
   const sensors::SensorKind& kind = KindOf(name, value);
   const std::string& kind_name = kind.Info().name;
+  if (const auto why = kind.Refuses(model)) value.Fail(*why);
   if (value.IsScalar() && !value.Bool()) {
     if (!kind.Removable())
       value.Fail("every node has its " + name + ", which cannot be taken off; its keys are " +
@@ -66,7 +69,6 @@ void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec
     model.sensors.erase(name);
     return;
   }
-  if (const auto why = kind.Refuses(model)) value.Fail(*why);
   const auto it = model.sensors.find(name);
   std::any settings = kind.DefaultSettings(model);
   if (value.IsScalar()) {  // true: the kind's default instance

@@ -15,8 +15,9 @@ namespace sanet::hil {
 
 // The version of sanet's own extensions to the protocol (the SANET line, docs/protocol.md): a
 // server and an agent work together only when theirs are equal. 2: clock exchanges, scenario and
-// plugin from the server, peers' addresses (1: before the version was exchanged).
-constexpr int kSanetProtocol = 2;
+// plugin from the server, peers' addresses (1: before the version was exchanged). 3: END and
+// FINISHED at the end of a run, RADIO, named sensor instances on SEN lines.
+constexpr int kSanetProtocol = 3;
 
 struct ProtocolMessage {
   explicit ProtocolMessage(std::string message_type = "") : type(std::move(message_type)) {}

@@ -22,8 +22,10 @@ std::string WireName(const std::string& instance, const std::string& kind, const
   return instance == kind ? usarsim_name : instance;
 }
 
-std::string InstanceNamed(const std::string& wire_name, const std::string& kind, const std::string& usarsim_name) {
-  return wire_name == usarsim_name ? kind : wire_name;
+bool NamesInstance(const ProtocolMessage& line, const std::string& type, const std::string& instance,
+                   const std::string& kind, const std::string& usarsim_name) {
+  const std::string *line_type = line.Get("Type"), *name = line.Get("Name");
+  return line_type && *line_type == type && name && *name == WireName(instance, kind, usarsim_name);
 }
 
 }  // namespace sanet::hil

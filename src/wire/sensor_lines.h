@@ -33,8 +33,8 @@ class SensorLines {
   // The SEN lines of one reading of instance `instance` (none where the kind has no line).
   virtual std::vector<ProtocolMessage> Write(const std::string& instance, const SensorReading& reading,
                                              const LineContext& context) const = 0;
-  // The instance a SEN line is from, if the line is this kind's.
-  virtual std::optional<std::string> InstanceOf(const ProtocolMessage& line) const = 0;
+  // Whether a SEN line is instance `instance`'s (of this kind).
+  virtual bool IsFrom(const ProtocolMessage& line, const std::string& instance) const = 0;
   // The reading a line carries; `settings` are the instance's from the scenario (what the line
   // leaves out, such as a laser's range). Empty for a line it cannot read.
   virtual std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& settings,
@@ -54,9 +54,11 @@ std::vector<double> UsarsimPose(const Pose2D& pose);  // {x, y, yaw} in USARSim'
 Pose2D SanetPose(double x, double y, double yaw);     // back to sanet's
 // The SEN line's head: {Time t} {Type type}.
 ProtocolMessage SenLine(double time, const std::string& type);
-// "laser_rear" for a named instance, `usarsim_name` ("Scanner1") for the kind's own.
+// "laser_rear" for a named instance, `usarsim_name` ("Scanner1") for the kind's own. Instance
+// names start with a lower-case letter (scenario/sensor_fields.cc), USARSim's with a capital.
 std::string WireName(const std::string& instance, const std::string& kind, const std::string& usarsim_name);
-// The instance a wire name is: the kind's own for `usarsim_name`, the name itself otherwise.
-std::string InstanceNamed(const std::string& wire_name, const std::string& kind, const std::string& usarsim_name);
+// Whether `line` is of SEN type `type` and names `instance` ({Name ...}, as WireName gives it).
+bool NamesInstance(const ProtocolMessage& line, const std::string& type, const std::string& instance,
+                   const std::string& kind, const std::string& usarsim_name);
 
 }  // namespace sanet::hil

@@ -32,6 +32,8 @@ nodes:
   - name: b
     model: diffdrive
     pose: [3, 0, 0]
+    sensors:
+      ir2: {{kind: ir, count: 4}}
     controller: {{name: api_probe, library: {LIBRARY}, rate: 17}}
 """
 
@@ -58,6 +60,8 @@ class ControllerApi(unittest.TestCase):
         if sonar_in_process is not None:
             self.assertAlmostEqual(sonar[0], sonar_in_process, delta=0.02, msg="the same echo, however it was read")
         self.assertEqual(values("b", "sonar_range"), [-1.0], "b has no sonar")
+        self.assertEqual(values("b", "ir2_sensors"), [4.0], "a named ring, its lines its own (ir2_0 ...)")
+        self.assertEqual(values("a", "ir2_sensors"), [-1.0])
         self.assertEqual(values("a", "sleep_taken"), [1.0])
         self.assertEqual(values("a", "wake_taken"), [1.0])
         margin = 0.15

@@ -42,7 +42,7 @@ class BearingInTheLoop(unittest.TestCase):
 
     def test_a_sanet_client_gets_the_nodes_in_range_and_a_stock_client_nothing(self):
         agent = Client(self.port)
-        agent.send("SANET {Protocol 2} {Version test}")  # sanet's protocol number (docs/protocol.md)
+        agent.send("SANET {Protocol 3} {Version test}")  # sanet's protocol number (docs/protocol.md)
         agent.send("INIT {Name r1}")
         seen = [bearings(agent.sensor("Bearing")) for _ in range(5)]
         for s in seen:

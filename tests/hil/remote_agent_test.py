@@ -120,7 +120,7 @@ class RemoteAgent(unittest.TestCase):
         server.finish(undriven=("a", "b"))
         self.assertNotEqual(out.returncode, 0)
         self.assertIn("speaks sanet's protocol 1 (sanet ", out.stderr)
-        self.assertIn("the server protocol 2 (sanet ", out.stderr)
+        self.assertIn("the server protocol 3 (sanet ", out.stderr)
 
     def test_the_server_says_who_drives_what_who_was_refused_and_which_robots_nobody_drove(self):
         server = Server(self.tmp.name, self.scenario, 4, quiet=False)
@@ -142,7 +142,7 @@ class RemoteAgent(unittest.TestCase):
             f.write(SCENARIO.format(library=LIBRARY).replace("[0, 3, 0]", "[0, 4, 0]"))
         server = Server(self.tmp.name, self.scenario, 4)
         other = server.agent("a", "--scenario", mine, timeout=30)
-        same = server.agent("a", "--scenario", self.scenario, "--test-protocol-version", "2", timeout=30)
+        same = server.agent("a", "--scenario", self.scenario, "--test-protocol-version", "3", timeout=30)
         server.finish(undriven=("b",))
         self.assertNotEqual(other.returncode, 0)
         self.assertRegex(other.stderr, r"this agent's scenario has fingerprint [0-9a-f]{16}, the server's [0-9a-f]{16}")

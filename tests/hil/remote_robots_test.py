@@ -231,7 +231,7 @@ class RemoteRobots(unittest.TestCase):
     def test_an_agent_of_another_protocol_version_is_refused(self):
         self.assertNotEqual(self.refused.returncode, 0)
         self.assertIn("speaks sanet's protocol 1 (sanet ", self.refused.stderr)
-        self.assertIn("the server protocol 2 (sanet ", self.refused.stderr)
+        self.assertIn("the server protocol 3 (sanet ", self.refused.stderr)
 
     def test_the_results_hold_every_agents_figures(self):
         agents = {r["node"]: r for r in self.rows("agents.csv")}

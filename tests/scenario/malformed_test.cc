@@ -252,7 +252,9 @@ TEST(Scenario, SensorInstancesAreCheckedByKind) {
   EXPECT_NE(error("{bearing: true}").find("a bearing sensor needs range: give {range: ...} instead of true"),
             std::string::npos);
   EXPECT_NE(error("{sonar: {}, sonar: {fov: 1}}").find("'nodes[0].sensors.sonar': key given twice"), std::string::npos);
-  EXPECT_NE(error("{laser rear: {kind: laser}}").find("a sensor's name is letters, digits and _"), std::string::npos);
+  EXPECT_NE(error("{laser rear: {kind: laser}}")
+                .find("a sensor's name is letters, digits and _, starting with a lower-case letter"),
+            std::string::npos);
   EXPECT_NE(error("{scan: {kind: sonar}}")
                 .find("'nodes[0].sensors.scan': sensors 'laser' and 'scan' would both publish /<robot>/scan: give "
                       "'scan' another name"),

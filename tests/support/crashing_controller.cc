@@ -105,6 +105,8 @@ class ApiProbe : public sanet::Controller {
     node.Metric("rear_beams", rear ? static_cast<double>(rear->ranges.size()) : -1);
     node.Metric("unknown_sensor", node.Sensor("no_such_sensor") ? 1 : 0);
     node.Metric("truth_is_pose", node.SensorAs<sanet::Pose2D>("ground_truth") ? 1 : 0);
+    const auto ring = node.SensorAs<sanet::RangeScan>("ir2");  // a named ring whose name ends in a digit
+    node.Metric("ir2_sensors", ring ? static_cast<double>(ring->ranges.size()) : -1);
     const auto sonar = node.SensorAs<sanet::RangeScan>("sonar");
     node.Metric("sonar_range", sonar ? sonar->ranges.at(0) : -1);
   }

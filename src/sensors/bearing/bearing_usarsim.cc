@@ -19,10 +19,9 @@ class BearingLines : public SensorLines {
                            FormatNumber(-b.reading.bearing));
     return {line};
   }
-  std::optional<std::string> InstanceOf(const ProtocolMessage& line) const override {
-    const std::string *type = line.Get("Type"), *instance = line.Get("Instance");
-    if (!type || *type != "Bearing") return std::nullopt;
-    return instance ? *instance : "bearing";
+  bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {
+    const std::string *type = line.Get("Type"), *named = line.Get("Instance");
+    return type && *type == "Bearing" && (named ? *named : std::string("bearing")) == instance;
   }
   std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& /*settings*/,
                                     const LineContext& context) const override {

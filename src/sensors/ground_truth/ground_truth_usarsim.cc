@@ -14,10 +14,8 @@ class GroundTruthLines : public SensorLines {
                 .Add("Location", std::vector<double>{p[0], p[1], context.height})
                 .Add("Orientation", std::vector<double>{0, 0, p[2]})};
   }
-  std::optional<std::string> InstanceOf(const ProtocolMessage& line) const override {
-    const std::string *type = line.Get("Type"), *name = line.Get("Name");
-    if (!type || *type != "GroundTruth") return std::nullopt;
-    return InstanceNamed(name ? *name : "GroundTruth", "ground_truth", "GroundTruth");
+  bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {
+    return NamesInstance(line, "GroundTruth", instance, "ground_truth", "GroundTruth");
   }
   std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& /*settings*/,
                                     const LineContext& /*context*/) const override {

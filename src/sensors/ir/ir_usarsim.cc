@@ -1,5 +1,6 @@
 // The IR ring as one USARSim sonar-style line: {Name IR0 Range r} {Name IR1 Range r} ...; a named
 // instance's sensors are <instance>0, <instance>1, ...
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 
@@ -9,11 +10,18 @@
 namespace sanet::hil {
 namespace {
 
-// "IR3" -> "IR"; "ir_low12" -> "ir_low".
-std::string Prefix(const std::string& sensor) {
-  std::size_t end = sensor.size();
-  while (end > 0 && std::isdigit(static_cast<unsigned char>(sensor[end - 1]))) --end;
-  return sensor.substr(0, end);
+// Sensor i of instance `instance` on the wire: IR<i> for the kind's own ring (USARSim's names),
+// <instance>_<i> for a named one, so that no name is another's with digits added.
+std::string SensorName(const std::string& instance, std::size_t i) {
+  return instance == "ir" ? "IR" + std::to_string(i) : instance + "_" + std::to_string(i);
+}
+
+// Whether `sensor` (the first word of a {Name ...}) is one of `instance`'s: its prefix and digits.
+bool IsSensorOf(const std::string& sensor, const std::string& instance) {
+  const std::string prefix = instance == "ir" ? "IR" : instance + "_";
+  if (sensor.size() <= prefix.size() || sensor.compare(0, prefix.size(), prefix) != 0) return false;
+  return std::all_of(sensor.begin() + static_cast<std::ptrdiff_t>(prefix.size()), sensor.end(),
+                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
 }
 
 class IrLines : public SensorLines {
@@ -22,16 +30,13 @@ class IrLines : public SensorLines {
                                      const LineContext& context) const override {
     const RangeScan& scan = std::get<RangeScan>(reading);
     ProtocolMessage line = SenLine(context.time, "IR");
-    const std::string prefix = WireName(instance, "ir", "IR");
     for (std::size_t i = 0; i < scan.ranges.size(); ++i)
-      line.Add("Name", prefix + std::to_string(i) + " Range " + FormatNumber(scan.ranges[i]));
+      line.Add("Name", SensorName(instance, i) + " Range " + FormatNumber(scan.ranges[i]));
     return {line};
   }
-  std::optional<std::string> InstanceOf(const ProtocolMessage& line) const override {
+  bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {
     const std::string *type = line.Get("Type"), *name = line.Get("Name");
-    if (!type || *type != "IR") return std::nullopt;
-    const std::string sensor = name ? name->substr(0, name->find(' ')) : "IR0";
-    return InstanceNamed(Prefix(sensor), "ir", "IR");
+    return type && *type == "IR" && name && IsSensorOf(name->substr(0, name->find(' ')), instance);
   }
   // The directions and range limit from the scenario; a line with another count is not read.
   std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& settings,

@@ -18,10 +18,8 @@ class LaserLines : public SensorLines {
                 .Add("FOV", fov)
                 .Add("Range", scan.ranges)};
   }
-  std::optional<std::string> InstanceOf(const ProtocolMessage& line) const override {
-    const std::string *type = line.Get("Type"), *name = line.Get("Name");
-    if (!type || *type != "RangeScanner") return std::nullopt;
-    return InstanceNamed(name ? *name : "Scanner1", "laser", "Scanner1");
+  bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {
+    return NamesInstance(line, "RangeScanner", instance, "laser", "Scanner1");
   }
   // The directions from the scenario's laser (from the line's FOV, evenly, if the counts differ),
   // as is the range limit.

@@ -12,10 +12,8 @@ class OdometryLines : public SensorLines {
                 .Add("Name", WireName(instance, "odometry", "Odometry"))
                 .Add("Pose", UsarsimPose(std::get<Pose2D>(reading)))};
   }
-  std::optional<std::string> InstanceOf(const ProtocolMessage& line) const override {
-    const std::string *type = line.Get("Type"), *name = line.Get("Name");
-    if (!type || *type != "Odometry") return std::nullopt;
-    return InstanceNamed(name ? *name : "Odometry", "odometry", "Odometry");
+  bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {
+    return NamesInstance(line, "Odometry", instance, "odometry", "Odometry");
   }
   std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& /*settings*/,
                                     const LineContext& /*context*/) const override {

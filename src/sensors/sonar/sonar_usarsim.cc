@@ -16,10 +16,9 @@ class SonarLines : public SensorLines {
     return {SenLine(context.time, "Sonar")
                 .Add("Name", WireName(instance, "sonar", "Sonar") + " Range " + FormatNumber(echo.ranges.at(0)))};
   }
-  std::optional<std::string> InstanceOf(const ProtocolMessage& line) const override {
+  bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {
     const std::string *type = line.Get("Type"), *name = line.Get("Name");
-    if (!type || *type != "Sonar" || !name) return std::nullopt;
-    return InstanceNamed(name->substr(0, name->find(' ')), "sonar", "Sonar");
+    return type && *type == "Sonar" && name && name->substr(0, name->find(' ')) == WireName(instance, "sonar", "Sonar");
   }
   std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& settings,
                                     const LineContext& /*context*/) const override {

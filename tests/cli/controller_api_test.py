@@ -14,10 +14,10 @@ import tempfile
 import unittest
 
 SANET, LIBRARY = sys.argv.pop(1), os.path.abspath(sys.argv.pop(1))
-SLEEP_FROM, SLEEP_TO = 1.0, 2.0
+SLEEP_FROM, SLEEP_TO = 4.0, 6.0  # late enough for agents that start slowly (sanitizer builds)
 
 SCENARIO = f"""name: api6
-duration: 3
+duration: 8
 network: {{routing: none}}
 loop: {{network: simulated}}
 nodes:

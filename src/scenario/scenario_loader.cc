@@ -126,8 +126,7 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_netw
   if (auto body = f.Get("body")) {
     ReadBody(*body, t.model);
     // The default sensors sit on the body: follow its new dimensions.
-    t.model.sensors = sensors::DefaultModel(t.model.kind).sensors;
-    for (auto& [name, config] : t.model.sensors) config.settings = sensors::FindKind(name)->DefaultSettings(t.model);
+    t.model.sensors = sensors::DefaultSensors(t.model);
   }
   if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
   if (auto c = f.Get("controller")) {

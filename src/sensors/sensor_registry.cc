@@ -30,10 +30,16 @@ std::size_t KindOrder(const std::string& name) {
   return kinds.size();
 }
 
+robots::SensorConfigs DefaultSensors(const robots::ModelSpec& model) {
+  robots::SensorConfigs sensors;
+  for (const std::string& name : robots::DefaultSensorKinds(model))
+    sensors[name] = {name, FindKind(name)->DefaultSettings(model)};
+  return sensors;
+}
+
 robots::ModelSpec DefaultModel(robots::ModelKind kind) {
   robots::ModelSpec model = robots::ModelSpec::Defaults(kind);
-  for (const std::string& name : robots::DefaultSensorKinds(model))
-    model.sensors[name] = {name, FindKind(name)->DefaultSettings(model)};
+  model.sensors = DefaultSensors(model);
   return model;
 }
 

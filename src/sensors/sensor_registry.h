@@ -21,6 +21,8 @@ std::string KindNames();                              // "ir, laser, ..." for er
 // A kind's place in AllKinds(): the order instances are listed and read in.
 std::size_t KindOrder(const std::string& name);
 
+// The sensors `model` carries by default, placed on its body as it is.
+robots::SensorConfigs DefaultSensors(const robots::ModelSpec& model);
 // A model with its body defaults and the sensors it carries by default (robots::DefaultSensorKinds).
 robots::ModelSpec DefaultModel(robots::ModelKind kind);
 // The model's instances in the order they are listed and read: by kind, then the default

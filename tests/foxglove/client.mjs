@@ -72,8 +72,10 @@ async function stall(seconds) {
   await until(() => seen.channels.size > 0);
   await sleep(300);
   for (const c of seen.channels.values()) client.subscribe(c.id);
-  await sleep(200);
-  ws._socket.pause();  // stop reading: the server's queue for us fills up (the server reports the drop)
+  // Stop reading at once: the server's queue for us fills up (the server reports the drop). Reading
+  // first would let the kernel grow this socket's receive buffer to megabytes, which a short run may
+  // never fill on a loaded machine.
+  ws._socket.pause();
   await sleep(seconds * 1000);
   print({ stalled: seconds });
   process.exit(0);

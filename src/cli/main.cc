@@ -37,6 +37,7 @@
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "serve_command.h"
+#include "sim/ros2_presentation.h"
 #include "sim/world.h"
 #include "study_commands.h"
 #include "terminal_progress.h"
@@ -89,7 +90,9 @@ int Run(const RunArgs& args, agents::Registry& registry) {
                 sc.run.threads == 2 ? ", physics on a second thread" : "");
   if (args.real_time) sim::UseRealTimeClock();  // the same schedule, against the wall clock
   sim::World world(sc.run, registry);
-  LiveViews live = StartLiveViews(world, args.view);
+  sim::Ros2Presentation ros2_messages(world);  // trace.mcap and the Foxglove stream
+  options.trace_files = {ros2_messages.McapFile()};
+  LiveViews live = StartLiveViews(world, ros2_messages, args.view);
   if (!args.quiet) live.Announce();
   if (live.foxglove)
     options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder&) {

@@ -132,6 +132,7 @@ void JudgeAttendance(nlohmann::ordered_json& j, hil::Attendance& attendance, con
 
 // The world with its servers listening; their notices wait for the serving line, which comes first.
 struct Served {
+  std::unique_ptr<sim::Ros2Presentation> ros2_messages;  // for trace.mcap and the Foxglove stream
   std::unique_ptr<hil::SimServer> server;
   std::unique_ptr<hil::WssServer> wss;
   std::unique_ptr<ros2face::Ros2Face> ros2;
@@ -142,11 +143,12 @@ struct Served {
 Served StartServing(sim::World& world, const ServeArgs& a, const scenario::Scenario& sc,
                     const scenario::EffectiveScenario& effective, const std::string& fingerprint) {
   Served s;
+  s.ros2_messages = std::make_unique<sim::Ros2Presentation>(world);
   s.server = StartServer(world, ServerSettingsFor(a, sc, effective.yaml, fingerprint));
   JoinTaps(world, a.taps);
   s.wss = StartWss(world, a, s.notices);
   s.ros2 = StartRos2Face(world, a.ros2, sc.ros2, s.notices);
-  s.live = StartLiveViews(world, a.view, /*foxglove_anyway=*/!a.no_foxglove);
+  s.live = StartLiveViews(world, *s.ros2_messages, a.view, /*foxglove_anyway=*/!a.no_foxglove);
   WritePortFile(a.port_file, s.server->port(), "--port-file");
   return s;
 }
@@ -203,6 +205,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   if (!a.quiet || a.view.on) s.live.Announce();  // asked for a view, one needs to know where it is
   std::fflush(stdout);
   sim::RunOptions options = ServeOptions(a, sc, effective, results);
+  options.trace_files = {s.ros2_messages->McapFile()};
   options.add_results = [&](nlohmann::ordered_json& j, trace::ResultsFolder& folder) {
     j["real_time_lag"] = s.server->LagSummary();
     j["real_time_lag"]["scheduling"] = scheduling;

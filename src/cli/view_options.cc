@@ -94,23 +94,23 @@ void LiveViews::Announce() const {
   std::fflush(stdout);
 }
 
-static std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, const FoxgloveArgs& f,
-                                                             std::string& notice) {
+static std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, sim::Ros2Presentation& presentation,
+                                                             const FoxgloveArgs& f, std::string& notice) {
   std::unique_ptr<foxglove::FoxgloveLive> live = Listening<foxglove::FoxgloveLive>(f, notice);
   WritePortFile(f.port_file, static_cast<std::uint16_t>(live->hub().port()), "--foxglove-port-file");
-  world.driver().AddMessageSink(*live);
-  world.AddObserver(*live);
+  live->Observe(world.bus(), presentation);
   return live;
 }
 
-LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool foxglove_anyway) {
+LiveViews StartLiveViews(sim::World& world, sim::Ros2Presentation& presentation, const ViewArgs& v,
+                         bool foxglove_anyway) {
   LiveViews views;
   if (!v.on) {
-    if (foxglove_anyway) views.foxglove = StartFoxglove(world, v.foxglove, views.foxglove_notice);
+    if (foxglove_anyway) views.foxglove = StartFoxglove(world, presentation, v.foxglove, views.foxglove_notice);
     return views;
   }
   // First: a port refused stops nothing started.
-  views.foxglove = StartFoxglove(world, v.foxglove, views.foxglove_notice);
+  views.foxglove = StartFoxglove(world, presentation, v.foxglove, views.foxglove_notice);
   view::LiveSettings settings;
   settings.port = v.port;
   try {
@@ -119,7 +119,7 @@ LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool foxglove_any
     throw CLI::ValidationError("--view", e.what());
   }
   WritePortFile(v.port_file, static_cast<std::uint16_t>(views.page->port()), "--view-port-file");
-  world.AddObserver(*views.page);
+  views.page->Observe(world.bus());
   return views;
 }
 

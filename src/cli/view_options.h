@@ -50,7 +50,8 @@ struct LiveViews {
 };
 // Both views, watching `world`; none without --view, or only the Foxglove stream if `foxglove_anyway`
 // (`sanet serve`, whose world runs in real time). Prints nothing: LiveViews::Announce does.
-LiveViews StartLiveViews(sim::World& world, const ViewArgs& v, bool foxglove_anyway = false);
+LiveViews StartLiveViews(sim::World& world, sim::Ros2Presentation& presentation, const ViewArgs& v,
+                         bool foxglove_anyway = false);
 
 // The Foxglove replay of `results`/trace.mcap, on `hub`; null if the folder has no trace.mcap.
 std::unique_ptr<foxglove::McapReplay> StartReplay(const std::string& results, foxglove::FoxgloveHub& hub,

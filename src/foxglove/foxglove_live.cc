@@ -6,6 +6,12 @@
 
 namespace sanet::foxglove {
 
+void FoxgloveLive::Observe(sim::RunBus& bus, sim::Ros2Presentation& presentation) {
+  presentation.AddSink(*this);
+  step_ended_ =
+      bus.On<sim::StepEnded>(sim::RunStage::kObserve, [this](const sim::StepEnded& e) { AfterStep(e.world); });
+}
+
 void FoxgloveLive::AfterStep(const sim::WorldSnapshot& snapshot) {
   const double t = snapshot.time();
   if (last_time_ >= 0 && t - last_time_ < 0.05) return;

@@ -5,11 +5,12 @@
 
 #include "foxglove/foxglove_hub.h"
 #include "sim/message_sink.h"
-#include "sim/run_observer.h"
+#include "sim/ros2_presentation.h"
+#include "sim/run_events.h"
 
 namespace sanet::foxglove {
 
-class FoxgloveLive : public sim::MessageSink, public sim::RunObserver {
+class FoxgloveLive : public sim::MessageSink {
  public:
   explicit FoxgloveLive(HubSettings settings) : hub_(std::move(settings)) {}
   FoxgloveHub& hub() { return hub_; }
@@ -21,11 +22,14 @@ class FoxgloveLive : public sim::MessageSink, public sim::RunObserver {
     hub_.Publish(topic.id, time_ns, cdr);
   }
   bool Active() const override { return hub_.clients() > 0; }
-  void AfterStep(const sim::WorldSnapshot& snapshot) override;
+  // Streams the run's messages (`presentation`) and its time (`bus`) from now on.
+  void Observe(sim::RunBus& bus, sim::Ros2Presentation& presentation);
+  void AfterStep(const sim::WorldSnapshot& snapshot);
 
  private:
   FoxgloveHub hub_;
   double last_time_ = -1;  // s, the last time sent
+  Subscription step_ended_;
 };
 
 }  // namespace sanet::foxglove

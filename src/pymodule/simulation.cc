@@ -17,6 +17,7 @@
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "sim/assembly.h"
+#include "sim/ros2_presentation.h"
 #include "sim/world.h"
 #include "trace/earlier_run.h"
 
@@ -30,12 +31,16 @@ constexpr const char* kScript = "the script";  // the owner of the robots a scri
 bool g_live = false;                           // ns-3's simulator is one per process
 
 // What happened since the last step, for the script.
-class SinceLastStep : public sim::RunObserver {
+class SinceLastStep {
  public:
   explicit SinceLastStep(bool frames) : frames_(frames) {}
-  Streams Wants() const override { return {frames_, false}; }
-  void Delivered(NodeId to, const Message& m) override { messages.emplace_back(to, m); }
-  void Frame(const net::FrameEvent& f) override { frames.push_back(f); }
+  void Observe(sim::RunBus& bus) {
+    delivered_ = bus.On<sim::MessageDelivered>(
+        sim::RunStage::kObserve, [this](const sim::MessageDelivered& e) { messages.emplace_back(e.to, e.message); });
+    if (frames_)  // frames cost something to trace: only when the script asked for them
+      frames_heard_ =
+          bus.On<net::FrameEvent>(sim::RunStage::kObserve, [this](const net::FrameEvent& f) { frames.push_back(f); });
+  }
   void Clear() {
     messages.clear();
     frames.clear();
@@ -45,6 +50,7 @@ class SinceLastStep : public sim::RunObserver {
 
  private:
   bool frames_;
+  Subscription delivered_, frames_heard_;
 };
 
 // The states of Python's `random` and numpy's global generator: a script's own, or the run's
@@ -192,6 +198,7 @@ class Simulation {
   sim::RunOptions options_;
   SinceLastStep since_;
   std::unique_ptr<sim::World> world_;
+  std::unique_ptr<sim::Ros2Presentation> ros2_messages_;  // trace.mcap
   bool running_ = true, python_controllers_ = false;
   double target_ = 0;    // s: where the script has advanced the run to
   double ended_at_ = 0;  // s: where it ended, once finished
@@ -229,7 +236,9 @@ void Simulation::Build(const std::string& path, std::optional<std::string> outpu
   trace::ClearEarlierRun(options_.output_dir, force);
   const RandomStates script = python_controllers_ ? RandomStates::Now() : RandomStates{};
   world_ = std::make_unique<sim::World>(scenario_.run, registry_);  // seeds the run's random states
-  world_->AddObserver(since_);
+  since_.Observe(world_->bus());
+  ros2_messages_ = std::make_unique<sim::Ros2Presentation>(*world_);
+  options_.trace_files = {ros2_messages_->McapFile()};
   world_->Start(options_);
   if (python_controllers_) {
     run_random_ = RandomStates::Now();

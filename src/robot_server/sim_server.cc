@@ -80,7 +80,8 @@ SimServer::~SimServer() { driver_.SetRemoteInbox(nullptr); }
 
 void SimServer::Start() {
   driver_.Every(settings_.poll_period, [this] { Poll(); });
-  driver_.AddObserver(*this);
+  step_ended_ = driver_.bus().On<sim::StepEnded>(sim::RunStage::kObserve,
+                                                 [this](const sim::StepEnded& e) { AfterStep(e.world); });
   driver_.AtEnd([this] { FinishAgents(); });
 }
 

@@ -59,13 +59,13 @@ std::string WithoutBraces(const std::string& text);
 // The default connection cap: twice the robots, and never fewer than 64.
 std::size_t DefaultMaxClients(const sim::RunSpec& spec);
 
-class SimServer : public sim::RunObserver {
+class SimServer {
  public:
   SimServer(sim::Driver& driver, ServerSettings settings);  // listens; throws std::runtime_error
-  ~SimServer() override;
+  ~SimServer();
   std::uint16_t port() const { return lines_->port(); }
-  void Start();  // schedules polling and lag measurement on the simulation clock
-  void AfterStep(const sim::WorldSnapshot& snapshot) override;
+  void Start();                                        // schedules polling and lag measurement on the simulation clock
+  void AfterStep(const sim::WorldSnapshot& snapshot);  // heard on the run's bus
   // Lag of every physics step behind the wall clock: p50, p99, max, missed deadlines.
   nlohmann::ordered_json LagSummary() const;
   // What each agent last reported of its steps and messages (STATS lines), by robot.
@@ -80,6 +80,7 @@ class SimServer : public sim::RunObserver {
   nlohmann::ordered_json ClockSummary() const;
 
  private:
+  Subscription step_ended_;  // AfterStep, on the run's bus
   // What the server knows of a connection (LineServer keeps its socket and buffers).
   struct Client {
     Client(ConnectionId connection, std::string address) : id(connection), peer(std::move(address)) {}

@@ -95,7 +95,8 @@ void Ros2Face::AddRobots() {
 
 void Ros2Face::Start() {
   driver_.Every(settings_.command_period, [this] { Poll(); });
-  driver_.AddObserver(*this);
+  step_ended_ = driver_.bus().On<sim::StepEnded>(sim::RunStage::kObserve,
+                                                 [this](const sim::StepEnded& e) { AfterStep(e.world); });
 }
 
 void Ros2Face::AfterStep(const sim::WorldSnapshot& snapshot) {

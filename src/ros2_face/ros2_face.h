@@ -40,13 +40,13 @@ struct Ros2Settings {
   std::vector<sections::Ros2Robot> robots;  // robots with a namespace or a rate of their own
 };
 
-class Ros2Face : public sim::RunObserver {
+class Ros2Face {
  public:
   // Joins the DDS domain and creates every robot's topics. Throws std::runtime_error.
   Ros2Face(sim::Driver& driver, Ros2Settings settings);
-  ~Ros2Face() override;
-  void Start();                                                 // schedules the face on the simulation clock
-  void AfterStep(const sim::WorldSnapshot& snapshot) override;  // /clock
+  ~Ros2Face();
+  void Start();                                        // schedules the face on the simulation clock
+  void AfterStep(const sim::WorldSnapshot& snapshot);  // /clock; heard on the run's bus
 
   // What the face did, by robot: messages published, commands taken and refused (summary.json).
   nlohmann::ordered_json Summary() const;
@@ -54,6 +54,7 @@ class Ros2Face : public sim::RunObserver {
   std::vector<std::string> Driven() const;
 
  private:
+  Subscription step_ended_;  // AfterStep, on the run's bus
   struct Robot;
   void AddRobots();
   void Publish(Robot& robot);

@@ -141,22 +141,17 @@ NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, cons
   if (wireless_) wireless_->AddNode(ns3_node, node.name, node.radio);
   if (local_) local_->AddNode();
   AddNode(id, nullptr);
-  if (events_) events_->Spawned(id, spawned_as);
+  physics_->Settle();  // the physics thread reads the lists grown here
+  bus_.Publish(NodeSpawned{Now(), id, spawned_as, models_.at(id)->body().pose()});
   Log(id, why);
   return id;
 }
 
 agents::ControllerHost::Hooks Assembly::HostHooks(NodeId id) {
   agents::ControllerHost::Hooks hooks;
-  hooks.delivered = [this, id](const Message& m) {
-    if (events_) events_->Delivered(id, m);
-  };
-  hooks.dropped = [this, id](const Message& m) {
-    if (events_) events_->DroppedByImpairment(id, m);
-  };
-  hooks.failed = [this](const std::string& why) {
-    if (events_) events_->Failed(why);
-  };
+  hooks.delivered = [this, id](const Message& m) { bus_.Publish(MessageDelivered{id, m}); };
+  hooks.dropped = [this, id](const Message& m) { bus_.Publish(MessageDropped{id, m}); };
+  hooks.failed = [this](const std::string& why) { bus_.Publish(ControllerFailed{why}); };
   return hooks;
 }
 
@@ -164,11 +159,16 @@ agents::ControllerHost::Hooks Assembly::HostHooks(NodeId id) {
 void Assembly::Receive(NodeId to, const Message& m) {
   if (!remote(to)) return hosts_.at(to)->Receive(m);
   const InboxResult result = remote_inbox_ ? remote_inbox_(to, m) : InboxResult::kLost;
-  if (!events_ || result == InboxResult::kIgnored) return;
-  if (result == InboxResult::kDelivered)
-    events_->Delivered(to, m);
-  else
-    events_->Lost(to, m, "no client drives " + NameOf(to));
+  if (result == InboxResult::kIgnored) return;
+  if (result == InboxResult::kDelivered) return bus_.Publish(MessageDelivered{to, m});
+  Lost(to, m, "no client drives " + NameOf(to));
+}
+
+// The message's row, then a line in the addressee's log saying why.
+void Assembly::Lost(NodeId to, const Message& m, const std::string& why) {
+  bus_.Publish(MessageLost{Now(), to, m, why});
+  const std::string text = "message from " + NameOf(m.from) + " lost: " + why;
+  bus_.Publish(LogLine{m.time_received, to, text});
 }
 
 void Assembly::FollowBody(NodeId id, net::BodyMobilityModel* mobility) {
@@ -208,17 +208,22 @@ void Assembly::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
 
 std::optional<NodeId> Assembly::Lookup(const std::string& name) const { return run_nodes_.Find(name); }
 
-void Assembly::Log(NodeId node, const std::string& text) {
-  if (events_) events_->Log(node, text);
-}
+double Assembly::Now() const { return ns3::Simulator::Now().GetSeconds(); }
+
+void Assembly::Log(NodeId node, const std::string& text) { bus_.Publish(LogLine{Now(), node, text}); }
 
 void Assembly::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
   states_.at(node) = to;
-  if (events_) events_->Transition(node, from, to, why);
+  bus_.Publish(Transitioned{Now(), node, from, to, why});
 }
 
 void Assembly::Metric(NodeId node, const std::string& name, double value) {
-  if (events_) events_->Metric(node, name, value);
+  bus_.Publish(MetricReported{Now(), node, name, value});
+}
+
+void Assembly::ReadSensor(NodeId node, const std::string& instance, const std::string& kind,
+                          const SensorReading& reading) {
+  if (bus_.Heard<SensorRead>()) bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
 }
 
 BodyState Assembly::Body(NodeId node) const {

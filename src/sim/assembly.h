@@ -61,7 +61,8 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // The node whose body `body` is ("a body" if none is).
   std::string NameOfBody(const physics::Body* body) const;
 
-  void SetEvents(RunEvents* events) { events_ = events; }
+  // Where everything that happens in the run is published (sim/run_events.h).
+  RunBus& bus() { return bus_; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
   void SwitchOff(NodeId id);
   // Adds a robot to the running world (its front end checked where it stands): its body, its own ns-3 node
@@ -77,9 +78,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   std::optional<Signal> SignalBetween(NodeId from, NodeId to) const;
   // A message that reached a node outside the run's own transport (between agents, over UDP),
   // recorded as delivered.
-  void RecordDelivery(NodeId to, const Message& message) {
-    if (events_) events_->Delivered(to, message);
-  }
+  void RecordDelivery(NodeId to, const Message& message) { bus_.Publish(MessageDelivered{to, message}); }
 
   // NodeDirectory
   std::optional<NodeId> Lookup(const std::string& name) const override;
@@ -90,9 +89,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) override;
   void Metric(NodeId node, const std::string& name, double value) override;
   void ReadSensor(NodeId node, const std::string& instance, const std::string& kind,
-                  const SensorReading& reading) override {
-    if (events_) events_->ReadSensor(node, instance, kind, reading, Body(node));
-  }
+                  const SensorReading& reading) override;
 
   // SnapshotSource
   BodyState Body(NodeId node) const override;
@@ -107,6 +104,8 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void BuildNodes(agents::Registry& registry);
   void AddNode(NodeId id, std::unique_ptr<Controller> controller);
   void Receive(NodeId to, const Message& message);
+  void Lost(NodeId to, const Message& message, const std::string& why);
+  double Now() const;  // s, simulated
   agents::ControllerHost::Hooks HostHooks(NodeId id);
   void FollowBody(NodeId id, net::BodyMobilityModel* mobility);  // its radio, from its body's pose now
 
@@ -123,7 +122,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   std::unique_ptr<agents::HostClock> clock_;
   std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
   std::vector<std::unique_ptr<agents::ControllerHost>> hosts_;
-  RunEvents* events_ = nullptr;
+  RunBus bus_;
   RemoteInbox remote_inbox_;
   std::vector<std::string> states_;  // per node: the state of its controller's last transition
 };

@@ -38,6 +38,8 @@ void Driver::Stop(const std::string& why) {
 }
 
 const RunSpec& Driver::spec() const { return parts_.spec(); }
+RunBus& Driver::bus() { return parts_.bus(); }
+
 double Driver::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 std::size_t Driver::NodeCount() const { return parts_.NodeCount(); }
 std::optional<NodeId> Driver::Lookup(const std::string& name) const { return parts_.Lookup(name); }

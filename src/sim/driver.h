@@ -13,9 +13,8 @@
 #include <vector>
 
 #include "sanet/node.h"
-#include "sim/message_sink.h"
 #include "sim/remote_inbox.h"
-#include "sim/run_observer.h"
+#include "sim/run_events.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
 
@@ -109,14 +108,11 @@ class Driver {
   NodeId Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why);
 
   // On the run's clock: `action` now (t = 0 before the run starts) and then every `period` s of
-  // simulated time (a front end's socket polling). Observers of the run's typed event streams
-  // (sim/run_observer.h) are added before the run starts.
+  // simulated time (a front end's socket polling).
   void Every(double period, std::function<void()> action);
-  void AddObserver(RunObserver& observer) { observers_.push_back(&observer); }
-  const std::vector<RunObserver*>& observers() const { return observers_; }
-  // Sinks of the run's ROS 2 messages (sim/message_sink.h), added before the run starts.
-  void AddMessageSink(MessageSink& sink) { sinks_.push_back(&sink); }
-  const std::vector<MessageSink*>& message_sinks() const { return sinks_; }
+  // Everything that happens in the run (sim/run_events.h). Subscribe before the run starts: the
+  // run decides then whether to trace frames and snapshots at all.
+  RunBus& bus();
   // Ends the run at once (from inside it) or before its next piece (between World::RunUntil
   // calls); results are written as usual and summary.json's ended_by says `why`.
   void Stop(const std::string& why = "stopped by a front end");
@@ -134,8 +130,6 @@ class Driver {
   void CheckId(NodeId id) const;
   void CheckOwner(NodeId robot, const std::string& owner, const char* what) const;
   Assembly& parts_;
-  std::vector<RunObserver*> observers_;
-  std::vector<MessageSink*> sinks_;
   std::vector<std::unique_ptr<Repeater>> repeaters_;
   std::vector<std::string> owners_;  // per node; "" for none
   std::vector<SensorReadings> readings_;

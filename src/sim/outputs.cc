@@ -29,10 +29,11 @@ bool Unmoved(const Pose2D& p, const Pose2D& last) {
 
 }  // namespace
 
-Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force,
-                 const std::vector<MessageSink*>& sinks)
+Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, RunBus& bus, const std::string& dir, bool force,
+                 const std::vector<MakeTraceFile>& trace_files)
     : spec_(spec),
       nodes_(nodes),
+      bus_(bus),
       folder_(dir, force),
       trajectories_(folder_.Csv("trajectories.csv", "time,node,x,y,theta")),
       log_(folder_.Csv("log.csv", trace::kLogHeader)),
@@ -41,18 +42,34 @@ Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& 
       metric_rows_(folder_.Csv("metrics.csv", trace::kMetricsHeader)),
       last_recorded_(nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
-  StartTrace(sinks);
+  StartTrace(trace_files);
+  Subscribe();
 }
 
-void Outputs::StartTrace(const std::vector<MessageSink*>& sinks) {
-  const bool files = spec_.trace && folder_.writes();
-  if (!files && sinks.empty()) return;
-  trace_ = std::make_unique<RunTraces>(spec_, nodes_, files ? &folder_ : nullptr);
-  for (MessageSink* sink : sinks) trace_->AddSink(*sink);
+void Outputs::StartTrace(const std::vector<MakeTraceFile>& trace_files) {
+  if (!spec_.trace || !folder_.writes()) return;
+  sqlite_ = std::make_unique<SqliteTrace>(spec_, nodes_, bus_, folder_);
+  for (const MakeTraceFile& make : trace_files)
+    if (auto file = make(TraceFileContext{spec_, nodes_, bus_, folder_})) trace_files_.push_back(std::move(file));
 }
 
-void Outputs::Event(double t, NodeId node, const char* kind, const std::string& detail) {
-  if (trace_) trace_->Event(t, node, kind, detail);
+template <typename Event, typename Handler>
+void Outputs::Hear(Handler handler) {
+  subscriptions_.push_back(bus_.On<Event>(RunStage::kRecord, std::move(handler)));
+}
+
+void Outputs::Subscribe() {
+  Hear<LogLine>([this](const LogLine& e) { Log(e); });
+  Hear<Transitioned>([this](const Transitioned& e) { Transition(e); });
+  Hear<MetricReported>([this](const MetricReported& e) { Metric(e); });
+  Hear<MessageDelivered>([this](const MessageDelivered& e) { Delivered(e); });
+  Hear<MessageDropped>([this](const MessageDropped&) { ++messages_lost_; });
+  Hear<MessageLost>([this](const MessageLost& e) { Lost(e); });
+  Hear<ControllerFailed>([this](const ControllerFailed& e) {
+    if (failure_.empty()) failure_ = e.why;  // the first failure is kept
+  });
+  Hear<NodeSpawned>([this](const NodeSpawned& e) { spawned_as_[e.node] = e.spawned_as; });
+  Hear<EngineWarning>([this](const EngineWarning& e) { warnings_.EngineMessage(e.t, e.kind, e.text, e.contacts); });
 }
 
 // "time,node," as every per-node event row starts.
@@ -60,39 +77,32 @@ std::string Outputs::Stamp(double t, NodeId node) const {
   return Format("%.6f,", t) + trace::CsvField(Name(node)) + ",";
 }
 
-void Outputs::Log(double t, NodeId node, const std::string& text) {
-  log_.Row(Stamp(t, node) + trace::CsvField(text));
-  Event(t, node, "log", text);
+void Outputs::Log(const LogLine& e) { log_.Row(Stamp(e.t, e.node) + trace::CsvField(e.text)); }
+
+void Outputs::Transition(const Transitioned& e) {
+  ++transitions_to_[e.to];
+  transitions_.Row(Stamp(e.t, e.node) + trace::CsvField(e.from) + "," + trace::CsvField(e.to) + "," +
+                   trace::CsvField(e.why));
 }
 
-void Outputs::Transition(double t, NodeId node, const std::string& from, const std::string& to,
-                         const std::string& why) {
-  ++transitions_to_[to];
-  if (trace_) trace_->Transition(t, node, from, to, why);
-  transitions_.Row(Stamp(t, node) + trace::CsvField(from) + "," + trace::CsvField(to) + "," + trace::CsvField(why));
+void Outputs::Metric(const MetricReported& e) {
+  metrics_[Name(e.node)][e.name].push_back(e.value);
+  metric_rows_.Row(Stamp(e.t, e.node) + trace::CsvField(e.name) + Format(",%.9g", e.value));
 }
 
-void Outputs::Metric(double t, NodeId node, const std::string& name, double value) {
-  metrics_[Name(node)][name].push_back(value);
-  if (trace_) trace_->Metric(t, node, name, value);
-  metric_rows_.Row(Stamp(t, node) + trace::CsvField(name) + Format(",%.9g", value));
-}
-
-void Outputs::Delivered(NodeId to, const Message& m) {
+void Outputs::Delivered(const MessageDelivered& e) {
+  const Message& m = e.message;
   const double delay = m.time_received - m.time_sent;
   delays_.push_back(delay);
-  if (trace_) trace_->Message(m.time_received, m, to, /*delivered=*/true);
-  messages_.Row(Format("%.6f,%s,%s,%s,%zu,%.6f,%.6f,%s", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
+  messages_.Row(Format("%.6f,%s,%s,%s,%zu,%.6f,%.6f,%s", m.time_sent, Name(m.from).c_str(), Name(e.to).c_str(),
                        DeliveryName(m.delivery), m.payload.size(), m.time_received, delay,
                        m.hops ? std::to_string(*m.hops).c_str() : ""));
 }
 
-// A row without time_received, delay and hops: the message reached the node but not whoever
-// drives it.
-void Outputs::Lost(double t, NodeId to, const Message& m) {
+void Outputs::Lost(const MessageLost& e) {
+  const Message& m = e.message;
   ++messages_undelivered_;
-  if (trace_) trace_->Message(t, m, to, /*delivered=*/false);
-  messages_.Row(Format("%.6f,%s,%s,%s,%zu,,,", m.time_sent, Name(m.from).c_str(), Name(to).c_str(),
+  messages_.Row(Format("%.6f,%s,%s,%s,%zu,,,", m.time_sent, Name(m.from).c_str(), Name(e.to).c_str(),
                        DeliveryName(m.delivery), m.payload.size()));
 }
 
@@ -107,10 +117,6 @@ void Outputs::Interrupted(const std::string& by, double at) {
   interrupted_ = true;
   ended_by_ = by;
   ended_at_ = at;
-}
-
-void Outputs::Failed(const std::string& why) {
-  if (failure_.empty()) failure_ = why;
 }
 
 // The smallest distance between any two robots (centre to centre), with the pair.
@@ -149,12 +155,10 @@ void Outputs::Record(double now, NodeId id, const Pose2D& p, const Twist2D& velo
     track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
   }
   trajectories_.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, Name(id).c_str(), p.x, p.y, p.theta));
-  if (trace_) trace_->Pose(now, id, p, velocity);
+  if (bus_.Heard<PoseRow>()) bus_.Publish(PoseRow{now, id, p, velocity});
 }
 
-void Outputs::Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose) {
-  spawned_as_[node] = spawned_as;
-  if (trace_) trace_->Spawned(t, node, spawned_as, pose);
+void Outputs::FirstRow(double t, NodeId node, const Pose2D& pose) {
   last_recorded_.resize(nodes_.size());
   Record(std::min(t, spec_.duration), node, pose, Twist2D{});
 }

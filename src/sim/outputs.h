@@ -1,7 +1,8 @@
 // The outputs of one run: every results file (trajectories, log, messages, transitions, metrics,
 // smallest distance, the network's packets and routes), the figures, summary.json and the fingerprint.
-// The run and the network hand it what happened; it alone decides what is written, in which
-// form and in which order the fingerprint takes it. Files are written whole (trace::ResultsFolder).
+// It hears the run's events on the bus (RunStage::kRecord) and is handed the samples and the
+// network's traces; it alone decides what is written, in which form and in which order the
+// fingerprint takes it. Files are written whole (trace::ResultsFolder).
 #pragma once
 
 #include <functional>
@@ -14,10 +15,12 @@
 
 #include "core/fingerprint.h"
 #include "net/network_traces.h"
+#include "sim/run_events.h"
 #include "sim/run_nodes.h"
 #include "sim/run_spec.h"
-#include "sim/run_traces.h"
 #include "sim/run_warnings.h"
+#include "sim/sqlite_trace.h"
+#include "sim/trace_file.h"
 #include "trace/figures.h"
 #include "trace/results_folder.h"
 
@@ -73,44 +76,25 @@ struct Provenance {
 class Outputs {
  public:
   // Clears what an earlier run left in `dir` first (refusing foreign files unless `force`).
-  // `nodes` grows while the run goes (robots spawned by front ends). `sinks` get the run's ROS 2
-  // messages (live streams), whether or not the trace is written.
-  Outputs(const RunSpec& spec, const RunNodes& nodes, const std::string& dir, bool force = false,
-          const std::vector<MessageSink*>& sinks = {});
+  // `nodes` grows while the run goes (robots spawned by front ends). When the scenario asks for a
+  // trace and results are written, trace.sqlite and the `trace_files` are made.
+  Outputs(const RunSpec& spec, const RunNodes& nodes, RunBus& bus, const std::string& dir, bool force = false,
+          const std::vector<MakeTraceFile>& trace_files = {});
   void Begin(const Provenance& provenance);
   // Warnings said before the run (the command printed them): summary.json lists them first.
   void Warned(std::vector<std::string> warnings) { said_before_ = std::move(warnings); }
   trace::ResultsFolder& folder() { return folder_; }
-  // The run's trace, when the scenario asks for one and the results are written, or live
-  // streams want its messages.
-  RunTraces* trace() { return trace_.get(); }
-  // Something that happened to a node (switch-off), for the trace.
-  void Event(double t, NodeId node, const char* kind, const std::string& detail);
 
-  // Events of the run, at simulated time `t`.
-  void Log(double t, NodeId node, const std::string& text);
-  void Transition(double t, NodeId node, const std::string& from, const std::string& to, const std::string& why);
-  void Metric(double t, NodeId node, const std::string& name, double value);
-  void Delivered(NodeId to, const Message& message);
-  void DroppedByImpairment() { ++messages_lost_; }
-  // A message that reached a node's radio at `t` but not its controller (the stepper logs why).
-  void Lost(double t, NodeId to, const Message& message);
-  // A robot a client added at time `t`, standing at `pose`: its first trajectory row.
-  void Spawned(double t, NodeId node, const std::string& spawned_as, const Pose2D& pose);
   void Ended(const std::string& by, double at);
   // Stopped from outside at `at` (a signal): the summary says "interrupted".
   void Interrupted(const std::string& by, double at);
   bool interrupted() const { return interrupted_; }
-  void Failed(const std::string& why);  // the first failure is kept
-  // A message of the physics engine (sim/run_warnings.h).
-  void EngineMessage(double t, const std::string& kind, const std::string& text,
-                     const std::vector<std::string>& contacts) {
-    warnings_.EngineMessage(t, kind, text, contacts);
-  }
   const std::string& failure() const { return failure_; }
   const std::string& ended_by() const { return ended_by_; }
   double ended_at() const { return ended_at_; }
 
+  // A robot a client added at time `t`, standing at `pose`: its first trajectory row.
+  void FirstRow(double t, NodeId node, const Pose2D& pose);
   // Trajectory rows (and the smallest distance) at time `now`; `final_row` for the end of the run.
   void Sample(double now, bool final_row, const PoseReader& world);
 
@@ -120,9 +104,18 @@ class Outputs {
               const std::vector<Pose2D>& final_poses, nlohmann::ordered_json extra);
 
  private:
+  void Subscribe();
+  template <typename Event, typename Handler>
+  void Hear(Handler handler);
+  void StartTrace(const std::vector<MakeTraceFile>& trace_files);
+  void Log(const LogLine& e);
+  void Transition(const Transitioned& e);
+  void Metric(const MetricReported& e);
+  void Delivered(const MessageDelivered& e);
+  // A row without time_received, delay and hops: the message reached the node but not whoever drives it.
+  void Lost(const MessageLost& e);
   void SampleMinDistance(double now, const PoseReader& world);
   void Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity);
-  void StartTrace(const std::vector<MessageSink*>& sinks);
   void AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp);
   void AddTapFiles(const net::NetworkTraces& network, nlohmann::ordered_json& summary);
   void WriteFigures(const std::vector<Pose2D>& final_poses, const std::optional<net::NetworkTraces>& network);
@@ -134,6 +127,8 @@ class Outputs {
 
   const RunSpec& spec_;
   const RunNodes& nodes_;
+  RunBus& bus_;
+  std::vector<Subscription> subscriptions_;
   RunWarnings warnings_;
   std::vector<std::string> said_before_;
   trace::ResultsFolder folder_;
@@ -153,7 +148,9 @@ class Outputs {
   std::vector<std::optional<Recorded>> last_recorded_;
   std::map<NodeId, trace::Track> tracks_;     // of robots, for the figures
   std::map<NodeId, std::string> spawned_as_;  // robots that clients added, with their classes
-  std::unique_ptr<RunTraces> trace_;
+  std::unique_ptr<SqliteTrace> sqlite_;
+  std::vector<std::unique_ptr<TraceFile>> trace_files_;
+  nlohmann::ordered_json trace_profile_ = nlohmann::ordered_json::object();  // the trace files' wall times
   std::string ended_by_, failure_;
   bool interrupted_ = false;
   double ended_at_ = 0;

@@ -132,7 +132,9 @@ void Outputs::AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp
 void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>& network,
                      const std::string& scenario_file, const std::vector<Pose2D>& final_poses,
                      nlohmann::ordered_json extra) {
-  if (trace_) trace_->Close();
+  subscriptions_.clear();  // the run is over: nothing more is recorded
+  if (sqlite_) sqlite_->Close();
+  for (const auto& file : trace_files_) file->Close();
   folder_.Commit();
   Fingerprint fp;
   fp.Add(spec_.seed);
@@ -152,9 +154,7 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
   result.fingerprint = fp.Hex();
   const nlohmann::ordered_json moved_motes = RunWarnings::MovedMotes(nodes_, final_poses);
   result.warnings = warnings_.Sentences(moved_motes);
-  if (trace_ && trace_->mcap_topics_left_out() > 0)
-    result.warnings.push_back("trace.mcap holds its first 65535 topics (MCAP numbers channels with 16 bits); " +
-                              std::to_string(trace_->mcap_topics_left_out()) + " more were left out of it");
+  for (const auto& file : trace_files_) file->Report(trace_profile_, result.warnings);
   if (!moved_motes.empty()) extra["motes_moved"] = moved_motes;
   std::vector<std::string> all = said_before_;
   // The front end's own (RunOptions::add_results), after the run's.
@@ -243,8 +243,10 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
                     {"controllers", result.profile.controllers},
                     {"recording", result.profile.recording},
                     {"physics_wait", result.profile.physics_wait}};
-  if (trace_ && trace_->files())
-    j["profile_s"]["trace"] = {{"sqlite", trace_->sqlite_seconds()}, {"mcap", trace_->mcap_seconds()}};
+  if (sqlite_) {
+    j["profile_s"]["trace"] = {{"sqlite", sqlite_->seconds()}};
+    j["profile_s"]["trace"].update(trace_profile_);
+  }
   nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
   for (NodeId id = 0; id < nodes_.size(); ++id) {
     const Pose2D p = final_poses.at(id);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "sim/assembly.h"
-#include "sim/run_observer.h"
+#include "sim/run_events.h"
 
 namespace sanet::sim {
 

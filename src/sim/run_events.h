@@ -1,30 +1,134 @@
-// What the nodes of a run report while it goes, to whoever runs it (the stepper records them
-// through the outputs and applies the end conditions).
+// Everything that happens in a run, as one typed event stream (core/event_bus.h): each event is
+// published once, by the part where it happens, stamped with simulated time, on the simulation
+// thread and in the run's order. The results (CSV files, summary, trace.sqlite), trace.mcap, live
+// streams and scripts subscribe to the kinds they want (docs/architecture.md draws the flow).
+//
+// Stages order the subscribers of one event: the run's records first, then observers (so that an
+// observer sees what the results hold), then the clock (end conditions, a failure's stop).
+//
+// Events refer to what their publisher holds (texts, messages, readings): a subscriber copies
+// what it keeps. Adding a kind: a struct here, in RunBus's list, a Publish where it happens, and
+// the subscribers that care.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
-#include "agents/simulated_node.h"
+#include "core/event_bus.h"
+#include "net/network_traces.h"
 #include "sanet/message.h"
+#include "sanet/readings.h"
 #include "sim/snapshot.h"
 
 namespace sanet::sim {
 
-class RunEvents {
- public:
-  virtual ~RunEvents() = default;
-  virtual void Log(NodeId node, const std::string& text) = 0;
-  virtual void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) = 0;
-  virtual void Metric(NodeId node, const std::string& name, double value) = 0;
-  virtual void Delivered(NodeId to, const Message& message) = 0;
-  virtual void DroppedByImpairment(NodeId to, const Message& message) = 0;
-  virtual void Lost(NodeId to, const Message& message, const std::string& why) = 0;
-  virtual void Failed(const std::string& why) = 0;
-  // A node joined the running world (a robot a front end spawned, as the class it names).
-  virtual void Spawned(NodeId node, const std::string& spawned_as) = 0;
-  // What a node's driver read (agents::NodeDirectory), with where the body truly is now.
-  virtual void ReadSensor(NodeId /*node*/, const std::string& /*instance*/, const std::string& /*kind*/,
-                          const SensorReading& /*reading*/, const BodyState& /*body*/) {}
+enum class RunStage { kRecord, kObserve, kControl };
+
+// A line of a node's log (its controller's, a front end's, the run's own).
+struct LogLine {
+  double t;  // s, simulated
+  NodeId node;
+  const std::string& text;
 };
+
+// A controller changed its state.
+struct Transitioned {
+  double t;
+  NodeId node;
+  const std::string &from, &to, &why;
+};
+
+struct MetricReported {
+  double t;
+  NodeId node;
+  const std::string& name;
+  double value;
+};
+
+// A message reached `to`'s controller (or the front end driving `to`): its time_received is now.
+struct MessageDelivered {
+  NodeId to;
+  const Message& message;
+};
+
+// A message the scenario's impairments (message_loss) dropped before `to`'s controller.
+struct MessageDropped {
+  NodeId to;
+  const Message& message;
+};
+
+// A message reached `to`'s radio but not its controller (`why`: e.g. no client drives it). The
+// run logs why in `to`'s log just after.
+struct MessageLost {
+  double t;
+  NodeId to;
+  const Message& message;
+  const std::string& why;
+};
+
+// A controller failed: the run ends at once, keeping what it recorded.
+struct ControllerFailed {
+  const std::string& why;
+};
+
+// A robot joined the running world (a front end spawned it, as the class it names).
+struct NodeSpawned {
+  double t;
+  NodeId node;
+  const std::string& spawned_as;
+  Pose2D pose;
+};
+
+// The node stopped for good (a scenario's switch-off event, or a script's).
+struct SwitchedOff {
+  double t;
+  NodeId node;
+};
+
+// What a node's driver read from its sensor `instance` of `kind`, with where its body truly is.
+struct SensorRead {
+  double t;
+  NodeId node;
+  const std::string &instance, &kind;
+  const SensorReading& reading;
+  BodyState body;
+};
+
+// A row of trajectories.csv: a body's true pose at a trajectory sample (after it moved).
+struct PoseRow {
+  double t;
+  NodeId node;
+  Pose2D pose;
+  Twist2D velocity;  // world frame
+};
+
+// A node's route to `destination` appeared, changed or went away (next_hop empty). Routing
+// tables are compared at every trajectory sample (ns-3's routing protocols trace no changes), and
+// only while someone hears this kind.
+struct RouteChange {
+  double time = 0;  // s
+  NodeId node = 0, destination = 0;
+  std::optional<NodeId> next_hop;
+  int hops = 0;
+};
+
+// A message of the physics engine (sim/run_warnings.h), with the bodies in contact it names.
+struct EngineWarning {
+  double t;
+  const std::string &kind, &text;
+  const std::vector<std::string>& contacts;
+};
+
+// The world after a physics step (or, in a world without moving bodies, a trajectory sample).
+struct StepEnded {
+  const WorldSnapshot& world;
+};
+
+// Radio frames (net::FrameEvent) cost something to hear: the network traces them only while
+// someone hears them.
+using RunBus = EventBus<RunStage, LogLine, Transitioned, MetricReported, MessageDelivered, MessageDropped, MessageLost,
+                        ControllerFailed, NodeSpawned, SwitchedOff, SensorRead, PoseRow, net::FrameEvent, RouteChange,
+                        EngineWarning, StepEnded>;
 
 }  // namespace sanet::sim

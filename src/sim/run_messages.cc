@@ -30,7 +30,7 @@ std::uint64_t Nanoseconds(double t) {
   return static_cast<std::uint64_t>(stamp.sec) * 1000000000u + stamp.nanosec;
 }
 
-msg::rcl_interfaces::Log LogLine(double t, const std::string& node, const std::string& text) {
+msg::rcl_interfaces::Log RosoutLine(double t, const std::string& node, const std::string& text) {
   msg::rcl_interfaces::Log line;
   line.stamp = StampOf(t);
   line.level = msg::rcl_interfaces::Log::INFO;
@@ -273,7 +273,7 @@ void RunMessages::Metric(double t, NodeId node, const std::string& name, double 
 }
 
 void RunMessages::Event(double t, NodeId node, const std::string& kind, const std::string& detail) {
-  if (kind == "log") return Publish("/rosout", t, LogLine(t, nodes_.NameOf(node), detail));
+  if (kind == "log") return Publish("/rosout", t, RosoutLine(t, nodes_.NameOf(node), detail));
   msg::sanet_msgs::NodeEvent out;
   out.stamp = StampOf(t);
   out.node = nodes_.NameOf(node);

@@ -28,37 +28,35 @@ class StageTimer {
 
 }  // namespace
 
-Stepper::Stepper(Assembly& world, Outputs& outputs, const std::vector<RunObserver*>& observers)
-    : world_(world), outputs_(outputs), observers_(observers) {
-  world_.SetEvents(this);
+Stepper::Stepper(Assembly& world, Outputs& outputs) : world_(world), outputs_(outputs), bus_(world.bus()) {
   world_.poses().SetCatchUp([this] { CatchUp(); });
   for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
   moving_.assign(world_.size(), 0);
-  if (!observers_.empty()) world_.transport().Watch();
-  for (RunObserver* o : observers_) {
-    frame_watchers_ += o->Wants().frames;
-    route_watchers_ += o->Wants().routes;
-  }
-  if (outputs_.trace() || frame_watchers_ > 0)
-    world_.transport().ObserveFrames([this](const net::FrameEvent& f) { SeeFrame(f); });
+  if (bus_.Heard<StepEnded>()) world_.transport().Watch();
+  if (bus_.Heard<net::FrameEvent>())
+    world_.transport().ObserveFrames([this](const net::FrameEvent& f) { bus_.Publish(f); });
+  Subscribe();
 }
 
-void Stepper::SeeFrame(const net::FrameEvent& f) {
-  if (RunTraces* trace = outputs_.trace()) trace->Frame(f);
-  if (frame_watchers_ > 0)
-    for (RunObserver* o : observers_)
-      if (o->Wants().frames) o->Frame(f);
+void Stepper::Subscribe() {
+  const RunSpec& spec = world_.spec();
+  subscriptions_.push_back(bus_.On<LogLine>(RunStage::kControl, [this, &spec](const LogLine& e) {
+    CountTowardsEnd(spec.end_when_logged, e.text, "'" + e.text + "' logged by " + world_.NameOf(e.node));
+  }));
+  subscriptions_.push_back(bus_.On<Transitioned>(RunStage::kControl, [this, &spec](const Transitioned& e) {
+    CountTowardsEnd(spec.end_when_transition, e.to, world_.NameOf(e.node) + " entered '" + e.to + "'");
+  }));
+  subscriptions_.push_back(bus_.On<MetricReported>(RunStage::kControl, [this, &spec](const MetricReported& e) {
+    CountTowardsEnd(spec.end_when_metric, e.name, world_.NameOf(e.node) + " reported '" + e.name + "'");
+  }));
+  subscriptions_.push_back(
+      bus_.On<ControllerFailed>(RunStage::kControl, [this](const ControllerFailed& e) { Failed(e.why); }));
+  subscriptions_.push_back(bus_.On<NodeSpawned>(RunStage::kControl, [this](const NodeSpawned& e) { Spawned(e); }));
 }
 
 void Stepper::LookAtRoutes() {
-  RunTraces* trace = outputs_.trace();
-  if (!trace && route_watchers_ == 0) return;
-  for (const RouteChange& r : routes_.Look(Now(), world_)) {
-    if (trace) trace->Route(r);
-    if (route_watchers_ > 0)
-      for (RunObserver* o : observers_)
-        if (o->Wants().routes) o->RouteChanged(r);
-  }
+  if (!bus_.Heard<RouteChange>()) return;
+  for (const RouteChange& r : routes_.Look(Now(), world_)) bus_.Publish(r);
 }
 
 Stepper::~Stepper() {
@@ -67,7 +65,6 @@ Stepper::~Stepper() {
   } catch (...) {               // a failed step, thrown once already (by Run, unwinding now)
   }
   world_.poses().SetCatchUp([] {});
-  world_.SetEvents(nullptr);
 }
 
 double Stepper::Now() const { return ns3::Simulator::Now().GetSeconds(); }
@@ -196,7 +193,7 @@ void Stepper::PhysicsStep() {
     due_ = steps_.size();
     world_.poses().Behind();
   }
-  if (!observers_.empty() && launched_ > 0) {
+  if (bus_.Heard<StepEnded>() && launched_ > 0) {
     CatchUp();
     Notify();
   }
@@ -250,7 +247,7 @@ void Stepper::ReportEngineMessage(double t, const physics::EngineMessage& m) {
   for (const physics::EngineMessage::Contact& c : m.contacts)
     contacts.push_back(world_.NameOfBody(c.a) + " and " +
                        (c.b ? world_.NameOfBody(c.b) : "world.obstacles[" + std::to_string(c.obstacle) + "]"));
-  outputs_.EngineMessage(t, m.kind, m.text, contacts);
+  bus_.Publish(EngineWarning{t, m.kind, m.text, contacts});
 }
 
 void Stepper::CollectMoving() {
@@ -263,9 +260,9 @@ void Stepper::CollectMoving() {
 }
 
 void Stepper::Notify() {
-  if (observers_.empty()) return;
+  if (!bus_.Heard<StepEnded>()) return;
   const WorldSnapshot snapshot(world_, Now(), physics_steps_);
-  for (RunObserver* o : observers_) o->AfterStep(snapshot);
+  bus_.Publish(StepEnded{snapshot});
 }
 
 void Stepper::Record() {
@@ -285,26 +282,8 @@ PoseReader Stepper::Poses() const {
 }
 
 void Stepper::SwitchOff(NodeId node) {
-  outputs_.Event(Now(), node, "switch_off", "");
+  bus_.Publish(SwitchedOff{Now(), node});
   world_.SwitchOff(node);
-}
-
-void Stepper::Log(NodeId node, const std::string& text) {
-  outputs_.Log(Now(), node, text);
-  for (RunObserver* o : observers_) o->Log(Now(), node, text);
-  CountTowardsEnd(world_.spec().end_when_logged, text, "'" + text + "' logged by " + world_.NameOf(node));
-}
-
-void Stepper::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
-  outputs_.Transition(Now(), node, from, to, why);
-  for (RunObserver* o : observers_) o->Transition(Now(), node, from, to, why);
-  CountTowardsEnd(world_.spec().end_when_transition, to, world_.NameOf(node) + " entered '" + to + "'");
-}
-
-void Stepper::Metric(NodeId node, const std::string& name, double value) {
-  outputs_.Metric(Now(), node, name, value);
-  for (RunObserver* o : observers_) o->Metric(Now(), node, name, value);
-  CountTowardsEnd(world_.spec().end_when_metric, name, world_.NameOf(node) + " reported '" + name + "'");
 }
 
 // One of the end condition's events; the run ends at the count-th (a grace period later).
@@ -318,22 +297,7 @@ void Stepper::CountTowardsEnd(const std::vector<std::string>& watched, const std
   ns3::Simulator::Stop(Period(world_.spec().end_grace));
 }
 
-void Stepper::Delivered(NodeId to, const Message& message) {
-  outputs_.Delivered(to, message);
-  for (RunObserver* o : observers_) o->Delivered(to, message);
-}
-
-// The message's row, then a line in the addressee's log saying why.
-void Stepper::Lost(NodeId to, const Message& message, const std::string& why) {
-  outputs_.Lost(Now(), to, message);
-  for (RunObserver* o : observers_) o->Lost(to, message, why);
-  const std::string text = "message from " + world_.NameOf(message.from) + " lost: " + why;
-  outputs_.Log(message.time_received, to, text);
-  for (RunObserver* o : observers_) o->Log(message.time_received, to, text);
-}
-
 void Stepper::Failed(const std::string& why) {
-  outputs_.Failed(why);
   outputs_.Ended("controller failure", ns3::Simulator::Now().GetSeconds());
   stopped_ = true;
   ns3::Simulator::Stop();
@@ -341,9 +305,9 @@ void Stepper::Failed(const std::string& why) {
 
 // A robot joined: it moves with the others from the next physics step (one that starts now, if
 // it is the world's first vehicle).
-void Stepper::Spawned(NodeId node, const std::string& spawned_as) {
-  world_.physics().Settle();  // the physics thread reads the lists grown here
-  outputs_.Spawned(Now(), node, spawned_as, world_.model(node).body().pose());
+void Stepper::Spawned(const NodeSpawned& spawned) {
+  const NodeId node = spawned.node;
+  outputs_.FirstRow(spawned.t, node, spawned.pose);  // its first trajectory row, after the spawn itself
   moving_.resize(world_.size(), 0);
   if (!world_.model(node).mobile()) return;
   if (vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);

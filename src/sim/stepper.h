@@ -21,15 +21,18 @@
 #include "sim/outputs.h"
 #include "sim/route_watch.h"
 #include "sim/run_events.h"
-#include "sim/run_observer.h"
 #include "sim/snapshot.h"
 
 namespace sanet::sim {
 
-class Stepper : public RunEvents {
+// It hears the run's events last (RunStage::kControl): the end conditions count log lines,
+// transitions and metrics; a controller's failure stops the run; a spawned robot joins the steps.
+// It publishes what the clock finds: the world after each step, frames, route changes, the
+// engine's messages, switch-offs.
+class Stepper {
  public:
-  Stepper(Assembly& world, Outputs& outputs, const std::vector<RunObserver*>& observers);
-  ~Stepper() override;
+  Stepper(Assembly& world, Outputs& outputs);
+  ~Stepper();
 
   // A run in three parts: Begin schedules it (`progress`, if given, hears where the run is;
   // RunOptions), Advance runs it to simulated time `until` (events at exactly `until` included)
@@ -51,23 +54,13 @@ class Stepper : public RunEvents {
   double wall() const;  // s since Run began
   double Now() const;   // s, simulated
 
-  // RunEvents
-  void Log(NodeId node, const std::string& text) override;
-  void Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) override;
-  void Metric(NodeId node, const std::string& name, double value) override;
-  void Delivered(NodeId to, const Message& message) override;
-  void DroppedByImpairment(NodeId, const Message&) override { outputs_.DroppedByImpairment(); }
-  void Lost(NodeId to, const Message& message, const std::string& why) override;
-  void Failed(const std::string& why) override;
-  void Spawned(NodeId node, const std::string& spawned_as) override;
-  void ReadSensor(NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,
-                  const BodyState& body) override {
-    if (RunTraces* trace = outputs_.trace()) trace->Read(Now(), node, instance, kind, reading, body);
-  }
   // The node stops for good (a scenario's switch-off event, or a script's), recorded as an event.
   void SwitchOff(NodeId node);
 
  private:
+  void Subscribe();
+  void Failed(const std::string& why);
+  void Spawned(const NodeSpawned& spawned);
   void ScheduleAll();
   void StartControllers();
   void ControlStep(NodeId node);
@@ -95,7 +88,8 @@ class Stepper : public RunEvents {
 
   Assembly& world_;
   Outputs& outputs_;
-  std::vector<RunObserver*> observers_;
+  RunBus& bus_;
+  std::vector<Subscription> subscriptions_;
   std::vector<NodeId> vehicles_, motes_;
   std::map<std::int64_t, std::vector<NodeId>> control_rounds_;  // period (ns) -> nodes, in node order
   std::deque<StepOutcome> steps_;                               // started, and not yet published to the radios
@@ -104,7 +98,6 @@ class Stepper : public RunEvents {
   std::vector<NodeId> moved_;  // bodies awake before or after the step in flight (physics thread)
   std::vector<char> moving_;   // per node: listed in moved_
   RouteWatch routes_;
-  int frame_watchers_ = 0, route_watchers_ = 0;  // observers that want frames, route changes
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   std::uint64_t quiet_physics_steps_ = 0, events_at_last_step_ = 0;

@@ -10,26 +10,13 @@
 #include "sim/stepper.h"
 
 namespace sanet::sim {
-namespace {
-
-class FunctionObserver : public RunObserver {
- public:
-  explicit FunctionObserver(std::function<void(const WorldSnapshot&)> f) : f_(std::move(f)) {}
-  void AfterStep(const WorldSnapshot& snapshot) override { f_(snapshot); }
-
- private:
-  std::function<void(const WorldSnapshot&)> f_;
-};
-
-}  // namespace
 
 void UseRealTimeClock() {
   ns3::GlobalValue::Bind("SimulatorImplementationType", ns3::StringValue("ns3::RealtimeSimulatorImpl"));
 }
 
 void World::Observe(std::function<void(const WorldSnapshot&)> observer) {
-  owned_observers_.push_back(std::make_unique<FunctionObserver>(std::move(observer)));
-  AddObserver(*owned_observers_.back());
+  observers_.push_back(bus().On<StepEnded>(RunStage::kObserve, [observer](const StepEnded& e) { observer(e.world); }));
 }
 
 World::World(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers)
@@ -47,9 +34,9 @@ void World::Stop(const std::string& why) { driver_->Stop(why); }
 struct World::Running {
   Running(World& world, const RunOptions& run_options)
       : options(run_options),
-        outputs(world.spec(), world.parts_->run_nodes(), options.output_dir, options.force,
-                world.driver_->message_sinks()),
-        stepper(*world.parts_, outputs, world.driver_->observers()) {}
+        outputs(world.spec(), world.parts_->run_nodes(), world.parts_->bus(), options.output_dir, options.force,
+                options.trace_files),
+        stepper(*world.parts_, outputs) {}
   RunOptions options;
   Outputs outputs;
   Stepper stepper;

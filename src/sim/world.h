@@ -14,6 +14,7 @@
 #include "sim/outputs.h"
 #include "sim/run_spec.h"
 #include "sim/snapshot.h"
+#include "sim/trace_file.h"
 #include "sim/world_error.h"
 #include "trace/results_folder.h"
 
@@ -38,6 +39,9 @@ struct RunOptions {
   // run's (and RunResult::warnings); its other fields replace the run's (the server's "status"
   // when robots it expected never came).
   std::function<void(nlohmann::ordered_json& summary, trace::ResultsFolder& folder)> add_results = nullptr;
+  // Files of the trace written above sim (trace.mcap: ros2_out::RecordMcap), made when the run
+  // writes a trace (sim/trace_file.h).
+  std::vector<MakeTraceFile> trace_files = {};
 };
 
 // Selects ns-3's real-time scheduler for the next World: the same schedule, run against the
@@ -80,9 +84,9 @@ class World {
   std::optional<NodeId> Lookup(const std::string& name) const;
   std::string NameOf(NodeId id) const;
 
-  // Observers see a snapshot after every step; add them before Run. The world does not own them.
-  void AddObserver(RunObserver& observer) { driver_->AddObserver(observer); }
-  // The same for a function (tests).
+  // Everything that happens in the run (sim/run_events.h); subscribe before Run.
+  RunBus& bus() { return driver_->bus(); }
+  // `observer` sees the world after every step (tests); added before Run.
   void Observe(std::function<void(const WorldSnapshot&)> observer);
 
   // `action` runs now (t = 0 before the run) and then every `period` s of simulated time.
@@ -96,7 +100,7 @@ class World {
  private:
   std::unique_ptr<Assembly> parts_;
   std::unique_ptr<Driver> driver_;
-  std::vector<std::unique_ptr<RunObserver>> owned_observers_;
+  std::vector<Subscription> observers_;
   bool ran_ = false, interrupted_ = false;
   struct Running;  // between Start and Finish
   std::unique_ptr<Running> running_;

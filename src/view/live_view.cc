@@ -80,6 +80,11 @@ nlohmann::json LiveView::RunJson(const sim::RunSpec& spec) const {
   return run;
 }
 
+void LiveView::Observe(sim::RunBus& bus) {
+  step_ended_ =
+      bus.On<sim::StepEnded>(sim::RunStage::kObserve, [this](const sim::StepEnded& e) { AfterStep(e.world); });
+}
+
 void LiveView::AfterStep(const sim::WorldSnapshot& snapshot) {
   const auto now = std::chrono::steady_clock::now();
   if (now - last_ < std::chrono::duration<double>(settings_.period)) return;

@@ -16,7 +16,7 @@
 #include <string>
 #include <thread>
 
-#include "sim/run_observer.h"
+#include "sim/run_events.h"
 #include "sim/run_spec.h"
 
 namespace httplib {
@@ -32,19 +32,22 @@ struct LiveSettings {
   std::string javascript = "/usr/share/javascript";
 };
 
-class LiveView : public sim::RunObserver {
+class LiveView {
  public:
   // Listens (throws std::runtime_error if it cannot) and serves from its own thread.
   LiveView(const sim::RunSpec& spec, LiveSettings settings);
-  ~LiveView() override;
+  ~LiveView();
   int port() const { return port_; }
   std::uint64_t frames() const { return sequence_; }
 
-  void AfterStep(const sim::WorldSnapshot& snapshot) override;
+  // Draws the world on the run's bus from now on.
+  void Observe(sim::RunBus& bus);
+  void AfterStep(const sim::WorldSnapshot& snapshot);
   // Ends the stream (the run is over): browsers see the last frame and `end`.
   void Finish();
 
  private:
+  Subscription step_ended_;  // AfterStep, on the run's bus
   nlohmann::json RunJson(const sim::RunSpec& spec) const;
   bool WaitForFrame(std::uint64_t after, std::string* frame);
 

@@ -35,14 +35,20 @@ struct Seen {
   std::vector<std::string> states;
 };
 
-class Recorder : public sim::RunObserver {
+class Recorder {
  public:
-  void AfterStep(const sim::WorldSnapshot& s) override {
+  void Observe(sim::RunBus& bus) {
+    heard_ = bus.On<sim::StepEnded>(sim::RunStage::kObserve, [this](const sim::StepEnded& e) { AfterStep(e.world); });
+  }
+  void AfterStep(const sim::WorldSnapshot& s) {
     Seen seen{s.time(), s.step(), {}, s.radio_neighbours(), s.messages_in_flight().size(), s.controller_states()};
     for (const sim::BodyState& b : s.bodies()) seen.poses.push_back(b.pose);
     log.push_back(seen);
   }
   std::vector<Seen> log;
+
+ private:
+  Subscription heard_;
 };
 
 sim::RunSpec TwoChattingRobots() {
@@ -58,8 +64,8 @@ sim::RunSpec TwoChattingRobots() {
 TEST(Observers, TwoObserversSeeTheSameSnapshots) {
   sim::World world(TwoChattingRobots(), BuiltinRegistry());
   Recorder first, second;
-  world.AddObserver(first);
-  world.AddObserver(second);
+  first.Observe(world.bus());
+  second.Observe(world.bus());
   world.Run({});
   ASSERT_EQ(first.log.size(), 400u);  // 2 s of 5 ms steps
   ASSERT_EQ(first.log.size(), second.log.size());

@@ -22,35 +22,40 @@ struct Tally {
   std::uint64_t steps = 0;
 };
 
-class Counter : public sim::RunObserver {
+// Hears every kind the results hold, on the run's bus.
+class Counter {
  public:
-  Streams Wants() const override { return {true, true}; }
-  void AfterStep(const sim::WorldSnapshot& s) override {
-    EXPECT_GE(s.time(), last_step_time_) << "steps come in time order";
-    last_step_time_ = s.time();
-    ++tally.steps;
+  void Observe(sim::RunBus& bus) {
+    Hear<sim::StepEnded>(bus, [this](const sim::StepEnded& e) {
+      EXPECT_GE(e.world.time(), last_step_time_) << "steps come in time order";
+      last_step_time_ = e.world.time();
+      ++tally.steps;
+    });
+    Hear<net::FrameEvent>(bus, [this](const net::FrameEvent& f) {
+      ++tally.count["frames"];
+      tally.frame_bytes += f.bytes;
+    });
+    Hear<sim::MessageDelivered>(bus, [this](const sim::MessageDelivered&) { ++tally.count["delivered"]; });
+    Hear<sim::MessageLost>(bus, [this](const sim::MessageLost&) { ++tally.count["lost"]; });
+    Hear<sim::RouteChange>(bus, [this](const sim::RouteChange& r) {
+      ++tally.count["routes"];
+      tally.route_hops += r.hops;
+    });
+    Hear<sim::Transitioned>(bus, [this](const sim::Transitioned&) { ++tally.count["transitions"]; });
+    Hear<sim::MetricReported>(bus, [this](const sim::MetricReported& e) {
+      ++tally.count["metrics"];
+      tally.metric_sum += e.value;
+    });
+    Hear<sim::LogLine>(bus, [this](const sim::LogLine&) { ++tally.count["logs"]; });
   }
-  void Frame(const net::FrameEvent& f) override {
-    ++tally.count["frames"];
-    tally.frame_bytes += f.bytes;
-  }
-  void Delivered(NodeId, const Message&) override { ++tally.count["delivered"]; }
-  void Lost(NodeId, const Message&, const std::string&) override { ++tally.count["lost"]; }
-  void RouteChanged(const sim::RouteChange& r) override {
-    ++tally.count["routes"];
-    tally.route_hops += r.hops;
-  }
-  void Transition(double, NodeId, const std::string&, const std::string&, const std::string&) override {
-    ++tally.count["transitions"];
-  }
-  void Metric(double, NodeId, const std::string&, double value) override {
-    ++tally.count["metrics"];
-    tally.metric_sum += value;
-  }
-  void Log(double, NodeId, const std::string&) override { ++tally.count["logs"]; }
   Tally tally;
 
  private:
+  template <typename Event, typename Handler>
+  void Hear(sim::RunBus& bus, Handler handler) {
+    heard_.push_back(bus.On<Event>(sim::RunStage::kObserve, handler));
+  }
+  std::vector<Subscription> heard_;
   double last_step_time_ = 0;
 };
 
@@ -77,13 +82,13 @@ Observed RunHelpRequest(bool trace, bool observe, const std::string& dir) {
   spec.trace = trace;
   sim::World world(spec, testing::BuiltinRegistry());
   Counter counter;
-  if (observe) world.driver().AddObserver(counter);
+  if (observe) counter.Observe(world.driver().bus());
   sim::RunOptions options;
   options.output_dir = dir;
   return {world.Run(options).fingerprint, counter.tally};
 }
 
-TEST(RunObserver, StreamsCarryWhatTheResultsHold) {
+TEST(RunEvents, StreamsCarryWhatTheResultsHold) {
   const std::string dir = ::testing::TempDir() + "/observer-streams";
   std::filesystem::remove_all(dir);
   const Observed seen = RunHelpRequest(true, true, dir);
@@ -107,7 +112,7 @@ TEST(RunObserver, StreamsCarryWhatTheResultsHold) {
   EXPECT_EQ(n.count("logs") ? n.at("logs") : 0, Query(db, "SELECT COUNT(*) FROM events WHERE kind = 'log'"));
 }
 
-TEST(RunObserver, StreamsNeedNoTraceAndWatchingChangesNothing) {
+TEST(RunEvents, StreamsNeedNoTraceAndWatchingChangesNothing) {
   const std::string dir = ::testing::TempDir() + "/observer-quiet";
   const Observed traced = RunHelpRequest(true, true, dir + "-a");
   const Observed untraced = RunHelpRequest(false, true, dir + "-b");

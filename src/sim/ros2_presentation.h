@@ -1,0 +1,40 @@
+// The run as ROS 2 messages (RunMessages), made from its events on the bus, for trace.mcap and
+// for live sinks (a Foxglove stream). Whoever runs the run attaches it: nothing is made, and no
+// event is heard, until it has a sink. One per run, kept until the run is finished.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "sim/mcap_sink.h"
+#include "sim/message_sink.h"
+#include "sim/run_events.h"
+#include "sim/run_messages.h"
+#include "sim/trace_file.h"
+
+namespace sanet::sim {
+
+class World;
+
+class Ros2Presentation {
+ public:
+  explicit Ros2Presentation(World& world);
+  // trace.mcap, when the run writes a trace (a trace file for RunOptions::trace_files).
+  MakeTraceFile McapFile();
+  // A live sink, added before the run starts.
+  void AddSink(MessageSink& sink);
+
+ private:
+  class McapFileOf;
+  void Subscribe();
+  template <typename Event, typename Make>
+  void Present(Make make);
+
+  RunBus& bus_;
+  RunMessages messages_;
+  std::vector<Subscription> subscriptions_;
+  double seconds_ = 0;  // wall time spent making the messages and writing trace.mcap
+};
+
+}  // namespace sanet::sim

@@ -37,7 +37,7 @@
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "serve_command.h"
-#include "sim/ros2_presentation.h"
+#include "ros2_presentation/presentation.h"
 #include "sim/world.h"
 #include "study_commands.h"
 #include "terminal_progress.h"

@@ -1,11 +1,11 @@
 // A running world as a Foxglove stream (`sanet serve --view`, `sanet run --view`): the run's ROS 2
-// messages (sim/run_messages.h, the bytes its MCAP log holds) go to the hub as they are made, and
+// messages (ros2_presentation/run_messages.h, the bytes its MCAP log holds) go to the hub as they are made, and
 // its simulated time after the physics steps, at most every 50 ms of it.
 #pragma once
 
 #include "foxglove/foxglove_hub.h"
-#include "sim/message_sink.h"
-#include "sim/ros2_presentation.h"
+#include "ros2_presentation/message_sink.h"
+#include "ros2_presentation/presentation.h"
 #include "sim/run_events.h"
 
 namespace sanet::foxglove {

@@ -17,7 +17,7 @@
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "sim/assembly.h"
-#include "sim/ros2_presentation.h"
+#include "ros2_presentation/presentation.h"
 #include "sim/world.h"
 #include "trace/earlier_run.h"
 

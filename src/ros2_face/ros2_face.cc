@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "ros2msg/codec.h"
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::ros2face {
 namespace {

@@ -23,7 +23,7 @@
 #include "ros2_face/dds_domain.h"
 #include "sections/ros2_section.h"
 #include "sim/driver.h"
-#include "sim/robot_messages.h"
+#include "ros2_presentation/robot_messages.h"
 
 namespace sanet::ros2face {
 

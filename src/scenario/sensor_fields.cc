@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "sensors/sensor_registry.h"
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::scenario {
 namespace {

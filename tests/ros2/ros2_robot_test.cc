@@ -21,7 +21,7 @@
 #include "sensors/ir/ir_ros2.h"
 #include "sensors/laser/laser_ros2.h"
 #include "sensors/range_fan.h"
-#include "sim/robot_messages.h"
+#include "ros2_presentation/robot_messages.h"
 
 namespace sanet::ros2agent {
 namespace {

@@ -1,6 +1,6 @@
 // The bearing sensor has no ROS 2 message (ROS has no standard one for range and bearing to
 // named nodes): no topics, nothing published.
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::sim {
 namespace {

@@ -1,6 +1,6 @@
 // Ground truth as nav_msgs/Odometry on /<robot>/ground_truth (or /<robot>/<instance>): the pose in
 // world, with the body's velocity in <robot>/base_link.
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::sim {
 namespace {

@@ -3,7 +3,7 @@
 
 #include "sensors/range_fan.h"
 #include "sensors/range_fan_ros2.h"
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::sim {
 

@@ -1,6 +1,6 @@
 // Odometry as nav_msgs/Odometry on /<robot>/odom (or /<robot>/<instance>): the pose in <robot>/odom,
 // relative to the start pose, with the body's velocity in <robot>/base_link.
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::sim {
 namespace {

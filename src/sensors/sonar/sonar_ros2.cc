@@ -4,7 +4,7 @@
 
 #include "sensors/range_fan_ros2.h"
 #include "sensors/sonar/sonar.h"
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::sim {
 namespace {

@@ -1,4 +1,4 @@
-#include "sim/mcap_sink.h"
+#include "ros2_presentation/mcap_sink.h"
 
 #include <stdexcept>
 

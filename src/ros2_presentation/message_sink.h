@@ -1,4 +1,4 @@
-// Where the run's ROS 2 messages go (sim/run_messages.h): the MCAP log (sim/mcap_sink.h), a live
+// Where the run's ROS 2 messages go (ros2_presentation/run_messages.h): the MCAP log (ros2_presentation/mcap_sink.h), a live
 // Foxglove stream (foxglove/), each told of a topic once, before its first message. Sinks are
 // called on the simulation's thread and must not block it.
 #pragma once

@@ -1,7 +1,7 @@
 // A run's events as ROS 2 messages, for its sinks: the MCAP log (trace.mcap, which ros2 bag,
 // Foxglove, Lichtblick and PlotJuggler open) and live Foxglove streams. Every message is CDR from
 // the ROS 2 message layer (ros2msg), built by the functions the ROS 2 face publishes with
-// (sim/robot_messages.h), at the simulated time of its event. Readings are those the run took (a
+// (ros2_presentation/robot_messages.h), at the simulated time of its event. Readings are those the run took (a
 // controller's, the server's, the face's), handed over as they were read: the messages never
 // read a sensor. docs/mcap.md lists the topics and types.
 #pragma once
@@ -15,14 +15,14 @@
 
 #include "agents/simulated_node.h"
 #include "net/network_traces.h"
-#include "sim/message_sink.h"
-#include "sim/robot_messages.h"
+#include "ros2_presentation/message_sink.h"
+#include "ros2_presentation/robot_messages.h"
 #include "sim/run_events.h"
 #include "sim/run_nodes.h"
 #include "sim/run_spec.h"
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 #include "sim/snapshot.h"
-#include "sim/world_markers.h"
+#include "ros2_presentation/world_markers.h"
 
 namespace sanet::sim {
 
@@ -39,7 +39,7 @@ class RunMessages {
   // A true pose the trace records (a row of trajectories.csv).
   void Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity);
   // A reading a node's driver took: published on its instance's topics by its kind's part
-  // (sim/sensor_messages.h).
+  // (ros2_presentation/sensor_messages.h).
   void Read(double t, NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,
             const BodyState& body);
   void Frame(const net::FrameEvent& frame);

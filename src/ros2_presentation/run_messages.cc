@@ -1,4 +1,4 @@
-#include "sim/run_messages.h"
+#include "ros2_presentation/run_messages.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,7 +6,7 @@
 
 #include "core/delivery.h"
 #include "ros2msg/codec.h"
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::sim {
 namespace {
@@ -144,7 +144,7 @@ void RunMessages::AdvertiseShared() {
   TopicOf<msg::sanet_msgs::RouteChange>("/routes");
 }
 
-// Each sensor instance's topics under /<node>/ (sim/sensor_messages.h), in topic order.
+// Each sensor instance's topics under /<node>/ (ros2_presentation/sensor_messages.h), in topic order.
 void RunMessages::AdvertiseNode(NodeId node) {
   if (sensor_topics_.size() <= node) sensor_topics_.resize(node + 1);
   const std::string ns = "/" + RosToken(nodes_[node].name) + "/";

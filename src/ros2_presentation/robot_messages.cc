@@ -1,8 +1,8 @@
-#include "sim/robot_messages.h"
+#include "ros2_presentation/robot_messages.h"
 
 #include <cmath>
 
-#include "sim/sensor_messages.h"
+#include "ros2_presentation/sensor_messages.h"
 
 namespace sanet::sim {
 

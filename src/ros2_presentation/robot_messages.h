@@ -1,6 +1,6 @@
 // What a robot's ROS 2 messages share, whichever sensor they carry (REP 103 axes: x forward, y
 // left, z up, angles counter-clockwise, as sanet's; REP 105 frames): stamps, frames, transforms,
-// odometry messages. Each sensor kind's own messages are its part (sim/sensor_messages.h); these
+// odometry messages. Each sensor kind's own messages are its part (ros2_presentation/sensor_messages.h); these
 // are pure functions of what the robot's owner read, so that the face, the run's log and a stream
 // publish the same.
 //

@@ -1,4 +1,4 @@
-#include "sim/ros2_presentation.h"
+#include "ros2_presentation/presentation.h"
 
 #include <chrono>
 

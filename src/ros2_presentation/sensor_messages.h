@@ -1,6 +1,6 @@
 // A sensor kind's ROS 2 presentation: the topics an instance publishes on (under its robot's
 // namespace), the messages of one reading, and where the instance is mounted on the body (static
-// transforms). The run's log (sim/run_messages.h) and the ROS 2 face publish through it alike.
+// transforms). The run's log (ros2_presentation/run_messages.h) and the ROS 2 face publish through it alike.
 // Each kind's folder holds its part, sensors/<kind>/<kind>_ros2.cc, registered once
 // (sensors/sensor_kinds.h).
 //
@@ -18,7 +18,7 @@
 #include "sanet/readings.h"
 #include "sensors/sensor_kinds.h"
 #include "sensors/sensor_registry.h"
-#include "sim/robot_messages.h"
+#include "ros2_presentation/robot_messages.h"
 
 namespace sanet::sim {
 

@@ -7,10 +7,10 @@
 #include <optional>
 #include <vector>
 
-#include "sim/mcap_sink.h"
-#include "sim/message_sink.h"
+#include "ros2_presentation/mcap_sink.h"
+#include "ros2_presentation/message_sink.h"
 #include "sim/run_events.h"
-#include "sim/run_messages.h"
+#include "ros2_presentation/run_messages.h"
 #include "sim/trace_file.h"
 
 namespace sanet::sim {

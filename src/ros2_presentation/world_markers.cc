@@ -1,8 +1,8 @@
-#include "sim/world_markers.h"
+#include "ros2_presentation/world_markers.h"
 
 #include <cmath>
 
-#include "sim/robot_messages.h"
+#include "ros2_presentation/robot_messages.h"
 
 namespace sanet::sim {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/message_sink.h"
+#include "ros2_presentation/message_sink.h"
 #include "trace/mcap_writer.h"
 
 namespace sanet::sim {

@@ -32,12 +32,12 @@
 #include "robot_server/sim_server.h"
 #include "robots/node_model.h"
 #include "ros2_options.h"
+#include "ros2_presentation/presentation.h"
 #include "run_common.h"
 #include "scenario/catalogue.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "serve_command.h"
-#include "ros2_presentation/presentation.h"
 #include "sim/world.h"
 #include "study_commands.h"
 #include "terminal_progress.h"
@@ -90,7 +90,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
                 sc.run.threads == 2 ? ", physics on a second thread" : "");
   if (args.real_time) sim::UseRealTimeClock();  // the same schedule, against the wall clock
   sim::World world(sc.run, registry);
-  sim::Ros2Presentation ros2_messages(world);  // trace.mcap and the Foxglove stream
+  ros2_presentation::RunPresentation ros2_messages(world);  // trace.mcap and the Foxglove stream
   options.trace_files = {ros2_messages.McapFile()};
   LiveViews live = StartLiveViews(world, ros2_messages, args.view);
   if (!args.quiet) live.Announce();

@@ -132,7 +132,7 @@ void JudgeAttendance(nlohmann::ordered_json& j, hil::Attendance& attendance, con
 
 // The world with its servers listening; their notices wait for the serving line, which comes first.
 struct Served {
-  std::unique_ptr<sim::Ros2Presentation> ros2_messages;  // for trace.mcap and the Foxglove stream
+  std::unique_ptr<ros2_presentation::RunPresentation> ros2_messages;  // for trace.mcap and the Foxglove stream
   std::unique_ptr<hil::SimServer> server;
   std::unique_ptr<hil::WssServer> wss;
   std::unique_ptr<ros2face::Ros2Face> ros2;
@@ -143,7 +143,7 @@ struct Served {
 Served StartServing(sim::World& world, const ServeArgs& a, const scenario::Scenario& sc,
                     const scenario::EffectiveScenario& effective, const std::string& fingerprint) {
   Served s;
-  s.ros2_messages = std::make_unique<sim::Ros2Presentation>(world);
+  s.ros2_messages = std::make_unique<ros2_presentation::RunPresentation>(world);
   s.server = StartServer(world, ServerSettingsFor(a, sc, effective.yaml, fingerprint));
   JoinTaps(world, a.taps);
   s.wss = StartWss(world, a, s.notices);

@@ -94,7 +94,8 @@ void LiveViews::Announce() const {
   std::fflush(stdout);
 }
 
-static std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, sim::Ros2Presentation& presentation,
+static std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world,
+                                                             ros2_presentation::RunPresentation& presentation,
                                                              const FoxgloveArgs& f, std::string& notice) {
   std::unique_ptr<foxglove::FoxgloveLive> live = Listening<foxglove::FoxgloveLive>(f, notice);
   WritePortFile(f.port_file, static_cast<std::uint16_t>(live->hub().port()), "--foxglove-port-file");
@@ -102,7 +103,7 @@ static std::unique_ptr<foxglove::FoxgloveLive> StartFoxglove(sim::World& world, 
   return live;
 }
 
-LiveViews StartLiveViews(sim::World& world, sim::Ros2Presentation& presentation, const ViewArgs& v,
+LiveViews StartLiveViews(sim::World& world, ros2_presentation::RunPresentation& presentation, const ViewArgs& v,
                          bool foxglove_anyway) {
   LiveViews views;
   if (!v.on) {

@@ -50,7 +50,7 @@ struct LiveViews {
 };
 // Both views, watching `world`; none without --view, or only the Foxglove stream if `foxglove_anyway`
 // (`sanet serve`, whose world runs in real time). Prints nothing: LiveViews::Announce does.
-LiveViews StartLiveViews(sim::World& world, sim::Ros2Presentation& presentation, const ViewArgs& v,
+LiveViews StartLiveViews(sim::World& world, ros2_presentation::RunPresentation& presentation, const ViewArgs& v,
                          bool foxglove_anyway = false);
 
 // The Foxglove replay of `results`/trace.mcap, on `hub`; null if the folder has no trace.mcap.

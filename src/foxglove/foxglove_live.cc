@@ -6,7 +6,7 @@
 
 namespace sanet::foxglove {
 
-void FoxgloveLive::Observe(sim::RunBus& bus, sim::Ros2Presentation& presentation) {
+void FoxgloveLive::Observe(sim::RunBus& bus, ros2_presentation::RunPresentation& presentation) {
   presentation.AddSink(*this);
   step_ended_ =
       bus.On<sim::StepEnded>(sim::RunStage::kObserve, [this](const sim::StepEnded& e) { AfterStep(e.world); });

@@ -10,20 +10,21 @@
 
 namespace sanet::foxglove {
 
-class FoxgloveLive : public sim::MessageSink {
+class FoxgloveLive : public ros2_presentation::MessageSink {
  public:
   explicit FoxgloveLive(HubSettings settings) : hub_(std::move(settings)) {}
   FoxgloveHub& hub() { return hub_; }
 
-  void Advertise(const sim::Topic& topic) override {
+  void Advertise(const ros2_presentation::Topic& topic) override {
     hub_.Advertise({topic.id, topic.name, topic.type, topic.definition, topic.latched});
   }
-  void Publish(const sim::Topic& topic, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr) override {
+  void Publish(const ros2_presentation::Topic& topic, std::uint64_t time_ns,
+               const std::vector<std::uint8_t>& cdr) override {
     hub_.Publish(topic.id, time_ns, cdr);
   }
   bool Active() const override { return hub_.clients() > 0; }
   // Streams the run's messages (`presentation`) and its time (`bus`) from now on.
-  void Observe(sim::RunBus& bus, sim::Ros2Presentation& presentation);
+  void Observe(sim::RunBus& bus, ros2_presentation::RunPresentation& presentation);
   void AfterStep(const sim::WorldSnapshot& snapshot);
 
  private:

@@ -14,10 +14,10 @@
 #include "core/version.h"
 #include "python/controller_api.h"
 #include "python/python_controller.h"
+#include "ros2_presentation/presentation.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "sim/assembly.h"
-#include "ros2_presentation/presentation.h"
 #include "sim/world.h"
 #include "trace/earlier_run.h"
 
@@ -198,7 +198,7 @@ class Simulation {
   sim::RunOptions options_;
   SinceLastStep since_;
   std::unique_ptr<sim::World> world_;
-  std::unique_ptr<sim::Ros2Presentation> ros2_messages_;  // trace.mcap
+  std::unique_ptr<ros2_presentation::RunPresentation> ros2_messages_;  // trace.mcap
   bool running_ = true, python_controllers_ = false;
   double target_ = 0;    // s: where the script has advanced the run to
   double ended_at_ = 0;  // s: where it ended, once finished
@@ -237,7 +237,7 @@ void Simulation::Build(const std::string& path, std::optional<std::string> outpu
   const RandomStates script = python_controllers_ ? RandomStates::Now() : RandomStates{};
   world_ = std::make_unique<sim::World>(scenario_.run, registry_);  // seeds the run's random states
   since_.Observe(world_->bus());
-  ros2_messages_ = std::make_unique<sim::Ros2Presentation>(*world_);
+  ros2_messages_ = std::make_unique<ros2_presentation::RunPresentation>(*world_);
   options_.trace_files = {ros2_messages_->McapFile()};
   world_->Start(options_);
   if (python_controllers_) {

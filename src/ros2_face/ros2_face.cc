@@ -5,8 +5,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "ros2msg/codec.h"
 #include "ros2_presentation/sensor_messages.h"
+#include "ros2msg/codec.h"
 
 namespace sanet::ros2face {
 namespace {
@@ -75,8 +75,8 @@ void Ros2Face::AddRobots() {
     r->start = node.pose;
     const std::string ns = "/" + name;
     for (const auto& [instance, config] : sensors::PresentationOrder(node.model))
-      if (const sim::SensorMessages* kind = sim::MessagesOf(config->kind))
-        for (const sim::SensorTopic& t : kind->Topics(instance, config->settings))
+      if (const ros2_presentation::SensorMessages* kind = ros2_presentation::MessagesOf(config->kind))
+        for (const ros2_presentation::SensorTopic& t : kind->Topics(instance, config->settings))
           r->sensors[instance].push_back(
               dds_.Writer(ns + "/" + t.name, t.dds_type, t.reliable ? Qos::kDefault : Qos::kSensorData));
     r->cmd_vel = dds_.Reader(
@@ -131,14 +131,16 @@ void Ros2Face::Publish(Robot& r) {
   tf.transforms.push_back(OdomToBase(readings.time, readings.odometry(), r.start, r.frames));
   dds_.Write(tf_, ros2msg::Encode(tf));
   ++r.published;
-  const sim::MessageContext context{readings.time, &r.frames, r.start, readings.ground_truth, readings.velocity};
+  const ros2_presentation::MessageContext context{readings.time, &r.frames, r.start, readings.ground_truth,
+                                                  readings.velocity};
   const robots::SensorConfigs& sensors = driver_.Spec(r.id).model.sensors;
   for (const auto& [instance, reading] : readings.by_instance) {
     const auto writers = r.sensors.find(instance);
     const auto config = sensors.find(instance);
     if (writers == r.sensors.end() || config == sensors.end()) continue;
-    for (const sim::SensorMessage& m :
-         sim::MessagesOf(config->second.kind)->Messages(instance, config->second.settings, reading, context)) {
+    for (const ros2_presentation::SensorMessage& m :
+         ros2_presentation::MessagesOf(config->second.kind)
+             ->Messages(instance, config->second.settings, reading, context)) {
       dds_.Write(writers->second.at(m.topic), m.cdr);
       ++r.published;
     }

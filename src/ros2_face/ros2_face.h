@@ -21,14 +21,15 @@
 #include <vector>
 
 #include "ros2_face/dds_domain.h"
+#include "ros2_presentation/robot_messages.h"
 #include "sections/ros2_section.h"
 #include "sim/driver.h"
-#include "ros2_presentation/robot_messages.h"
 
 namespace sanet::ros2face {
 
 namespace msg = ros2msg;
-using sim::FramesOf, sim::OdomToBase, sim::RobotFrames, sim::StampOf, sim::StaticTransforms;
+using ros2_presentation::FramesOf, ros2_presentation::OdomToBase, ros2_presentation::RobotFrames,
+    ros2_presentation::StampOf, ros2_presentation::StaticTransforms;
 
 struct Ros2Settings {
   std::uint32_t domain = 0;                 // ROS_DOMAIN_ID

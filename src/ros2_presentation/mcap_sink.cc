@@ -4,7 +4,7 @@
 
 #include "core/version.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 McapSink::McapSink(const std::string& path)
     : writer_(path, "ros2", std::string("sanet ") + SanetVersion(), trace::McapWriter::Compression::kZstd) {}
@@ -25,4 +25,4 @@ void McapSink::Publish(const Topic& topic, std::uint64_t time_ns, const std::vec
   if (const std::uint16_t channel = channels_.at(topic.id - 1)) writer_.Write(channel, time_ns, time_ns, cdr);
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -9,7 +9,7 @@
 #include "ros2_presentation/message_sink.h"
 #include "trace/mcap_writer.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 class McapSink : public MessageSink {
  public:
@@ -26,4 +26,4 @@ class McapSink : public MessageSink {
   std::vector<std::uint16_t> channels_;  // by topic id - 1; 0: a topic past the file's 65535 channels
 };
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -1,13 +1,13 @@
-// Where the run's ROS 2 messages go (ros2_presentation/run_messages.h): the MCAP log (ros2_presentation/mcap_sink.h), a live
-// Foxglove stream (foxglove/), each told of a topic once, before its first message. Sinks are
-// called on the simulation's thread and must not block it.
+// Where the run's ROS 2 messages go (ros2_presentation/run_messages.h): the MCAP log (ros2_presentation/mcap_sink.h), a
+// live Foxglove stream (foxglove/), each told of a topic once, before its first message. Sinks are called on the
+// simulation's thread and must not block it.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 struct Topic {
   std::uint32_t id = 0;    // 1, 2, ... in the order the run first published them
@@ -29,4 +29,4 @@ class MessageSink {
   virtual bool Active() const { return true; }
 };
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -2,15 +2,14 @@
 
 #include <chrono>
 
-#include "sim/assembly.h"
 #include "sim/world.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 // trace.mcap: the messages' MCAP sink, closed (the radio's last window sent first) with the results.
-class Ros2Presentation::McapFileOf : public TraceFile {
+class RunPresentation::McapFileOf : public sim::TraceFile {
  public:
-  McapFileOf(Ros2Presentation& presentation, const std::string& path) : presentation_(presentation), sink_(path) {
+  McapFileOf(RunPresentation& presentation, const std::string& path) : presentation_(presentation), sink_(path) {
     presentation_.AddSink(sink_);
   }
   void Close() override {
@@ -28,51 +27,51 @@ class Ros2Presentation::McapFileOf : public TraceFile {
   }
 
  private:
-  Ros2Presentation& presentation_;
+  RunPresentation& presentation_;
   McapSink sink_;
 };
 
-Ros2Presentation::Ros2Presentation(World& world)
-    : bus_(world.bus()), messages_(world.spec(), world.parts().run_nodes()) {}
+RunPresentation::RunPresentation(sim::World& world) : bus_(world.bus()), messages_(world.spec(), world.nodes()) {}
 
-MakeTraceFile Ros2Presentation::McapFile() {
-  return [this](const TraceFileContext& run) -> std::unique_ptr<TraceFile> {
+sim::MakeTraceFile RunPresentation::McapFile() {
+  return [this](const sim::TraceFileContext& run) -> std::unique_ptr<sim::TraceFile> {
     return std::make_unique<McapFileOf>(*this, run.folder.TempFile("trace.mcap"));
   };
 }
 
-void Ros2Presentation::AddSink(MessageSink& sink) {
+void RunPresentation::AddSink(MessageSink& sink) {
   if (subscriptions_.empty()) Subscribe();
   messages_.AddSink(sink);
 }
 
 // Subscribes `present` to events of one kind, adding its wall time to the presentation's.
 template <typename Event, typename Make>
-void Ros2Presentation::Present(Make make) {
-  subscriptions_.push_back(bus_.On<Event>(RunStage::kRecord, [this, make](const Event& e) {
+void RunPresentation::Present(Make make) {
+  subscriptions_.push_back(bus_.On<Event>(sim::RunStage::kRecord, [this, make](const Event& e) {
     const auto start = std::chrono::steady_clock::now();
     make(e);
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }));
 }
 
-void Ros2Presentation::Subscribe() {
+void RunPresentation::Subscribe() {
   RunMessages& m = messages_;
-  Present<NodeSpawned>([&m](const NodeSpawned& e) {
+  Present<sim::NodeSpawned>([&m](const sim::NodeSpawned& e) {
     m.Spawned(e.t);
     m.Event(e.t, e.node, "spawn", e.spawned_as);
   });
-  Present<PoseRow>([&m](const PoseRow& e) { m.Pose(e.t, e.node, e.pose, e.velocity); });
-  Present<SensorRead>([&m](const SensorRead& e) { m.Read(e.t, e.node, e.instance, e.kind, e.reading, e.body); });
+  Present<sim::PoseRow>([&m](const sim::PoseRow& e) { m.Pose(e.t, e.node, e.pose, e.velocity); });
+  Present<sim::SensorRead>(
+      [&m](const sim::SensorRead& e) { m.Read(e.t, e.node, e.instance, e.kind, e.reading, e.body); });
   Present<net::FrameEvent>([&m](const net::FrameEvent& f) { m.Frame(f); });
-  Present<RouteChange>([&m](const RouteChange& r) { m.Route(r); });
-  Present<MessageDelivered>(
-      [&m](const MessageDelivered& e) { m.Message(e.message.time_received, e.message, e.to, true); });
-  Present<MessageLost>([&m](const MessageLost& e) { m.Message(e.t, e.message, e.to, false); });
-  Present<Transitioned>([&m](const Transitioned& e) { m.Transition(e.t, e.node, e.from, e.to, e.why); });
-  Present<MetricReported>([&m](const MetricReported& e) { m.Metric(e.t, e.node, e.name, e.value); });
-  Present<LogLine>([&m](const LogLine& e) { m.Event(e.t, e.node, "log", e.text); });
-  Present<SwitchedOff>([&m](const SwitchedOff& e) { m.Event(e.t, e.node, "switch_off", ""); });
+  Present<sim::RouteChange>([&m](const sim::RouteChange& r) { m.Route(r); });
+  Present<sim::MessageDelivered>(
+      [&m](const sim::MessageDelivered& e) { m.Message(e.message.time_received, e.message, e.to, true); });
+  Present<sim::MessageLost>([&m](const sim::MessageLost& e) { m.Message(e.t, e.message, e.to, false); });
+  Present<sim::Transitioned>([&m](const sim::Transitioned& e) { m.Transition(e.t, e.node, e.from, e.to, e.why); });
+  Present<sim::MetricReported>([&m](const sim::MetricReported& e) { m.Metric(e.t, e.node, e.name, e.value); });
+  Present<sim::LogLine>([&m](const sim::LogLine& e) { m.Event(e.t, e.node, "log", e.text); });
+  Present<sim::SwitchedOff>([&m](const sim::SwitchedOff& e) { m.Event(e.t, e.node, "switch_off", ""); });
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

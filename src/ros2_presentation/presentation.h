@@ -9,19 +9,21 @@
 
 #include "ros2_presentation/mcap_sink.h"
 #include "ros2_presentation/message_sink.h"
-#include "sim/run_events.h"
 #include "ros2_presentation/run_messages.h"
+#include "sim/run_events.h"
 #include "sim/trace_file.h"
 
 namespace sanet::sim {
-
 class World;
+}  // namespace sanet::sim
 
-class Ros2Presentation {
+namespace sanet::ros2_presentation {
+
+class RunPresentation {
  public:
-  explicit Ros2Presentation(World& world);
+  explicit RunPresentation(sim::World& world);
   // trace.mcap, when the run writes a trace (a trace file for RunOptions::trace_files).
-  MakeTraceFile McapFile();
+  sim::MakeTraceFile McapFile();
   // A live sink, added before the run starts.
   void AddSink(MessageSink& sink);
 
@@ -31,10 +33,10 @@ class Ros2Presentation {
   template <typename Event, typename Make>
   void Present(Make make);
 
-  RunBus& bus_;
+  sim::RunBus& bus_;
   RunMessages messages_;
   std::vector<Subscription> subscriptions_;
   double seconds_ = 0;  // wall time spent making the messages and writing trace.mcap
 };
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

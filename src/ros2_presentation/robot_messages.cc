@@ -4,7 +4,7 @@
 
 #include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 msg::geometry_msgs::Quaternion YawQuaternion(double theta) {
   msg::geometry_msgs::Quaternion q;
@@ -67,11 +67,11 @@ msg::geometry_msgs::TransformStamped OdomToBase(double t, const std::optional<Po
   return Transform(frames.odom, frames.base, t, pose.x, pose.y, 0, pose.theta);
 }
 
-msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const NodeSpec&(NodeId)>& spec_of,
+msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const sim::NodeSpec&(NodeId)>& spec_of,
                                           const std::map<NodeId, RobotFrames>& frames, double t) {
   msg::tf2_msgs::TFMessage out;
   for (NodeId id = 0; id < count; ++id) {
-    const NodeSpec& node = spec_of(id);
+    const sim::NodeSpec& node = spec_of(id);
     const Pose2D& p = node.pose;
     if (!robots::HasDrive(node.model)) {
       out.transforms.push_back(Transform("world", node.name, t, p.x, p.y, 0, p.theta));
@@ -87,4 +87,4 @@ msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function
   return out;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -18,7 +18,7 @@
 #include "ros2msg/messages.h"
 #include "sim/run_spec.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 namespace msg = ros2msg;
 
@@ -45,7 +45,7 @@ msg::geometry_msgs::TransformStamped OdomToBase(double t, const std::optional<Po
 // What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor, for every
 // robot (`frames`: each robot's, by node; FramesOf for the others); world -> M for every mote, of
 // the `count` nodes whose specs `spec_of` gives, stamped `t`.
-msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const NodeSpec&(NodeId)>& spec_of,
+msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const sim::NodeSpec&(NodeId)>& spec_of,
                                           const std::map<NodeId, RobotFrames>& frames, double t = 0);
 // `parent` -> `child` at time `t`: a shift by (x, y, z) and a turn of `yaw` about z.
 msg::geometry_msgs::TransformStamped Transform(const std::string& parent, const std::string& child, double t, double x,
@@ -54,4 +54,4 @@ msg::geometry_msgs::TransformStamped Transform(const std::string& parent, const 
 // `pose` seen from `origin`: both in the same frame.
 Pose2D Relative(const Pose2D& origin, const Pose2D& pose);
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

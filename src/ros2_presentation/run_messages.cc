@@ -5,10 +5,10 @@
 #include <cmath>
 
 #include "core/delivery.h"
-#include "ros2msg/codec.h"
 #include "ros2_presentation/sensor_messages.h"
+#include "ros2msg/codec.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 namespace {
 
 // Frames delivered within this many seconds of simulated time are drawn together, for as long.
@@ -41,7 +41,9 @@ msg::rcl_interfaces::Log RosoutLine(double t, const std::string& node, const std
 
 }  // namespace
 
-RunMessages::RunMessages(const RunSpec& spec, const RunNodes& nodes) : spec_(spec), nodes_(nodes) { Statics(0); }
+RunMessages::RunMessages(const sim::RunSpec& spec, const sim::RunNodes& nodes) : spec_(spec), nodes_(nodes) {
+  Statics(0);
+}
 
 void RunMessages::AddSink(MessageSink& sink) {
   sinks_.push_back(&sink);
@@ -92,8 +94,8 @@ void RunMessages::Publish(const std::string& name, double t, const M& message) {
 
 const RobotFrames& RunMessages::FramesOf(NodeId node) {
   while (frames_.size() <= node) {
-    const NodeSpec& n = nodes_[frames_.size()];
-    frames_.push_back(sim::FramesOf(n.name));
+    const sim::NodeSpec& n = nodes_[frames_.size()];
+    frames_.push_back(ros2_presentation::FramesOf(n.name));
     if (!robots::HasDrive(n.model)) frames_.back().base = n.name;  // its frame in /tf_static
   }
   return frames_[node];
@@ -112,7 +114,7 @@ bool RunMessages::FirstAt(double t, NodeId node, const std::string& instance) {
 void RunMessages::Statics(double t) {
   // Motes' frames go in /tf instead (Pose): something may push a mote.
   msg::tf2_msgs::TFMessage statics = StaticTransforms(
-      nodes_.size(), [this](NodeId id) -> const NodeSpec& { return nodes_[id]; }, {}, t);
+      nodes_.size(), [this](NodeId id) -> const sim::NodeSpec& { return nodes_[id]; }, {}, t);
   auto& transforms = statics.transforms;
   transforms.erase(std::remove_if(transforms.begin(), transforms.end(),
                                   [this](const msg::geometry_msgs::TransformStamped& tf) {
@@ -178,7 +180,7 @@ void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D&
 
 // The kind's own ground truth is the trajectory's (Pose), not the reads'.
 void RunMessages::Read(double t, NodeId node, const std::string& instance, const std::string& kind,
-                       const SensorReading& reading, const BodyState& body) {
+                       const SensorReading& reading, const sim::BodyState& body) {
   if (instance == "ground_truth" && kind == "ground_truth") return;
   if (!FirstAt(t, node, instance)) return;
   PublishReading(node, instance, reading, ContextOf(t, node, body.pose, body.velocity));
@@ -242,7 +244,7 @@ void RunMessages::Message(double t, const sanet::Message& m, NodeId to, bool del
   Publish("/messages", t, out);
 }
 
-void RunMessages::Route(const RouteChange& r) {
+void RunMessages::Route(const sim::RouteChange& r) {
   msg::sanet_msgs::RouteChange out;
   out.stamp = StampOf(r.time);
   out.node = nodes_.NameOf(r.node);
@@ -284,4 +286,4 @@ void RunMessages::Event(double t, NodeId node, const std::string& kind, const st
 
 void RunMessages::Flush() { FlushRadio(last_frame_ + kRadioWindow); }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

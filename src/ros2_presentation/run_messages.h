@@ -17,19 +17,19 @@
 #include "net/network_traces.h"
 #include "ros2_presentation/message_sink.h"
 #include "ros2_presentation/robot_messages.h"
+#include "ros2_presentation/sensor_messages.h"
+#include "ros2_presentation/world_markers.h"
 #include "sim/run_events.h"
 #include "sim/run_nodes.h"
 #include "sim/run_spec.h"
-#include "ros2_presentation/sensor_messages.h"
 #include "sim/snapshot.h"
-#include "ros2_presentation/world_markers.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 class RunMessages {
  public:
   // Publishes what stands at time 0 (/tf_static, the world's markers) to the sinks added later.
-  RunMessages(const RunSpec& spec, const RunNodes& nodes);
+  RunMessages(const sim::RunSpec& spec, const sim::RunNodes& nodes);
   // From now on `sink` gets every message; it is told of every topic so far and gets the last
   // message of the latched ones.
   void AddSink(MessageSink& sink);
@@ -41,11 +41,11 @@ class RunMessages {
   // A reading a node's driver took: published on its instance's topics by its kind's part
   // (ros2_presentation/sensor_messages.h).
   void Read(double t, NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,
-            const BodyState& body);
+            const sim::BodyState& body);
   void Frame(const net::FrameEvent& frame);
   // An application message at `t` (when it was delivered, or reached a radio but no controller).
   void Message(double t, const sanet::Message& m, NodeId to, bool delivered);
-  void Route(const RouteChange& change);
+  void Route(const sim::RouteChange& change);
   void Transition(double t, NodeId node, const std::string& from, const std::string& to, const std::string& why);
   void Metric(double t, NodeId node, const std::string& name, double value);
   // A line of a node's log ("log") or something that happened to it (switch-off, spawn).
@@ -73,8 +73,8 @@ class RunMessages {
   void AdvertiseShared();
   void AdvertiseNode(NodeId node);
 
-  const RunSpec& spec_;
-  const RunNodes& nodes_;
+  const sim::RunSpec& spec_;
+  const sim::RunNodes& nodes_;
   std::vector<MessageSink*> sinks_;
   std::map<std::string, Topic> topics_;                                                   // by name
   std::vector<std::map<std::string, std::vector<const Topic*>>> sensor_topics_;           // by node and instance
@@ -87,4 +87,4 @@ class RunMessages {
   double radio_window_ = 0;                               // s, the current window's start
 };
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

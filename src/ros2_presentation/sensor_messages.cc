@@ -1,6 +1,6 @@
 #include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 const SensorMessages* MessagesOf(const std::string& kind) {
 #define SANET_MESSAGES_IF(name, Name) \
@@ -10,4 +10,4 @@ const SensorMessages* MessagesOf(const std::string& kind) {
   return nullptr;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "ros2_presentation/robot_messages.h"
 #include "ros2msg/codec.h"
 #include "sanet/readings.h"
 #include "sensors/sensor_kinds.h"
 #include "sensors/sensor_registry.h"
-#include "ros2_presentation/robot_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 struct SensorTopic {
   std::string name;        // under the robot's namespace: "scan", "ir_0", "laser_rear"
@@ -77,4 +77,4 @@ inline std::string TopicName(const std::string& instance, const std::string& kin
   return instance == kind ? kind_name : instance;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

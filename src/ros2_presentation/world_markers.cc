@@ -4,7 +4,7 @@
 
 #include "ros2_presentation/robot_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 namespace {
 
 using msg::visualization_msgs::Marker;
@@ -33,7 +33,7 @@ void Place(Marker& m, double x, double y, double z, double yaw) {
   m.pose.orientation = YawQuaternion(yaw);
 }
 
-Marker ObstacleMarker(const Obstacle& o, int id, double t) {
+Marker ObstacleMarker(const sim::Obstacle& o, int id, double t) {
   Marker m = Shape("world", t, "obstacles", id, Marker::CUBE);
   Place(m, o.box.center.x, o.box.center.y, o.box.center.z, o.box.yaw);
   m.scale.x = o.box.size.x, m.scale.y = o.box.size.y, m.scale.z = o.box.size.z;
@@ -41,7 +41,7 @@ Marker ObstacleMarker(const Obstacle& o, int id, double t) {
   return m;
 }
 
-Marker MoteMarker(const NodeSpec& node, int id, double t) {
+Marker MoteMarker(const sim::NodeSpec& node, int id, double t) {
   const double side = node.model.mote.size;
   Marker m = Shape(node.name, t, "motes", id, Marker::CUBE);  // the mote's frame, which /tf moves
   m.frame_locked = true;
@@ -52,7 +52,7 @@ Marker MoteMarker(const NodeSpec& node, int id, double t) {
 }
 
 // In the robot's own frame, which /tf moves: the body needs no update while the robot drives.
-Marker BodyMarker(const NodeSpec& node, int id, double t) {
+Marker BodyMarker(const sim::NodeSpec& node, int id, double t) {
   const RobotFrames frames = FramesOf(node.name);
   Marker m = Shape(frames.base, t, "bodies", id, Marker::CYLINDER);
   m.frame_locked = true;
@@ -69,7 +69,7 @@ Marker BodyMarker(const NodeSpec& node, int id, double t) {
   return m;
 }
 
-Marker NameMarker(const NodeSpec& node, const std::string& frame, int id, double t) {
+Marker NameMarker(const sim::NodeSpec& node, const std::string& frame, int id, double t) {
   Marker m = Shape(frame, t, "names", id, Marker::TEXT_VIEW_FACING);
   m.frame_locked = true;
   m.pose.position.z = 0.5;
@@ -87,12 +87,12 @@ msg::geometry_msgs::Point At(Vec2 p, double z) {
 
 }  // namespace
 
-MarkerArray WorldMarkers(const RunSpec& spec, const RunNodes& nodes, double t) {
+MarkerArray WorldMarkers(const sim::RunSpec& spec, const sim::RunNodes& nodes, double t) {
   MarkerArray out;
   int id = 0;
-  for (const Obstacle& o : spec.obstacles) out.markers.push_back(ObstacleMarker(o, id++, t));
+  for (const sim::Obstacle& o : spec.obstacles) out.markers.push_back(ObstacleMarker(o, id++, t));
   for (NodeId n = 0; n < nodes.size(); ++n) {
-    const NodeSpec& node = nodes[n];
+    const sim::NodeSpec& node = nodes[n];
     const int marker = static_cast<int>(n);
     if (!robots::HasDrive(node.model)) {
       out.markers.push_back(MoteMarker(node, marker, t));
@@ -123,4 +123,4 @@ MarkerArray RadioMarkers(double t, double lifetime, const std::vector<RadioLine>
   return out;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -11,10 +11,10 @@
 #include "sim/run_nodes.h"
 #include "sim/run_spec.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 // Everything that stands in the world at time `t` (stamped with it): obstacles, motes, bodies.
-ros2msg::visualization_msgs::MarkerArray WorldMarkers(const RunSpec& spec, const RunNodes& nodes, double t);
+ros2msg::visualization_msgs::MarkerArray WorldMarkers(const sim::RunSpec& spec, const sim::RunNodes& nodes, double t);
 
 // One frame the radio delivered, from where the sender stood to where the receiver stood;
 // `data`: carrying applications' packets (unicast or broadcast), otherwise routing, ARP or
@@ -27,4 +27,4 @@ struct RadioLine {
 // frames and one for the others, which disappear when the window is over.
 ros2msg::visualization_msgs::MarkerArray RadioMarkers(double t, double lifetime, const std::vector<RadioLine>& lines);
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -5,8 +5,8 @@
 #include <map>
 #include <stdexcept>
 
-#include "sensors/sensor_registry.h"
 #include "ros2_presentation/sensor_messages.h"
+#include "sensors/sensor_registry.h"
 
 namespace sanet::scenario {
 namespace {
@@ -86,9 +86,9 @@ void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec
 void CheckTopics(const Field& field, const robots::ModelSpec& model) {
   std::map<std::string, std::string> publisher;  // topic -> instance
   for (const auto& [instance, config] : sensors::PresentationOrder(model)) {
-    const sim::SensorMessages* kind = sim::MessagesOf(config->kind);
+    const ros2_presentation::SensorMessages* kind = ros2_presentation::MessagesOf(config->kind);
     if (!kind) continue;
-    for (const sim::SensorTopic& topic : kind->Topics(instance, config->settings)) {
+    for (const ros2_presentation::SensorTopic& topic : kind->Topics(instance, config->settings)) {
       const auto [other, fresh] = publisher.emplace(topic.name, instance);
       if (fresh) continue;
       const std::string named = instance == config->kind ? other->second : instance;

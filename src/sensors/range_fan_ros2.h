@@ -3,7 +3,7 @@
 
 #include <limits>
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 // REP 117: a beam that returns nothing within the sensor's range reads +Inf, not its maximum
 // (which a consumer would take for an obstacle there). sanet's sensors read their maximum when
@@ -12,4 +12,4 @@ inline float NothingSeenAsInfinity(double range, double max_range) {
   return range >= max_range ? std::numeric_limits<float>::infinity() : static_cast<float>(range);
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

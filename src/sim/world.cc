@@ -26,6 +26,7 @@ World::~World() = default;
 const RunSpec& World::spec() const { return parts_->spec(); }
 robots::NodeModel& World::model(NodeId id) { return parts_->model(id); }
 std::size_t World::NodeCount() const { return parts_->NodeCount(); }
+const RunNodes& World::nodes() const { return parts_->run_nodes(); }
 std::optional<NodeId> World::Lookup(const std::string& name) const { return parts_->Lookup(name); }
 std::string World::NameOf(NodeId id) const { return parts_->NameOf(id); }
 double World::Now() const { return ns3::Simulator::Now().GetSeconds(); }

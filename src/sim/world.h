@@ -81,6 +81,7 @@ class World {
   double ended_at() const { return ended_at_; }
   robots::NodeModel& model(NodeId id);
   std::size_t NodeCount() const;
+  const RunNodes& nodes() const;  // the scenario's, then those spawned
   std::optional<NodeId> Lookup(const std::string& name) const;
   std::string NameOf(NodeId id) const;
 

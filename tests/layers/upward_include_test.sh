@@ -32,9 +32,17 @@ expect_not_found sanet_upward_include_probe net sim/world.h net/transport.h
 expect_not_found sanet_agent_server_probe remote_agent robot_server/sim_server.h remote_agent/remote_node.h
 # sim never sees the scenario's sections for front ends (loop, spawn).
 expect_not_found sanet_sim_section_probe sim sections/spawn_section.h sim/driver.h
+# sim knows no ROS 2 message: the run's events become ROS 2 messages in ros2_presentation, above it.
+expect_not_found sanet_sim_ros2msg_probe sim ros2msg/codec.h sim/driver.h
 # A sensor kind's folder holds files of several layers; each layer sees only its own and those
 # below (src/CMakeLists.txt, sanet_part_links): the kernel part cannot include the ROS 2 part.
 expect_not_found sanet_sensor_part_probe sensors sensors/laser/laser_ros2.h sensors/range_fan.h
+# ... and no sim file includes a ROS 2 header at all (nor its generated messages).
+if grep -rlE '#include "(ros2msg|ros2_presentation)/' "$(dirname "$0")/../../src/sim"; then
+  echo "FAIL: sim includes ROS 2 messages"
+  exit 1
+fi
+echo "ok: sim includes nothing of ros2msg or ros2_presentation"
 
 # Front ends reach a running world through sim/driver.h only: none includes the assembly, nor
 # World and the stepper and outputs behind it.

@@ -16,12 +16,12 @@
 #include "robots/node_model.h"
 #include "ros2_agent/readings.h"
 #include "ros2_agent/robot_topics.h"
+#include "ros2_presentation/robot_messages.h"
 #include "ros2msg/codec.h"
 #include "scenario/yaml_reader.h"
 #include "sensors/ir/ir_ros2.h"
 #include "sensors/laser/laser_ros2.h"
 #include "sensors/range_fan.h"
-#include "ros2_presentation/robot_messages.h"
 
 namespace sanet::ros2agent {
 namespace {
@@ -100,7 +100,7 @@ TEST(Readings, NothingSeenIsInfinityOnTheWireAndTheMaximumInTheController) {
   laser.max_range = 8;
   laser.angles = {-0.5, 0, 0.5};
   laser.ranges = {2.5, 8, 7.999};
-  const msg::sensor_msgs::LaserScan sent = sim::ScanOf(laser, 1.0, "r/laser");
+  const msg::sensor_msgs::LaserScan sent = ros2_presentation::ScanOf(laser, 1.0, "r/laser");
   EXPECT_EQ(sent.ranges[0], 2.5f);
   EXPECT_TRUE(std::isinf(sent.ranges[1]) && sent.ranges[1] > 0) << "a beam that hit nothing";
   EXPECT_EQ(sent.ranges[2], 7.999f);
@@ -110,8 +110,8 @@ TEST(Readings, NothingSeenIsInfinityOnTheWireAndTheMaximumInTheController) {
   ir.max_range = 0.8;
   ir.angles = {0, 1};
   ir.ranges = {0.8, 0.3};
-  EXPECT_TRUE(std::isinf(sim::RangeOf(ir, 0, 1.0, "r/ir_0", 0).range));
-  EXPECT_EQ(sim::RangeOf(ir, 1, 1.0, "r/ir_1", 0).range, 0.3f);
+  EXPECT_TRUE(std::isinf(ros2_presentation::RangeOf(ir, 0, 1.0, "r/ir_0", 0).range));
+  EXPECT_EQ(ros2_presentation::RangeOf(ir, 1, 1.0, "r/ir_1", 0).range, 0.3f);
 }
 
 // Publishes as a robot would, and reads what the agent's side writes.

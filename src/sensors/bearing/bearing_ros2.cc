@@ -2,7 +2,7 @@
 // named nodes): no topics, nothing published.
 #include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 namespace {
 
 class BearingMessages : public SensorMessages {
@@ -24,4 +24,4 @@ const SensorMessages& BearingSensorMessages() {
   return messages;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

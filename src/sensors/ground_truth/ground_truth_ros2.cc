@@ -2,7 +2,7 @@
 // world, with the body's velocity in <robot>/base_link.
 #include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 namespace {
 
 class GroundTruthMessages : public SensorMessages {
@@ -25,4 +25,4 @@ const SensorMessages& GroundTruthSensorMessages() {
   return messages;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -3,11 +3,11 @@
 
 #include <cmath>
 
+#include "ros2_presentation/sensor_messages.h"
 #include "sensors/range_fan.h"
 #include "sensors/range_fan_ros2.h"
-#include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, const std::string& frame, double noise) {
   msg::sensor_msgs::Range r;
@@ -65,4 +65,4 @@ const SensorMessages& IrSensorMessages() {
   return messages;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

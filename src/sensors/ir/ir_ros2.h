@@ -7,10 +7,10 @@
 #include "ros2msg/messages.h"
 #include "sanet/readings.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 // IR sensor `i`: one ray (field of view 0), its noise's variance.
 ros2msg::sensor_msgs::Range RangeOf(const RangeScan& ir, std::size_t i, double t, const std::string& frame,
                                     double noise);
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -1,11 +1,11 @@
 // The laser's topic (/<robot>/scan, or /<robot>/<instance>), message and mount.
 #include "sensors/laser/laser_ros2.h"
 
+#include "ros2_presentation/sensor_messages.h"
 #include "sensors/range_fan.h"
 #include "sensors/range_fan_ros2.h"
-#include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 msg::sensor_msgs::LaserScan ScanOf(const RangeScan& scan, double t, const std::string& frame) {
   msg::sensor_msgs::LaserScan s;
@@ -58,4 +58,4 @@ const SensorMessages& LaserSensorMessages() {
   return messages;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -6,8 +6,8 @@
 #include "ros2msg/messages.h"
 #include "sanet/readings.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 
 ros2msg::sensor_msgs::LaserScan ScanOf(const RangeScan& scan, double t, const std::string& frame);
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

@@ -2,7 +2,7 @@
 // relative to the start pose, with the body's velocity in <robot>/base_link.
 #include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 namespace {
 
 class OdometryMessages : public SensorMessages {
@@ -27,4 +27,4 @@ const SensorMessages& OdometrySensorMessages() {
   return messages;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

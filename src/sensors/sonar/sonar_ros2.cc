@@ -2,11 +2,11 @@
 // /<robot>/sonar (or /<robot>/<instance>), in frame <robot>/sonar at the cone's start.
 #include <cmath>
 
+#include "ros2_presentation/sensor_messages.h"
 #include "sensors/range_fan_ros2.h"
 #include "sensors/sonar/sonar.h"
-#include "ros2_presentation/sensor_messages.h"
 
-namespace sanet::sim {
+namespace sanet::ros2_presentation {
 namespace {
 
 class SonarMessages : public SensorMessages {
@@ -45,4 +45,4 @@ const SensorMessages& SonarSensorMessages() {
   return messages;
 }
 
-}  // namespace sanet::sim
+}  // namespace sanet::ros2_presentation

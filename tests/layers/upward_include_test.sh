@@ -38,7 +38,7 @@ expect_not_found sanet_sim_ros2msg_probe sim ros2msg/codec.h sim/driver.h
 # below (src/CMakeLists.txt, sanet_part_links): the kernel part cannot include the ROS 2 part.
 expect_not_found sanet_sensor_part_probe sensors sensors/laser/laser_ros2.h sensors/range_fan.h
 # ... and no sim file includes a ROS 2 header at all (nor its generated messages).
-if grep -rlE '#include "(ros2msg|ros2_presentation)/' "$(dirname "$0")/../../src/sim"; then
+if grep -rlE '#include "(ros2msg|ros2_presentation)/' "$(dirname "$0")/../../src/kernel/sim"; then
   echo "FAIL: sim includes ROS 2 messages"
   exit 1
 fi
@@ -49,7 +49,7 @@ echo "ok: sim includes nothing of ros2msg or ros2_presentation"
 front_ends="wire robot_server remote_agent launch wss view"
 found=""
 for layer in $front_ends; do
-  found+=$(grep -rlE '#include "sim/(assembly|stepper|outputs|world)\.h"' "$(dirname "$0")/../../src/$layer" || true)
+  found+=$(grep -rlE '#include "sim/(assembly|stepper|outputs|world)\.h"' "$(dirname "$0")/../../src/front/$layer" || true)
 done
 if [ -n "$found" ]; then
   echo "FAIL: front ends include the assembly, World, the stepper or the outputs: $found"
@@ -69,11 +69,11 @@ check_private() {  # check_private PATTERN ALLOWED_DIRS...
     exit 1
   fi
 }
-check_private "ns3/" "/src/net/" "/src/sim/"
-check_private "ode/" "/src/physics/ode/"
-check_private "box2d/" "/src/physics/box2d/"
-check_private "yaml-cpp/" "/src/scenario/"
-check_private "mpi.h" "/src/study/"
-check_private "plplot/" "/src/study/"
-check_private "openssl/" "/src/wire/"
+check_private "ns3/" "/src/kernel/net/" "/src/kernel/sim/"
+check_private "ode/" "/src/kernel/physics/ode/"
+check_private "box2d/" "/src/kernel/physics/box2d/"
+check_private "yaml-cpp/" "/src/kernel/scenario/"
+check_private "mpi.h" "/src/kernel/study/"
+check_private "plplot/" "/src/kernel/study/"
+check_private "openssl/" "/src/front/wire/"
 echo "ok: ns-3, ODE, Box2D, yaml-cpp, MPI, PLplot and OpenSSL stay in their layers"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""sanet's MCAP writer (src/trace/mcap_writer) against an independent reader, npm's @mcap/core
+"""sanet's MCAP writer (src/kernel/trace/mcap_writer) against an independent reader, npm's @mcap/core
 (tests/mcap/read_mcap.mjs): every CRC holds reading record by record; the summary (schemas,
 channels, statistics, chunk indexes, summary offsets) and the message indexes give every
 message, in time order across chunks and over a time window, with its sequence."""

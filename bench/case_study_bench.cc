@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <string>
 
-#include "agents/controller_registry.h"
 #include "builtin.h"
+#include "hosting/controller_registry.h"
 #include "scenario/scenario_loader.h"
 #include "sim/world.h"
 

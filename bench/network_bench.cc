@@ -23,8 +23,8 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
-#include "agents/controller_registry.h"
 #include "builtin.h"
+#include "hosting/controller_registry.h"
 #include "net/wireless_network.h"
 #include "sensors/sensor_registry.h"
 #include "sim/world.h"

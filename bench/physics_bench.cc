@@ -13,8 +13,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "agents/controller_registry.h"
 #include "builtin.h"
+#include "hosting/controller_registry.h"
 #include "sensors/sensor_registry.h"
 #include "sim/world.h"
 

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "agents/controller_registry.h"
 #include "builtin.h"
+#include "hosting/controller_registry.h"
 #include "scenario/scenario_loader.h"
 
 namespace {

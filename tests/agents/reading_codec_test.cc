@@ -2,7 +2,7 @@
 // call codec writes a SensorReading (its alternative and every field) and reads back the same.
 #include <gtest/gtest.h>
 
-#include "agents/node_call_codec.h"
+#include "hosting/node_call_codec.h"
 
 namespace sanet {
 namespace {

@@ -1,6 +1,6 @@
 // An agent's control steps on the shared clock's grid: the latest due step runs once, slept-through
 // steps are counted as missed, never run in a burst.
-#include "remote_agent/agent_steps.h"
+#include "usarsim_agent/agent_steps.h"
 
 #include <gtest/gtest.h>
 

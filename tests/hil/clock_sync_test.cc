@@ -1,4 +1,4 @@
-#include "remote_agent/clock_sync.h"
+#include "usarsim_agent/clock_sync.h"
 
 #include <gtest/gtest.h>
 

@@ -13,10 +13,10 @@
 #include <set>
 #include <sstream>
 
-#include "remote_agent/kernel_tables.h"
 #include "robot_server/sim_server.h"
 #include "sim/world.h"
 #include "support/test_world.h"
+#include "usarsim_agent/kernel_tables.h"
 #include "wire/protocol.h"
 
 namespace sanet {

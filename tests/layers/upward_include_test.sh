@@ -29,7 +29,7 @@ expect_not_found() {
 expect_not_found sanet_upward_include_probe net sim/world.h net/transport.h
 # The agent's layer cannot include the robot server's headers (nor does it link its library:
 # checked when configuring).
-expect_not_found sanet_agent_server_probe remote_agent robot_server/sim_server.h remote_agent/remote_node.h
+expect_not_found sanet_agent_server_probe usarsim_agent robot_server/sim_server.h usarsim_agent/remote_node.h
 # sim never sees the scenario's sections for front ends (loop, spawn).
 expect_not_found sanet_sim_section_probe sim sections/spawn_section.h sim/driver.h
 # sim knows no ROS 2 message: the run's events become ROS 2 messages in ros2_presentation, above it.
@@ -46,7 +46,7 @@ echo "ok: sim includes nothing of ros2msg or ros2_presentation"
 
 # Front ends reach a running world through sim/driver.h only: none includes the assembly, nor
 # World and the stepper and outputs behind it.
-front_ends="wire robot_server remote_agent launch wss view"
+front_ends="wire robot_server usarsim_agent launch wss view"
 found=""
 for layer in $front_ends; do
   found+=$(grep -rlE '#include "sim/(assembly|stepper|outputs|world)\.h"' "$(dirname "$0")/../../src/front/$layer" || true)

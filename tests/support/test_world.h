@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "agents/controller_registry.h"
 #include "builtin.h"
+#include "hosting/controller_registry.h"
 #include "sensors/sensor_registry.h"
 #include "sim/run_spec.h"
 #include "sim/world.h"

@@ -3,11 +3,11 @@
 #include <memory>
 #include <stdexcept>
 
-#include "remote_agent/agent.h"
-#include "remote_agent/server_link.h"
 #include "ros2_agent_options.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
+#include "usarsim_agent/agent.h"
+#include "usarsim_agent/server_link.h"
 #include "wire/plugin_identity.h"
 
 namespace sanet::cli {

@@ -3,6 +3,6 @@
 // extension module (python/sanet, docs/python-module.md) gives the same classes.
 #include <pybind11/embed.h>
 
-#include "python/controller_api.h"
+#include "python_controllers/controller_api.h"
 
 PYBIND11_EMBEDDED_MODULE(sanet, module) { sanet::python::BindControllerApi(module); }

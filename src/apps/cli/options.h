@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/controller_registry.h"
+#include "hosting/controller_registry.h"
 
 namespace sanet::cli {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "agents/controller_registry.h"
-#include "remote_agent/peer_socket.h"
+#include "hosting/controller_registry.h"
 #include "scenario/scenario_loader.h"
+#include "usarsim_agent/peer_socket.h"
 
 namespace sanet::cli {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/controller_registry.h"
+#include "hosting/controller_registry.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "sim/world.h"

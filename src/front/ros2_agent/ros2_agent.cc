@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <thread>
 
-#include "agents/controller_host.h"
-#include "remote_agent/agent_steps.h"
+#include "hosting/controller_host.h"
 #include "ros2_agent/agent_record.h"
 #include "ros2_agent/ros2_node.h"
+#include "usarsim_agent/agent_steps.h"
 #include "wire/time_service.h"
 
 namespace sanet::ros2agent {

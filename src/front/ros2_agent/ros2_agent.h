@@ -10,10 +10,10 @@
 #include <optional>
 #include <string>
 
-#include "agents/controller_registry.h"
-#include "remote_agent/peer_socket.h"
+#include "hosting/controller_registry.h"
 #include "ros2_agent/ros2_robot.h"
 #include "sim/run_spec.h"
+#include "usarsim_agent/peer_socket.h"
 #include "wire/agent_datagram.h"
 
 namespace sanet::ros2agent {

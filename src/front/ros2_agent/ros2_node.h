@@ -13,12 +13,12 @@
 #include <string>
 
 #include "core/random_stream.h"
-#include "remote_agent/loop_network_view.h"
-#include "remote_agent/peer_socket.h"
 #include "ros2_agent/agent_record.h"
 #include "ros2_agent/ros2_robot.h"
 #include "sanet/node.h"
 #include "sim/run_spec.h"
+#include "usarsim_agent/loop_network_view.h"
+#include "usarsim_agent/peer_socket.h"
 
 namespace sanet::ros2agent {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/simulated_node.h"
+#include "hosting/simulated_node.h"
 #include "net/network_traces.h"
 #include "ros2_presentation/message_sink.h"
 #include "ros2_presentation/robot_messages.h"

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "agents/controller_registry.h"
+#include "hosting/controller_registry.h"
 
 namespace sanet::scenario {
 

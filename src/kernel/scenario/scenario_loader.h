@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "agents/controller_registry.h"
+#include "hosting/controller_registry.h"
 #include "scenario/overrides.h"
 #include "scenario/yaml_reader.h"
 #include "sections/loop_section.h"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "agents/isolated_controller.h"
+#include "hosting/isolated_controller.h"
 #include "net/body_mobility_model.h"
 #include "net/local_transport.h"
 #include "net/wireless_network.h"

@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "agents/controller_host.h"
-#include "agents/simulated_node.h"
+#include "hosting/controller_host.h"
+#include "hosting/simulated_node.h"
 #include "physics/pipelined_world.h"
 #include "sim/message_ledger.h"
 #include "sim/pose_pipeline.h"

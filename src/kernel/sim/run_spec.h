@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "agents/controller_spec.h"
+#include "hosting/controller_spec.h"
 #include "net/network_spec.h"
 #include "net/wall_materials.h"
 #include "physics/physics_world.h"

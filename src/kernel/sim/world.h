@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "agents/controller_host.h"
-#include "agents/controller_registry.h"
+#include "hosting/controller_host.h"
+#include "hosting/controller_registry.h"
 #include "sim/driver.h"
 #include "sim/outputs.h"
 #include "sim/run_spec.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/controller_registry.h"
+#include "hosting/controller_registry.h"
 #include "study/executor.h"
 #include "study/grid.h"
 

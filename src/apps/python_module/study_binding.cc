@@ -1,0 +1,34 @@
+#include "python_module/study_binding.h"
+
+#include <pybind11/stl.h>
+
+#include "study/report.h"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace sanet::pymodule {
+namespace {
+
+// sanet report's table: (series, value, runs, mean, ci_low, ci_high, median) per point.
+py::list Summary(const study::StudyReader& reader, const std::string& metric, const std::string& by) {
+  py::list rows;
+  for (const study::Series& series : study::Summarise(reader, metric, by))
+    for (const study::Point& p : series.points)
+      rows.append(py::make_tuple(series.label, p.x, p.stats.count, p.stats.mean, p.stats.mean - p.stats.half_width,
+                                 p.stats.mean + p.stats.half_width, p.median));
+  return rows;
+}
+
+}  // namespace
+
+void BindStudyReader(py::module_& m) {
+  py::register_exception<study::ReportError>(m, "ReportError", PyExc_ValueError);
+  py::class_<study::StudyReader>(m, "StudyReader", "A study's database, as `sanet report` reads it (sanet.Study)")
+      .def(py::init<const std::string&>(), "where"_a)
+      .def("parameters", &study::StudyReader::parameters)
+      .def("metrics", &study::StudyReader::Metrics)
+      .def("summarise", &Summary, "metric"_a, "by"_a = "");
+}
+
+}  // namespace sanet::pymodule

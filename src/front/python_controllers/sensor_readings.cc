@@ -1,0 +1,91 @@
+// The readings of sanet/readings.h as Python classes (read-only attributes, SI units, the names
+// of the C++ fields), and Node.sensor's conversion of SensorReading into them.
+#include <pybind11/stl.h>
+
+#include "python_controllers/controller_api.h"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace sanet::python {
+namespace {
+
+template <typename T>
+py::tuple Tuple3(const T& v) {
+  return py::make_tuple(v.x, v.y, v.z);
+}
+
+void BindMotionReadings(py::module_& m) {
+  py::class_<NodeBearing>(m, "NodeBearing", "One node in a bearing sensor's range: node (id) and reading (Bearing)")
+      .def_readonly("node", &NodeBearing::node)
+      .def_readonly("reading", &NodeBearing::reading);
+  py::class_<ImuReading>(m, "ImuReading",
+                         "An IMU's reading: angular_velocity (rad/s) and linear_acceleration (m/s^2) as (x, y, z), "
+                         "orientation as (x, y, z, w) or None, and 3x3 row-major covariances")
+      .def_property_readonly("angular_velocity", [](const ImuReading& r) { return Tuple3(r.angular_velocity); })
+      .def_property_readonly("linear_acceleration", [](const ImuReading& r) { return Tuple3(r.linear_acceleration); })
+      .def_property_readonly("orientation",
+                             [](const ImuReading& r) -> py::object {
+                               if (!r.orientation) return py::none();
+                               const Quaternion& q = *r.orientation;
+                               return py::make_tuple(q.x, q.y, q.z, q.w);
+                             })
+      .def_readonly("angular_velocity_covariance", &ImuReading::angular_velocity_covariance)
+      .def_readonly("linear_acceleration_covariance", &ImuReading::linear_acceleration_covariance)
+      .def_readonly("orientation_covariance", &ImuReading::orientation_covariance);
+  py::class_<JointStatesReading>(m, "JointStatesReading", "Joints: names, angles (rad) and speeds (rad/s)")
+      .def_readonly("names", &JointStatesReading::names)
+      .def_readonly("angles", &JointStatesReading::angles)
+      .def_readonly("speeds", &JointStatesReading::speeds);
+}
+
+void BindOtherReadings(py::module_& m) {
+  py::class_<BatteryReading>(m, "BatteryReading",
+                             "A battery: remaining_j (J), fraction (of capacity), voltage (V), charging")
+      .def_readonly("remaining_j", &BatteryReading::remaining_j)
+      .def_readonly("fraction", &BatteryReading::fraction)
+      .def_readonly("voltage", &BatteryReading::voltage)
+      .def_readonly("charging", &BatteryReading::charging);
+  py::class_<FixReading>(m, "FixReading",
+                         "A satellite fix: latitude, longitude (degrees), altitude (m), status (-1 none, 0 fix, "
+                         "1 SBAS, 2 GBAS), position_covariance (m^2, east-north-up, 3x3 row-major)")
+      .def_readonly("latitude", &FixReading::latitude)
+      .def_readonly("longitude", &FixReading::longitude)
+      .def_readonly("altitude", &FixReading::altitude)
+      .def_readonly("status", &FixReading::status)
+      .def_readonly("position_covariance", &FixReading::position_covariance);
+  py::class_<ImageReading>(m, "ImageReading",
+                           "A camera image: width, height, encoding, data (bytes, rows top to bottom), depth "
+                           "(list of m per pixel, empty without depth)")
+      .def_readonly("width", &ImageReading::width)
+      .def_readonly("height", &ImageReading::height)
+      .def_readonly("encoding", &ImageReading::encoding)
+      .def_property_readonly(
+          "data",
+          [](const ImageReading& r) { return py::bytes(reinterpret_cast<const char*>(r.data.data()), r.data.size()); })
+      .def_readonly("depth", &ImageReading::depth);
+}
+
+}  // namespace
+
+void BindSensorReadings(py::module_& m) {
+  BindMotionReadings(m);
+  BindOtherReadings(m);
+}
+
+py::object SensorToPython(const std::optional<SensorReading>& reading) {
+  if (!reading) return py::none();
+  return std::visit(
+      [](const auto& value) -> py::object {
+        using T = std::decay_t<decltype(value)>;
+        if constexpr (std::is_same_v<T, RangeScan>)
+          return ScanOrNone(value);
+        else if constexpr (std::is_same_v<T, BearingsReading>)
+          return py::cast(value.in_range);
+        else
+          return py::cast(value);
+      },
+      *reading);
+}
+
+}  // namespace sanet::python

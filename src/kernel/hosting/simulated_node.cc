@@ -1,0 +1,47 @@
+#include "hosting/simulated_node.h"
+
+namespace sanet::agents {
+
+sensors::ReadContext SimulatedNode::Context(std::optional<NodeId> target) const {
+  return {id_, directory_.NodeCount(), [this](NodeId node) { return directory_.TruePose(node); }, target};
+}
+
+std::optional<SensorReading> SimulatedNode::Sensor(const std::string& name) {
+  if (!sensors_.Has(name)) return std::nullopt;
+  std::optional<SensorReading> reading = sensors_.Read(name, Context());
+  last_.time = Now();
+  last_.readings[name] = reading;
+  if (reading) directory_.ReadSensor(id_, name, sensors_.KindOf(name), *reading);
+  return reading;
+}
+
+// The default bearing sensor aimed at one node: one draw of noise, for that node only.
+std::optional<BearingReading> SimulatedNode::Bearing(NodeId target) {
+  if (target >= directory_.NodeCount() || target == id_ || sensors_.KindOf("bearing") != "bearing") return std::nullopt;
+  const std::optional<SensorReading> reading = sensors_.Read("bearing", Context(target));
+  const auto* bearings = reading ? std::get_if<BearingsReading>(&*reading) : nullptr;
+  if (!bearings || bearings->in_range.empty()) return std::nullopt;
+  return bearings->in_range.front().reading;
+}
+
+bool SimulatedNode::SetRadioSleep(bool asleep) {
+  if (off_) {
+    Log("radio sleep refused: the node is switched off (its radio with it)");
+    return false;
+  }
+  if (transport_.SetSleep(id_, asleep)) return true;
+  Log("radio sleep refused: this run has no radio model (no `network` section)");
+  return false;
+}
+
+bool SimulatedNode::ApplyDrive(const Twist2D& velocity) { return !off_ && model_.Drive(velocity); }
+
+bool SimulatedNode::ApplyWheelSpeeds(const std::vector<double>& w) { return !off_ && model_.SetWheelSpeeds(w); }
+
+void SimulatedNode::SwitchOff() {
+  model_.Drive({});
+  off_ = true;
+  transport_.SwitchOff(id_);
+}
+
+}  // namespace sanet::agents

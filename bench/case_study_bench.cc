@@ -18,7 +18,7 @@ struct Measure {
   unsigned long long events;
 };
 
-Measure Run(const std::string& file, sanet::agents::Registry& registry) {
+Measure Run(const std::string& file, sanet::hosting::Registry& registry) {
   const sanet::scenario::Scenario sc = sanet::scenario::LoadScenario(file);
   sanet::sim::World world(sc.run, registry);
   const sanet::sim::RunResult r = world.Run({});
@@ -29,7 +29,7 @@ Measure Run(const std::string& file, sanet::agents::Registry& registry) {
 
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : "scenarios";
-  sanet::agents::Registry registry;
+  sanet::hosting::Registry registry;
   sanet::controllers::RegisterBuiltinControllers(registry);
   std::printf("%-20s %12s %10s %10s %12s %22s\n", "scenario", "simulated s", "wall s", "RTF", "events",
               "wall per sim s vs base");

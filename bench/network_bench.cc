@@ -50,7 +50,7 @@ double WallSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double RunSanet(int count, double duration, agents::Registry& registry, net::ChannelModel channel) {
+double RunSanet(int count, double duration, hosting::Registry& registry, net::ChannelModel channel) {
   const Layout layout = MakeLayout(count);
   sim::RunSpec spec;
   spec.duration = duration;
@@ -119,7 +119,7 @@ double RunNs3Alone(int count, double duration) {
 
 int main(int argc, char** argv) {
   const double duration = argc > 1 ? std::atof(argv[1]) : 30;
-  agents::Registry registry;
+  hosting::Registry registry;
   controllers::RegisterBuiltinControllers(registry);
   std::printf(
       "sanet network benchmark: static motes 40 m apart, AODV, 802.11b 1 Mbps, a tenth of the\n"

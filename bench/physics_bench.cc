@@ -62,7 +62,7 @@ sim::RunSpec Motes(int count, double duration) {
   return spec;
 }
 
-Measure Time(const sim::RunSpec& spec, agents::Registry& registry) {
+Measure Time(const sim::RunSpec& spec, hosting::Registry& registry) {
   sim::World world(spec, registry);
   const sim::RunResult r = world.Run({});
   return {r.wall, r.physics_steps / r.wall, r.real_time_factor};
@@ -76,7 +76,7 @@ void Row(const char* name, const Measure& m, const char* baseline, double ratio)
 
 int main(int argc, char** argv) {
   const double duration = argc > 1 ? std::atof(argv[1]) : 20;
-  agents::Registry registry;
+  hosting::Registry registry;
   controllers::RegisterBuiltinControllers(registry);
   std::printf("sanet physics benchmark: %.0f s simulated per case, physics step 5 ms\n", duration);
   std::printf("%-24s %8s %12s %10s   %-22s %6s\n", "case", "wall s", "steps/s", "RTF", "ratio against", "ratio");

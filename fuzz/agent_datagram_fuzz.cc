@@ -8,18 +8,18 @@
 
 #include "wire/agent_datagram.h"
 
-using sanet::hil::DatagramKey;
+using sanet::wire::DatagramKey;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const DatagramKey key = *DatagramKey::FromHex(std::string(64, '7'));
+  static const sanet::wire::DatagramKey key = *sanet::wire::DatagramKey::FromHex(std::string(64, '7'));
   if (size == 0) return 0;
   std::string why;
   if (data[0] & 1) {
-    sanet::hil::OpenDatagram(data + 1, size - 1, key, &why);
+    sanet::wire::OpenDatagram(data + 1, size - 1, key, &why);
     return 0;
   }
-  const sanet::Bytes signed_bytes = sanet::hil::WithMac(sanet::Bytes(data + 1, data + size), key);
-  const auto opened = sanet::hil::OpenDatagram(signed_bytes.data(), signed_bytes.size(), key, &why);
-  if (opened && sanet::hil::SealDatagram(*opened, key) != signed_bytes) std::abort();
+  const sanet::Bytes signed_bytes = sanet::wire::WithMac(sanet::Bytes(data + 1, data + size), key);
+  const auto opened = sanet::wire::OpenDatagram(signed_bytes.data(), signed_bytes.size(), key, &why);
+  if (opened && sanet::wire::SealDatagram(*opened, key) != signed_bytes) std::abort();
   return 0;
 }

@@ -9,10 +9,10 @@
 #include "wire/message_lines.h"
 #include "wire/protocol.h"
 
-using sanet::hil::ProtocolMessage;
+using sanet::wire::ProtocolMessage;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  sanet::hil::LineReader reader(4096);
+  sanet::wire::LineReader reader(4096);
   // Fed in two pieces, as TCP may split it anywhere.
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   const std::size_t half = size / 2;
@@ -21,16 +21,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     reader.Append(piece);
     while (auto line = reader.Next(&too_long)) {
       std::string error;
-      const auto m = sanet::hil::ParseLine(*line, &error);
+      const auto m = sanet::wire::ParseLine(*line, &error);
       if (!m) continue;
       for (const auto& [key, value] : m->fields) {
         m->Number(key);
         m->Numbers(key);
       }
-      sanet::hil::ParseMsgLine(*m, sanet::NodeId{0}, 1, &error);
-      sanet::hil::ParseRecvLine(*m, sanet::NodeId{0}, 1, &error);
-      const std::string again = sanet::hil::FormatLine(*m);
-      const auto reparsed = sanet::hil::ParseLine(again.substr(0, again.size() - 2), &error);
+      sanet::wire::ParseMsgLine(*m, sanet::NodeId{0}, 1, &error);
+      sanet::wire::ParseRecvLine(*m, sanet::NodeId{0}, 1, &error);
+      const std::string again = sanet::wire::FormatLine(*m);
+      const auto reparsed = sanet::wire::ParseLine(again.substr(0, again.size() - 2), &error);
       if (!reparsed || reparsed->type != m->type || reparsed->fields != m->fields) std::abort();
     }
     if (too_long) break;

@@ -22,8 +22,8 @@ const std::string& ScenarioPath() {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static sanet::agents::Registry registry = [] {
-    sanet::agents::Registry r;
+  static sanet::hosting::Registry registry = [] {
+    sanet::hosting::Registry r;
     sanet::controllers::RegisterBuiltinControllers(r);
     return r;
   }();
@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     sanet::scenario::CheckControllers(scenario, registry);
   } catch (const sanet::scenario::ScenarioError&) {
     // the expected answer to a bad file
-  } catch (const sanet::agents::RegistryError&) {
+  } catch (const sanet::hosting::RegistryError&) {
     // a controller library named by the file that cannot be loaded
   }
   return 0;

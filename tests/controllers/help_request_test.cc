@@ -43,7 +43,7 @@ const Transition* Find(const std::vector<Transition>& all, const std::string& no
   return nullptr;
 }
 
-std::string RunIn(const std::string& tag, const sim::RunSpec& spec, agents::Registry& registry = BuiltinRegistry()) {
+std::string RunIn(const std::string& tag, const sim::RunSpec& spec, hosting::Registry& registry = BuiltinRegistry()) {
   const std::string dir = ::testing::TempDir() + "/sanet-help-" + tag;
   std::filesystem::remove_all(dir);
   sim::World world(spec, registry);
@@ -66,7 +66,7 @@ sim::RunSpec SmallHelpRequest() {
 
 TEST(HelpRequest, TheRobotArrivesAroundTheWall) {
   sim::RunSpec spec = SmallHelpRequest();
-  agents::Registry& registry = BuiltinRegistry();
+  hosting::Registry& registry = BuiltinRegistry();
   const std::string dir = ::testing::TempDir() + "/sanet-help-base";
   std::filesystem::remove_all(dir);
   double closest = 1e9;
@@ -179,7 +179,7 @@ class Witnessed : public Controller {
 };
 
 TEST(HelpRequest, EveryHopWasANextHopInTheRobotsRoutingTableWhenChosen) {
-  agents::Registry registry;
+  hosting::Registry registry;
   controllers::RegisterBuiltinControllers(registry);
   std::vector<std::string> violations;
   int checked = 0;

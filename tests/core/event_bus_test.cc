@@ -68,5 +68,29 @@ TEST(EventBus, ASubscriptionMayOutliveItsBus) {
   SUCCEED();
 }
 
+// Handlers that end subscriptions (their own or another's) or subscribe while an event is being
+// published: an ended one is not called again, a new one hears the next event, none is skipped.
+TEST(EventBus, HandlersMayChangeTheSubscriptionsWhileAnEventIsPublished) {
+  Bus bus;
+  std::vector<std::string> heard;
+  Subscription self, later, added;
+  self = bus.On<Ping>(Stage::kFirst, [&](const Ping& p) {
+    heard.push_back("self" + std::to_string(p.n));
+    self.reset();   // ends itself while it runs
+    later.reset();  // and another, not yet called
+    added = bus.On<Ping>(Stage::kFirst, [&](const Ping& q) { heard.push_back("added" + std::to_string(q.n)); });
+  });
+  later = bus.On<Ping>(Stage::kSecond, [&](const Ping& p) { heard.push_back("later" + std::to_string(p.n)); });
+  Subscription last = bus.On<Ping>(Stage::kLast, [&](const Ping& p) {
+    heard.push_back("last" + std::to_string(p.n));
+    if (p.n == 1) bus.Publish(Ping{2});  // a nested publish of the same kind
+  });
+  bus.Publish(Ping{1});
+  EXPECT_EQ(heard, (std::vector<std::string>{"self1", "last1", "last2"}));
+  heard.clear();
+  bus.Publish(Ping{3});
+  EXPECT_EQ(heard, (std::vector<std::string>{"added3", "last3"}));
+}
+
 }  // namespace
 }  // namespace sanet

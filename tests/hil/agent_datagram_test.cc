@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 AgentDatagram Pose(std::uint64_t sequence) {
@@ -86,4 +86,4 @@ TEST(ReplayWindow, EachSequenceNumberCountsOnceAndOldOnesNever) {
 }
 
 }  // namespace
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 namespace {
 
 TEST(StepGrid, RunsEachStepOnceAtItsGridTime) {
@@ -37,4 +37,4 @@ TEST(StepGrid, StepsBeforeTheFirstAreNotMissed) {
 }
 
 }  // namespace
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 namespace {
 
 // Nodes 0 and 2 have controllers (agents' robots); node 1 is a mote.
@@ -70,4 +70,4 @@ TEST(Attendance, RobotsTheRos2FaceDroveAreExcused) {
 }
 
 }  // namespace
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

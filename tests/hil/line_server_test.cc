@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 double Now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
@@ -178,4 +178,4 @@ TEST(LineServer, ANewcomerIsRefusedWhenEverySlotIsInsideItsHandshakeTime) {
 }
 
 }  // namespace
-}  // namespace sanet::hil
+}  // namespace sanet::wire

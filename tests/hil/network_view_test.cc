@@ -22,8 +22,8 @@
 namespace sanet {
 namespace {
 
-using hil::ProtocolMessage;
 using robots::ModelKind;
+using wire::ProtocolMessage;
 
 // Motes 40 m apart (the default radio reaches 51 m: each hears its neighbours only) and a robot
 // 40 m before the first.
@@ -51,7 +51,7 @@ class LineClient {
   ~LineClient() { ::close(fd_); }
   void Say(const std::string& line) { ASSERT_GT(::send(fd_, (line + "\r\n").data(), line.size() + 2, 0), 0); }
   // Every whole line that has come, parsed.
-  std::vector<ProtocolMessage> Take() {
+  std::vector<wire::ProtocolMessage> Take() {
     char buffer[65536];
     pollfd p{fd_, POLLIN, 0};
     while (::poll(&p, 1, 0) > 0) {
@@ -59,9 +59,9 @@ class LineClient {
       if (n <= 0) break;
       pending_.append(buffer, static_cast<std::size_t>(n));
     }
-    std::vector<ProtocolMessage> lines;
+    std::vector<wire::ProtocolMessage> lines;
     for (std::size_t end; (end = pending_.find("\r\n")) != std::string::npos; pending_.erase(0, end + 2))
-      if (auto m = hil::ParseLine(pending_.substr(0, end), nullptr)) lines.push_back(*m);
+      if (auto m = wire::ParseLine(pending_.substr(0, end), nullptr)) lines.push_back(*m);
     return lines;
   }
 
@@ -72,7 +72,7 @@ class LineClient {
 
 struct Served {
   sim::World world;
-  hil::SimServer server;
+  robot_server::SimServer server;
   LineClient client;
   double now = 0;
   Served(const sim::RunSpec& spec, bool tap)
@@ -84,8 +84,8 @@ struct Served {
     world.Start({});
     client.Say("INIT {Name r}");
   }
-  static hil::ServerSettings Settings() {
-    hil::ServerSettings s;
+  static robot_server::ServerSettings Settings() {
+    robot_server::ServerSettings s;
     s.port = 0;
     return s;
   }
@@ -96,10 +96,10 @@ struct Served {
     world.driver().JoinTap(*world.Lookup("r"), pair[0], "02:00:00:00:00:05");
   }
   // Runs a poll period at a time until a line of `type` comes; the world stays where it was then.
-  std::optional<ProtocolMessage> RunUntilLine(const std::string& type, double limit) {
+  std::optional<wire::ProtocolMessage> RunUntilLine(const std::string& type, double limit) {
     for (; now < limit; now += 0.005) {
       world.RunUntil(now);
-      for (const ProtocolMessage& m : client.Take())
+      for (const wire::ProtocolMessage& m : client.Take())
         if (m.type == type) return m;
     }
     return std::nullopt;
@@ -160,7 +160,7 @@ TEST(NetworkView, AsksWithinTheRateLimitWaitAndAreAnsweredTogether) {
   std::vector<double> times;
   for (double t = s.now; t < s.now + 0.1; t += 0.005) {
     s.world.RunUntil(t);
-    for (const ProtocolMessage& m : s.client.Take())
+    for (const wire::ProtocolMessage& m : s.client.Take())
       if (m.type == "NET") times.push_back(*m.Number("Time"));
   }
   // The server takes a client's lines in bounded turns, so the asks may span polls; answers
@@ -169,7 +169,7 @@ TEST(NetworkView, AsksWithinTheRateLimitWaitAndAreAnsweredTogether) {
   EXPECT_LT(times.size(), 4u) << "ten asks, answered together";
   double last = *first->Number("Time");
   for (double t : times) {
-    EXPECT_GE(t, last + hil::ServerSettings{}.net_period - 1e-6);
+    EXPECT_GE(t, last + robot_server::ServerSettings{}.net_period - 1e-6);
     last = t;
   }
   s.world.Finish();
@@ -214,18 +214,18 @@ TEST(NetworkView, ARobotWithoutATapIsToldToReadItsKernel) {
   s.world.Finish();
 }
 
-hil::Ipv4 Address(const char* text) { return ::inet_addr(text); }
+usarsim_agent::Ipv4 Address(const char* text) { return ::inet_addr(text); }
 
 TEST(KernelTables, RoutesAndNeighboursMapToNodesThroughTheirAddresses) {
-  const std::vector<std::optional<hil::Ipv4>> addresses = {Address("10.1.0.1"), Address("10.1.0.2"),
-                                                           Address("10.1.0.3"), std::nullopt};
-  const std::vector<hil::KernelRoute> routes = {
+  const std::vector<std::optional<usarsim_agent::Ipv4>> addresses = {Address("10.1.0.1"), Address("10.1.0.2"),
+                                                                     Address("10.1.0.3"), std::nullopt};
+  const std::vector<usarsim_agent::KernelRoute> routes = {
       {Address("10.1.0.2"), std::nullopt},         // direct
       {Address("10.1.0.3"), Address("10.1.0.2")},  // through node 1
       {Address("10.9.9.9"), std::nullopt},         // no node's
   };
-  const std::vector<hil::KernelNeighbour> neighbours = {{Address("10.1.0.2")}, {Address("192.168.1.1")}};
-  const hil::KernelTables t = hil::MapToNodes(0, addresses, routes, neighbours);
+  const std::vector<usarsim_agent::KernelNeighbour> neighbours = {{Address("10.1.0.2")}, {Address("192.168.1.1")}};
+  const usarsim_agent::KernelTables t = usarsim_agent::MapToNodes(0, addresses, routes, neighbours);
   ASSERT_EQ(t.routes.size(), 2u);
   EXPECT_EQ(t.routes[0].destination, 1u);
   EXPECT_EQ(t.routes[0].next_hop, 1u);
@@ -238,19 +238,20 @@ TEST(KernelTables, RoutesAndNeighboursMapToNodesThroughTheirAddresses) {
 }
 
 TEST(KernelTables, ARouteThroughAGatewayThatIsNoNodeIsLeftOut) {
-  const std::vector<std::optional<hil::Ipv4>> addresses = {Address("10.1.0.1"), Address("10.2.0.1")};
-  const hil::KernelTables t = hil::MapToNodes(0, addresses, {{Address("10.2.0.1"), Address("10.1.0.254")}}, {});
+  const std::vector<std::optional<usarsim_agent::Ipv4>> addresses = {Address("10.1.0.1"), Address("10.2.0.1")};
+  const usarsim_agent::KernelTables t =
+      usarsim_agent::MapToNodes(0, addresses, {{Address("10.2.0.1"), Address("10.1.0.254")}}, {});
   EXPECT_TRUE(t.routes.empty());
 }
 
 TEST(KernelTables, OnLoopbackEveryAgentSharesAnAddressAndTheTablesAreEmpty) {
-  const std::vector<std::optional<hil::Ipv4>> addresses = {Address("127.0.0.1"), Address("127.0.0.1"),
-                                                           Address("127.0.0.1")};
-  const hil::KernelTables t = hil::ReadKernelTables(0, addresses);
+  const std::vector<std::optional<usarsim_agent::Ipv4>> addresses = {Address("127.0.0.1"), Address("127.0.0.1"),
+                                                                     Address("127.0.0.1")};
+  const usarsim_agent::KernelTables t = usarsim_agent::ReadKernelTables(0, addresses);
   EXPECT_TRUE(t.routes.empty());
   EXPECT_TRUE(t.neighbours.empty());
   // The kernel itself answers: this machine has a route to its own loopback address.
-  const auto route = hil::KernelRouteTo(Address("127.0.0.1"));
+  const auto route = usarsim_agent::KernelRouteTo(Address("127.0.0.1"));
   ASSERT_TRUE(route);
   EXPECT_FALSE(route->gateway);
 }

@@ -5,7 +5,7 @@
 #include "robot_server/sim_server.h"
 #include "wire/message_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 ProtocolMessage Parse(const std::string& line) {
@@ -158,18 +158,19 @@ TEST(MessageLines, MsgLineRoundTripsThroughTheProtocol) {
 }
 
 }  // namespace
-}  // namespace sanet::hil
+}  // namespace sanet::wire
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 // ERR text never holds a brace, and still reads: a field's name quoted, a field with its value in
 // parentheses, lone braces as quotes.
 TEST(MessageLines, ErrTextHasNoBraces) {
-  EXPECT_EQ(WithoutBraces("DRIVE needs {Left} and {Right}"), "DRIVE needs 'Left' and 'Right'");
-  EXPECT_EQ(WithoutBraces("INIT {ClassName c} {Name x} adds one"), "INIT (ClassName c) (Name x) adds one");
-  EXPECT_EQ(WithoutBraces("unclosed {a {b} }{ }").find_first_of("{}"), std::string::npos);
-  EXPECT_EQ(WithoutBraces("a lone { here"), "a lone ' here");
+  EXPECT_EQ(robot_server::WithoutBraces("DRIVE needs {Left} and {Right}"), "DRIVE needs 'Left' and 'Right'");
+  EXPECT_EQ(robot_server::WithoutBraces("INIT {ClassName c} {Name x} adds one"),
+            "INIT (ClassName c) (Name x) adds one");
+  EXPECT_EQ(robot_server::WithoutBraces("unclosed {a {b} }{ }").find_first_of("{}"), std::string::npos);
+  EXPECT_EQ(robot_server::WithoutBraces("a lone { here"), "a lone ' here");
 }
 
 // Counts a client gives are whole numbers in range, never converted out of range (the fuzzer
@@ -199,4 +200,4 @@ TEST(MessageLines, RecvAndMsgRefuseCountsOutOfRange) {
 }
 
 }  // namespace
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -46,7 +46,7 @@ echo "ok: sim includes nothing of ros2msg or ros2_presentation"
 
 # Front ends reach a running world through sim/driver.h only: none includes the assembly, nor
 # World and the stepper and outputs behind it.
-front_ends="wire robot_server usarsim_agent launch wss view"
+front_ends="wire robot_server usarsim_agent launch wss view foxglove ros2_face ros2_agent python_controllers"
 found=""
 for layer in $front_ends; do
   found+=$(grep -rlE '#include "sim/(assembly|stepper|outputs|world)\.h"' "$(dirname "$0")/../../src/front/$layer" || true)

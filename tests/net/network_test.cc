@@ -64,7 +64,7 @@ class Probe : public Controller {
 
 // Registers probe controllers "p0", "p1", ... with their inboxes and scripts.
 struct Probes {
-  agents::Registry registry;
+  hosting::Registry registry;
   std::vector<std::vector<Message>> inboxes;
   explicit Probes(std::vector<std::vector<Probe::Send>> scripts, std::vector<std::function<void(Node&)>> steps = {})
       : inboxes(scripts.size()) {

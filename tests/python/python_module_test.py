@@ -71,6 +71,10 @@ class Stepping(unittest.TestCase):
         for name in ("trajectories.csv", "log.csv", "transitions.csv", "metrics.csv"):
             with open(os.path.join(out, name)) as a, open(os.path.join(ran, name)) as b:
                 self.assertEqual(a.read(), b.read(), name)
+        # Both traces too: the module attaches the ROS 2 presentation (trace.mcap) as the command does.
+        for name in ("trace.sqlite", "trace.mcap"):
+            with open(os.path.join(out, name), "rb") as a, open(os.path.join(ran, name), "rb") as b:
+                self.assertEqual(a.read(), b.read(), name)
 
     def test_stepping_changes_poses_and_reads_between_steps(self):
         with sanet.Simulation(AROUND, output=os.path.join(self.tmp.name, "o")) as sim:

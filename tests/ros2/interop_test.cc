@@ -30,7 +30,7 @@ class Ros2Interop : public ::testing::Test {
     dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
     dds_qset_history(q, DDS_HISTORY_KEEP_ALL, 0);
     const dds_entity_t typed = dds_create_topic(participant_, desc, name.c_str(), nullptr, nullptr);
-    ddsi_sertype* type = ros2face::MakeRawCdrType(desc->m_typename);
+    ddsi_sertype* type = ros2_face::MakeRawCdrType(desc->m_typename);
     const dds_entity_t raw = dds_create_topic_sertype(participant_, name.c_str(), &type, nullptr, nullptr, nullptr);
     *raw_reader = dds_create_reader(participant_, raw, q, nullptr);
     *typed_reader = dds_create_reader(participant_, typed, q, nullptr);

@@ -23,7 +23,7 @@
 #include "sensors/laser/laser_ros2.h"
 #include "sensors/range_fan.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 namespace {
 
 std::string FileWith(const std::string& text) {
@@ -135,8 +135,8 @@ class PlayedRobot {
   }
 
  private:
-  ros2face::DdsDomain dds_;
-  std::map<std::string, ros2face::DdsDomain::Entity> writers_, readers_;
+  ros2_face::DdsDomain dds_;
+  std::map<std::string, ros2_face::DdsDomain::Entity> writers_, readers_;
 };
 
 // Repeats `step` until `done` (DDS discovery takes a moment), for up to 10 s.
@@ -206,7 +206,7 @@ TEST(Ros2Robot, TwistStampedAndAPoseStampedGroundTruthAndBadSamplesCounted) {
   PlayedRobot played(settings.domain);
   msg::geometry_msgs::PoseStamped mocap;
   mocap.pose.position.y = -3;
-  ros2face::DdsDomain liar(settings.domain);  // on the scan topic, typed as a scan: bytes that are none
+  ros2_face::DdsDomain liar(settings.domain);  // on the scan topic, typed as a scan: bytes that are none
   const auto bad = liar.Writer("/r2/scan", ros2msg::TypeOf<msg::sensor_msgs::LaserScan>::kDdsName, Qos::kSensorData);
   ASSERT_TRUE(Eventually(
       [&] {
@@ -230,4 +230,4 @@ TEST(Ros2Robot, TwistStampedAndAPoseStampedGroundTruthAndBadSamplesCounted) {
 }
 
 }  // namespace
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

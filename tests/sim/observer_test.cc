@@ -52,7 +52,7 @@ class Recorder {
 };
 
 sim::RunSpec TwoChattingRobots() {
-  agents::Registry& registry = BuiltinRegistry();
+  hosting::Registry& registry = BuiltinRegistry();
   if (!registry.Find("test_chatter"))
     registry.Add({"test_chatter", "", [](const Params&) { return std::make_unique<Chatter>(); }});
   sim::RunSpec spec = Spec(2, {Robot("a", ModelKind::kDiffDrive, {0, 0, 0}, UseController("test_chatter", {})),

@@ -29,9 +29,9 @@ class PushAndComplain : public Controller {
   double at_;
 };
 
-agents::Registry& Registry() {
-  static agents::Registry* registry = [] {
-    auto* r = new agents::Registry;
+hosting::Registry& Registry() {
+  static hosting::Registry* registry = [] {
+    auto* r = new hosting::Registry;
     r->Add({"push_and_complain", "",
             [](const Params& p) { return std::make_unique<PushAndComplain>(p.Number("complain_at", -1, -1, 1e6)); }});
     return r;

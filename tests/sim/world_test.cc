@@ -65,7 +65,7 @@ class Echo : public Controller {
 };
 
 TEST(World, MessagesTravelBetweenControllersOnTheSimulationClock) {
-  agents::Registry registry;
+  hosting::Registry registry;
   std::vector<Message> inbox_a, inbox_b;
   registry.Add({"echo_a", "", [&](const Params&) { return std::make_unique<Echo>(&inbox_a, true); }});
   registry.Add({"echo_b", "", [&](const Params&) { return std::make_unique<Echo>(&inbox_b, false); }});
@@ -91,7 +91,7 @@ class Thrower : public Controller {
 };
 
 TEST(World, AFailingControllerEndsTheRunButKeepsItsResults) {
-  agents::Registry registry;
+  hosting::Registry registry;
   registry.Add({"thrower", "", [](const Params&) { return std::make_unique<Thrower>(); }});
   const std::string dir = ::testing::TempDir() + "/sanet-failing-run";
   std::filesystem::remove_all(dir);
@@ -125,7 +125,7 @@ TEST(World, AControllerThrowingAnythingEndsTheRunNamingWhatItThrew) {
         if (node.Now() > 0.2) what();
       }
     };
-    agents::Registry registry;
+    hosting::Registry registry;
     registry.Add({"throws", "", [&, thrower = thrower](const Params&) {
                     auto c = std::make_unique<Throws>();
                     c->what = thrower;
@@ -152,7 +152,7 @@ TEST(World, TextThatIsNotUtf8LeavesAValidSummary) {
       node.Metric("m\xe9tric", 1.5);
     }
   };
-  agents::Registry registry;
+  hosting::Registry registry;
   registry.Add({"babble", "", [](const Params&) { return std::make_unique<Babble>(); }});
   const std::string dir = ::testing::TempDir() + "/sanet-not-utf8";
   std::filesystem::remove_all(dir);
@@ -178,7 +178,7 @@ class NotANumber : public Controller {
 
 TEST(World, ANonFiniteCommandIsRefusedLoggedAndTheMotorsKeepTheLastOne) {
   std::vector<bool> answers;
-  agents::Registry registry;
+  hosting::Registry registry;
   registry.Add({"nan", "", [&answers](const Params&) { return std::make_unique<NotANumber>(&answers); }});
   const std::string dir = ::testing::TempDir() + "/sanet-nan-drive";
   std::filesystem::remove_all(dir);

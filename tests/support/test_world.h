@@ -82,9 +82,9 @@ inline sim::Obstacle Box(Vec2 center, double lx, double ly, double h, double yaw
   return {"box", {{center.x, center.y, h / 2}, {lx, ly, h}, yaw}, {}, {}};
 }
 
-inline agents::Registry& BuiltinRegistry() {
-  static agents::Registry* registry = [] {
-    auto* r = new agents::Registry;
+inline hosting::Registry& BuiltinRegistry() {
+  static hosting::Registry* registry = [] {
+    auto* r = new hosting::Registry;
     controllers::RegisterBuiltinControllers(*r);
     return r;
   }();

@@ -19,10 +19,10 @@ struct AgentArgs {
   bool shared_clock = false, quiet = false;
   Ros2AgentArgs ros2;
   double test_clock_offset = 0;
-  int test_protocol = hil::kSanetProtocol;
+  int test_protocol = wire::kSanetProtocol;
 };
 
-std::unique_ptr<hil::ServerLink> Connect(const std::string& server) {
+std::unique_ptr<usarsim_agent::ServerLink> Connect(const std::string& server) {
   const auto colon = server.rfind(':');
   const std::string port = colon == std::string::npos ? "" : server.substr(colon + 1);
   if (colon == 0 || port.empty() || port.size() > 5 || port.find_first_not_of("0123456789") != std::string::npos ||
@@ -30,7 +30,8 @@ std::unique_ptr<hil::ServerLink> Connect(const std::string& server) {
     throw CLI::ValidationError("--server",
                                "expected HOST:PORT (a host name or IPv4 address and a port), not '" + server + "'");
   try {
-    return std::make_unique<hil::ServerLink>(server.substr(0, colon), static_cast<std::uint16_t>(std::stoi(port)));
+    return std::make_unique<usarsim_agent::ServerLink>(server.substr(0, colon),
+                                                       static_cast<std::uint16_t>(std::stoi(port)));
   } catch (const std::runtime_error& e) {
     if (std::string(e.what()).rfind("cannot find the server's host", 0) == 0)
       throw CLI::ValidationError("--server", e.what());
@@ -39,10 +40,11 @@ std::unique_ptr<hil::ServerLink> Connect(const std::string& server) {
 }
 
 // The scenario: this computer's copy (which must be the server's), or the server's own.
-scenario::Scenario ScenarioOf(const AgentArgs& a, hil::ServerLink& link) {
+scenario::Scenario ScenarioOf(const AgentArgs& a, usarsim_agent::ServerLink& link) {
   std::optional<scenario::Scenario> own;
   if (!a.file.empty()) own = scenario::LoadScenario(a.file);
-  const hil::ServerHello hello = link.Handshake(a.test_protocol, own ? scenario::ScenarioFingerprint(*own) : "");
+  const usarsim_agent::ServerHello hello =
+      link.Handshake(a.test_protocol, own ? scenario::ScenarioFingerprint(*own) : "");
   scenario::Scenario sc =
       own ? std::move(*own)
           : scenario::LoadScenarioText(link.FetchScenario(), "the scenario of the server at " + link.address());
@@ -64,8 +66,8 @@ NodeId RobotOf(const scenario::Scenario& sc, const std::string& robot) {
                                             " (those are: " + (robots.empty() ? "none" : robots) + ")");
 }
 
-hil::PeerSettings PeerSettingsOf(const AgentArgs& a, const scenario::Scenario& sc) {
-  hil::PeerSettings peer;
+usarsim_agent::PeerSettings PeerSettingsOf(const AgentArgs& a, const scenario::Scenario& sc) {
+  usarsim_agent::PeerSettings peer;
   peer.udp_base_port = static_cast<std::uint16_t>(a.udp_base.value_or(sc.loop.udp_port));
   peer.udp_subnet = a.subnet;
   peer.peer_address = a.peer_address;
@@ -75,7 +77,7 @@ hil::PeerSettings PeerSettingsOf(const AgentArgs& a, const scenario::Scenario& s
 }
 
 // --ros2: no server; the team from the scenario file, the robot from its ROS 2 topics.
-int Ros2Agent(const AgentArgs& a, agents::Registry& registry) {
+int Ros2Agent(const AgentArgs& a, hosting::Registry& registry) {
   if (a.file.empty())
     throw CLI::ValidationError("--scenario", "--ros2 runs without a server: give the team's scenario file");
   if (!a.server.empty())
@@ -89,22 +91,22 @@ int Ros2Agent(const AgentArgs& a, agents::Registry& registry) {
   return StartRos2Agent(sc, id, a.ros2, PeerSettingsOf(a, sc), a.quiet, registry);
 }
 
-int Agent(const AgentArgs& a, agents::Registry& registry) {
+int Agent(const AgentArgs& a, hosting::Registry& registry) {
   if (a.ros2.on) return Ros2Agent(a, registry);
-  std::unique_ptr<hil::ServerLink> link = Connect(a.server.empty() ? "127.0.0.1:3000" : a.server);
+  std::unique_ptr<usarsim_agent::ServerLink> link = Connect(a.server.empty() ? "127.0.0.1:3000" : a.server);
   scenario::Scenario sc = ScenarioOf(a, *link);
   const NodeId id = RobotOf(sc, a.robot);
   sim::ControllerSpec& controller = *sc.run.nodes[id].controller;
   if (!a.library.empty()) controller.library = a.library;
-  const std::string differs = hil::PluginDifference(link->FetchPlugin(a.robot), hil::IdentifyPlugin(controller));
+  const std::string differs = wire::PluginDifference(link->FetchPlugin(a.robot), wire::IdentifyPlugin(controller));
   if (!differs.empty()) throw std::runtime_error("this robot's controller is not the server's: " + differs);
-  hil::AgentSettings settings;
+  usarsim_agent::AgentSettings settings;
   settings.peer = PeerSettingsOf(a, sc);
   settings.shared_clock = a.shared_clock;
   settings.clock_skew = a.test_clock_offset;
   settings.time_port = link->time_port();
   settings.quiet = a.quiet;
-  return hil::RunAgent(sc.run, id, settings, std::move(link), registry);
+  return usarsim_agent::RunAgent(sc.run, id, settings, std::move(link), registry);
 }
 
 }  // namespace
@@ -147,7 +149,7 @@ Command AddAgent(CLI::App& app) {
       ->check(CLI::Range(1, 1000000))
       ->group("");  // for tests: not in --help
   AddRos2AgentOptions(cmd, a->ros2);
-  return {cmd, [a](agents::Registry& r) { return Agent(*a, r); }};
+  return {cmd, [a](hosting::Registry& r) { return Agent(*a, r); }};
 }
 
 }  // namespace sanet::cli

@@ -5,4 +5,4 @@
 
 #include "python_controllers/controller_api.h"
 
-PYBIND11_EMBEDDED_MODULE(sanet, module) { sanet::python::BindControllerApi(module); }
+PYBIND11_EMBEDDED_MODULE(sanet, module) { sanet::python_controllers::BindControllerApi(module); }

@@ -21,9 +21,9 @@ struct LaunchArgs {
   std::string test_unreachable;
 };
 
-static_assert(kExitRobotsMissing == hil::kExitRobotsMissing, "serve and launch end alike without a robot");
+static_assert(kExitRobotsMissing == launch::kExitRobotsMissing, "serve and launch end alike without a robot");
 
-int Launch(const LaunchArgs& a, agents::Registry& registry) {
+int Launch(const LaunchArgs& a, hosting::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
   if (!a.command.empty() && a.exec_robot.empty())
     throw CLI::ValidationError("--exec", "a command after -- runs in robots' namespaces: name them with --exec ROBOT");
@@ -31,7 +31,7 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
     throw CLI::ValidationError("--exec", "give the program to run after --, e.g. --exec r1 -- ping 10.0.0.2");
   std::vector<NodeId> exec_robots;
   try {
-    if (!a.exec_robot.empty()) exec_robots = hil::ExecRobots(sc.run, sc.ros2.has_value(), a.exec_robot);
+    if (!a.exec_robot.empty()) exec_robots = launch::ExecRobots(sc.run, sc.ros2.has_value(), a.exec_robot);
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--exec", e.what());
   }
@@ -41,7 +41,7 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
        udp_base == net::kDsdvPort))
     throw CLI::ValidationError(
         "--udp-base", std::to_string(udp_base) + " is network.port, which the simulated network serves itself");
-  hil::LaunchSettings settings;
+  launch::LaunchSettings settings;
   settings.scenario_file = a.file;
   settings.sets = a.sets;
   settings.output = a.output.empty() ? sc.output_folder : a.output;
@@ -58,7 +58,7 @@ int Launch(const LaunchArgs& a, agents::Registry& registry) {
   settings.exec_command = a.command;
   settings.python_path = {std::filesystem::absolute(a.file).parent_path().string()};
   for (const std::string& folder : PythonPathArgs()) settings.python_path.push_back(folder);
-  return hil::Launch(sc.run, settings);
+  return launch::Launch(sc.run, settings);
 }
 
 }  // namespace
@@ -92,7 +92,7 @@ Command AddLaunch(CLI::App& app) {
   cmd->add_option("--test-unreachable", a->test_unreachable,
                   "For tests: give this robot's agent an address where no server listens")
       ->group("");  // for tests: not in --help
-  return {cmd, [a](agents::Registry& r) { return Launch(*a, r); }};
+  return {cmd, [a](hosting::Registry& r) { return Launch(*a, r); }};
 }
 
 }  // namespace sanet::cli

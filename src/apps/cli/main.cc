@@ -69,7 +69,7 @@ struct RunArgs {
   ViewArgs view;
 };
 
-int Run(const RunArgs& args, agents::Registry& registry) {
+int Run(const RunArgs& args, hosting::Registry& registry) {
   scenario::Scenario sc = LoadChecked(args.file, args.sets, registry);
   if (args.seed) sc.run.seed = *args.seed;
   if (args.duration) sc.run.duration = *args.duration;
@@ -121,7 +121,7 @@ int Run(const RunArgs& args, agents::Registry& registry) {
   return 0;
 }
 
-int Validate(const std::string& file, const std::vector<std::string>& sets, bool print, agents::Registry& registry) {
+int Validate(const std::string& file, const std::vector<std::string>& sets, bool print, hosting::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, sets, registry);
   if (print) {
     std::fputs(scenario::EffectiveScenarioYaml(sc).c_str(), stdout);
@@ -140,15 +140,15 @@ int Validate(const std::string& file, const std::vector<std::string>& sets, bool
 }
 
 // `sanet list --python MODULE:CLASS`: the module in --python-path's folders or the current one.
-agents::ControllerSpec PythonSpec(const std::string& module_class) {
-  agents::ControllerSpec spec;
+hosting::ControllerSpec PythonSpec(const std::string& module_class) {
+  hosting::ControllerSpec spec;
   spec.name = spec.python = module_class;
   spec.python_path = PythonPathArgs();
   spec.python_path.push_back(std::filesystem::current_path().string());
   return spec;
 }
 
-int List(agents::Registry& registry, bool markdown, scenario::CatalogueSections sections) {
+int List(hosting::Registry& registry, bool markdown, scenario::CatalogueSections sections) {
   std::fputs((markdown ? scenario::ReferenceMarkdown() : scenario::Catalogue(registry, sections)).c_str(), stdout);
   return 0;
 }
@@ -177,7 +177,7 @@ Command AddRun(CLI::App& app) {
                 "Run against the wall clock, a simulated second per second, to watch it live with --view (the "
                 "same results)");
   AddViewOptions(cmd, a->view);
-  return {cmd, [a](agents::Registry& r) { return Run(*a, r); }};
+  return {cmd, [a](hosting::Registry& r) { return Run(*a, r); }};
 }
 
 Command AddValidate(CLI::App& app) {
@@ -193,7 +193,7 @@ Command AddValidate(CLI::App& app) {
   cmd->add_flag("--print", *print,
                 "Print the effective scenario: every default filled in, grids as their nodes (it loads and runs "
                 "to the same fingerprint)");
-  return {cmd, [file, sets, print](agents::Registry& r) { return Validate(*file, *sets, *print, r); }};
+  return {cmd, [file, sets, print](hosting::Registry& r) { return Validate(*file, *sets, *print, r); }};
 }
 
 volatile std::sig_atomic_t g_view_stop = 0;
@@ -258,7 +258,7 @@ Command AddView(CLI::App& app) {
   cmd->add_option("--port-file", *port_file, "Once listening, write the port number to this file");
   auto foxglove = std::make_shared<FoxgloveArgs>();
   AddFoxgloveOptions(cmd, *foxglove, /*replay=*/true);
-  return {cmd, [settings, port_file, foxglove](agents::Registry&) { return View(*settings, *port_file, *foxglove); }};
+  return {cmd, [settings, port_file, foxglove](hosting::Registry&) { return View(*settings, *port_file, *foxglove); }};
 }
 
 Command AddList(CLI::App& app) {
@@ -281,7 +281,7 @@ Command AddList(CLI::App& app) {
                 "Print only the sensor kinds (what each measures, its reading type and units, its ROS 2 message, "
                 "its keys)");
   cmd->add_flag("--controllers", only->controllers, "Print only the controllers and their parameters");
-  return {cmd, [libraries, pythons, markdown, only](agents::Registry& r) {
+  return {cmd, [libraries, pythons, markdown, only](hosting::Registry& r) {
             for (const auto& lib : *libraries) r.LoadLibrary(lib);
             for (const auto& python : *pythons) r.LoadPython(PythonSpec(python));
             const bool some = only->models || only->sensors || only->controllers;
@@ -290,7 +290,7 @@ Command AddList(CLI::App& app) {
 }
 
 // Runs the chosen command; errors a user can cause are one line on stderr and an exit code.
-int Perform(const Command& command, agents::Registry& registry) {
+int Perform(const Command& command, hosting::Registry& registry) {
   try {
     return command.action(registry);
   } catch (const CLI::ValidationError& e) {
@@ -299,7 +299,7 @@ int Perform(const Command& command, agents::Registry& registry) {
   } catch (const scenario::ScenarioError& e) {
     std::fprintf(stderr, "sanet: error: %s\n", e.what());
     return kExitScenarioError;
-  } catch (const agents::RegistryError& e) {
+  } catch (const hosting::RegistryError& e) {
     std::fprintf(stderr, "sanet: error: %s\n", e.what());
     return kExitScenarioError;
   } catch (const std::exception& e) {
@@ -340,9 +340,9 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);  // prints help, the version or the error
     return code == 0 ? 0 : kExitScenarioError;
   }
-  agents::Registry registry;
+  hosting::Registry registry;
   controllers::RegisterBuiltinControllers(registry);
-  python::InstallPython(registry);
+  python_controllers::InstallPython(registry);
   scenario::SetPythonPath(PythonPathArgs());
   for (const Command& c : commands)
     if (*c.app) return Perform(c, registry);

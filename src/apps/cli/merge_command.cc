@@ -36,8 +36,8 @@ void PrintLinks(const nlohmann::ordered_json& summary) {
 int Merge(const MergeArgs& a) {
   nlohmann::ordered_json summary;
   try {
-    summary = ros2agent::MergeTeam(a.folders, a.output, a.force);
-  } catch (const ros2agent::TeamFolderError& e) {
+    summary = ros2_agent::MergeTeam(a.folders, a.output, a.force);
+  } catch (const ros2_agent::TeamFolderError& e) {
     throw CLI::ValidationError(e.what());
   } catch (const trace::FolderRefused& e) {
     throw CLI::ValidationError("-o", e.what());
@@ -67,7 +67,7 @@ Command AddMerge(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "The team's folder")->required();
   AddForce(cmd, a->force);
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
-  return {cmd, [a](agents::Registry&) { return Merge(*a); }};
+  return {cmd, [a](hosting::Registry&) { return Merge(*a); }};
 }
 
 }  // namespace sanet::cli

@@ -20,7 +20,7 @@ constexpr int kExitInterrupted = 130;
 // One subcommand: its options live as long as the program, its action runs when it was chosen.
 struct Command {
   CLI::App* app;
-  std::function<int(agents::Registry&)> action;
+  std::function<int(hosting::Registry&)> action;
 };
 
 // The ranges a scenario's duration and seed have in a file hold on the command line too.

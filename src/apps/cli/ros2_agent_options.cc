@@ -20,13 +20,13 @@ namespace {
 constexpr const char* kKeyHow = " (64 hex digits, the same for the whole team; make one with: openssl rand -hex 32)";
 
 // The team's datagram key: --key-file, else SANET_TEAM_KEY.
-hil::DatagramKey TeamKey(const Ros2AgentArgs& args) {
+wire::DatagramKey TeamKey(const Ros2AgentArgs& args) {
   std::string hex;
   if (!args.key_file.empty()) {
     std::ifstream in(args.key_file);
     if (!in) throw CLI::ValidationError("--key-file", "cannot read " + args.key_file + ": " + std::strerror(errno));
     in >> hex;
-    if (const auto key = hil::DatagramKey::FromHex(hex)) return *key;
+    if (const auto key = wire::DatagramKey::FromHex(hex)) return *key;
     throw CLI::ValidationError("--key-file", args.key_file + " holds no key" + kKeyHow);
   }
   const char* env = std::getenv("SANET_TEAM_KEY");
@@ -34,27 +34,27 @@ hil::DatagramKey TeamKey(const Ros2AgentArgs& args) {
     throw CLI::ValidationError("--key-file", std::string("--ros2 needs the team's key for the datagrams between "
                                                          "robots: --key-file FILE or SANET_TEAM_KEY") +
                                                  kKeyHow);
-  if (const auto key = hil::DatagramKey::FromHex(env)) return *key;
+  if (const auto key = wire::DatagramKey::FromHex(env)) return *key;
   throw CLI::ValidationError("SANET_TEAM_KEY", std::string("holds no key") + kKeyHow);
 }
 
-ros2agent::RobotTopics TopicsOf(const sim::NodeSpec& node, const Ros2AgentArgs& args) {
+ros2_agent::RobotTopics TopicsOf(const sim::NodeSpec& node, const Ros2AgentArgs& args) {
   const auto& ir = sensors::DefaultFan(node.model, "ir");
-  ros2agent::RobotTopics topics = ros2agent::DefaultTopics(node.name, ir ? ir->angles.size() : 0);
-  if (!args.robot_file.empty()) ros2agent::ReadRobotFile(args.robot_file, topics);
+  ros2_agent::RobotTopics topics = ros2_agent::DefaultTopics(node.name, ir ? ir->angles.size() : 0);
+  if (!args.robot_file.empty()) ros2_agent::ReadRobotFile(args.robot_file, topics);
   for (const std::string& remap : args.remaps) try {
-      ros2agent::Remap(remap, topics);
+      ros2_agent::Remap(remap, topics);
     } catch (const std::invalid_argument& e) {
       throw CLI::ValidationError("--ros2-remap", e.what());
     }
   if (args.use_sim_time) topics.use_sim_time = true;
-  if (args.stamped) topics.cmd_vel_type = ros2agent::CmdVelType::kTwistStamped;
+  if (args.stamped) topics.cmd_vel_type = ros2_agent::CmdVelType::kTwistStamped;
   return topics;
 }
 
 // --start-at: a Unix time in seconds, within a day of now (milliseconds, or a day's mistake, are
 // refused); not with /clock, whose time 0 is the simulator's.
-void CheckStartAt(const Ros2AgentArgs& args, const ros2agent::RobotTopics& topics) {
+void CheckStartAt(const Ros2AgentArgs& args, const ros2_agent::RobotTopics& topics) {
   if (!args.start_at) return;
   if (topics.use_sim_time)
     throw CLI::ValidationError("--start-at",
@@ -109,9 +109,9 @@ void AddRos2AgentOptions(CLI::App* cmd, Ros2AgentArgs& args) {
       ->group(group);
 }
 
-int StartRos2Agent(const scenario::Scenario& sc, NodeId id, const Ros2AgentArgs& args, hil::PeerSettings peer,
-                   bool quiet, agents::Registry& registry) {
-  ros2agent::Ros2AgentSettings settings;
+int StartRos2Agent(const scenario::Scenario& sc, NodeId id, const Ros2AgentArgs& args, usarsim_agent::PeerSettings peer,
+                   bool quiet, hosting::Registry& registry) {
+  ros2_agent::Ros2AgentSettings settings;
   settings.robot.domain = static_cast<std::uint32_t>(Ros2Domain(args.domain, sc.ros2 ? sc.ros2->domain : -1));
   settings.robot.interface = args.interface;
   settings.robot.topics = TopicsOf(sc.run.nodes[id], args);
@@ -129,7 +129,7 @@ int StartRos2Agent(const scenario::Scenario& sc, NodeId id, const Ros2AgentArgs&
   settings.stop_requested = [] { return InterruptSignal() != 0; };
   sim::RunSpec spec = sc.run;
   if (args.duration) spec.duration = *args.duration;
-  return ros2agent::RunRos2Agent(spec, id, settings, registry);
+  return ros2_agent::RunRos2Agent(spec, id, settings, registry);
 }
 
 }  // namespace sanet::cli

@@ -28,7 +28,7 @@ struct Ros2AgentArgs {
 
 void AddRos2AgentOptions(CLI::App* cmd, Ros2AgentArgs& args);
 // Runs robot `id`'s controller against its ROS 2 topics (no server). Returns the exit code.
-int StartRos2Agent(const scenario::Scenario& sc, NodeId id, const Ros2AgentArgs& args, hil::PeerSettings peer,
-                   bool quiet, agents::Registry& registry);
+int StartRos2Agent(const scenario::Scenario& sc, NodeId id, const Ros2AgentArgs& args, usarsim_agent::PeerSettings peer,
+                   bool quiet, hosting::Registry& registry);
 
 }  // namespace sanet::cli

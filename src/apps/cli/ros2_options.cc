@@ -38,12 +38,12 @@ void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
       "still come from CYCLONEDDS_URI (sanet launch gives its namespaces' bridge)");
 }
 
-std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
-                                                  const std::optional<sections::Ros2Spec>& section,
-                                                  std::vector<std::string>& notices) {
+std::unique_ptr<ros2_face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
+                                                   const std::optional<sections::Ros2Spec>& section,
+                                                   std::vector<std::string>& notices) {
   if (args.off || (!args.on && !section)) return nullptr;
   const sections::Ros2Spec given = section.value_or(sections::Ros2Spec{});
-  ros2face::Ros2Settings settings;
+  ros2_face::Ros2Settings settings;
   settings.domain = static_cast<std::uint32_t>(Ros2Domain(args.domain, given.domain));
   if (args.interface && args.interface->empty())
     throw CLI::ValidationError("--ros2-interface", "give an interface's name or IPv4 address (ip -br addr lists them)");
@@ -52,9 +52,9 @@ std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2A
   settings.twist_stamped = args.stamped || given.cmd_vel == sections::CmdVelType::kTwistStamped;
   settings.robots = given.robots;
   settings.cmd_vel_timeout = given.cmd_vel_timeout;
-  std::unique_ptr<ros2face::Ros2Face> face;
+  std::unique_ptr<ros2_face::Ros2Face> face;
   try {
-    face = std::make_unique<ros2face::Ros2Face>(world.driver(), settings);
+    face = std::make_unique<ros2_face::Ros2Face>(world.driver(), settings);
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError("--ros2", e.what());
   }

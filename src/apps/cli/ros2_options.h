@@ -26,8 +26,8 @@ int Ros2Domain(std::optional<int> given, int section);
 // Joins the DDS domain and starts the face, when the scenario has a ros2 section or --ros2 is
 // given (and --no-ros2 is not); a domain that cannot be joined is an error naming the option.
 // Adds the line that says where the face is to `notices`.
-std::unique_ptr<ros2face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
-                                                  const std::optional<sections::Ros2Spec>& section,
-                                                  std::vector<std::string>& notices);
+std::unique_ptr<ros2_face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
+                                                   const std::optional<sections::Ros2Spec>& section,
+                                                   std::vector<std::string>& notices);
 
 }  // namespace sanet::cli

@@ -27,7 +27,7 @@ void ClaimFolder(const std::string& dir, bool force) {
 }
 
 scenario::Scenario LoadChecked(const std::string& file, const std::vector<std::string>& sets,
-                               agents::Registry& registry) {
+                               hosting::Registry& registry) {
   scenario::Scenario sc = scenario::LoadScenario(file, sets);
   scenario::CheckControllers(sc, registry);
   for (const std::string& warning : sc.warnings) std::fprintf(stderr, "sanet: warning: %s\n", warning.c_str());

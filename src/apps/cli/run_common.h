@@ -14,7 +14,7 @@ namespace sanet::cli {
 
 // The scenario with --set applied and its controllers found; its warnings printed.
 scenario::Scenario LoadChecked(const std::string& file, const std::vector<std::string>& sets,
-                               agents::Registry& registry);
+                               hosting::Registry& registry);
 // Before anything is built: the folder must be free for the run (trace/earlier_run.h).
 void ClaimFolder(const std::string& dir, bool force);
 sim::Provenance ProvenanceOf(const scenario::EffectiveScenario& effective);

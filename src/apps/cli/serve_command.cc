@@ -35,7 +35,7 @@ struct ServeArgs {
 void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
   if (taps.empty()) return;
   std::string why;
-  if (!hil::RadioTapsPermitted(&why)) throw CLI::ValidationError("--tap", why);
+  if (!launch::RadioTapsPermitted(&why)) throw CLI::ValidationError("--tap", why);
   std::vector<std::pair<std::string, std::string>> pairs;
   for (const std::string& t : taps) {
     const auto equals = t.find('=');
@@ -44,7 +44,7 @@ void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
     pairs.emplace_back(t.substr(0, equals), t.substr(equals + 1));
   }
   try {
-    hil::JoinRadioTaps(world.driver(), pairs);
+    launch::JoinRadioTaps(world.driver(), pairs);
   } catch (const std::exception& e) {
     throw CLI::ValidationError("--tap", e.what());
   }
@@ -52,19 +52,19 @@ void JoinTaps(sim::World& world, const std::vector<std::string>& taps) {
 
 std::size_t WssMaxClients(const ServeArgs& a, const sim::RunSpec& spec) {
   if (!a.wss_port) return 0;
-  return a.wss_max_clients ? static_cast<std::size_t>(*a.wss_max_clients) : hil::DefaultMaxClients(spec);
+  return a.wss_max_clients ? static_cast<std::size_t>(*a.wss_max_clients) : robot_server::DefaultMaxClients(spec);
 }
 
 // --wss-port: a Wireless Simulation Server beside the robot protocol's server.
-std::unique_ptr<hil::WssServer> StartWss(sim::World& world, const ServeArgs& a, std::vector<std::string>& notices) {
+std::unique_ptr<wss::WssServer> StartWss(sim::World& world, const ServeArgs& a, std::vector<std::string>& notices) {
   if (!a.wss_port) return nullptr;
-  hil::WssSettings settings;
+  wss::WssSettings settings;
   settings.bind = a.bind;
   settings.port = static_cast<std::uint16_t>(*a.wss_port);
   settings.max_clients = WssMaxClients(a, world.spec());
-  std::unique_ptr<hil::WssServer> wss;
+  std::unique_ptr<wss::WssServer> wss;
   try {
-    wss = std::make_unique<hil::WssServer>(world.driver(), settings);
+    wss = std::make_unique<wss::WssServer>(world.driver(), settings);
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError("--wss-port", e.what());
   }
@@ -76,33 +76,34 @@ std::unique_ptr<hil::WssServer> StartWss(sim::World& world, const ServeArgs& a, 
 
 // `yaml`: the effective scenario the server runs; `fingerprint`: that of the scenario as loaded
 // (agents compare theirs with it; how long the server runs is its own affair).
-hil::ServerSettings ServerSettingsFor(const ServeArgs& a, const scenario::Scenario& sc, const std::string& yaml,
-                                      const std::string& fingerprint) {
-  hil::ServerSettings settings;
+robot_server::ServerSettings ServerSettingsFor(const ServeArgs& a, const scenario::Scenario& sc,
+                                               const std::string& yaml, const std::string& fingerprint) {
+  robot_server::ServerSettings settings;
   settings.bind = a.bind;
   settings.port = static_cast<std::uint16_t>(a.port);
-  settings.max_clients = a.max_clients ? static_cast<std::size_t>(*a.max_clients) : hil::DefaultMaxClients(sc.run);
+  settings.max_clients =
+      a.max_clients ? static_cast<std::size_t>(*a.max_clients) : robot_server::DefaultMaxClients(sc.run);
   settings.scenario_yaml = yaml;
   settings.scenario_fingerprint = fingerprint;
   settings.spawn = sc.spawn;
   settings.announce = !a.quiet;
   try {
-    hil::RaiseDescriptorLimit(settings.max_clients + WssMaxClients(a, sc.run));
+    wire::RaiseDescriptorLimit(settings.max_clients + WssMaxClients(a, sc.run));
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError(a.wss_max_clients ? "--max-clients, --wss-max-clients" : "--max-clients", e.what());
   }
   return settings;
 }
 
-std::unique_ptr<hil::SimServer> StartServer(sim::World& world, const hil::ServerSettings& settings) {
+std::unique_ptr<robot_server::SimServer> StartServer(sim::World& world, const robot_server::ServerSettings& settings) {
   try {
-    return std::make_unique<hil::SimServer>(world.driver(), settings);
+    return std::make_unique<robot_server::SimServer>(world.driver(), settings);
   } catch (const std::runtime_error& e) {
     throw CLI::ValidationError("--port", e.what());
   }
 }
 
-void PrintServed(const hil::SimServer& server, const sim::RunResult& r, const std::string& results) {
+void PrintServed(const robot_server::SimServer& server, const sim::RunResult& r, const std::string& results) {
   const auto lag = server.LagSummary();
   std::printf(
       "  served %.1f s; lag behind the wall clock p50 %.4f s, p99 %.4f s, max %.4f s, %lld missed deadlines\n"
@@ -119,8 +120,8 @@ std::string NamesOf(const std::vector<std::string>& names) {
 
 // The run's verdict on the robots only clients could drive (those with controllers; not those the
 // ROS 2 face drove): summary.json's attendance, warnings and, when one never came, its status.
-void JudgeAttendance(nlohmann::ordered_json& j, hil::Attendance& attendance, const ros2face::Ros2Face* ros2, double end,
-                     bool interrupted) {
+void JudgeAttendance(nlohmann::ordered_json& j, robot_server::Attendance& attendance, const ros2_face::Ros2Face* ros2,
+                     double end, bool interrupted) {
   if (ros2) attendance.Excuse(ros2->Driven());
   j["attendance"] = attendance.Summary();
   j["warnings"] = attendance.Warnings(end);
@@ -133,9 +134,9 @@ void JudgeAttendance(nlohmann::ordered_json& j, hil::Attendance& attendance, con
 // The world with its servers listening; their notices wait for the serving line, which comes first.
 struct Served {
   std::unique_ptr<ros2_presentation::RunPresentation> ros2_messages;  // for trace.mcap and the Foxglove stream
-  std::unique_ptr<hil::SimServer> server;
-  std::unique_ptr<hil::WssServer> wss;
-  std::unique_ptr<ros2face::Ros2Face> ros2;
+  std::unique_ptr<robot_server::SimServer> server;
+  std::unique_ptr<wss::WssServer> wss;
+  std::unique_ptr<ros2_face::Ros2Face> ros2;
   LiveViews live;
   std::vector<std::string> notices;
 };
@@ -167,7 +168,7 @@ sim::RunOptions ServeOptions(const ServeArgs& a, const scenario::Scenario& sc,
 
 // How serve ends: interrupted (128 + the signal), without a robot it expected (kExitRobotsMissing),
 // or completed (0).
-int ServeEnd(sim::World& world, hil::SimServer& server, const std::string& results) {
+int ServeEnd(sim::World& world, robot_server::SimServer& server, const std::string& results) {
   if (world.interrupted()) {
     std::fprintf(stderr, "sanet: %s at %.1f s; the results so far are in %s/ (status: interrupted)\n",
                  world.ended_by().c_str(), world.ended_at(), results.c_str());
@@ -180,7 +181,7 @@ int ServeEnd(sim::World& world, hil::SimServer& server, const std::string& resul
   return kExitRobotsMissing;
 }
 
-int Serve(const ServeArgs& a, agents::Registry& registry) {
+int Serve(const ServeArgs& a, hosting::Registry& registry) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // its lines and stderr's in the order they happen, also piped
   scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
   // Agents with their own copy of the file compare this; how long the server runs is its own affair.
@@ -193,7 +194,7 @@ int Serve(const ServeArgs& a, agents::Registry& registry) {
   const std::string results = a.output.empty() ? sc.output_folder : a.output;
   ClaimFolder(results, a.force);
   sim::UseRealTimeClock();  // the same schedule, run against the wall clock
-  const std::string scheduling = hil::UseRealTimePriority();
+  const std::string scheduling = wire::UseRealTimePriority();
   sim::World world(sc.run, registry, sim::RobotDrivers::kFrontEnds);
   Served s = StartServing(world, a, sc, effective, fingerprint);
   s.server->Start();
@@ -270,7 +271,7 @@ Command AddServe(CLI::App& app) {
                 "Do not stream to Foxglove (serve does by default; sanet launch's server does only with --view)")
       ->excludes(cmd->get_option("--view"));
   AddRos2Options(cmd, a->ros2);
-  return {cmd, [a](agents::Registry& r) { return Serve(*a, r); }};
+  return {cmd, [a](hosting::Registry& r) { return Serve(*a, r); }};
 }
 
 }  // namespace sanet::cli

@@ -98,7 +98,7 @@ void PrintEnd(const study::SweepTally& t, const std::string& folder, bool has_en
               folder.c_str());
 }
 
-int Sweep(const SweepArgs& a, agents::Registry& registry) {
+int Sweep(const SweepArgs& a, hosting::Registry& registry) {
   const scenario::Scenario base = scenario::LoadScenario(a.file, a.sets);
   const study::SweepSettings s = Settings(a, base);
   // Under MPI the ranks are the parallelism (one per core, as mpirun places them): one run each.
@@ -197,7 +197,7 @@ Command AddReport(CLI::App& app) {
                   "Write one row per run (parameters, seed, status and the metrics, or every metric without -m) "
                   "for pandas or a spreadsheet");
   cmd->add_flag("--list", a->list, "List the study's parameters and metrics");
-  return {cmd, [a](agents::Registry&) { return Report(*a); }};
+  return {cmd, [a](hosting::Registry&) { return Report(*a); }};
 }
 
 Command AddSweep(CLI::App& app) {
@@ -228,7 +228,7 @@ Command AddSweep(CLI::App& app) {
   cmd->add_flag("--retry-failed", a->retry_failed, "Run again the runs that failed (a finished run is never redone)");
   AddForce(cmd, a->force);
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
-  return {cmd, [a](agents::Registry& r) { return Sweep(*a, r); }};
+  return {cmd, [a](hosting::Registry& r) { return Sweep(*a, r); }};
 }
 
 }  // namespace sanet::cli

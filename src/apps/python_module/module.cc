@@ -1,5 +1,5 @@
 // The extension module behind the Python package `sanet` (python/sanet): the controller interface
-// (python/controller_api.h), Simulation (pymodule/simulation.h), the studies' reader, and the
+// (python_controllers/controller_api.h), Simulation (python_module/simulation.h), the studies' reader, and the
 // errors a script may catch by kind, worded for Python (set=, output=, force=).
 #include <pybind11/pybind11.h>
 
@@ -37,8 +37,8 @@ void TranslateErrors(pybind11::module_& module) {
 }  // namespace
 
 PYBIND11_MODULE(_sanet, module) {
-  sanet::python::BindControllerApi(module);
-  sanet::pymodule::BindSimulation(module);
-  sanet::pymodule::BindStudyReader(module);
+  sanet::python_controllers::BindControllerApi(module);
+  sanet::python_module::BindSimulation(module);
+  sanet::python_module::BindStudyReader(module);
   TranslateErrors(module);
 }

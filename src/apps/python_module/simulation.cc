@@ -24,7 +24,7 @@
 namespace py = pybind11;
 using namespace pybind11::literals;
 
-namespace sanet::pymodule {
+namespace sanet::python_module {
 namespace {
 
 constexpr const char* kScript = "the script";  // the owner of the robots a script drives
@@ -88,7 +88,7 @@ class Simulation {
           "a Simulation is already live in this process, and ns-3's simulator is one per process: finish() it "
           "(or use `with sanet.Simulation(...) as sim:`) before starting another");
     controllers::RegisterBuiltinControllers(registry_);
-    python::InstallPython(registry_);
+    python_controllers::InstallPython(registry_);
     if (duration && !(*duration > 0 && *duration <= 1e9))
       throw py::value_error("duration must be more than 0 and at most 1e9 s, not " + std::to_string(*duration));
     scenario::SetPythonPath(python_path);
@@ -149,10 +149,10 @@ class Simulation {
     return Driven(robot).Drive({vx, vy, omega});
   }
   void Send(const std::string& from, const std::string& to, const py::object& payload) {
-    Driven(from).Send(Id(to), python::BytesOf(payload));
+    Driven(from).Send(Id(to), python_controllers::BytesOf(payload));
   }
   void Broadcast(const std::string& from, const py::object& payload) {
-    Driven(from).Broadcast(python::BytesOf(payload));
+    Driven(from).Broadcast(python_controllers::BytesOf(payload));
   }
   void SwitchOff(const std::string& node) { Live().SwitchOff(Id(node)); }
 
@@ -193,7 +193,7 @@ class Simulation {
     return body();
   }
 
-  agents::Registry registry_;
+  hosting::Registry registry_;
   scenario::Scenario scenario_;
   sim::RunOptions options_;
   SinceLastStep since_;
@@ -276,6 +276,7 @@ py::dict Simulation::Finish() {
   py::dict out("fingerprint"_a = r.fingerprint, "simulated"_a = r.simulated, "wall"_a = r.wall,
                "ended_by"_a = world_->ended_by().empty() ? std::string("duration") : world_->ended_by(),
                "interrupted"_a = world_->interrupted(), "output"_a = options_.output_dir, "warnings"_a = warnings);
+  ros2_messages_.reset();  // before the world whose bus and nodes it holds
   world_.reset();
   g_live = false;
   return out;
@@ -295,7 +296,7 @@ py::dict ReadingsDict(const sim::SensorReadings& r, const std::optional<Pose2D>&
 }
 
 // A controller's last reads, as the driver's readings hold them.
-sim::SensorReadings AsReadings(const agents::SimulatedNode::LastReads& last) {
+sim::SensorReadings AsReadings(const hosting::SimulatedNode::LastReads& last) {
   sim::SensorReadings r;
   r.time = last.time;
   for (const auto& [name, reading] : last.readings)
@@ -394,4 +395,4 @@ Only one Simulation is live in a process (ns-3 has one simulator): finish() it f
       });
 }
 
-}  // namespace sanet::pymodule
+}  // namespace sanet::python_module

@@ -10,8 +10,8 @@
 
 #include <pybind11/pybind11.h>
 
-namespace sanet::pymodule {
+namespace sanet::python_module {
 
 void BindSimulation(pybind11::module_& module);
 
-}  // namespace sanet::pymodule
+}  // namespace sanet::python_module

@@ -7,7 +7,7 @@
 namespace py = pybind11;
 using namespace pybind11::literals;
 
-namespace sanet::pymodule {
+namespace sanet::python_module {
 namespace {
 
 // sanet report's table: (series, value, runs, mean, ci_low, ci_high, median) per point.
@@ -31,4 +31,4 @@ void BindStudyReader(py::module_& m) {
       .def("summarise", &Summary, "metric"_a, "by"_a = "");
 }
 
-}  // namespace sanet::pymodule
+}  // namespace sanet::python_module

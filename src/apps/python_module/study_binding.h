@@ -4,8 +4,8 @@
 
 #include <pybind11/pybind11.h>
 
-namespace sanet::pymodule {
+namespace sanet::python_module {
 
 void BindStudyReader(pybind11::module_& module);
 
-}  // namespace sanet::pymodule
+}  // namespace sanet::python_module

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-namespace sanet::hil {
+namespace sanet::launch {
 namespace {
 
 double Now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
@@ -103,4 +103,4 @@ void AgentProcesses::Stopped(pid_t pid, int status) {
   std::fflush(stderr);
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 struct AgentProcess {
   std::string robot;
@@ -50,4 +50,4 @@ class AgentProcesses {
 // "exited with status 1", "was killed by signal 9".
 std::string HowItEnded(int wait_status);
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -23,7 +23,7 @@
 #include "launch/radio_taps.h"
 #include "launch/run_slot.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 namespace {
 
 volatile std::sig_atomic_t g_interrupted = 0;
@@ -360,4 +360,4 @@ int Launch(const sim::RunSpec& spec, const LaunchSettings& settings) {
   return Verdict(status, settings.output, agents);
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -10,7 +10,7 @@
 #include "sections/loop_section.h"
 #include "sim/run_spec.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 struct LaunchSettings {
   std::string scenario_file;
@@ -54,4 +54,4 @@ constexpr int kExitRobotsMissing = 3;
 // the cause).
 int Launch(const sim::RunSpec& spec, const LaunchSettings& settings);
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

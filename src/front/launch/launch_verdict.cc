@@ -10,7 +10,7 @@
 #include "core/json_text.h"
 #include "core/seconds_text.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -70,4 +70,4 @@ std::vector<std::string> JudgeAgents(const std::string& results, const std::vect
   return failures;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -9,11 +9,11 @@
 
 #include "launch/agent_processes.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 // Adds each agent's end to `results`/summary.json (attendance.ROBOT.agent) and, for each robot
 // its agent failed, the cause (attendance.ROBOT.cause) and a status "failed: ..." (unless the run
 // was interrupted); writes the file back whole. Returns the failures, one sentence each.
 std::vector<std::string> JudgeAgents(const std::string& results, const std::vector<AgentProcess>& agents);
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

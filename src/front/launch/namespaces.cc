@@ -8,7 +8,7 @@
 
 #include "launch/shell.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 namespace {
 
 std::string Millis(double seconds) { return std::to_string(seconds * 1000) + "ms"; }
@@ -98,4 +98,4 @@ void NetworkNamespaces::Run(const std::string& command) {
     throw std::runtime_error("could not set up the agents' network: '" + command + "' failed");
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

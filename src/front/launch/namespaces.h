@@ -9,7 +9,7 @@
 #include "launch/run_slot.h"
 #include "sections/loop_section.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 class NetworkNamespaces {
  public:
@@ -42,4 +42,4 @@ class NetworkNamespaces {
   std::vector<std::string> made_;  // namespaces created
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -14,7 +14,7 @@
 
 #include "launch/shell.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 namespace {
 
 void Run(const std::string& command) {
@@ -77,4 +77,4 @@ void JoinRadioTaps(sim::Driver& world, const std::vector<std::pair<std::string, 
   }
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

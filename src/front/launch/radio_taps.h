@@ -11,7 +11,7 @@
 
 #include "sim/driver.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 // Whether this process can make taps and move them into namespaces; if not, `why` says what
 // is missing and how to get it.
@@ -28,4 +28,4 @@ constexpr const char* kRadioSubnet = "10.0.0";  // robot i is kRadioSubnet.(i+1)
 // world's network owns the taps from then on (closed when the world ends).
 void JoinRadioTaps(sim::Driver& world, const std::vector<std::pair<std::string, std::string>>& robot_namespaces);
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -17,7 +17,7 @@
 
 #include "launch/shell.h"
 
-namespace sanet::hil {
+namespace sanet::launch {
 namespace {
 
 namespace fs = std::filesystem;
@@ -141,4 +141,4 @@ int RunSlot::UdpBase(int scenario_base, std::size_t nodes) const {
   return static_cast<int>(base);
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 class RunSlot {
  public:
@@ -47,4 +47,4 @@ class RunSlot {
   int fd_;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -2,8 +2,8 @@
 
 #include <cstdlib>
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 int RunQuietly(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -3,9 +3,9 @@
 
 #include <string>
 
-namespace sanet::hil {
+namespace sanet::launch {
 
 // Runs `command` through the shell with its output discarded; returns its exit status.
 int RunQuietly(const std::string& command);
 
-}  // namespace sanet::hil
+}  // namespace sanet::launch

@@ -14,7 +14,7 @@
 namespace py = pybind11;
 using namespace pybind11::literals;
 
-namespace sanet::python {
+namespace sanet::python_controllers {
 namespace {
 
 // A range scan as Python holds it: numpy copies, valid after the call that read them.
@@ -321,4 +321,4 @@ void Close(const py::object& params) { params.cast<PyParams&>().params = nullptr
 
 py::object ParamErrorType() { return py::module_::import("sanet").attr("ParamError"); }
 
-}  // namespace sanet::python
+}  // namespace sanet::python_controllers

@@ -15,7 +15,7 @@
 #include "sanet/params.h"
 #include "sanet/readings.h"
 
-namespace sanet::python {
+namespace sanet::python_controllers {
 
 // A range scan as the Python classes give it (numpy arrays), None for none.
 pybind11::object ScanOrNone(const std::optional<RangeScan>& scan);
@@ -41,4 +41,4 @@ Bytes BytesOf(const pybind11::object& payload);
 // The Python class ParamError (key, line, message) that controllers raise for bad parameters.
 pybind11::object ParamErrorType();
 
-}  // namespace sanet::python
+}  // namespace sanet::python_controllers

@@ -13,7 +13,7 @@
 
 namespace py = pybind11;
 
-namespace sanet::python {
+namespace sanet::python_controllers {
 namespace {
 
 // A Python object's method, or None when it has none (start, on_message and finish are optional).
@@ -76,7 +76,7 @@ ModuleClass Split(const std::string& text) {
   const auto colon = text.find(':');
   if (colon == std::string::npos || colon == 0 || colon + 1 == text.size() ||
       text.find(':', colon + 1) != std::string::npos)
-    throw agents::RegistryError("python: '" + text + "' must be MODULE:CLASS, e.g. waypoint:Waypoint");
+    throw hosting::RegistryError("python: '" + text + "' must be MODULE:CLASS, e.g. waypoint:Waypoint");
   return {text.substr(0, colon), text.substr(colon + 1)};
 }
 
@@ -86,18 +86,19 @@ std::string Folders(const std::vector<std::string>& path) {
   return text.empty() ? "none" : text;
 }
 
-py::module_ Import(const ModuleClass& name, const agents::ControllerSpec& spec) {
+py::module_ Import(const ModuleClass& name, const hosting::ControllerSpec& spec) {
   try {
     return py::module_::import(name.module.c_str());
   } catch (py::error_already_set& e) {
     if (e.matches(PyExc_ModuleNotFoundError) && e.value().attr("name").cast<std::string>() == name.module)
-      throw agents::RegistryError("no Python module '" + name.module + "' in " + Folders(spec.python_path) +
-                                  " (the scenario's folder, or the current one, and --python-path's) or on PYTHONPATH" +
-                                  (name.module.size() > 3 && name.module.substr(name.module.size() - 3) == ".py"
-                                       ? ": a module is named without .py (" +
-                                             name.module.substr(0, name.module.size() - 3) + ":" + name.cls + ")"
-                                       : ""));
-    throw agents::RegistryError("Python module '" + name.module + "' does not import:\n" + TracebackText(e));
+      throw hosting::RegistryError(
+          "no Python module '" + name.module + "' in " + Folders(spec.python_path) +
+          " (the scenario's folder, or the current one, and --python-path's) or on PYTHONPATH" +
+          (name.module.size() > 3 && name.module.substr(name.module.size() - 3) == ".py"
+               ? ": a module is named without .py (" + name.module.substr(0, name.module.size() - 3) + ":" + name.cls +
+                     ")"
+               : ""));
+    throw hosting::RegistryError("Python module '" + name.module + "' does not import:\n" + TracebackText(e));
   }
 }
 
@@ -107,9 +108,9 @@ py::object ClassOf(const py::module_& module, const ModuleClass& name, const std
   const bool own = file.empty() || file.rfind(stdlib + "/", 0) == 0;  // built in, or the standard library's
   for (const std::string& folder : path)  // a file of the user's that Python's own module hides
     if (const std::string mine = folder + "/" + name.module + ".py"; own && std::filesystem::exists(mine))
-      throw agents::RegistryError("'" + name.module + "' is a module of Python's own (" +
-                                  (file.empty() ? std::string("built in") : file) + "), which " + mine +
-                                  " cannot replace: name your module otherwise");
+      throw hosting::RegistryError("'" + name.module + "' is a module of Python's own (" +
+                                   (file.empty() ? std::string("built in") : file) + "), which " + mine +
+                                   " cannot replace: name your module otherwise");
   if (!py::hasattr(module, name.cls.c_str())) {
     std::vector<std::string> names;
     for (const auto& [key, value] : module.attr("__dict__").cast<py::dict>())
@@ -118,13 +119,13 @@ py::object ClassOf(const py::module_& module, const ModuleClass& name, const std
     std::sort(names.begin(), names.end());
     std::string classes;
     for (const std::string& n : names) classes += (classes.empty() ? "" : ", ") + n;
-    throw agents::RegistryError("Python module '" + name.module + "' (" + file + ") has no class '" + name.cls +
-                                "' (controller classes there: " + (classes.empty() ? "none" : classes) + ")");
+    throw hosting::RegistryError("Python module '" + name.module + "' (" + file + ") has no class '" + name.cls +
+                                 "' (controller classes there: " + (classes.empty() ? "none" : classes) + ")");
   }
   py::object cls = module.attr(name.cls.c_str());
   if (!py::isinstance<py::type>(cls) || !py::hasattr(cls, "control_step"))
-    throw agents::RegistryError("'" + name.module + ":" + name.cls + "' (" + file +
-                                ") is not a controller class: it needs a control_step(self, node) method");
+    throw hosting::RegistryError("'" + name.module + ":" + name.cls + "' (" + file +
+                                 ") is not a controller class: it needs a control_step(self, node) method");
   return cls;
 }
 
@@ -159,7 +160,7 @@ std::unique_ptr<Controller> Create(const py::object& cls, const std::string& nam
 
 }  // namespace
 
-ControllerInfo LoadPythonController(const agents::ControllerSpec& spec) {
+ControllerInfo LoadPythonController(const hosting::ControllerSpec& spec) {
   const ModuleClass name = Split(spec.python);
   EnsureInterpreter();
   py::module_::import("sanet");  // the classes controllers are given (Node, Params, ...)
@@ -169,6 +170,6 @@ ControllerInfo LoadPythonController(const agents::ControllerSpec& spec) {
           [cls, id = spec.python](const Params& params) { return Create(cls, id, params); }};
 }
 
-void InstallPython(agents::Registry& registry) { registry.SetPythonSupport({LoadPythonController, SeedRun}); }
+void InstallPython(hosting::Registry& registry) { registry.SetPythonSupport({LoadPythonController, SeedRun}); }
 
-}  // namespace sanet::python
+}  // namespace sanet::python_controllers

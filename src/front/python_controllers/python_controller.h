@@ -9,12 +9,12 @@
 #include "hosting/controller_registry.h"
 #include "hosting/controller_spec.h"
 
-namespace sanet::python {
+namespace sanet::python_controllers {
 
 // Lets `registry` make Python controllers and seed Python's generators for each run.
-void InstallPython(agents::Registry& registry);
+void InstallPython(hosting::Registry& registry);
 
 // Imports the spec's module and describes its class (name: "module:Class").
-ControllerInfo LoadPythonController(const agents::ControllerSpec& spec);
+ControllerInfo LoadPythonController(const hosting::ControllerSpec& spec);
 
-}  // namespace sanet::python
+}  // namespace sanet::python_controllers

@@ -7,7 +7,7 @@
 
 namespace py = pybind11;
 
-namespace sanet::python {
+namespace sanet::python_controllers {
 namespace {
 
 std::optional<std::uint64_t> g_pending_seed;  // a run's seed given before the interpreter started
@@ -82,4 +82,4 @@ std::string TracebackText(py::error_already_set& error) {
   }
 }
 
-}  // namespace sanet::python
+}  // namespace sanet::python_controllers

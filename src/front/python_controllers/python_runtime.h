@@ -14,7 +14,7 @@ namespace pybind11 {
 class error_already_set;
 }
 
-namespace sanet::python {
+namespace sanet::python_controllers {
 
 // Starts the interpreter once; later calls do nothing.
 void EnsureInterpreter();
@@ -33,4 +33,4 @@ void SeedRun(std::uint64_t seed);
 // ... Type: message", with the traceback's frames restored to the error so it can be raised again.
 std::string TracebackText(pybind11::error_already_set& error);
 
-}  // namespace sanet::python
+}  // namespace sanet::python_controllers

@@ -7,7 +7,7 @@
 namespace py = pybind11;
 using namespace pybind11::literals;
 
-namespace sanet::python {
+namespace sanet::python_controllers {
 namespace {
 
 template <typename T>
@@ -88,4 +88,4 @@ py::object SensorToPython(const std::optional<SensorReading>& reading) {
       *reading);
 }
 
-}  // namespace sanet::python
+}  // namespace sanet::python_controllers

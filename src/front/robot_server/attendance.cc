@@ -5,7 +5,7 @@
 
 #include "core/seconds_text.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 void Attendance::Joined(NodeId robot, double now) {
   if (Expected(robot)) stints_[robot].push_back({now, -1, ""});
 }
@@ -63,4 +63,4 @@ nlohmann::ordered_json Attendance::Summary() const {
   return robots;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

@@ -11,7 +11,7 @@
 
 #include "sanet/message.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 
 class Attendance {
  public:
@@ -45,4 +45,4 @@ class Attendance {
   std::vector<std::vector<Stint>> stints_;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

@@ -6,7 +6,7 @@
 #include "robot_server/sim_server.h"
 #include "wire/protocol.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 namespace {
 
 const char* Truth(bool value) { return value ? "True" : "False"; }
@@ -29,16 +29,16 @@ void SimServer::AnswerNetworkQueries(double now) {
 // {Neighbour n}...: the robot's ns-3 node's view, when a tap joins its programs to the simulated
 // radio. Without one, its traffic to other robots goes over real networks: NET {Time t}
 // {Source Kernel}, and the agent reads its own host's tables.
-ProtocolMessage SimServer::NetworkLine(NodeId robot, double now) const {
-  ProtocolMessage line{"NET"};
-  line.Add("Time", FormatNumber(now));
+wire::ProtocolMessage SimServer::NetworkLine(NodeId robot, double now) const {
+  wire::ProtocolMessage line{"NET"};
+  line.Add("Time", wire::FormatNumber(now));
   if (!driver_.HasTap(robot)) return line.Add("Source", "Kernel");
   const NetworkView& view = driver_.NetworkOf(robot);
   line.Add("Source", "Simulated").Add("Protocol", view.Protocol());
   for (const RouteEntry& r : view.RoutingTable())
     line.Add("Route", driver_.NameOf(r.destination) + " Next " + driver_.NameOf(r.next_hop) + " Hops " +
                           std::to_string(r.hops) + " Valid " + Truth(r.valid) + " Expires " +
-                          FormatNumber(r.expires_in));
+                          wire::FormatNumber(r.expires_in));
   for (NodeId n : view.Neighbours()) line.Add("Neighbour", driver_.NameOf(n));
   return line;
 }
@@ -46,7 +46,7 @@ ProtocolMessage SimServer::NetworkLine(NodeId robot, double now) const {
 // INVALIDATEROUTE {To n}: answered at once with INVALIDATED {To n} {Done True|False} (False where
 // the protocol offers no invalidation). REQUESTROUTE {To n}: a route discovery from the robot's
 // node; no answer.
-void SimServer::ChangeRoute(Client& c, const ProtocolMessage& m) {
+void SimServer::ChangeRoute(Client& c, const wire::ProtocolMessage& m) {
   const std::string* to = m.Get("To");
   const auto target = to ? driver_.Lookup(*to) : std::nullopt;
   if (!target)
@@ -54,8 +54,8 @@ void SimServer::ChangeRoute(Client& c, const ProtocolMessage& m) {
   if (*target == *c.robot) return Error(c, m.type + " {To " + *to + "}: that is this robot");
   NetworkView& view = NodeOf(c).Network();
   if (m.type == "REQUESTROUTE") return view.RequestRoute(*target);
-  ProtocolMessage reply{"INVALIDATED"};
+  wire::ProtocolMessage reply{"INVALIDATED"};
   Send(c, reply.Add("To", *to).Add("Done", Truth(view.InvalidateRoute(*target))));
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

@@ -11,7 +11,7 @@
 #include "wire/message_lines.h"
 #include "wire/plugin_identity.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 namespace {
 
 constexpr std::size_t kScenarioPart = 32768;  // bytes of YAML per SCENARIO line (twice that in hex)
@@ -33,13 +33,13 @@ void SimServer::Refuse(Client& c, const std::string& why) {
 
 // SANET {Protocol n} {Version v} [{Fingerprint f}]: an agent says which sanet it is (and which
 // scenario it holds); the server answers with its own, or refuses naming both.
-void SimServer::Hello(Client& c, const ProtocolMessage& m) {
+void SimServer::Hello(Client& c, const wire::ProtocolMessage& m) {
   const auto protocol = m.Count("Protocol", 1000000);
   const std::string* version = m.Get("Version");
   const std::string theirs = "protocol " + (protocol ? std::to_string(*protocol) : std::string("?")) + " (sanet " +
                              (version ? *version : std::string("?")) + ")";
-  const std::string mine = "protocol " + std::to_string(kSanetProtocol) + " (sanet " + SanetVersion() + ")";
-  if (!protocol || *protocol != static_cast<std::uint64_t>(kSanetProtocol))
+  const std::string mine = "protocol " + std::to_string(wire::kSanetProtocol) + " (sanet " + SanetVersion() + ")";
+  if (!protocol || *protocol != static_cast<std::uint64_t>(wire::kSanetProtocol))
     return Refuse(c, "refused: this agent speaks sanet's " + theirs + ", the server " + mine +
                          "; run the same sanet on both computers");
   const std::string* fingerprint = m.Get("Fingerprint");
@@ -48,8 +48,8 @@ void SimServer::Hello(Client& c, const ProtocolMessage& m) {
                          settings_.scenario_fingerprint +
                          "; give the agent the server's scenario, or leave out --scenario to fetch it");
   c.sanet = true;
-  ProtocolMessage reply{"SANET"};
-  reply.Add("Protocol", std::to_string(kSanetProtocol)).Add("Version", SanetVersion());
+  wire::ProtocolMessage reply{"SANET"};
+  reply.Add("Protocol", std::to_string(wire::kSanetProtocol)).Add("Version", SanetVersion());
   reply.Add("Fingerprint", settings_.scenario_fingerprint);
   reply.Add("TimePort", std::to_string(time_service_ ? time_service_->port() : 0));
   Send(c, reply);
@@ -57,31 +57,31 @@ void SimServer::Hello(Client& c, const ProtocolMessage& m) {
 
 // GETSCENARIO {Part i}: the effective scenario in parts, so that no line outgrows what a client
 // must buffer: SCENARIO {Part i} {Parts n} {Fingerprint f} {Yaml hex}.
-void SimServer::SendScenario(Client& c, const ProtocolMessage& m) {
+void SimServer::SendScenario(Client& c, const wire::ProtocolMessage& m) {
   const std::string& yaml = settings_.scenario_yaml;
   const std::size_t parts = std::max<std::size_t>(1, (yaml.size() + kScenarioPart - 1) / kScenarioPart);
   const auto part = m.Get("Part") ? m.Count("Part", parts - 1) : std::optional<std::uint64_t>(0);
   if (!part) return Error(c, "GETSCENARIO {Part i}: i from 0 to " + std::to_string(parts - 1));
   const std::string text = yaml.substr(*part * kScenarioPart, kScenarioPart);
-  ProtocolMessage reply{"SCENARIO"};
+  wire::ProtocolMessage reply{"SCENARIO"};
   reply.Add("Part", std::to_string(*part)).Add("Parts", std::to_string(parts));
-  reply.Add("Fingerprint", settings_.scenario_fingerprint).Add("Yaml", ToHex(Bytes(text.begin(), text.end())));
+  reply.Add("Fingerprint", settings_.scenario_fingerprint).Add("Yaml", wire::ToHex(Bytes(text.begin(), text.end())));
   Send(c, reply);
 }
 
 // GETPLUGIN {Robot r}: which controller code the robot runs here.
-void SimServer::SendPlugin(Client& c, const ProtocolMessage& m) {
+void SimServer::SendPlugin(Client& c, const wire::ProtocolMessage& m) {
   const std::string* robot = m.Get("Robot");
   const auto id = robot ? driver_.Lookup(*robot) : std::nullopt;
   if (!id || !driver_.Spec(*id).controller)
     return Error(c, "GETPLUGIN {Robot r}: r must be a node with a controller in this scenario");
-  PluginIdentity plugin;
+  wire::PluginIdentity plugin;
   try {
-    plugin = IdentifyPlugin(*driver_.Spec(*id).controller);
+    plugin = wire::IdentifyPlugin(*driver_.Spec(*id).controller);
   } catch (const std::runtime_error& e) {
     return Error(c, e.what());
   }
-  ProtocolMessage reply{"PLUGIN"};
+  wire::ProtocolMessage reply{"PLUGIN"};
   reply.Add("Robot", *robot).Add("ControllerApi", std::to_string(plugin.controller_api));
   if (!plugin.library.empty()) reply.Add("Library", plugin.library).Add("Sha256", plugin.sha256);
   if (!plugin.python.empty()) reply.Add("Python", plugin.python);
@@ -90,7 +90,7 @@ void SimServer::SendPlugin(Client& c, const ProtocolMessage& m) {
 
 // PEER {Address a} {Port p}: where this robot's agent listens for the other agents. Every agent
 // that said SANET hears it (PEER {Name n} {Address a} {Port p}), and the newcomer hears the rest.
-void SimServer::TakePeer(Client& c, const ProtocolMessage& m) {
+void SimServer::TakePeer(Client& c, const wire::ProtocolMessage& m) {
   const std::string* address = m.Get("Address");
   const auto port = m.Count("Port", 65535);
   if (!address || !IsIpv4(*address) || !port || *port == 0)
@@ -98,7 +98,7 @@ void SimServer::TakePeer(Client& c, const ProtocolMessage& m) {
   peers_.resize(driver_.NodeCount());
   peers_[*c.robot] = Peer{*address, static_cast<std::uint16_t>(*port)};
   const auto line = [&](NodeId id) {
-    return ProtocolMessage{"PEER"}
+    return wire::ProtocolMessage{"PEER"}
         .Add("Name", driver_.NameOf(id))
         .Add("Address", peers_[id]->address)
         .Add("Port", std::to_string(peers_[id]->port));
@@ -111,7 +111,7 @@ void SimServer::TakePeer(Client& c, const ProtocolMessage& m) {
 }
 
 // CLOCK {Offset o} {Error e} {RoundTrip r} {Drift d}: an agent's clock estimate after a burst.
-void SimServer::TakeClock(Client& c, const ProtocolMessage& m) {
+void SimServer::TakeClock(Client& c, const wire::ProtocolMessage& m) {
   const auto offset = m.Number("Offset"), error = m.Number("Error"), trip = m.Number("RoundTrip");
   const auto drift = m.Number("Drift");
   if (!offset || !error || !trip || !drift)
@@ -120,9 +120,9 @@ void SimServer::TakeClock(Client& c, const ProtocolMessage& m) {
   last_clock_row_.resize(driver_.NodeCount(), -1e300);
   if (driver_.Now() - last_clock_row_[*c.robot] < kLeastClockPeriod) return;
   last_clock_row_[*c.robot] = driver_.Now();
-  clock_rows_.push_back(FormatPrecise(driver_.Now()) + "," + trace::CsvField(driver_.NameOf(*c.robot)) + "," +
-                        FormatPrecise(*offset) + "," + FormatPrecise(*error) + "," + FormatPrecise(*trip) + "," +
-                        FormatPrecise(*drift * 1e6));
+  clock_rows_.push_back(wire::FormatPrecise(driver_.Now()) + "," + trace::CsvField(driver_.NameOf(*c.robot)) + "," +
+                        wire::FormatPrecise(*offset) + "," + wire::FormatPrecise(*error) + "," +
+                        wire::FormatPrecise(*trip) + "," + wire::FormatPrecise(*drift * 1e6));
 }
 
 nlohmann::ordered_json SimServer::ClockSummary() const {
@@ -133,4 +133,4 @@ nlohmann::ordered_json SimServer::ClockSummary() const {
   return j;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

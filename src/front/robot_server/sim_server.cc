@@ -23,7 +23,7 @@
 #include "wire/sensor_lines.h"
 #include "wire/sockets.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 std::size_t DefaultMaxClients(const sim::RunSpec& spec) {
   const auto robots = std::count_if(spec.nodes.begin(), spec.nodes.end(),
                                     [](const sim::NodeSpec& n) { return robots::HasDrive(n.model); });
@@ -45,24 +45,26 @@ std::vector<std::string> AgentRobots(const sim::Driver& driver) {
 SimServer::SimServer(sim::Driver& driver, ServerSettings settings)
     : driver_(driver), settings_(std::move(settings)), attendance_(AgentRobots(driver)) {
   driver_.SetRemoteInbox([this](NodeId to, const Message& m) { return Forward(to, m); });
-  LineServer::Events events;
-  events.connected = [this](ConnectionId id) { Greet(id); };
-  events.line = [this](ConnectionId id, const std::string& line) {
+  wire::LineServer::Events events;
+  events.connected = [this](wire::ConnectionId id) { Greet(id); };
+  events.line = [this](wire::ConnectionId id, const std::string& line) {
     Client& c = clients_.at(id);
     std::string error;
-    if (auto m = ParseLine(line, &error))
+    if (auto m = wire::ParseLine(line, &error))
       Handle(c, *m);
     else
       Error(c, "malformed line: " + error);
   };
-  events.gone = [this](ConnectionId id, const std::string& why) { Gone(id, why); };
+  events.gone = [this](wire::ConnectionId id, const std::string& why) { Gone(id, why); };
   events.line_too_long = [](std::size_t max_line) {
-    return FormatLine(
-        ProtocolMessage{"ERR"}.Add("Message", "line longer than " + std::to_string(max_line) + " bytes: closing"));
+    return wire::FormatLine(wire::ProtocolMessage{"ERR"}.Add(
+        "Message", "line longer than " + std::to_string(max_line) + " bytes: closing"));
   };
-  events.refusal_line = [](const std::string& why) { return FormatLine(ProtocolMessage{"ERR"}.Add("Message", why)); };
+  events.refusal_line = [](const std::string& why) {
+    return wire::FormatLine(wire::ProtocolMessage{"ERR"}.Add("Message", why));
+  };
   events.silence_line = events.refusal_line;  // ERR {Message connection closed: silent for 3 s after connecting}
-  LineServerSettings lines;
+  wire::LineServerSettings lines;
   lines.bind = settings_.bind;
   lines.port = settings_.port;
   lines.max_clients = settings_.max_clients;
@@ -73,7 +75,7 @@ SimServer::SimServer(sim::Driver& driver, ServerSettings settings)
   lines.lines_per_turn = settings_.lines_per_turn;
   lines.bytes_per_turn = settings_.bytes_per_turn;
   lines.poll_budget = settings_.poll_budget;
-  lines_ = std::make_unique<LineServer>(lines, std::move(events));
+  lines_ = std::make_unique<wire::LineServer>(lines, std::move(events));
 }
 
 SimServer::~SimServer() { driver_.SetRemoteInbox(nullptr); }
@@ -90,33 +92,34 @@ void SimServer::Start() {
 // FINISHED, it goes, or finish_wait s pass; the results are written after.
 void SimServer::FinishAgents() {
   run_over_ = true;
-  std::vector<ConnectionId> told;
+  std::vector<wire::ConnectionId> told;
   for (auto& [id, c] : clients_)
     if (c.open && c.robot && c.sanet) {
-      Send(c, ProtocolMessage{"END"}.Add("Time", FormatNumber(driver_.Now())));
+      Send(c, wire::ProtocolMessage{"END"}.Add("Time", wire::FormatNumber(driver_.Now())));
       told.push_back(id);
     }
   const auto finishing = [&] {
-    return std::any_of(told.begin(), told.end(), [&](ConnectionId id) {
+    return std::any_of(told.begin(), told.end(), [&](wire::ConnectionId id) {
       const auto it = clients_.find(id);
       return it != clients_.end() && it->second.open && !it->second.finished;
     });
   };
-  const double give_up = MonotonicSeconds() + settings_.finish_wait;
-  while (finishing() && MonotonicSeconds() < give_up) {
+  const double give_up = wire::MonotonicSeconds() + settings_.finish_wait;
+  while (finishing() && wire::MonotonicSeconds() < give_up) {
     lines_->Write();
     lines_->Read();
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  for (ConnectionId id : told)
+  for (wire::ConnectionId id : told)
     if (const auto it = clients_.find(id); it != clients_.end() && it->second.open && !it->second.finished)
-      driver_.Log(*it->second.robot, "its client did not say FINISHED within " + FormatNumber(settings_.finish_wait) +
+      driver_.Log(*it->second.robot, "its client did not say FINISHED within " +
+                                         wire::FormatNumber(settings_.finish_wait) +
                                          " s of the run's end: what its controller's Finish logged later is lost");
 }
 
 // RADIO {Sleep true|false} (sanet extension): the robot's radio sleeps or wakes, as
 // Node::SetRadioSleep; a refusal is an ERR line and the node's log says why.
-void SimServer::SetRadioSleep(Client& c, const ProtocolMessage& m) {
+void SimServer::SetRadioSleep(Client& c, const wire::ProtocolMessage& m) {
   const std::string* sleep = m.Get("Sleep");
   if (!sleep || (*sleep != "true" && *sleep != "false")) return Error(c, "RADIO needs {Sleep true} or {Sleep false}");
   if (!NodeOf(c).SetRadioSleep(*sleep == "true"))
@@ -125,7 +128,7 @@ void SimServer::SetRadioSleep(Client& c, const ProtocolMessage& m) {
 
 // The lag of every physics step behind the wall clock.
 void SimServer::AfterStep(const sim::WorldSnapshot& snapshot) {
-  lags_.push_back(std::max(0.0, (MonotonicSeconds() - wall_start_) - snapshot.time()));
+  lags_.push_back(std::max(0.0, (wire::MonotonicSeconds() - wall_start_) - snapshot.time()));
 }
 
 nlohmann::ordered_json SimServer::LagSummary() const {
@@ -145,9 +148,9 @@ void SimServer::Poll() {
   const double now = driver_.Now();
   // The first poll runs as the real-time scheduler starts: simulated time 0 is now.
   if (wall_start_ < 0) {
-    wall_start_ = MonotonicSeconds() - now;
+    wall_start_ = wire::MonotonicSeconds() - now;
     // The time service's port: the robot protocol's number when UDP has it free.
-    time_service_ = std::make_unique<TimeService>(settings_.bind, lines_->port(), wall_start_);
+    time_service_ = std::make_unique<wire::TimeService>(settings_.bind, lines_->port(), wall_start_);
   }
   lines_->Read();
   AnswerNetworkQueries(now);
@@ -157,13 +160,13 @@ void SimServer::Poll() {
   for (auto it = clients_.begin(); it != clients_.end();) it = it->second.open ? std::next(it) : clients_.erase(it);
 }
 
-void SimServer::Greet(ConnectionId id) {
+void SimServer::Greet(wire::ConnectionId id) {
   Client& c = clients_.emplace(id, Client(id, lines_->Peer(id))).first->second;
-  ProtocolMessage hello{"NFO"};
+  wire::ProtocolMessage hello{"NFO"};
   hello.Add("Gametype", "BotDeathMatch").Add("Level", driver_.spec().name).Add("TimeLimit", driver_.spec().duration);
   // sanet extension: the machine's monotonic clock (s) at simulated time 0, so that processes
   // on this machine share the simulation's time to the microsecond.
-  hello.Add("ClockOrigin", FormatPrecise(wall_start_));
+  hello.Add("ClockOrigin", wire::FormatPrecise(wall_start_));
   Send(c, hello);
 }
 
@@ -179,7 +182,7 @@ bool TakenAfterEnd(const std::string& type) {
 
 }  // namespace
 
-void SimServer::Handle(Client& c, const ProtocolMessage& m) {
+void SimServer::Handle(Client& c, const wire::ProtocolMessage& m) {
   if (run_over_ && !TakenAfterEnd(m.type))
     return Error(c, "the run is over: only LOG, METRIC, TRANSITION, STATS, RECV and FINISHED are taken now");
   if (m.type == "INIT") return Init(c, m);
@@ -187,15 +190,15 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "GETSCENARIO") return SendScenario(c, m);
   if (m.type == "GETPLUGIN") return SendPlugin(c, m);
   if (m.type == "GETSTARTPOSES") {
-    ProtocolMessage reply{"NFO"};
+    wire::ProtocolMessage reply{"NFO"};
     std::string poses;
     int count = 0;
     for (NodeId id = 0; id < driver_.NodeCount(); ++id) {
       const sim::NodeSpec& node = driver_.Spec(id);
       if (!robots::HasDrive(node.model) || driver_.IsSpawned(id)) continue;
-      const auto p = UsarsimPose(node.pose);
-      poses += (count++ ? " " : "") + driver_.NameOf(id) + " " + FormatNumber(p[0]) + "," + FormatNumber(p[1]) +
-               ",0.0000 0.0000,0.0000," + FormatNumber(p[2]);
+      const auto p = wire::UsarsimPose(node.pose);
+      poses += (count++ ? " " : "") + driver_.NameOf(id) + " " + wire::FormatNumber(p[0]) + "," +
+               wire::FormatNumber(p[1]) + ",0.0000 0.0000,0.0000," + wire::FormatNumber(p[2]);
     }
     reply.Add("StartPoses", std::to_string(count)).Add(poses.empty() ? "None" : poses, "");
     return Send(c, reply);
@@ -216,11 +219,11 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
   if (m.type == "RECV") {
     const std::string* from = m.Get("From");
     std::string error;
-    const auto report = ParseRecvLine(m, from ? driver_.Lookup(*from) : std::nullopt, id, &error);
+    const auto report = wire::ParseRecvLine(m, from ? driver_.Lookup(*from) : std::nullopt, id, &error);
     return report ? driver_.RecordDelivery(id, report->message) : Error(c, error);
   }
   if (m.type == "GETCONF") {
-    ProtocolMessage reply{"CONF"};
+    wire::ProtocolMessage reply{"CONF"};
     reply.Add("Type", "GroundVehicle")
         .Add("Name", driver_.NameOf(id))
         .Add("SteeringType", spec.model().UsarsimSteering())
@@ -229,7 +232,7 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
     return Send(c, reply);
   }
   if (m.type == "GETGEO") {
-    ProtocolMessage reply{"GEO"};
+    wire::ProtocolMessage reply{"GEO"};
     reply.Add("Type", "GroundVehicle")
         .Add("Name", driver_.NameOf(id))
         .Add("WheelRadius", spec.model().WheelRadius(spec))
@@ -241,7 +244,7 @@ void SimServer::Handle(Client& c, const ProtocolMessage& m) {
 
 // INIT {Name r} claims a robot that is there (the scenario's, or one spawned before); with a
 // {ClassName} and a name nobody has, it spawns a new robot, as in USARSim.
-void SimServer::Init(Client& c, const ProtocolMessage& m) {
+void SimServer::Init(Client& c, const wire::ProtocolMessage& m) {
   if (c.robot) return Error(c, "INIT refused: this connection already drives " + driver_.NameOf(*c.robot));
   const std::string* name = m.Get("Name");
   const std::string* usarsim_class = m.Get("ClassName");
@@ -275,13 +278,14 @@ void SimServer::Claim(Client& c, NodeId id, const std::string* usarsim_class) {
   lines_->Register(c.id);  // a client that drives a robot keeps its slot when the cap is full
   c.next_sensors = c.next_status = driver_.Now();
   // sanet extension: the run's key for the datagrams agents send each other (wire/agent_datagram.h).
-  Send(c, ProtocolMessage{"KEY"}.Add("Datagrams", datagram_key_.Hex()));
+  Send(c, wire::ProtocolMessage{"KEY"}.Add("Datagrams", datagram_key_.Hex()));
   driver_.Log(id, "client " + c.peer + " drives this robot");
 }
 
 // {Location} and {Rotation} are in USARSim's frame (y right, yaw clockwise); the robot stands
 // on the ground, whatever z says.
-void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const ProtocolMessage& m) {
+void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::string& name,
+                      const wire::ProtocolMessage& m) {
   if (!m.Get("Location"))
     return Error(
         c, "INIT refused: {ClassName " + usarsim_class + "} needs {Location x,y,z}: where the new robot stands (m)");
@@ -301,7 +305,7 @@ void SimServer::Spawn(Client& c, const std::string& usarsim_class, const std::st
 
 // Through the robot's simulated node, as its controller would drive it: a switched-off robot
 // does not move, whoever asks.
-void SimServer::Drive(Client& c, const ProtocolMessage& m) {
+void SimServer::Drive(Client& c, const wire::ProtocolMessage& m) {
   Node& node = NodeOf(c);
   if (driver_.SwitchedOff(*c.robot)) {
     if (!c.told_off) Error(c, "robot " + node.Name() + " is switched off: DRIVE ignored");
@@ -340,12 +344,12 @@ void SimServer::Drive(Client& c, const ProtocolMessage& m) {
 void SimServer::SendSensors(Client& c, double now) {
   if (now + 1e-9 >= c.next_sensors) {
     c.next_sensors = now + settings_.sensor_period;
-    for (const ProtocolMessage& line : SenLines(*c.robot, driver_.TakeReadings(*c.robot, Owner(c)), c.sanet))
+    for (const wire::ProtocolMessage& line : SenLines(*c.robot, driver_.TakeReadings(*c.robot, Owner(c)), c.sanet))
       Send(c, line);
   }
   if (now + 1e-9 >= c.next_status) {
     c.next_status = now + settings_.status_period;
-    ProtocolMessage status{"STA"};
+    wire::ProtocolMessage status{"STA"};
     status.Add("Type", "GroundVehicle")
         .Add("Time", now)
         .Add("FrontSteer", 0.0)
@@ -358,22 +362,22 @@ void SimServer::SendSensors(Client& c, double now) {
   }
 }
 
-std::vector<ProtocolMessage> SimServer::SenLines(NodeId robot, const sim::SensorReadings& r, bool sanet) const {
-  const LineContext context{r.time, r.height, [this](NodeId node) { return driver_.NameOf(node); },
-                            [this](const std::string& name) { return driver_.Lookup(name); }};
+std::vector<wire::ProtocolMessage> SimServer::SenLines(NodeId robot, const sim::SensorReadings& r, bool sanet) const {
+  const wire::LineContext context{r.time, r.height, [this](NodeId node) { return driver_.NameOf(node); },
+                                  [this](const std::string& name) { return driver_.Lookup(name); }};
   const robots::SensorConfigs& sensors = driver_.Spec(robot).model.sensors;
-  std::vector<ProtocolMessage> lines;
+  std::vector<wire::ProtocolMessage> lines;
   for (const auto& [instance, reading] : r.by_instance) {
     const auto config = sensors.find(instance);
-    const SensorLines* kind = config == sensors.end() ? nullptr : LinesOf(config->second.kind);
+    const wire::SensorLines* kind = config == sensors.end() ? nullptr : wire::LinesOf(config->second.kind);
     if (!kind || (kind->Extension() && !sanet)) continue;
-    for (ProtocolMessage& line : kind->Write(instance, reading, context)) lines.push_back(std::move(line));
+    for (wire::ProtocolMessage& line : kind->Write(instance, reading, context)) lines.push_back(std::move(line));
   }
   return lines;
 }
 
-void SimServer::Send(Client& c, const ProtocolMessage& m) {
-  if (c.open) lines_->Send(c.id, FormatLine(m));
+void SimServer::Send(Client& c, const wire::ProtocolMessage& m) {
+  if (c.open) lines_->Send(c.id, wire::FormatLine(m));
 }
 
 // An ERR line carries no braces, whatever it quotes (a client's own text, a field's name):
@@ -396,7 +400,7 @@ std::string WithoutBraces(const std::string& text) {
 }
 
 void SimServer::Error(Client& c, const std::string& why) {
-  ProtocolMessage error{"ERR"};
+  wire::ProtocolMessage error{"ERR"};
   error.Add("Message", WithoutBraces(why));
   Send(c, error);
 }
@@ -404,7 +408,7 @@ void SimServer::Error(Client& c, const std::string& why) {
 void SimServer::Drop(Client& c, const std::string& why) { lines_->Drop(c.id, why); }
 
 // The line server ended the connection (or the client did): its robot stops and is free.
-void SimServer::Gone(ConnectionId id, const std::string& why) {
+void SimServer::Gone(wire::ConnectionId id, const std::string& why) {
   Client& c = clients_.at(id);
   c.open = false;
   if (!c.robot) return;
@@ -419,13 +423,13 @@ void SimServer::Gone(ConnectionId id, const std::string& why) {
 
 // SEND: the robot's message leaves from its own ns-3 node, like any node's. Values are
 // case-sensitive, as node names are.
-void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
+void SimServer::SendMessage(Client& c, const wire::ProtocolMessage& m) {
   const std::string* delivery = m.Get("Delivery");
   const std::string* data = m.Get("Data");
   const auto kind = ParseDelivery(delivery ? *delivery : "unicast");
   if (!kind) return Error(c, "SEND {Delivery " + *delivery + "}: expected unicast, broadcast or flood");
   if (!data) return Error(c, "SEND needs {Data hex bytes}");
-  const auto payload = FromHex(*data);
+  const auto payload = wire::FromHex(*data);
   if (!payload) return Error(c, "SEND {Data ...}: expected hex bytes (pairs of 0-9, a-f), not '" + *data + "'");
   Node& node = NodeOf(c);
   if (driver_.SwitchedOff(*c.robot)) return Error(c, "robot " + node.Name() + " is switched off: SEND ignored");
@@ -440,7 +444,7 @@ void SimServer::SendMessage(Client& c, const ProtocolMessage& m) {
 }
 
 // LOG, TRANSITION and METRIC: the controller's reports, as its node would make them in process.
-void SimServer::Report(Client& c, const ProtocolMessage& m) {
+void SimServer::Report(Client& c, const wire::ProtocolMessage& m) {
   Node& node = NodeOf(c);
   const std::string* text = m.Get("Text");
   if (m.type == "LOG") return text && !text->empty() ? node.Log(*text) : Error(c, "LOG needs {Text ...}");
@@ -482,7 +486,7 @@ constexpr StatsKey kStatsKeys[] = {{"Steps", "steps", true},
 }  // namespace
 
 // STATS (sanet extension): an agent's steps, messages and packets so far; the last one counts.
-void SimServer::TakeStats(Client& c, const ProtocolMessage& m) {
+void SimServer::TakeStats(Client& c, const wire::ProtocolMessage& m) {
   nlohmann::ordered_json stats = nlohmann::ordered_json::object();
   for (const StatsKey& k : kStatsKeys) {
     constexpr std::uint64_t kMostCount = std::uint64_t{1} << 53;  // whole numbers a double holds exactly
@@ -533,8 +537,8 @@ sim::InboxResult SimServer::Forward(NodeId to, const Message& m) {
   if (driver_.drivers() == sim::RobotDrivers::kFrontEnds && sim::RunsAsAgent(driver_.Spec(m.from)))
     return sim::InboxResult::kIgnored;
   Client* c = ClientOf(to);
-  if (c) Send(*c, MsgLine(m, driver_.NameOf(m.from)));
+  if (c) Send(*c, wire::MsgLine(m, driver_.NameOf(m.from)));
   return c && c->open ? sim::InboxResult::kDelivered : sim::InboxResult::kLost;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

@@ -28,7 +28,7 @@
 #include "wire/sockets.h"
 #include "wire/time_service.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 
 struct ServerSettings {
   std::string bind = "127.0.0.1";      // loopback unless told otherwise
@@ -83,8 +83,8 @@ class SimServer {
   Subscription step_ended_;  // AfterStep, on the run's bus
   // What the server knows of a connection (LineServer keeps its socket and buffers).
   struct Client {
-    Client(ConnectionId connection, std::string address) : id(connection), peer(std::move(address)) {}
-    ConnectionId id;
+    Client(wire::ConnectionId connection, std::string address) : id(connection), peer(std::move(address)) {}
+    wire::ConnectionId id;
     std::string peer;  // host:port
     bool open = true;  // until the line server says it is gone
     std::optional<NodeId> robot;
@@ -98,28 +98,28 @@ class SimServer {
   };
   void Poll();
   void FinishAgents();
-  void SetRadioSleep(Client& c, const ProtocolMessage& m);
-  void Greet(ConnectionId id);
-  void Gone(ConnectionId id, const std::string& why);
-  void Handle(Client& c, const ProtocolMessage& m);
-  void Init(Client& c, const ProtocolMessage& m);
+  void SetRadioSleep(Client& c, const wire::ProtocolMessage& m);
+  void Greet(wire::ConnectionId id);
+  void Gone(wire::ConnectionId id, const std::string& why);
+  void Handle(Client& c, const wire::ProtocolMessage& m);
+  void Init(Client& c, const wire::ProtocolMessage& m);
   void Claim(Client& c, NodeId robot, const std::string* usarsim_class);
-  void Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const ProtocolMessage& m);
-  void Drive(Client& c, const ProtocolMessage& m);
-  void SendMessage(Client& c, const ProtocolMessage& m);
-  void Report(Client& c, const ProtocolMessage& m);
-  void TakeStats(Client& c, const ProtocolMessage& m);
+  void Spawn(Client& c, const std::string& usarsim_class, const std::string& name, const wire::ProtocolMessage& m);
+  void Drive(Client& c, const wire::ProtocolMessage& m);
+  void SendMessage(Client& c, const wire::ProtocolMessage& m);
+  void Report(Client& c, const wire::ProtocolMessage& m);
+  void TakeStats(Client& c, const wire::ProtocolMessage& m);
   // sanet's extensions for agents (robot_server/server_extensions.cc).
-  void Hello(Client& c, const ProtocolMessage& m);
-  void SendScenario(Client& c, const ProtocolMessage& m);
-  void SendPlugin(Client& c, const ProtocolMessage& m);
-  void TakePeer(Client& c, const ProtocolMessage& m);
-  void TakeClock(Client& c, const ProtocolMessage& m);
+  void Hello(Client& c, const wire::ProtocolMessage& m);
+  void SendScenario(Client& c, const wire::ProtocolMessage& m);
+  void SendPlugin(Client& c, const wire::ProtocolMessage& m);
+  void TakePeer(Client& c, const wire::ProtocolMessage& m);
+  void TakeClock(Client& c, const wire::ProtocolMessage& m);
   // The routing view in the loop (robot_server/network_lines.cc).
   void AskNetwork(Client& c);
   void AnswerNetworkQueries(double now);
-  ProtocolMessage NetworkLine(NodeId robot, double now) const;
-  void ChangeRoute(Client& c, const ProtocolMessage& m);
+  wire::ProtocolMessage NetworkLine(NodeId robot, double now) const;
+  void ChangeRoute(Client& c, const wire::ProtocolMessage& m);
   void Refuse(Client& c, const std::string& why);
   sim::InboxResult Forward(NodeId to, const Message& message);
   Client* ClientOf(NodeId robot);
@@ -128,21 +128,21 @@ class SimServer {
   void SendSensors(Client& c, double now);
   // `sanet`: the client said SANET: it understands sanet's extension lines (SensorLines::Extension).
   // The SEN lines of a robot's readings, each instance's by its kind (wire/sensor_lines.h).
-  std::vector<ProtocolMessage> SenLines(NodeId robot, const sim::SensorReadings& readings, bool sanet) const;
-  void Send(Client& c, const ProtocolMessage& m);
+  std::vector<wire::ProtocolMessage> SenLines(NodeId robot, const sim::SensorReadings& readings, bool sanet) const;
+  void Send(Client& c, const wire::ProtocolMessage& m);
   void Error(Client& c, const std::string& why);
   void Drop(Client& c, const std::string& why);
 
   sim::Driver& driver_;
   ServerSettings settings_;
-  std::map<ConnectionId, Client> clients_;
+  std::map<wire::ConnectionId, Client> clients_;
   bool run_over_ = false;  // END was sent: clients that go now finished, they did not drop out
-  std::unique_ptr<LineServer> lines_;
+  std::unique_ptr<wire::LineServer> lines_;
   Attendance attendance_;
-  const DatagramKey datagram_key_ = DatagramKey::Random();  // new for every run
-  std::vector<double> lags_;                                // s, per physics step
+  const wire::DatagramKey datagram_key_ = wire::DatagramKey::Random();  // new for every run
+  std::vector<double> lags_;                                            // s, per physics step
   nlohmann::ordered_json agent_stats_ = nlohmann::ordered_json::object();
-  std::unique_ptr<TimeService> time_service_;  // from the first poll, when the clock's origin is known
+  std::unique_ptr<wire::TimeService> time_service_;  // from the first poll, when the clock's origin is known
   struct Peer {
     std::string address;
     std::uint16_t port;
@@ -153,4 +153,4 @@ class SimServer {
   double wall_start_ = -1;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

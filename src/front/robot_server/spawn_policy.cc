@@ -7,7 +7,7 @@
 
 #include "core/metres.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 namespace {
 
 using sections::SpawnClass;
@@ -94,4 +94,4 @@ SpawnPlan PlanSpawn(const sim::Driver& world, const std::optional<SpawnSpec>& sp
   return {node, cls->usarsim_class, ""};
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

@@ -9,7 +9,7 @@
 #include "sections/spawn_section.h"
 #include "sim/driver.h"
 
-namespace sanet::hil {
+namespace sanet::robot_server {
 
 struct SpawnRequest {
   std::string usarsim_class;  // e.g. USARBot.P2DX
@@ -28,4 +28,4 @@ struct SpawnPlan {
 SpawnPlan PlanSpawn(const sim::Driver& world, const std::optional<sections::SpawnSpec>& spawn,
                     const SpawnRequest& request);
 
-}  // namespace sanet::hil
+}  // namespace sanet::robot_server

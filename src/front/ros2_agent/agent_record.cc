@@ -7,7 +7,7 @@
 #include "trace/earlier_run.h"
 #include "trace/result_headers.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 namespace {
 
 // Refuses another kind of results first (trace/earlier_run.h), then clears an earlier agent's.
@@ -71,4 +71,4 @@ void AgentRecord::Finish(nlohmann::ordered_json summary) {
   folder_.WriteWhole("summary.json", summary.dump(2) + "\n");
 }
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

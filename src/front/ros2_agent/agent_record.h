@@ -12,7 +12,7 @@
 #include "sim/run_spec.h"
 #include "trace/results_folder.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 
 class AgentRecord {
  public:
@@ -37,4 +37,4 @@ class AgentRecord {
   trace::CsvSink &log_, &transitions_, &metrics_, &messages_, &sent_;
 };
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 namespace {
 
 double Clamped(float range, float max) {
@@ -53,4 +53,4 @@ msg::geometry_msgs::Twist TwistOf(const Twist2D& v) {
   return t;
 }
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

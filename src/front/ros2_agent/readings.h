@@ -5,7 +5,7 @@
 #include "ros2msg/messages.h"
 #include "sanet/node.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 
 namespace msg = ros2msg;
 
@@ -22,4 +22,4 @@ RangeScan ScanOf(const msg::sensor_msgs::LaserScan& scan);
 double RangeOf(const msg::sensor_msgs::Range& range);
 msg::geometry_msgs::Twist TwistOf(const Twist2D& v);
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

@@ -5,7 +5,7 @@
 #include "scenario/yaml_reader.h"
 #include "sections/ros2_section.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 namespace {
 
 // A ROS name: absolute ("/a/b") or relative ("a/b"), of parts ROS 2 accepts.
@@ -136,4 +136,4 @@ std::string FullName(const RobotTopics& topics, const Topic& topic) {
   return topic.name[0] == '/' ? topic.name : topics.ns + "/" + topic.name;
 }
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

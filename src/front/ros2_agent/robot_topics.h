@@ -10,9 +10,9 @@
 
 #include "ros2_face/dds_domain.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 
-using ros2face::Qos;
+using ros2_face::Qos;
 
 // One topic: its ROS name (relative names are under the robot's namespace) and how it is read.
 struct Topic {
@@ -51,4 +51,4 @@ void Remap(const std::string& assignment, RobotTopics& topics);
 // The topic's full ROS name: relative names under the namespace.
 std::string FullName(const RobotTopics& topics, const Topic& topic);
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

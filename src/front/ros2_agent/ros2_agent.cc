@@ -10,7 +10,7 @@
 #include "usarsim_agent/agent_steps.h"
 #include "wire/time_service.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 namespace {
 
 double UnixNow() { return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count(); }
@@ -25,8 +25,8 @@ std::optional<double> TimeZeroUnix(const Ros2AgentSettings& settings) {
 // The robot's clock: its /clock with use_sim_time, else this computer's (monotonic) from time 0.
 std::function<double()> RobotClock(const Ros2Robot& robot, std::optional<double> time_zero_unix) {
   if (!time_zero_unix) return [&robot] { return robot.SimTime().value_or(0); };
-  const double origin = hil::MonotonicSeconds() + (*time_zero_unix - UnixNow());
-  return [origin] { return hil::MonotonicSeconds() - origin; };
+  const double origin = wire::MonotonicSeconds() + (*time_zero_unix - UnixNow());
+  return [origin] { return wire::MonotonicSeconds() - origin; };
 }
 
 // How the run went, for summary.json.
@@ -49,10 +49,10 @@ void CheckTopics(Ros2Robot& robot, Ros2Node& node, Ending& ending) {
 }
 
 nlohmann::ordered_json Summary(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& settings,
-                               const Ending& ending, const hil::StepGrid& grid, const Ros2Node& node,
-                               const Ros2Robot& robot, const hil::PeerSocket& peers) {
+                               const Ending& ending, const usarsim_agent::StepGrid& grid, const Ros2Node& node,
+                               const Ros2Robot& robot, const usarsim_agent::PeerSocket& peers) {
   const Ros2Robot::Counts& c = robot.counts();
-  const hil::PeerSocket::Datagrams& d = peers.datagrams();
+  const usarsim_agent::PeerSocket::Datagrams& d = peers.datagrams();
   nlohmann::ordered_json j;
   j["scenario"] = spec.name;
   j["robot"] = spec.nodes[id].name;
@@ -93,7 +93,7 @@ std::string WaitForTheRobot(Ros2Robot& robot, const Ros2AgentSettings& settings,
   double said_at = -1e9;
   for (;;) {
     if (settings.stop_requested && settings.stop_requested()) return "interrupted";
-    robot.Poll(hil::MonotonicSeconds());
+    robot.Poll(wire::MonotonicSeconds());
     const bool has_clock = !t.use_sim_time || robot.SimTime();
     if (has_clock && clock() >= duration)
       return robot.Odometry() ? "the robot's clock was past the run's duration (" + std::to_string(duration) +
@@ -101,10 +101,10 @@ std::string WaitForTheRobot(Ros2Robot& robot, const Ros2AgentSettings& settings,
                               : "the robot never came: no odometry on " + FullName(t, t.odom) + " before " +
                                     std::to_string(duration) + " s of the robot's clock";
     if (robot.Odometry() && has_clock && clock() >= 0) return "";
-    if (!settings.quiet && hil::MonotonicSeconds() - said_at >= 10) {
+    if (!settings.quiet && wire::MonotonicSeconds() - said_at >= 10) {
       std::printf("sanet agent: waiting for %s\n", Awaited(robot, t, clock()).c_str());
       std::fflush(stdout);
-      said_at = hil::MonotonicSeconds();
+      said_at = wire::MonotonicSeconds();
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
@@ -146,35 +146,35 @@ class OdometryWatch {
 struct Loop {
   Ros2Robot& robot;
   Ros2Node& node;
-  hil::PeerSocket& peers;
-  agents::ControllerHost& host;
-  hil::AgentClock& clock;
-  hil::StepGrid& grid;
+  usarsim_agent::PeerSocket& peers;
+  hosting::ControllerHost& host;
+  usarsim_agent::AgentClock& clock;
+  usarsim_agent::StepGrid& grid;
 };
 
 // Control steps on the robot's clock until the scenario's duration, a stop or a failure.
 void RunSteps(const Loop& l, const sim::RunSpec& spec, const Ros2AgentSettings& settings, Ending& ending) {
   OdometryWatch watch(l.robot, l.node, settings.robot.topics.odom_timeout);
   const auto deliver = [&](const Message& m) { l.host.Receive(m); };
-  const double check_at = hil::MonotonicSeconds() + 3;  // DDS has matched, sensors have spoken
+  const double check_at = wire::MonotonicSeconds() + 3;  // DDS has matched, sensors have spoken
   bool checked = false;
   while (l.host.running() && l.node.ClockNow() < spec.duration) {
     if (settings.stop_requested && settings.stop_requested()) {
       ending.by = "interrupted";
       break;
     }
-    l.robot.Poll(hil::MonotonicSeconds());
+    l.robot.Poll(wire::MonotonicSeconds());
     l.peers.Read(deliver);
     l.clock.RunDue();
     // Steps that fall while odometry is missing are not taken: the grid counts them missed.
-    const bool fresh = watch.Fresh(hil::MonotonicSeconds());
+    const bool fresh = watch.Fresh(wire::MonotonicSeconds());
     if (const auto t = fresh ? l.grid.Due(l.node.ClockNow()) : std::nullopt) {
       l.node.SetStepTime(*t);
       if (l.grid.run() == 1) l.host.Start();
       l.host.Step();
       l.node.SetStepTime(std::nullopt);
     }
-    if (!checked && hil::MonotonicSeconds() >= check_at) {
+    if (!checked && wire::MonotonicSeconds() >= check_at) {
       CheckTopics(l.robot, l.node, ending);
       checked = true;
     }
@@ -185,24 +185,24 @@ void RunSteps(const Loop& l, const sim::RunSpec& spec, const Ros2AgentSettings& 
 
 }  // namespace
 
-int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& settings, agents::Registry& registry) {
+int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& settings, hosting::Registry& registry) {
   const sim::ControllerSpec& controller = *spec.nodes.at(id).controller;
   Ros2Robot robot(settings.robot);
   AgentRecord record(settings.output, spec, id, settings.force);
   Ending ending;
   ending.time_zero_unix = TimeZeroUnix(settings);
   const std::function<double()> now = RobotClock(robot, ending.time_zero_unix);
-  hil::PeerSocket peers(spec, id, settings.peer, now);
+  usarsim_agent::PeerSocket peers(spec, id, settings.peer, now);
   peers.SetKey(settings.key);
   Ros2Node node(spec, id, robot, peers, record, now);
-  hil::AgentClock clock([&node] { return node.Now(); });
-  agents::ControllerHost::Hooks hooks;
+  usarsim_agent::AgentClock clock([&node] { return node.Now(); });
+  hosting::ControllerHost::Hooks hooks;
   hooks.failed = [&](const std::string& why) { ending.by = "controller failed: " + why; };
   hooks.delivered = [&](const Message& m) { record.Received(m); };
   registry.StartRun(spec.seed);
-  agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
-                              {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
-  hil::StepGrid grid(controller.rate);
+  hosting::ControllerHost host(node, hosting::MakeController(controller, registry), controller.rate,
+                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
+  usarsim_agent::StepGrid grid(controller.rate);
   if (const std::string missing = WaitForTheRobot(robot, settings, now, spec.duration); missing.empty()) {
     RunSteps({robot, node, peers, host, clock, grid}, spec, settings, ending);
     host.Finish();  // the controller's end of run, into the agent's own record
@@ -223,4 +223,4 @@ int RunRos2Agent(const sim::RunSpec& spec, NodeId id, const Ros2AgentSettings& s
   return ending.by.rfind("the robot", 0) == 0 ? 3 : 0;  // it never drove: 3
 }
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

@@ -5,10 +5,10 @@
 #include "robots/kinematics.h"
 #include "robots/node_model.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 
-Ros2Node::Ros2Node(const sim::RunSpec& spec, NodeId id, Ros2Robot& robot, hil::PeerSocket& peers, AgentRecord& record,
-                   std::function<double()> clock)
+Ros2Node::Ros2Node(const sim::RunSpec& spec, NodeId id, Ros2Robot& robot, usarsim_agent::PeerSocket& peers,
+                   AgentRecord& record, std::function<double()> clock)
     : spec_(spec),
       id_(id),
       robot_(robot),
@@ -16,10 +16,10 @@ Ros2Node::Ros2Node(const sim::RunSpec& spec, NodeId id, Ros2Robot& robot, hil::P
       record_(record),
       clock_(std::move(clock)),
       random_(spec.seed, "node/" + spec.nodes.at(id).name + "/controller") {
-  hil::LoopNetworkView::Hooks hooks{[this] { return Now(); }, [this] { return peers_.Addresses(); },
-                                    [this](const std::string& text) { Log(text); },
-                                    [this](const std::string& name) { return Lookup(name); }};
-  view_ = std::make_unique<hil::LoopNetworkView>(spec_, id_, nullptr, std::move(hooks));  // the kernel's
+  usarsim_agent::LoopNetworkView::Hooks hooks{[this] { return Now(); }, [this] { return peers_.Addresses(); },
+                                              [this](const std::string& text) { Log(text); },
+                                              [this](const std::string& name) { return Lookup(name); }};
+  view_ = std::make_unique<usarsim_agent::LoopNetworkView>(spec_, id_, nullptr, std::move(hooks));  // the kernel's
 }
 
 std::optional<NodeId> Ros2Node::Lookup(const std::string& name) const {
@@ -33,7 +33,7 @@ void Ros2Node::Send(NodeId to, const Bytes& payload) {
   ++messages_sent_;
   record_.Sent(ClockNow(), to, Delivery::kUnicast, payload.size());
   if (HasAgent(to))
-    peers_.Send(to, hil::AgentDatagram::kUnicast, payload);
+    peers_.Send(to, wire::AgentDatagram::kUnicast, payload);
   else
     ++to_nowhere_;
 }
@@ -43,7 +43,7 @@ void Ros2Node::ToEveryAgent(Delivery delivery, const Bytes& payload) {
   ++messages_sent_;
   record_.Sent(ClockNow(), kBroadcast, delivery, payload.size());
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
-    if (to != id_ && HasAgent(to)) peers_.Send(to, hil::AgentDatagram::kBroadcast, payload);
+    if (to != id_ && HasAgent(to)) peers_.Send(to, wire::AgentDatagram::kBroadcast, payload);
 }
 
 void Ros2Node::Broadcast(const Bytes& payload) { ToEveryAgent(Delivery::kBroadcast, payload); }
@@ -75,4 +75,4 @@ bool Ros2Node::ApplyWheelSpeeds(const std::vector<double>& w) {
   return true;
 }
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

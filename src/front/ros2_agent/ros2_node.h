@@ -1,6 +1,6 @@
 // The node a controller sees on a ROS 2 robot (`sanet agent --ros2`): its readings and motion
 // through the robot's topics (ros2_robot.h), messages to the other robots' agents over UDP
-// (hil::PeerSocket, authenticated with the team's key), the host kernel's routing view, the
+// (usarsim_agent::PeerSocket, authenticated with the team's key), the host kernel's routing view, the
 // robot's clock, and what it records kept in the agent's own folder (agent_record.h). Without a
 // simulator there are no motes and no bearing sensor: messages to a node without an agent go
 // nowhere (counted), Bearing() is empty. The controller cannot tell it from the other nodes.
@@ -20,13 +20,13 @@
 #include "usarsim_agent/loop_network_view.h"
 #include "usarsim_agent/peer_socket.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 
 class Ros2Node : public Node {
  public:
   // `clock`: the robot's time, s (its /clock with use_sim_time, else this computer's from the
   // team's start).
-  Ros2Node(const sim::RunSpec& spec, NodeId id, Ros2Robot& robot, hil::PeerSocket& peers, AgentRecord& record,
+  Ros2Node(const sim::RunSpec& spec, NodeId id, Ros2Robot& robot, usarsim_agent::PeerSocket& peers, AgentRecord& record,
            std::function<double()> clock);
 
   // Inside a control step, Now() is the step's time on the grid, as in every mode.
@@ -72,13 +72,13 @@ class Ros2Node : public Node {
   const sim::RunSpec& spec_;
   NodeId id_;
   Ros2Robot& robot_;
-  hil::PeerSocket& peers_;
+  usarsim_agent::PeerSocket& peers_;
   AgentRecord& record_;
   std::function<double()> clock_;
-  std::unique_ptr<hil::LoopNetworkView> view_;
+  std::unique_ptr<usarsim_agent::LoopNetworkView> view_;
   RandomStream random_;
   std::optional<double> step_time_;
   std::uint64_t messages_sent_ = 0, to_nowhere_ = 0;
 };
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

@@ -6,7 +6,7 @@
 #include "ros2msg/codec.h"
 #include "sensors/range_fan.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 namespace {
 
 template <typename Message>
@@ -34,16 +34,16 @@ Ros2Robot::Ros2Robot(Ros2RobotSettings settings)
                          t.cmd_vel.qos);
 }
 
-ros2face::DdsDomain::Entity Ros2Robot::Subscribe(const Topic& topic, const char* dds_type) {
+ros2_face::DdsDomain::Entity Ros2Robot::Subscribe(const Topic& topic, const char* dds_type) {
   return dds_.Reader(FullName(settings_.topics, topic), dds_type, topic.qos);
 }
 
 // Every sample of `reader` decoded as Message and handed to `use`; one that does not decode is
 // counted, and said once per topic.
 template <typename Message, typename Use>
-void Ros2Robot::TakeAll(ros2face::DdsDomain::Entity reader, const std::string& topic, Use use) {
+void Ros2Robot::TakeAll(ros2_face::DdsDomain::Entity reader, const std::string& topic, Use use) {
   if (!reader) return;
-  for (const ros2face::DdsDomain::Sample& s : dds_.Take(reader)) {
+  for (const ros2_face::DdsDomain::Sample& s : dds_.Take(reader)) {
     std::string error;
     if (const auto m = ros2msg::Decode<Message>(s.bytes, &error)) {
       use(*m);
@@ -155,4 +155,4 @@ std::vector<std::string> Ros2Robot::TopicTrouble() {
   return trouble;
 }
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

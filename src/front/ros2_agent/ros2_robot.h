@@ -15,7 +15,7 @@
 #include "ros2_face/dds_domain.h"
 #include "sanet/node.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 
 struct Ros2RobotSettings {
   std::uint32_t domain = 0;  // ROS_DOMAIN_ID
@@ -54,14 +54,14 @@ class Ros2Robot {
 
  private:
   template <typename Message, typename Use>
-  void TakeAll(ros2face::DdsDomain::Entity reader, const std::string& topic, Use use);
-  ros2face::DdsDomain::Entity Subscribe(const Topic& topic, const char* dds_type);
+  void TakeAll(ros2_face::DdsDomain::Entity reader, const std::string& topic, Use use);
+  ros2_face::DdsDomain::Entity Subscribe(const Topic& topic, const char* dds_type);
   void TakeGroundTruth();
 
   Ros2RobotSettings settings_;
-  ros2face::DdsDomain dds_;
-  ros2face::DdsDomain::Entity odom_ = 0, scan_ = 0, truth_ = 0, clock_ = 0, cmd_vel_ = 0;
-  std::vector<ros2face::DdsDomain::Entity> ir_;
+  ros2_face::DdsDomain dds_;
+  ros2_face::DdsDomain::Entity odom_ = 0, scan_ = 0, truth_ = 0, clock_ = 0, cmd_vel_ = 0;
+  std::vector<ros2_face::DdsDomain::Entity> ir_;
   std::optional<Pose2D> odometry_, ground_truth_;
   std::optional<RangeScan> laser_;
   std::vector<std::optional<double>> ranges_;
@@ -70,4 +70,4 @@ class Ros2Robot {
   Counts counts_;
 };
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

@@ -15,7 +15,7 @@
 #include "trace/result_headers.h"
 #include "trace/results_folder.h"
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 namespace {
 
 constexpr const char* kSentHeader = "time_sent,from,to,delivery,bytes";
@@ -302,4 +302,4 @@ nlohmann::ordered_json MergeTeam(const std::vector<std::string>& agent_folders, 
   return summary;
 }
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace sanet::ros2agent {
+namespace sanet::ros2_agent {
 
 // Folders that are not a team's agents' folders, or hold rows that do not read: names the
 // folder and file (and the row and field).
@@ -32,4 +32,4 @@ class TeamFolderError : public std::runtime_error {
 // unless `force`) from the agents' folders; returns its summary.json.
 nlohmann::ordered_json MergeTeam(const std::vector<std::string>& agent_folders, const std::string& out, bool force);
 
-}  // namespace sanet::ros2agent
+}  // namespace sanet::ros2_agent

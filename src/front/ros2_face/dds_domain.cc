@@ -13,7 +13,7 @@
 
 #include "ros2_face/raw_cdr_type.h"
 
-namespace sanet::ros2face {
+namespace sanet::ros2_face {
 namespace {
 
 std::string Why(dds_return_t code) { return dds_strretcode(code); }
@@ -127,9 +127,9 @@ std::vector<DdsDomain::Sample> DdsDomain::Take(Entity reader, std::size_t most) 
   return taken;
 }
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::ros2_face
 
-namespace sanet::ros2face {
+namespace sanet::ros2_face {
 
 std::uint32_t DdsDomain::NewIncompatibleWriters(Entity reader) {
   dds_requested_incompatible_qos_status_t status{};
@@ -149,4 +149,4 @@ std::uint32_t DdsDomain::IncompatibleWriters(Entity reader) {
   return status.total_count;
 }
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::ros2_face

@@ -12,7 +12,7 @@
 struct dds_qos;
 struct dds_listener;
 
-namespace sanet::ros2face {
+namespace sanet::ros2_face {
 
 // ROS 2's QoS profiles (rclcpp qos.hpp; tf2_ros qos.hpp).
 enum class Qos {
@@ -63,4 +63,4 @@ class DdsDomain {
   Entity participant_;
 };
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::ros2_face

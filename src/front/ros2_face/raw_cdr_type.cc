@@ -12,7 +12,7 @@
 
 #include "ros2msg/cdr.h"
 
-namespace sanet::ros2face {
+namespace sanet::ros2_face {
 namespace {
 
 using ros2msg::Bytes;
@@ -193,4 +193,4 @@ ddsi_sertype* MakeRawCdrType(const std::string& dds_type_name) {
   return &t->c;
 }
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::ros2_face

@@ -10,10 +10,10 @@
 
 struct ddsi_sertype;
 
-namespace sanet::ros2face {
+namespace sanet::ros2_face {
 
 // A new type named `dds_type_name` (e.g. "nav_msgs::msg::dds_::Odometry_"), for
 // dds_create_topic_sertype, which takes it over.
 ddsi_sertype* MakeRawCdrType(const std::string& dds_type_name);
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::ros2_face

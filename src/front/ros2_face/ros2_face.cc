@@ -8,7 +8,7 @@
 #include "ros2_presentation/sensor_messages.h"
 #include "ros2msg/codec.h"
 
-namespace sanet::ros2face {
+namespace sanet::ros2_face {
 namespace {
 
 constexpr const char* kOwner = "ROS 2 face";
@@ -230,4 +230,4 @@ nlohmann::ordered_json Ros2Face::Summary() const {
   return j;
 }
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::ros2_face

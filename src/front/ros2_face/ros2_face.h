@@ -25,7 +25,7 @@
 #include "sections/ros2_section.h"
 #include "sim/driver.h"
 
-namespace sanet::ros2face {
+namespace sanet::ros2_face {
 
 namespace msg = ros2msg;
 using ros2_presentation::FramesOf, ros2_presentation::OdomToBase, ros2_presentation::RobotFrames,
@@ -75,4 +75,4 @@ class Ros2Face {
   std::uint64_t clock_messages_ = 0;
 };
 
-}  // namespace sanet::ros2face
+}  // namespace sanet::ros2_face

@@ -11,32 +11,32 @@
 #include "usarsim_agent/agent_steps.h"
 #include "wire/message_lines.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 namespace {
 
 // What the agent tells the server about its steps and messages (summary.json's `agents`).
-ProtocolMessage Stats(const StepGrid& grid, const RemoteNode& node, std::uint64_t received) {
-  ProtocolMessage m("STATS");
+wire::ProtocolMessage Stats(const StepGrid& grid, const RemoteNode& node, std::uint64_t received) {
+  wire::ProtocolMessage m("STATS");
   m.Add("Steps", std::to_string(grid.run())).Add("Missed", std::to_string(grid.missed()));
-  m.Add("Rate", FormatPrecise(grid.achieved_rate())).Add("Sent", std::to_string(node.messages_sent()));
+  m.Add("Rate", wire::FormatPrecise(grid.achieved_rate())).Add("Sent", std::to_string(node.messages_sent()));
   const StepGrid::Lateness late = grid.lateness();
-  m.Add("Received", std::to_string(received)).Add("LatenessP50", FormatPrecise(late.p50));
-  m.Add("LatenessP99", FormatPrecise(late.p99)).Add("LatenessMax", FormatPrecise(late.max));
+  m.Add("Received", std::to_string(received)).Add("LatenessP50", wire::FormatPrecise(late.p50));
+  m.Add("LatenessP99", wire::FormatPrecise(late.p99)).Add("LatenessMax", wire::FormatPrecise(late.max));
   const RemoteNode::Datagrams& d = node.datagrams();
   m.Add("DatagramsSent", std::to_string(d.sent)).Add("DatagramsReceived", std::to_string(d.received));
   m.Add("DatagramsRejected", std::to_string(d.rejected));
   m.Add("SendErrors", std::to_string(d.send_errors));
   const ClockFigures clock = node.clock_figures();
-  m.Add("ClockOffset", FormatPrecise(clock.offset)).Add("ClockError", FormatPrecise(clock.error_bound));
-  m.Add("ClockErrorMax", FormatPrecise(clock.error_bound_max));
+  m.Add("ClockOffset", wire::FormatPrecise(clock.offset)).Add("ClockError", wire::FormatPrecise(clock.error_bound));
+  m.Add("ClockErrorMax", wire::FormatPrecise(clock.error_bound_max));
   return m;
 }
 
 // The clock estimate after a burst of exchanges (clock.csv).
-ProtocolMessage ClockLine(const ClockFigures& f) {
-  ProtocolMessage m("CLOCK");
-  m.Add("Offset", FormatPrecise(f.offset)).Add("Error", FormatPrecise(f.error_bound));
-  m.Add("RoundTrip", FormatPrecise(f.round_trip)).Add("Drift", FormatPrecise(f.drift));
+wire::ProtocolMessage ClockLine(const ClockFigures& f) {
+  wire::ProtocolMessage m("CLOCK");
+  m.Add("Offset", wire::FormatPrecise(f.offset)).Add("Error", wire::FormatPrecise(f.error_bound));
+  m.Add("RoundTrip", wire::FormatPrecise(f.round_trip)).Add("Drift", wire::FormatPrecise(f.drift));
   return m;
 }
 
@@ -62,7 +62,7 @@ void SayHowItEnded(RemoteNode& node, const StepGrid& grid) {
 
 // The controller's steps on the shared clock's grid, with the agent's reports to the server,
 // until the server ends the run or the controller fails.
-void RunSteps(RemoteNode& node, agents::ControllerHost& host, AgentClock& clock, StepGrid& grid,
+void RunSteps(RemoteNode& node, hosting::ControllerHost& host, AgentClock& clock, StepGrid& grid,
               const std::function<void(const Message&)>& deliver, const std::uint64_t& received) {
   double next_report = 0;
   std::uint64_t bursts_reported = 0;
@@ -89,21 +89,21 @@ void RunSteps(RemoteNode& node, agents::ControllerHost& host, AgentClock& clock,
 }  // namespace
 
 int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settings, std::unique_ptr<ServerLink> link,
-             agents::Registry& registry) {
+             hosting::Registry& registry) {
   const sim::ControllerSpec& controller = *spec.nodes.at(robot).controller;
   RemoteNode node(spec, robot, settings, std::move(link));
   AgentClock clock([&node] { return node.Now(); });
   std::string failure;
-  agents::ControllerHost::Hooks hooks;
+  hosting::ControllerHost::Hooks hooks;
   hooks.failed = [&](const std::string& why) { failure = why; };
   // The server records what reaches this robot through it; what other agents send over UDP it
   // learns from here, for messages.csv.
   hooks.delivered = [&](const Message& m) {
-    if (node.IsAgent(m.from)) node.Report(RecvLine(m, node.NameOf(m.from)));
+    if (node.IsAgent(m.from)) node.Report(wire::RecvLine(m, node.NameOf(m.from)));
   };
   registry.StartRun(spec.seed);
-  agents::ControllerHost host(node, agents::MakeController(controller, registry), controller.rate,
-                              {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
+  hosting::ControllerHost host(node, hosting::MakeController(controller, registry), controller.rate,
+                               {spec.message_loss, spec.message_delay}, spec.seed, clock, hooks);
   std::uint64_t received = 0;
   const std::function<void(const Message&)> deliver = [&](const Message& m) {
     ++received;
@@ -120,7 +120,7 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   if (failure.empty() && node.ended()) {  // the server said END: the controller finishes, then says so
     host.Finish();
     if (!failure.empty()) node.Log(failure);  // before FINISHED, while the server still records
-    node.Report(ProtocolMessage{"FINISHED"});
+    node.Report(wire::ProtocolMessage{"FINISHED"});
     if (!failure.empty()) {
       std::fprintf(stderr, "sanet agent: %s\n", failure.c_str());
       return 1;
@@ -135,4 +135,4 @@ int RunAgent(const sim::RunSpec& spec, NodeId robot, const AgentSettings& settin
   return 1;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 std::optional<double> StepGrid::Due(double now) {
   if (now < Time(next_)) return std::nullopt;
@@ -39,4 +39,4 @@ void AgentClock::RunDue() {
   }
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -12,11 +12,11 @@
 
 #include "hosting/host_clock.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 // An agent's clock as its controller's host sees it (`now`: the node's Now()), with the delayed
 // actions the host asks for, run as the agent's loop calls RunDue.
-class AgentClock : public agents::HostClock {
+class AgentClock : public hosting::HostClock {
  public:
   explicit AgentClock(std::function<double()> now) : now_(std::move(now)) {}
   double Now() const override { return now_(); }
@@ -53,4 +53,4 @@ class StepGrid {
   std::vector<double> lateness_;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -14,7 +14,7 @@
 #include "wire/sockets.h"
 #include "wire/time_service.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 namespace {
 
 constexpr int kReplyWaitMs = 200;  // an exchange not answered by then is lost
@@ -24,13 +24,13 @@ constexpr int kFirstTries = 25;    // bursts before giving up at the start (abou
 
 ClockSync::ClockSync(const std::string& host, std::uint16_t port, double skew)
     : server_(host + ":" + std::to_string(port)), skew_(skew) {
-  const sockaddr_in server = Ipv4Endpoint(host, port);
+  const sockaddr_in server = wire::Ipv4Endpoint(host, port);
   fd_ = ::socket(AF_INET, SOCK_DGRAM, 0);
   // Connected: the kernel passes on only datagrams from the server's address and port.
   if (fd_ < 0 || ::connect(fd_, reinterpret_cast<const sockaddr*>(&server), sizeof server) != 0)
     throw std::runtime_error("cannot open a UDP socket to the server's time service " + server_ + ": " +
                              std::strerror(errno));
-  std::optional<ClockSample> first;
+  std::optional<wire::ClockSample> first;
   for (int attempt = 0; attempt < kFirstTries && !first; ++attempt) first = Burst(kFirstBurst);
   if (!first) {
     ::close(fd_);
@@ -51,7 +51,7 @@ ClockSync::~ClockSync() {
   ::close(fd_);
 }
 
-double ClockSync::Local() const { return MonotonicSeconds() + skew_; }
+double ClockSync::Local() const { return wire::MonotonicSeconds() + skew_; }
 
 double ClockSync::ServerNow() const {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -71,17 +71,17 @@ ClockFigures ClockSync::figures() const {
 
 // Exchanges one after another; each waits for its own reply (a late reply to an earlier
 // request carries another t1 and is passed over).
-std::optional<ClockSample> ClockSync::Burst(int exchanges) {
-  std::vector<ClockExchange> answered;
+std::optional<wire::ClockSample> ClockSync::Burst(int exchanges) {
+  std::vector<wire::ClockExchange> answered;
   std::uint64_t unanswered = 0;
   for (int i = 0; i < exchanges; ++i) {
     const double sent = Local();
-    const Bytes request = TimeRequest(sent);
+    const Bytes request = wire::TimeRequest(sent);
     if (::send(fd_, request.data(), request.size(), 0) < 0) {
       ++unanswered;
       continue;
     }
-    std::optional<ClockExchange> e;
+    std::optional<wire::ClockExchange> e;
     while (!e) {
       pollfd p{fd_, POLLIN, 0};
       const int waited_ms = static_cast<int>((Local() - sent) * 1000);
@@ -89,7 +89,7 @@ std::optional<ClockSample> ClockSync::Burst(int exchanges) {
       std::uint8_t buffer[64];
       const ssize_t n = ::recv(fd_, buffer, sizeof buffer, MSG_DONTWAIT);
       const double received = Local();
-      if (n > 0) e = ReadTimeReply(buffer, static_cast<std::size_t>(n), sent, received);
+      if (n > 0) e = wire::ReadTimeReply(buffer, static_cast<std::size_t>(n), sent, received);
       if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) break;  // e.g. refused: nothing listens there
     }
     if (e)
@@ -100,10 +100,10 @@ std::optional<ClockSample> ClockSync::Burst(int exchanges) {
   std::lock_guard<std::mutex> lock(mutex_);
   figures_.exchanges += answered.size();
   figures_.unanswered += unanswered;
-  return Best(answered);
+  return wire::Best(answered);
 }
 
-void ClockSync::Take(const ClockSample& best) {
+void ClockSync::Take(const wire::ClockSample& best) {
   std::lock_guard<std::mutex> lock(mutex_);
   estimate_.Add(best);
   ++figures_.bursts;
@@ -123,4 +123,4 @@ void ClockSync::Refresh() {
   }
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -14,7 +14,7 @@
 
 #include "wire/clock_estimate.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 struct ClockFigures {
   double offset = 0;           // s, the server's clock minus this computer's
@@ -42,15 +42,15 @@ class ClockSync {
 
  private:
   double Local() const;
-  std::optional<ClockSample> Burst(int exchanges);
-  void Take(const ClockSample& best);
+  std::optional<wire::ClockSample> Burst(int exchanges);
+  void Take(const wire::ClockSample& best);
   void Refresh();
 
   int fd_ = -1;
   std::string server_;
   double skew_;
   mutable std::mutex mutex_;
-  ClockEstimate estimate_;
+  wire::ClockEstimate estimate_;
   ClockFigures figures_;
   mutable double last_read_ = -1e300;
   bool stop_ = false;
@@ -58,4 +58,4 @@ class ClockSync {
   std::thread thread_;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -14,7 +14,7 @@
 #include <map>
 #include <stdexcept>
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 namespace {
 
 // One rtnetlink conversation: a request, then its answers until the kernel says it is done.
@@ -159,4 +159,4 @@ KernelTables ReadKernelTables(NodeId self, const std::vector<std::optional<Ipv4>
   return MapToNodes(self, addresses, routes, KernelNeighbours());
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -16,7 +16,7 @@
 
 #include "sanet/node.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 using Ipv4 = std::uint32_t;  // network byte order, as in in_addr
 
@@ -49,4 +49,4 @@ KernelTables MapToNodes(NodeId self, const std::vector<std::optional<Ipv4>>& add
 // Reads the kernel's route to every other node's address and its neighbour table, mapped.
 KernelTables ReadKernelTables(NodeId self, const std::vector<std::optional<Ipv4>>& addresses);
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

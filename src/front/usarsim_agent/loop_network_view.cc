@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 LoopNetworkView::LoopNetworkView(const sim::RunSpec& spec, NodeId self, ServerLink* link, Hooks hooks)
     : spec_(spec),
@@ -27,7 +27,7 @@ const LoopNetworkView::Snapshot& LoopNetworkView::Current() const {
 void LoopNetworkView::Fetch() const {
   fetched_at_ = hooks_.now();
   if (source_ == Source::kKernel) return FetchFromKernel();
-  const auto line = link_->Ask(ProtocolMessage{"GETNET"}, "NET", kWait);
+  const auto line = link_->Ask(wire::ProtocolMessage{"GETNET"}, "NET", kWait);
   if (line && line->type == "NET") return TakeNetLine(*line);
   if (said_no_answer_) return;  // the last snapshot stays
   said_no_answer_ = true;
@@ -49,7 +49,7 @@ void LoopNetworkView::FetchFromKernel() const {
   }
 }
 
-void LoopNetworkView::TakeNetLine(const ProtocolMessage& line) const {
+void LoopNetworkView::TakeNetLine(const wire::ProtocolMessage& line) const {
   const std::string* source = line.Get("Source");
   if (source && *source == "Kernel") {
     source_ = Source::kKernel;
@@ -88,7 +88,7 @@ bool LoopNetworkView::InvalidateRoute(NodeId destination) {
   if (destination >= spec_.nodes.size()) return false;
   if (source_ == Source::kUnknown) Current();
   if (source_ != Source::kSimulated) return false;  // the kernel's routes are not the controller's to drop
-  ProtocolMessage ask{"INVALIDATEROUTE"};
+  wire::ProtocolMessage ask{"INVALIDATEROUTE"};
   const auto answer = link_->Ask(ask.Add("To", spec_.nodes[destination].name), "INVALIDATED", kWait);
   fetched_at_.reset();  // the next read asks again
   const std::string* done = answer ? answer->Get("Done") : nullptr;
@@ -99,9 +99,9 @@ void LoopNetworkView::RequestRoute(NodeId destination) {
   if (destination >= spec_.nodes.size()) return;
   if (source_ == Source::kUnknown) Current();
   if (source_ != Source::kSimulated) return;  // the kernel finds its neighbours when traffic goes
-  ProtocolMessage ask{"REQUESTROUTE"};
+  wire::ProtocolMessage ask{"REQUESTROUTE"};
   link_->Send(ask.Add("To", spec_.nodes[destination].name));
   fetched_at_.reset();
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -17,7 +17,7 @@
 #include "usarsim_agent/kernel_tables.h"
 #include "usarsim_agent/server_link.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 class LoopNetworkView : public NetworkView {
  public:
@@ -49,7 +49,7 @@ class LoopNetworkView : public NetworkView {
   const Snapshot& Current() const;
   void Fetch() const;
   void FetchFromKernel() const;
-  void TakeNetLine(const ProtocolMessage& line) const;
+  void TakeNetLine(const wire::ProtocolMessage& line) const;
   std::optional<RouteEntry> ParseRoute(const std::string& text) const;
 
   const sim::RunSpec& spec_;
@@ -62,4 +62,4 @@ class LoopNetworkView : public NetworkView {
   mutable bool said_no_answer_ = false;        // a failed fetch is logged once
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -12,7 +12,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 namespace {
 
 constexpr std::size_t kMostHeldEarly = 1024;  // datagrams kept until the agent has the team's key
@@ -32,7 +32,7 @@ InterfaceState LookUpInterface(const std::string& interface) {
     if (interface != a->ifa_name) continue;
     state.up = state.up || ((a->ifa_flags & IFF_UP) && (a->ifa_flags & IFF_RUNNING));
     if (state.address.empty() && a->ifa_addr && a->ifa_addr->sa_family == AF_INET)
-      state.address = AddressText(a->ifa_addr);
+      state.address = wire::AddressText(a->ifa_addr);
   }
   ::freeifaddrs(all);
   return state;
@@ -49,7 +49,8 @@ PeerSocket::PeerSocket(const sim::RunSpec& spec, NodeId self, PeerSettings setti
       replays_(spec.nodes.size()) {
   for (const sections::PeerLink& p : settings_.peers)
     for (NodeId node = 0; node < spec_.nodes.size(); ++node)
-      if (spec_.nodes[node].name == p.robot && !p.address.empty()) peers_[node] = Ipv4Endpoint(p.address, PortOf(node));
+      if (spec_.nodes[node].name == p.robot && !p.address.empty())
+        peers_[node] = wire::Ipv4Endpoint(p.address, PortOf(node));
   Open();
 }
 
@@ -77,7 +78,7 @@ void PeerSocket::Open() {
     throw std::runtime_error(
         "cannot bind the peer socket to interface " + interface + ": " + std::strerror(errno) +
         (errno == EPERM ? " (before Linux 5.7, binding to an interface needs root or CAP_NET_RAW)" : ""));
-  const sockaddr_in mine = Ipv4Endpoint(address, PortOf(self_));
+  const sockaddr_in mine = wire::Ipv4Endpoint(address, PortOf(self_));
   if (::bind(fd_, reinterpret_cast<const sockaddr*>(&mine), sizeof mine) != 0)
     throw std::runtime_error("cannot bind UDP " + address + ":" + std::to_string(PortOf(self_)) + ": " +
                              std::strerror(errno) +
@@ -96,7 +97,7 @@ void PeerSocket::Open() {
 }
 
 void PeerSocket::SetPeer(NodeId node, const std::string& address, std::uint16_t port) {
-  if (node < peers_.size() && node != self_) peers_[node] = Ipv4Endpoint(address, port);
+  if (node < peers_.size() && node != self_) peers_[node] = wire::Ipv4Endpoint(address, port);
 }
 
 // A datagram from a peer is checked and stamped with this agent's clock when it is read; one
@@ -123,11 +124,11 @@ void PeerSocket::Read(const std::function<void(const Message&)>& deliver) {
 
 void PeerSocket::Take(const Bytes& datagram, const std::function<void(const Message&)>& deliver) {
   std::string why;
-  const auto d = OpenDatagram(datagram.data(), datagram.size(), *key_, &why);
+  const auto d = wire::OpenDatagram(datagram.data(), datagram.size(), *key_, &why);
   if (!d) return Reject(why);
   if (d->from >= spec_.nodes.size() || d->from == self_) return Reject("from no other node of the scenario");
-  const bool unicast = d->kind == AgentDatagram::kUnicast;
-  if (unicast ? d->to != self_ : d->to != AgentDatagram::kToAll) return Reject("not for this robot");
+  const bool unicast = d->kind == wire::AgentDatagram::kUnicast;
+  if (unicast ? d->to != self_ : d->to != wire::AgentDatagram::kToAll) return Reject("not for this robot");
   if (!replays_[d->from].Take(d->sequence))
     return Reject("sequence number " + std::to_string(d->sequence) + " of " + spec_.nodes[d->from].name +
                   " seen before");
@@ -150,20 +151,20 @@ void PeerSocket::Reject(const std::string& why) {
                  why.c_str());
 }
 
-void PeerSocket::Send(NodeId to, AgentDatagram::Kind kind, const Bytes& payload) {
+void PeerSocket::Send(NodeId to, wire::AgentDatagram::Kind kind, const Bytes& payload) {
   if (!key_) {  // no key yet: the peers would reject what this agent sends
     ++datagrams_.send_errors;
     return;
   }
-  AgentDatagram d;
+  wire::AgentDatagram d;
   d.from = self_;
-  d.to = kind == AgentDatagram::kUnicast ? to : AgentDatagram::kToAll;
+  d.to = kind == wire::AgentDatagram::kUnicast ? to : wire::AgentDatagram::kToAll;
   d.kind = kind;
   d.sequence = next_sequence_++;
   d.time_sent = clock_();
   d.payload = payload;
-  const Bytes datagram = SealDatagram(d, *key_);
-  const sockaddr_in peer = peers_[to] ? *peers_[to] : Ipv4Endpoint(HostOf(to), PortOf(to));
+  const Bytes datagram = wire::SealDatagram(d, *key_);
+  const sockaddr_in peer = peers_[to] ? *peers_[to] : wire::Ipv4Endpoint(HostOf(to), PortOf(to));
   const ssize_t n =
       ::sendto(fd_, datagram.data(), datagram.size(), 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
   ++(n < 0 ? datagrams_.send_errors : datagrams_.sent);
@@ -175,7 +176,7 @@ std::vector<std::optional<Ipv4>> PeerSocket::Addresses() const {
     if (peers_[id])
       addresses[id] = peers_[id]->sin_addr.s_addr;
     else if (!settings_.udp_subnet.empty() && sim::RunsAsAgent(spec_.nodes[id]))
-      addresses[id] = Ipv4Endpoint(HostOf(id), 0).sin_addr.s_addr;
+      addresses[id] = wire::Ipv4Endpoint(HostOf(id), 0).sin_addr.s_addr;
   return addresses;
 }
 
@@ -187,4 +188,4 @@ std::uint16_t PeerSocket::PortOf(NodeId node) const {
   return static_cast<std::uint16_t>(settings_.udp_base_port + (settings_.udp_subnet.empty() ? node : 0));
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -19,7 +19,7 @@
 #include "wire/agent_datagram.h"
 #include "wire/sockets.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 // Where the agents listen for each other.
 struct PeerSettings {
@@ -42,14 +42,14 @@ class PeerSocket {
   PeerSocket& operator=(const PeerSocket&) = delete;
 
   // The team's key; datagrams that came before it wait (up to a bound), sending waits for it.
-  void SetKey(const DatagramKey& key) { key_ = key; }
+  void SetKey(const wire::DatagramKey& key) { key_ = key; }
   bool HasKey() const { return key_.has_value(); }
   // Where `node`'s agent listens, learnt at run time. Throws std::runtime_error for no address.
   void SetPeer(NodeId node, const std::string& address, std::uint16_t port);
   // Delivers the messages of the datagrams that arrived, checked, in the order they came.
   void Read(const std::function<void(const Message&)>& deliver);
   // One datagram to `to`'s agent: a unicast message, or its copy of a broadcast.
-  void Send(NodeId to, AgentDatagram::Kind kind, const Bytes& payload);
+  void Send(NodeId to, wire::AgentDatagram::Kind kind, const Bytes& payload);
 
   // The robot's own packets between agents (UDP datagrams): sent, refused by the sender's
   // stack (sendto failed) or not sent for want of the team's key, received whole from a known
@@ -81,10 +81,10 @@ class PeerSocket {
   std::vector<std::optional<sockaddr_in>> peers_;  // where each agent listens, when known
   std::vector<Bytes> early_;                       // datagrams that came before this agent had the key
   std::string address_, endpoint_;
-  std::optional<DatagramKey> key_;
-  std::uint64_t next_sequence_ = 1;    // of this agent's datagrams
-  std::vector<ReplayWindow> replays_;  // per sender
+  std::optional<wire::DatagramKey> key_;
+  std::uint64_t next_sequence_ = 1;          // of this agent's datagrams
+  std::vector<wire::ReplayWindow> replays_;  // per sender
   Datagrams datagrams_;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

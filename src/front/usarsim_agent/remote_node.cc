@@ -25,7 +25,7 @@
 #include "wire/sockets.h"
 #include "wire/time_service.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings settings, std::unique_ptr<ServerLink> link)
     : spec_(spec),
       id_(robot),
@@ -45,26 +45,26 @@ RemoteNode::RemoteNode(const sim::RunSpec& spec, NodeId robot, AgentSettings set
                                [this](const std::string& text) { Log(text); },
                                [this](const std::string& name) { return Lookup(name); }};
   view_ = std::make_unique<LoopNetworkView>(spec_, id_, link_.get(), std::move(hooks));
-  ProtocolMessage init("INIT");
+  wire::ProtocolMessage init("INIT");
   init.Add("ClassName", Holonomic() ? "sanet.omni3" : "USARBot.P2DX").Add("Name", Name());
   Command(init);
-  Command(ProtocolMessage{"PEER"}
+  Command(wire::ProtocolMessage{"PEER"}
               .Add("Address", peer_socket_->address())
               .Add("Port", std::to_string(peer_socket_->port())));
 }
 
 RemoteNode::~RemoteNode() {
-  ProtocolMessage stop("DRIVE");
+  wire::ProtocolMessage stop("DRIVE");
   Holonomic() ? stop.Add("LinearVelocity", 0.0) : stop.Add("Left", 0.0).Add("Right", 0.0);
   Command(stop);
 }
 
-void RemoteNode::Command(const ProtocolMessage& m) { link_->Send(m); }
+void RemoteNode::Command(const wire::ProtocolMessage& m) { link_->Send(m); }
 
 double RemoteNode::Now() const { return step_time_ ? *step_time_ : ClockNow(); }
 
 double RemoteNode::ClockNow() const {
-  if (clock_origin_) return MonotonicSeconds() - *clock_origin_;
+  if (clock_origin_) return wire::MonotonicSeconds() - *clock_origin_;
   return clock_sync_->ServerNow();
 }
 
@@ -82,15 +82,15 @@ std::optional<NodeId> RemoteNode::Lookup(const std::string& name) const {
 }
 
 bool RemoteNode::Poll(const std::function<void(const Message&)>& deliver) {
-  std::vector<ProtocolMessage> lines;
+  std::vector<wire::ProtocolMessage> lines;
   const bool open = link_->Read(lines);
-  for (const ProtocolMessage& m : lines) Take(m, deliver);
+  for (const wire::ProtocolMessage& m : lines) Take(m, deliver);
   peer_socket_->Read(deliver);
   return open && !ended_;
 }
 
 // Lines from the server: sensors, status, messages from its nodes, errors.
-void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver) {
+void RemoteNode::Take(const wire::ProtocolMessage& m, const std::function<void(const Message&)>& deliver) {
   if (m.type == "ERR") {  // fatal while claiming the robot; afterwards the run goes on
     const std::string* text = m.Get("Message");
     const std::string why = "server: " + (text ? *text : std::string("error"));
@@ -100,7 +100,7 @@ void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const M
   if (m.type == "MSG") {
     const std::string* from = m.Get("From");
     std::string error;
-    if (auto message = ParseMsgLine(m, from ? Lookup(*from) : std::nullopt, id_, &error))
+    if (auto message = wire::ParseMsgLine(m, from ? Lookup(*from) : std::nullopt, id_, &error))
       deliver(*message);
     else
       throw std::runtime_error("server sent a bad MSG line: " + error);
@@ -108,13 +108,13 @@ void RemoteNode::Take(const ProtocolMessage& m, const std::function<void(const M
   if (m.type == "SEN") TakeSensor(m);
   if (m.type == "KEY")
     if (const std::string* hex = m.Get("Datagrams"))
-      if (const auto key = DatagramKey::FromHex(*hex)) peer_socket_->SetKey(*key);
+      if (const auto key = wire::DatagramKey::FromHex(*hex)) peer_socket_->SetKey(*key);
   if (m.type == "PEER") TakePeer(m);
   if (m.type == "END") ended_ = true;
 }
 
 // PEER {Name n} {Address a} {Port p}: where another agent listens (it said so to the server).
-void RemoteNode::TakePeer(const ProtocolMessage& m) {
+void RemoteNode::TakePeer(const wire::ProtocolMessage& m) {
   const std::string *name = m.Get("Name"), *address = m.Get("Address");
   const auto node = name ? Lookup(*name) : std::nullopt;
   const auto port = m.Count("Port", 65535);
@@ -129,12 +129,12 @@ void RemoteNode::TakePeer(const ProtocolMessage& m) {
 
 // A SEN line, read by the part of the kind it belongs to (wire/sensor_lines.h) into the reading of
 // the instance it names; lines of sensors this robot does not have are ignored.
-void RemoteNode::TakeSensor(const ProtocolMessage& m) {
-  const LineContext context{0, 0, [this](NodeId node) { return NameOf(node); },
-                            [this](const std::string& name) { return Lookup(name); }};
+void RemoteNode::TakeSensor(const wire::ProtocolMessage& m) {
+  const wire::LineContext context{0, 0, [this](NodeId node) { return NameOf(node); },
+                                  [this](const std::string& name) { return Lookup(name); }};
   const robots::SensorConfigs& sensors = spec_.nodes[id_].model.sensors;
   for (const auto& [instance, config] : sensors) {
-    const SensorLines* kind = LinesOf(config.kind);
+    const wire::SensorLines* kind = wire::LinesOf(config.kind);
     if (!kind || !kind->IsFrom(m, instance)) continue;
     if (std::optional<SensorReading> reading = kind->Read(m, config.settings, context))
       readings_[instance] = std::move(*reading);
@@ -150,7 +150,7 @@ std::optional<SensorReading> RemoteNode::Sensor(const std::string& name) {
 
 // The radio is the simulator's: the server puts it to sleep (and says ERR if it cannot).
 bool RemoteNode::SetRadioSleep(bool asleep) {
-  Command(ProtocolMessage{"RADIO"}.Add("Sleep", asleep ? "true" : "false"));
+  Command(wire::ProtocolMessage{"RADIO"}.Add("Sleep", asleep ? "true" : "false"));
   return true;
 }
 
@@ -165,7 +165,7 @@ std::optional<BearingReading> RemoteNode::Bearing(NodeId target) {
 // Within the model's limits, as the simulated node: the server clamps nothing for wheel speeds.
 bool RemoteNode::ApplyDrive(const Twist2D& v) {
   const auto& model = spec_.nodes[id_].model;
-  ProtocolMessage drive("DRIVE");
+  wire::ProtocolMessage drive("DRIVE");
   const Twist2D c = robots::LimitDrive(model, v);
   const std::string steering = model.model().UsarsimSteering();
   if (steering == "SkidSteered") {
@@ -182,7 +182,7 @@ bool RemoteNode::ApplyDrive(const Twist2D& v) {
 
 bool RemoteNode::ApplyWheelSpeeds(const std::vector<double>& w) {
   if (std::string(spec_.nodes[id_].model.model().UsarsimSteering()) != "SkidSteered" || w.size() != 2) return false;
-  ProtocolMessage drive("DRIVE");
+  wire::ProtocolMessage drive("DRIVE");
   drive.Add("Left", w[0]).Add("Right", w[1]);
   Command(drive);
   return true;
@@ -191,10 +191,10 @@ bool RemoteNode::ApplyWheelSpeeds(const std::vector<double>& w) {
 bool RemoteNode::IsAgent(NodeId node) const { return sim::RunsAsAgent(spec_.nodes.at(node)); }
 
 void RemoteNode::SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload) {
-  ProtocolMessage send("SEND");
+  wire::ProtocolMessage send("SEND");
   send.Add("Delivery", DeliveryName(delivery));
   if (to) send.Add("To", NameOf(*to));
-  send.Add("Data", ToHex(payload));
+  send.Add("Data", wire::ToHex(payload));
   Command(send);
 }
 
@@ -203,7 +203,7 @@ void RemoteNode::Send(NodeId to, const Bytes& payload) {
   if (to >= spec_.nodes.size() || to == id_) return;
   ++messages_sent_;
   if (IsAgent(to))
-    peer_socket_->Send(to, AgentDatagram::kUnicast, payload);
+    peer_socket_->Send(to, wire::AgentDatagram::kUnicast, payload);
   else
     SendThroughServer(Delivery::kUnicast, to, payload);
 }
@@ -211,14 +211,14 @@ void RemoteNode::Send(NodeId to, const Bytes& payload) {
 void RemoteNode::Broadcast(const Bytes& payload) {
   ++messages_sent_;
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
-    if (to != id_ && IsAgent(to)) peer_socket_->Send(to, AgentDatagram::kBroadcast, payload);
+    if (to != id_ && IsAgent(to)) peer_socket_->Send(to, wire::AgentDatagram::kBroadcast, payload);
   SendThroughServer(Delivery::kBroadcast, std::nullopt, payload);
 }
 
 void RemoteNode::Flood(const Bytes& payload) {
   ++messages_sent_;
   for (NodeId to = 0; to < spec_.nodes.size(); ++to)
-    if (to != id_ && IsAgent(to)) peer_socket_->Send(to, AgentDatagram::kBroadcast, payload);
+    if (to != id_ && IsAgent(to)) peer_socket_->Send(to, wire::AgentDatagram::kBroadcast, payload);
   SendThroughServer(Delivery::kFlood, std::nullopt, payload);
 }
 
@@ -234,22 +234,22 @@ std::string FieldText(const std::string& text) {
 }  // namespace
 
 void RemoteNode::Log(const std::string& text) {
-  ProtocolMessage log("LOG");
+  wire::ProtocolMessage log("LOG");
   log.Add("Text", FieldText(text));
   Command(log);
 }
 
 void RemoteNode::Transition(const std::string& from, const std::string& to, const std::string& why) {
-  ProtocolMessage t("TRANSITION");
+  wire::ProtocolMessage t("TRANSITION");
   t.Add("From", FieldText(from)).Add("To", FieldText(to));
   if (!why.empty()) t.Add("Why", FieldText(why));
   Command(t);
 }
 
 void RemoteNode::Metric(const std::string& name, double value) {
-  ProtocolMessage m("METRIC");
-  m.Add("Name", FieldText(name)).Add("Value", FormatPrecise(value));
+  wire::ProtocolMessage m("METRIC");
+  m.Add("Name", FieldText(name)).Add("Value", wire::FormatPrecise(value));
   Command(m);
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

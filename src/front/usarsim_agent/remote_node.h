@@ -24,7 +24,7 @@
 #include "usarsim_agent/server_link.h"
 #include "wire/protocol.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 struct AgentSettings {
   PeerSettings peer;            // where the agents listen for each other
@@ -60,7 +60,7 @@ class RemoteNode : public Node {
   // A robot whose controller runs as an agent: reached over UDP, not through the server.
   bool IsAgent(NodeId node) const;
   // Reports to the server (a sanet extension line), e.g. the agent's STATS.
-  void Report(const ProtocolMessage& m) { Command(m); }
+  void Report(const wire::ProtocolMessage& m) { Command(m); }
   // The server said END: the run is over, the controller may finish (then FINISHED).
   bool ended() const { return ended_; }
 
@@ -90,11 +90,11 @@ class RemoteNode : public Node {
   bool ApplyWheelSpeeds(const std::vector<double>& rad_per_s) override;
 
  private:
-  void Command(const ProtocolMessage& m);
-  void Take(const ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
-  void TakeSensor(const ProtocolMessage& m);
+  void Command(const wire::ProtocolMessage& m);
+  void Take(const wire::ProtocolMessage& m, const std::function<void(const Message&)>& deliver);
+  void TakeSensor(const wire::ProtocolMessage& m);
   void SendThroughServer(Delivery delivery, std::optional<NodeId> to, const Bytes& payload);
-  void TakePeer(const ProtocolMessage& m);
+  void TakePeer(const wire::ProtocolMessage& m);
 
   const sim::RunSpec& spec_;
   NodeId id_;
@@ -111,4 +111,4 @@ class RemoteNode : public Node {
   bool ended_ = false;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -20,7 +20,7 @@
 #include "wire/message_lines.h"
 #include "wire/sockets.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 namespace {
 
 constexpr int kConnectWait = 10;   // s: the server may still be starting
@@ -34,7 +34,7 @@ std::string Ipv4AddressOf(const std::string& host) {
   addrinfo* found = nullptr;
   if (const int error = ::getaddrinfo(host.c_str(), nullptr, &hints, &found); error != 0)
     throw std::runtime_error("cannot find the server's host '" + host + "': " + ::gai_strerror(error));
-  const std::string text = AddressText(found->ai_addr);
+  const std::string text = wire::AddressText(found->ai_addr);
   ::freeaddrinfo(found);
   return text;
 }
@@ -65,7 +65,7 @@ int ConnectBefore(const sockaddr_in& server, std::chrono::steady_clock::time_poi
 
 ServerLink::ServerLink(const std::string& host, std::uint16_t port)
     : host_(Ipv4AddressOf(host)), address_(host + ":" + std::to_string(port)) {
-  const sockaddr_in server = Ipv4Endpoint(host_, port);
+  const sockaddr_in server = wire::Ipv4Endpoint(host_, port);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kConnectWait);
   std::string why = "no answer";
   while (fd_ < 0 && std::chrono::steady_clock::now() < deadline) {
@@ -77,7 +77,7 @@ ServerLink::ServerLink(const std::string& host, std::uint16_t port)
                              " s: " + why + " (is `sanet serve` running there, and its run not over yet?)");
   const int yes = 1;
   ::setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
-  const ProtocolMessage greeting = Await("NFO", "");
+  const wire::ProtocolMessage greeting = Await("NFO", "");
   clock_origin_ = greeting.Number("ClockOrigin");
 }
 
@@ -85,8 +85,8 @@ ServerLink::~ServerLink() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-void ServerLink::Send(const ProtocolMessage& m) {
-  const std::string line = FormatLine(m);
+void ServerLink::Send(const wire::ProtocolMessage& m) {
+  const std::string line = wire::FormatLine(m);
   std::size_t sent = 0;
   while (fd_ >= 0 && sent < line.size()) {
     const ssize_t n = ::send(fd_, line.data() + sent, line.size() - sent, MSG_NOSIGNAL);
@@ -99,7 +99,7 @@ void ServerLink::Send(const ProtocolMessage& m) {
   }
 }
 
-bool ServerLink::Read(std::vector<ProtocolMessage>& lines) {
+bool ServerLink::Read(std::vector<wire::ProtocolMessage>& lines) {
   lines = std::move(waiting_);
   waiting_.clear();
   char buffer[65536];
@@ -116,23 +116,23 @@ bool ServerLink::Read(std::vector<ProtocolMessage>& lines) {
   bool too_long = false;
   while (auto line = reader_.Next(&too_long)) {
     std::string error;
-    if (auto m = ParseLine(*line, &error)) lines.push_back(std::move(*m));
+    if (auto m = wire::ParseLine(*line, &error)) lines.push_back(std::move(*m));
   }
   return fd_ >= 0 || !lines.empty();
 }
 
 // Waits up to `timeout` s for the first line that `answers`; the others wait for Read. Nothing
 // when the time is up or the server has closed.
-std::optional<ProtocolMessage> ServerLink::WaitFor(const std::function<bool(const ProtocolMessage&)>& answers,
-                                                   double timeout) {
+std::optional<wire::ProtocolMessage> ServerLink::WaitFor(
+    const std::function<bool(const wire::ProtocolMessage&)>& answers, double timeout) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
-  std::vector<ProtocolMessage> kept;
-  std::optional<ProtocolMessage> answer;
+  std::vector<wire::ProtocolMessage> kept;
+  std::optional<wire::ProtocolMessage> answer;
   bool open = true;
   while (!answer && open && std::chrono::steady_clock::now() < deadline) {
-    std::vector<ProtocolMessage> lines;
+    std::vector<wire::ProtocolMessage> lines;
     open = Read(lines);
-    for (ProtocolMessage& line : lines)
+    for (wire::ProtocolMessage& line : lines)
       if (!answer && answers(line))
         answer = std::move(line);
       else
@@ -147,8 +147,9 @@ std::optional<ProtocolMessage> ServerLink::WaitFor(const std::function<bool(cons
 }
 
 // Waits for the first line of `type`; other lines wait for Read. An ERR is the server's answer.
-ProtocolMessage ServerLink::Await(const std::string& type, const std::string& request) {
-  const auto line = WaitFor([&](const ProtocolMessage& m) { return m.type == type || m.type == "ERR"; }, kReplyWait);
+wire::ProtocolMessage ServerLink::Await(const std::string& type, const std::string& request) {
+  const auto line =
+      WaitFor([&](const wire::ProtocolMessage& m) { return m.type == type || m.type == "ERR"; }, kReplyWait);
   if (line && line->type == type) return *line;
   if (line) {
     const std::string* text = line->Get("Message");
@@ -159,11 +160,11 @@ ProtocolMessage ServerLink::Await(const std::string& type, const std::string& re
                            " within " + std::to_string(static_cast<int>(kReplyWait)) + " s");
 }
 
-std::optional<ProtocolMessage> ServerLink::Ask(const ProtocolMessage& request, const std::string& reply_type,
-                                               double timeout) {
+std::optional<wire::ProtocolMessage> ServerLink::Ask(const wire::ProtocolMessage& request,
+                                                     const std::string& reply_type, double timeout) {
   Send(request);
   return WaitFor(
-      [&](const ProtocolMessage& m) {
+      [&](const wire::ProtocolMessage& m) {
         if (m.type == reply_type) return true;
         const std::string* text = m.Get("Message");
         return m.type == "ERR" && text && text->find(request.type) != std::string::npos;
@@ -172,11 +173,11 @@ std::optional<ProtocolMessage> ServerLink::Ask(const ProtocolMessage& request, c
 }
 
 ServerHello ServerLink::Handshake(int protocol, const std::string& fingerprint) {
-  ProtocolMessage hello{"SANET"};
+  wire::ProtocolMessage hello{"SANET"};
   hello.Add("Protocol", std::to_string(protocol)).Add("Version", SanetVersion());
   if (!fingerprint.empty()) hello.Add("Fingerprint", fingerprint);
   Send(hello);
-  ProtocolMessage reply;
+  wire::ProtocolMessage reply;
   try {
     reply = Await("SANET", "SANET");
   } catch (const std::runtime_error& e) {
@@ -201,12 +202,12 @@ ServerHello ServerLink::Handshake(int protocol, const std::string& fingerprint) 
 std::string ServerLink::FetchScenario() {
   std::string yaml;
   for (std::uint64_t part = 0, parts = 1; part < parts; ++part) {
-    ProtocolMessage request{"GETSCENARIO"};
+    wire::ProtocolMessage request{"GETSCENARIO"};
     Send(request.Add("Part", std::to_string(part)));
-    const ProtocolMessage reply = Await("SCENARIO", "GETSCENARIO");
+    const wire::ProtocolMessage reply = Await("SCENARIO", "GETSCENARIO");
     const auto n = reply.Count("Parts", 1 << 20);
     const std::string* hex = reply.Get("Yaml");
-    const auto bytes = hex ? FromHex(*hex) : std::nullopt;
+    const auto bytes = hex ? wire::FromHex(*hex) : std::nullopt;
     if (!n || !bytes) throw std::runtime_error("the server at " + address_ + " sent a malformed SCENARIO line");
     parts = *n;
     yaml.append(bytes->begin(), bytes->end());
@@ -214,11 +215,11 @@ std::string ServerLink::FetchScenario() {
   return yaml;
 }
 
-PluginIdentity ServerLink::FetchPlugin(const std::string& robot) {
-  ProtocolMessage request{"GETPLUGIN"};
+wire::PluginIdentity ServerLink::FetchPlugin(const std::string& robot) {
+  wire::ProtocolMessage request{"GETPLUGIN"};
   Send(request.Add("Robot", robot));
-  const ProtocolMessage reply = Await("PLUGIN", "GETPLUGIN");
-  PluginIdentity id;
+  const wire::ProtocolMessage reply = Await("PLUGIN", "GETPLUGIN");
+  wire::PluginIdentity id;
   id.controller_api = static_cast<int>(reply.Count("ControllerApi", 1000000).value_or(0));
   if (const std::string* library = reply.Get("Library")) id.library = *library;
   if (const std::string* sha = reply.Get("Sha256")) id.sha256 = *sha;
@@ -226,4 +227,4 @@ PluginIdentity ServerLink::FetchPlugin(const std::string& robot) {
   return id;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

@@ -13,7 +13,7 @@
 #include "wire/plugin_identity.h"
 #include "wire/protocol.h"
 
-namespace sanet::hil {
+namespace sanet::usarsim_agent {
 
 // The server's answer to the handshake.
 struct ServerHello {
@@ -42,24 +42,26 @@ class ServerLink {
   // Throws when the server refuses, speaks another protocol version, or no sanet extensions at all.
   ServerHello Handshake(int protocol, const std::string& fingerprint);
   std::string FetchScenario();  // the effective scenario, YAML
-  PluginIdentity FetchPlugin(const std::string& robot);
+  wire::PluginIdentity FetchPlugin(const std::string& robot);
 
-  void Send(const ProtocolMessage& m);
+  void Send(const wire::ProtocolMessage& m);
   // Sends `request` and waits up to `timeout` s for its answer, a line of `reply_type` or an ERR
   // that names the request; lines that come meanwhile wait for Read. Nothing on a timeout.
-  std::optional<ProtocolMessage> Ask(const ProtocolMessage& request, const std::string& reply_type, double timeout);
+  std::optional<wire::ProtocolMessage> Ask(const wire::ProtocolMessage& request, const std::string& reply_type,
+                                           double timeout);
   // The lines that have arrived, without waiting; false once the server has closed.
-  bool Read(std::vector<ProtocolMessage>& lines);
+  bool Read(std::vector<wire::ProtocolMessage>& lines);
 
  private:
-  ProtocolMessage Await(const std::string& type, const std::string& request);
-  std::optional<ProtocolMessage> WaitFor(const std::function<bool(const ProtocolMessage&)>& answers, double timeout);
+  wire::ProtocolMessage Await(const std::string& type, const std::string& request);
+  std::optional<wire::ProtocolMessage> WaitFor(const std::function<bool(const wire::ProtocolMessage&)>& answers,
+                                               double timeout);
   std::string host_, address_;
   int fd_ = -1;
-  LineReader reader_{1 << 20};
-  std::vector<ProtocolMessage> waiting_;  // lines read while awaiting another
+  wire::LineReader reader_{1 << 20};
+  std::vector<wire::ProtocolMessage> waiting_;  // lines read while awaiting another
   std::optional<double> clock_origin_;
   std::uint16_t time_port_ = 0;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::usarsim_agent

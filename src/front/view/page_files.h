@@ -1,4 +1,4 @@
-// The viewer's page (src/view/page), compiled into the command by cmake/embed_files.cmake.
+// The viewer's page (src/front/view/page), compiled into the command by cmake/embed_files.cmake.
 #pragma once
 
 #include <map>

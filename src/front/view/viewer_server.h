@@ -1,5 +1,5 @@
 // `sanet view RESULTS_DIR`: an HTTP server (cpp-httplib) on loopback that serves the viewer's page
-// (src/view/page, compiled in), the JavaScript libraries it uses from Debian's packages (three.js,
+// (src/front/view/page, compiled in), the JavaScript libraries it uses from Debian's packages (three.js,
 // Chart.js) and the run's trace as JSON (/api/...), read by view::TraceReader.
 #pragma once
 

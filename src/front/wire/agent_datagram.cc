@@ -11,7 +11,7 @@
 #include "sanet/codec.h"
 #include "wire/message_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 constexpr std::uint8_t kMagic = 0x53;  // 'S'
@@ -36,7 +36,7 @@ DatagramKey DatagramKey::Random() {
 std::string DatagramKey::Hex() const { return ToHex(Bytes(bytes_.begin(), bytes_.end())); }
 
 std::optional<DatagramKey> DatagramKey::FromHex(const std::string& hex) {
-  const std::optional<Bytes> bytes = hil::FromHex(hex);
+  const std::optional<Bytes> bytes = wire::FromHex(hex);
   DatagramKey key;
   if (!bytes || bytes->size() != key.bytes_.size()) return std::nullopt;
   std::copy(bytes->begin(), bytes->end(), key.bytes_.begin());
@@ -105,4 +105,4 @@ bool ReplayWindow::Take(std::uint64_t sequence) {
   return true;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

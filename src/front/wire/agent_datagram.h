@@ -13,7 +13,7 @@
 
 #include "sanet/message.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 class DatagramKey {
  public:
@@ -58,4 +58,4 @@ class ReplayWindow {
   std::uint64_t seen_ = 0;  // bit i: highest_ - i taken
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

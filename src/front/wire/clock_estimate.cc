@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 ClockSample SampleOf(const ClockExchange& e) {
   ClockSample s;
@@ -63,4 +63,4 @@ double ClockEstimate::ErrorBound(double local) const {
   return bound;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -10,7 +10,7 @@
 #include <deque>
 #include <optional>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 // One exchange: t1 sent here, t2 received there, t3 sent there, t4 received here (s; t1 and t4
 // on this computer's clock, t2 and t3 on the server's).
@@ -75,4 +75,4 @@ std::optional<ClockSample> Best(const Exchanges& burst) {
   return best;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

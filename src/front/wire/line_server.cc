@@ -15,7 +15,7 @@
 #include "wire/tcp_window.h"
 #include "wire/time_service.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 // A client whose advertised window is this close to the widest it has advertised has read what
@@ -316,4 +316,4 @@ void LineServer::CheckHandshake(ConnectionId id, Connection& c, double now) {
   Drop(id, why);
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -25,7 +25,7 @@
 
 #include "wire/protocol.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 struct LineServerSettings {
   std::string bind = "127.0.0.1";
@@ -122,4 +122,4 @@ class LineServer {
 // is lower.
 void RaiseDescriptorLimit(std::size_t connections);
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 int HexDigit(char c) {
@@ -99,4 +99,4 @@ std::optional<Message> ParseMsgLine(const ProtocolMessage& line, const std::opti
   return m;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

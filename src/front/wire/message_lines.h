@@ -20,7 +20,7 @@
 #include "sanet/message.h"
 #include "wire/protocol.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 // The largest RECV {Bytes n} (a UDP datagram's payload) and {Hops h} a line may give.
 constexpr std::uint64_t kMostDatagramBytes = 65507, kMostHops = 1000;
@@ -47,4 +47,4 @@ std::optional<ReceivedReport> ParseRecvLine(const ProtocolMessage& line, const s
 std::optional<Message> ParseMsgLine(const ProtocolMessage& line, const std::optional<NodeId>& from, NodeId to,
                                     std::string* error);
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

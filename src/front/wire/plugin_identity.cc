@@ -13,7 +13,7 @@
 #include "sanet/plugin.h"
 #include "wire/message_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 std::string Sha256OfFile(const std::string& path) {
@@ -95,4 +95,4 @@ std::string PluginDifference(const PluginIdentity& server, const PluginIdentity&
   return "";
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

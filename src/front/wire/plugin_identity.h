@@ -8,7 +8,7 @@
 
 #include "sim/run_spec.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 struct PluginIdentity {
   std::string library;  // path; empty for a controller built into sanet
@@ -25,4 +25,4 @@ PluginIdentity IdentifyPlugin(const sim::ControllerSpec& controller);
 // Empty when they match; else what differs, naming both sides' values.
 std::string PluginDifference(const PluginIdentity& server, const PluginIdentity& agent);
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 bool SameWord(std::string_view a, std::string_view b) {
@@ -183,4 +183,4 @@ std::optional<std::string> LineReader::Next(bool* too_long) {
   return line;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 // The version of sanet's own extensions to the protocol (the SANET line, docs/protocol.md): a
 // server and an agent work together only when theirs are equal. 2: clock exchanges, scenario and
@@ -66,4 +66,4 @@ class LineReader {
   char partner_ = 0;         // the other half of a CR LF (LF CR) whose first half ended the data
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

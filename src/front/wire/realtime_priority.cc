@@ -5,7 +5,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 std::string UseRealTimePriority() {
   sched_param param{};
@@ -16,4 +16,4 @@ std::string UseRealTimePriority() {
   return "SCHED_FIFO";
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

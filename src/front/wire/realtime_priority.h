@@ -5,9 +5,9 @@
 
 #include <string>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 // Tries to move this process to SCHED_FIFO at a middle priority. Returns "SCHED_FIFO" or why not.
 std::string UseRealTimePriority();
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -1,6 +1,6 @@
 #include "wire/sensor_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 const SensorLines* LinesOf(const std::string& kind) {
 #define SANET_LINES_IF(name, Name) \
@@ -28,4 +28,4 @@ bool NamesInstance(const ProtocolMessage& line, const std::string& type, const s
   return line_type && *line_type == type && name && *name == WireName(instance, kind, usarsim_name);
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

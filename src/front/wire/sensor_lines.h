@@ -17,7 +17,7 @@
 #include "sensors/sensor_kinds.h"
 #include "wire/protocol.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 // What lines may refer to besides the reading: the time, the body's height, other nodes' names.
 struct LineContext {
@@ -61,4 +61,4 @@ std::string WireName(const std::string& instance, const std::string& kind, const
 bool NamesInstance(const ProtocolMessage& line, const std::string& type, const std::string& instance,
                    const std::string& kind, const std::string& usarsim_name);
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 sockaddr_in Ipv4Endpoint(const std::string& host, std::uint16_t port) {
   sockaddr_in a{};
@@ -69,4 +69,4 @@ std::string PeerOf(int fd, std::string* host) {
   return text + ":" + std::to_string(ntohs(peer.sin_port));
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 // A non-blocking TCP socket listening on `bind`:`port` (0: any free port); sets `bound` to the
 // port it got. Throws std::runtime_error naming the address and the reason.
@@ -25,4 +25,4 @@ std::string AddressText(const sockaddr* address);
 // "host:port" of a connected socket's peer; its host alone in `host` if given.
 std::string PeerOf(int fd, std::string* host = nullptr);
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 std::optional<std::uint32_t> PeerReceiveWindow(int fd) {
   tcp_info info{};
@@ -17,4 +17,4 @@ std::optional<std::uint32_t> PeerReceiveWindow(int fd) {
   return info.tcpi_snd_wnd;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

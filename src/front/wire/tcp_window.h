@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <optional>
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 // The receive window (bytes) the peer of a connected TCP socket last advertised; nothing when
 // the kernel does not say (Linux before 5.4).
 std::optional<std::uint32_t> PeerReceiveWindow(int fd);
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -13,7 +13,7 @@
 #include "sanet/codec.h"
 #include "wire/sockets.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 constexpr std::uint32_t kRequestMagic = 0x31515473;  // "sTQ1" as little-endian bytes
@@ -99,4 +99,4 @@ void TimeService::Serve() {
   }
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

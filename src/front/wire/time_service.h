@@ -17,7 +17,7 @@
 #include "sanet/message.h"
 #include "wire/clock_estimate.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 
 Bytes TimeRequest(double sent);
 std::optional<double> ReadTimeRequest(const std::uint8_t* data, std::size_t size);  // t1
@@ -49,4 +49,4 @@ class TimeService {
   std::thread thread_;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

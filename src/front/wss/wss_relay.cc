@@ -13,7 +13,7 @@
 
 #include "wire/sockets.h"
 
-namespace sanet::hil {
+namespace sanet::wss {
 namespace {
 
 constexpr std::size_t kMaxPending = 256 * 1024;  // per direction: stop reading beyond it
@@ -36,7 +36,7 @@ void WssRelay::Listen() {
   if (fd < 0) return;
   const int yes = 1;
   ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  sockaddr_in a = Ipv4Endpoint(bind_, port_);
+  sockaddr_in a = wire::Ipv4Endpoint(bind_, port_);
   if (::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd, 8) != 0) {
     ::close(fd);
     return;
@@ -69,7 +69,7 @@ void WssRelay::Accept() {
     pipe.accepted = accepted;
     pipe.outgoing = ::socket(AF_INET, SOCK_STREAM, 0);
     NonBlocking(pipe.outgoing);
-    const sockaddr_in target = Ipv4Endpoint(target_host_, target_port_);
+    const sockaddr_in target = wire::Ipv4Endpoint(target_host_, target_port_);
     if (::connect(pipe.outgoing, reinterpret_cast<const sockaddr*>(&target), sizeof target) != 0 &&
         errno != EINPROGRESS) {
       Close(pipe);
@@ -129,4 +129,4 @@ bool WssRelay::UsesLocalPort(std::uint16_t port) const {
   return std::any_of(pipes_.begin(), pipes_.end(), [&](const Pipe& p) { return p.local_port == port; });
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wss

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace sanet::hil {
+namespace sanet::wss {
 
 class WssRelay {
  public:
@@ -52,4 +52,4 @@ class WssRelay {
   std::uint64_t connections_ = 0, cut_ = 0, bytes_ = 0;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::wss

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-namespace sanet::hil {
+namespace sanet::wss {
 namespace {
 
 // "5000,5001" or "5000 5001": whole port numbers, or nothing.
@@ -29,30 +29,30 @@ std::optional<std::vector<std::uint16_t>> Ports(const std::string& text) {
 }  // namespace
 
 WssServer::WssServer(sim::Driver& driver, WssSettings settings) : driver_(driver), settings_(std::move(settings)) {
-  LineServer::Events events;
-  events.connected = [this](ConnectionId id) {
+  wire::LineServer::Events events;
+  events.connected = [this](wire::ConnectionId id) {
     Robot& robot = robots_[id] = Robot{};
     robot.id = id;
     robot.host = lines_->PeerHost(id);
   };
-  events.line = [this](ConnectionId id, const std::string& line) {
+  events.line = [this](wire::ConnectionId id, const std::string& line) {
     std::string error;
-    if (auto m = ParseLine(line, &error)) Handle(robots_.at(id), *m);  // WSS has no word for a malformed line
+    if (auto m = wire::ParseLine(line, &error)) Handle(robots_.at(id), *m);  // WSS has no word for a malformed line
   };
-  events.gone = [this](ConnectionId id, const std::string&) { Gone(id); };
+  events.gone = [this](wire::ConnectionId id, const std::string&) { Gone(id); };
   events.refusal_line = [](const std::string& why) {
-    return FormatLine(ProtocolMessage("ERROR").Add("Reason", "Too.Many.Connections: " + why));
+    return wire::FormatLine(wire::ProtocolMessage("ERROR").Add("Reason", "Too.Many.Connections: " + why));
   };
   events.silence_line = [](const std::string& why) {
-    return FormatLine(ProtocolMessage("ERROR").Add("Reason", "Handshake.Timeout: " + why));
+    return wire::FormatLine(wire::ProtocolMessage("ERROR").Add("Reason", "Handshake.Timeout: " + why));
   };
-  LineServerSettings lines;
+  wire::LineServerSettings lines;
   lines.bind = settings_.bind;
   lines.port = settings_.port;
   lines.max_clients = settings_.max_clients;
   lines.cap_option = "--wss-max-clients";
   lines.max_line = settings_.max_line;
-  lines_ = std::make_unique<LineServer>(lines, std::move(events));
+  lines_ = std::make_unique<wire::LineServer>(lines, std::move(events));
 }
 
 WssServer::~WssServer() { relays_.clear(); }
@@ -79,7 +79,7 @@ void WssServer::Poll() {
   for (auto it = robots_.begin(); it != robots_.end();) it = it->second.open ? std::next(it) : robots_.erase(it);
 }
 
-void WssServer::Handle(Robot& r, const ProtocolMessage& m) {
+void WssServer::Handle(Robot& r, const wire::ProtocolMessage& m) {
   if (r.name.empty()) return m.type == "INIT" ? Init(r, m) : Error(r, "Must.Use.INIT.Method.First");
   if (m.type == "GETSS") return GetSignal(r, m);
   if (m.type == "DNS") return Dns(r, m);
@@ -87,7 +87,7 @@ void WssServer::Handle(Robot& r, const ProtocolMessage& m) {
   Error(r, "Method.Unknown.Or.Can.INIT.only.once");
 }
 
-void WssServer::Init(Robot& r, const ProtocolMessage& m) {
+void WssServer::Init(Robot& r, const wire::ProtocolMessage& m) {
   const std::string* name = m.Get("Robot");
   const std::string* ports = m.Get("Port");
   if (!name || name->empty()) return Error(r, "Robot.Name.Must.Not.Be.Empty");
@@ -100,12 +100,12 @@ void WssServer::Init(Robot& r, const ProtocolMessage& m) {
   r.node = *node;
   r.ports = *list;
   lines_->Register(r.id);  // a registered robot keeps its slot when the cap is full
-  Send(r, ProtocolMessage("INITREPLY").Add("Status", "OK"));
+  Send(r, wire::ProtocolMessage("INITREPLY").Add("Status", "OK"));
 }
 
-void WssServer::GetSignal(Robot& r, const ProtocolMessage& m) {
+void WssServer::GetSignal(Robot& r, const wire::ProtocolMessage& m) {
   const std::string* other = m.Get("Robot");
-  ProtocolMessage reply("SS");
+  wire::ProtocolMessage reply("SS");
   reply.Add("Robot", other ? *other : "");
   // Any node of the world answers, registered or not, as USARSim's WSS answers for any robot in
   // the game.
@@ -113,13 +113,13 @@ void WssServer::GetSignal(Robot& r, const ProtocolMessage& m) {
   if (o == r.node) return Send(r, reply.Add("Strength", "INF").Add("Error", "SS.To.Self"));
   if (!o) return Send(r, reply.Add("Strength", "NaN").Add("Error", "Robot.Does.Not.Exist"));
   const auto signal = driver_.SignalBetween(*o, r.node);
-  Send(r, signal ? reply.Add("Strength", FormatNumber(signal->received_dbm))
+  Send(r, signal ? reply.Add("Strength", wire::FormatNumber(signal->received_dbm))
                  : reply.Add("Strength", "NaN").Add("Error", "No.Simulated.Radio"));
 }
 
-void WssServer::Dns(Robot& r, const ProtocolMessage& m) {
+void WssServer::Dns(Robot& r, const wire::ProtocolMessage& m) {
   const std::string* other = m.Get("Robot");
-  ProtocolMessage reply("DNSREPLY");
+  wire::ProtocolMessage reply("DNSREPLY");
   reply.Add("Robot", other ? *other : "");
   Robot* o = other ? Registered(*other) : nullptr;
   // A robot of the world that has not registered has no ports to relay to: WSS's NoSuchRobot,
@@ -151,9 +151,9 @@ void WssServer::Dns(Robot& r, const ProtocolMessage& m) {
 }
 
 // The robot whose relayed connection reaches this one from port `p` of the server's host.
-void WssServer::ReverseDns(Robot& r, const ProtocolMessage& m) {
+void WssServer::ReverseDns(Robot& r, const wire::ProtocolMessage& m) {
   const std::string* port = m.Get("Port");
-  ProtocolMessage reply("REVERSEDNSREPLY");
+  wire::ProtocolMessage reply("REVERSEDNSREPLY");
   reply.Add("Port", port ? *port : "");
   const auto list = port ? Ports(*port) : std::nullopt;
   if (list && list->size() == 1)
@@ -184,7 +184,7 @@ void WssServer::UpdateRelays() {
 }
 
 // Closing the control connection deregisters the robot: its relays, both ways, go with it.
-void WssServer::Gone(ConnectionId id) {
+void WssServer::Gone(wire::ConnectionId id) {
   Robot& r = robots_.at(id);
   r.open = false;
   for (auto it = relays_.begin(); it != relays_.end();) {
@@ -199,10 +199,12 @@ void WssServer::Gone(ConnectionId id) {
   }
 }
 
-void WssServer::Send(Robot& r, const ProtocolMessage& m) {
-  if (r.open) lines_->Send(r.id, FormatLine(m));
+void WssServer::Send(Robot& r, const wire::ProtocolMessage& m) {
+  if (r.open) lines_->Send(r.id, wire::FormatLine(m));
 }
 
-void WssServer::Error(Robot& r, const std::string& reason) { Send(r, ProtocolMessage("ERROR").Add("Reason", reason)); }
+void WssServer::Error(Robot& r, const std::string& reason) {
+  Send(r, wire::ProtocolMessage("ERROR").Add("Reason", reason));
+}
 
-}  // namespace sanet::hil
+}  // namespace sanet::wss

@@ -20,7 +20,7 @@
 #include "wire/protocol.h"
 #include "wss/wss_relay.h"
 
-namespace sanet::hil {
+namespace sanet::wss {
 
 struct WssSettings {
   std::string bind = "127.0.0.1";
@@ -42,7 +42,7 @@ class WssServer {
  private:
   // A control connection (LineServer keeps its socket and buffers) and the robot it registered.
   struct Robot {
-    ConnectionId id = 0;
+    wire::ConnectionId id = 0;
     std::string host;  // where its control connection comes from: its ports are there
     bool open = true;
     std::string name;  // empty until INIT
@@ -52,25 +52,25 @@ class WssServer {
   using RelayKey = std::tuple<std::string, std::string, std::uint16_t>;  // from, to, port of `to`
 
   void Poll();
-  void Gone(ConnectionId id);
-  void Handle(Robot& r, const ProtocolMessage& m);
-  void Init(Robot& r, const ProtocolMessage& m);
-  void GetSignal(Robot& r, const ProtocolMessage& m);
-  void Dns(Robot& r, const ProtocolMessage& m);
-  void ReverseDns(Robot& r, const ProtocolMessage& m);
+  void Gone(wire::ConnectionId id);
+  void Handle(Robot& r, const wire::ProtocolMessage& m);
+  void Init(Robot& r, const wire::ProtocolMessage& m);
+  void GetSignal(Robot& r, const wire::ProtocolMessage& m);
+  void Dns(Robot& r, const wire::ProtocolMessage& m);
+  void ReverseDns(Robot& r, const wire::ProtocolMessage& m);
   Robot* Registered(const std::string& name);
   bool LinkUp(NodeId a, NodeId b) const;
   void UpdateRelays();
-  void Send(Robot& r, const ProtocolMessage& m);
+  void Send(Robot& r, const wire::ProtocolMessage& m);
   void Error(Robot& r, const std::string& reason);
 
   sim::Driver& driver_;
   WssSettings settings_;
-  std::map<ConnectionId, Robot> robots_;
-  std::unique_ptr<LineServer> lines_;
+  std::map<wire::ConnectionId, Robot> robots_;
+  std::unique_ptr<wire::LineServer> lines_;
   std::map<RelayKey, std::unique_ptr<WssRelay>> relays_;
   std::uint64_t relays_cut_ = 0, connections_ = 0, bytes_ = 0;  // of relays already gone
   std::uint64_t relays_opened_ = 0;
 };
 
-}  // namespace sanet::hil
+}  // namespace sanet::wss

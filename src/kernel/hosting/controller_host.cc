@@ -3,7 +3,7 @@
 #include "core/closest_names.h"
 #include "core/exception_text.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 namespace {
 
 // "unknown controller 'x'", with the closest names and every one the registry knows.
@@ -96,4 +96,4 @@ void ControllerHost::Deliver(const Message& m) {
   Guard(" on a message", [&] { controller_->OnMessage(node_, m); });
 }
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

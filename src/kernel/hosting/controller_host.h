@@ -16,7 +16,7 @@
 #include "hosting/host_clock.h"
 #include "sanet/controller.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 // Impairments added on top of the network, as the receiving controller sees them: a message is
 // lost with probability `loss`, or reaches the controller `delay` later.
@@ -76,4 +76,4 @@ class ControllerHost {
   bool failed_ = false, off_ = false, started_ = false;
 };
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

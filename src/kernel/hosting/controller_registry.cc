@@ -5,7 +5,7 @@
 #include "core/exception_text.h"
 #include "sanet/plugin.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 void Registry::Add(ControllerInfo info) {
   if (info.name.empty() || !info.create) throw RegistryError("a controller needs a name and a factory");
@@ -67,4 +67,4 @@ void Registry::StartRun(std::uint64_t seed) const {
   if (python_.start_run) python_.start_run(seed);
 }
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

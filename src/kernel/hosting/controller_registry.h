@@ -12,7 +12,7 @@
 #include "hosting/controller_spec.h"
 #include "sanet/controller.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 class RegistryError : public std::runtime_error {
  public:
@@ -52,4 +52,4 @@ class Registry : public ControllerRegistry {
   PythonSupport python_;
 };
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

@@ -6,7 +6,7 @@
 
 #include "sanet/params.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 struct ControllerSpec {
   std::string name;     // registered name
@@ -19,4 +19,4 @@ struct ControllerSpec {
   Params params;
 };
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

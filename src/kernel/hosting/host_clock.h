@@ -3,7 +3,7 @@
 
 #include <functional>
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 class HostClock {
  public:
@@ -13,4 +13,4 @@ class HostClock {
   virtual void After(double delay, std::function<void()> action) = 0;
 };
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

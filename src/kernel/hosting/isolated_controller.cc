@@ -17,12 +17,12 @@
 #include "hosting/node_calls.h"
 #include "sanet/codec.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 namespace {
 
 // What crosses the socket. The parent asks the child to run a controller call (kStart, kStep,
 // kMessage, kFinish); while it runs, the child asks the parent for node calls (the call list of
-// agents/node_calls.h) and gets one answer for each; the call ends with kDone or kFailed (the text
+// hosting/node_calls.h) and gets one answer for each; the call ends with kDone or kFailed (the text
 // of what the controller threw).
 #define SANET_CALL_NUMBER(name, ...) k##name,
 enum Call : std::uint8_t {
@@ -269,4 +269,4 @@ std::unique_ptr<Controller> MakeIsolatedController(const ControllerSpec& spec, R
   return controller;
 }
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

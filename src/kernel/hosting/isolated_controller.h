@@ -13,10 +13,10 @@
 #include "hosting/controller_spec.h"
 #include "sanet/controller.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 // Forks the child that makes and hosts the controller of `spec` (its library loaded there);
 // throws RegistryError or ParamError as MakeController does, with the child's words.
 std::unique_ptr<Controller> MakeIsolatedController(const ControllerSpec& spec, Registry& registry);
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

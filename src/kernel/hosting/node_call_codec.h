@@ -1,5 +1,5 @@
 // The values of Node calls as bytes, for a node whose calls cross a process boundary
-// (agents/isolated_controller.cc): Put writes a value, Get reads one back, for every argument and
+// (hosting/isolated_controller.cc): Put writes a value, Get reads one back, for every argument and
 // result type that include/sanet/node.h uses, so that a call list names types and nothing more.
 #pragma once
 
@@ -15,7 +15,7 @@
 #include "sanet/codec.h"
 #include "sanet/node.h"
 
-namespace sanet::agents::node_calls {
+namespace sanet::hosting::node_calls {
 
 inline void Put(Writer& w, double v) { w.F64(v); }
 inline void Put(Writer& w, bool v) { w.Bool(v); }
@@ -234,4 +234,4 @@ std::tuple<Args...> GetAll(Reader& r) {
   return std::tuple<Args...>{Get<Args>(r)...};
 }
 
-}  // namespace sanet::agents::node_calls
+}  // namespace sanet::hosting::node_calls

@@ -1,6 +1,6 @@
 // Every Node and NetworkView call that a controller in another process makes, listed once and
 // expanded into the call numbers, the child's proxy node and the parent's dispatcher
-// (agents/isolated_controller.cc). A call added to include/sanet/node.h is added here, and only
+// (hosting/isolated_controller.cc). A call added to include/sanet/node.h is added here, and only
 // here. Identity (Id, Name, NodeCount, Holonomic) travels with the first call instead.
 //
 // CALL(name, the proxy's override, result, (parameters), (arguments), const or nothing)

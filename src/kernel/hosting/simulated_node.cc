@@ -1,6 +1,6 @@
 #include "hosting/simulated_node.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 sensors::ReadContext SimulatedNode::Context(std::optional<NodeId> target) const {
   return {id_, directory_.NodeCount(), [this](NodeId node) { return directory_.TruePose(node); }, target};
@@ -44,4 +44,4 @@ void SimulatedNode::SwitchOff() {
   transport_.SwitchOff(id_);
 }
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

@@ -14,7 +14,7 @@
 #include "sanet/node.h"
 #include "sensors/sensor_set.h"
 
-namespace sanet::agents {
+namespace sanet::hosting {
 
 // What a node may ask of the run it belongs to.
 class NodeDirectory {
@@ -115,4 +115,4 @@ class SimulatedNode : public Node {
   bool off_ = false;
 };
 
-}  // namespace sanet::agents
+}  // namespace sanet::hosting

@@ -72,6 +72,7 @@ void RunPresentation::Subscribe() {
   Present<sim::MetricReported>([&m](const sim::MetricReported& e) { m.Metric(e.t, e.node, e.name, e.value); });
   Present<sim::LogLine>([&m](const sim::LogLine& e) { m.Event(e.t, e.node, "log", e.text); });
   Present<sim::SwitchedOff>([&m](const sim::SwitchedOff& e) { m.Event(e.t, e.node, "switch_off", ""); });
+  Present<sim::RunEnded>([&m](const sim::RunEnded&) { m.Flush(); });  // the last radio window
 }
 
 }  // namespace sanet::ros2_presentation

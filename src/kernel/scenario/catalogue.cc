@@ -98,7 +98,7 @@ std::string SensorSection() {
   return out;
 }
 
-std::string ControllerSection(const agents::Registry& registry) {
+std::string ControllerSection(const hosting::Registry& registry) {
   std::string out = "controllers (parameters as each reads them):\n";
   for (const ControllerInfo* c : registry.List()) out += Line("  %-18s %s\n", c->name, c->description) + ParamLines(*c);
   return out;
@@ -106,7 +106,7 @@ std::string ControllerSection(const agents::Registry& registry) {
 
 }  // namespace
 
-std::string Catalogue(const agents::Registry& registry, CatalogueSections sections) {
+std::string Catalogue(const hosting::Registry& registry, CatalogueSections sections) {
   return (sections.models ? ModelSection() : "") + (sections.sensors ? SensorSection() : "") +
          (sections.controllers ? ControllerSection(registry) : "");
 }

@@ -13,7 +13,7 @@ namespace sanet::scenario {
 struct CatalogueSections {
   bool models = true, sensors = true, controllers = true;
 };
-std::string Catalogue(const agents::Registry& registry, CatalogueSections sections = {});
+std::string Catalogue(const hosting::Registry& registry, CatalogueSections sections = {});
 // Each table between `<!-- fields: NAME -->` and `<!-- /fields -->` lines, as in docs/scenario.md.
 std::string ReferenceMarkdown();
 

@@ -443,7 +443,7 @@ void Read(const Field& root, Scenario& sc) {
   }
 }
 
-void CheckEachController(const Scenario& scenario, agents::Registry& registry) {
+void CheckEachController(const Scenario& scenario, hosting::Registry& registry) {
   for (std::size_t i = 0; i < scenario.run.nodes.size(); ++i) {
     const auto& node = scenario.run.nodes[i];
     if (!node.controller) continue;
@@ -452,7 +452,7 @@ void CheckEachController(const Scenario& scenario, agents::Registry& registry) {
     if (!node.controller->library.empty()) {
       try {
         registry.LoadLibrary(node.controller->library);
-      } catch (const agents::RegistryError& e) {
+      } catch (const hosting::RegistryError& e) {
         throw ScenarioError(scenario.file, line, field + ".library", e.what());
       }
     }
@@ -461,7 +461,7 @@ void CheckEachController(const Scenario& scenario, agents::Registry& registry) {
     } catch (const ParamError& e) {
       const int at = e.line() ? e.line() : node.controller->params.Line(e.key());
       throw ScenarioError(scenario.file, at ? at : line, field + ".params." + e.key(), e.what());
-    } catch (const agents::RegistryError& e) {
+    } catch (const hosting::RegistryError& e) {
       throw ScenarioError(scenario.file, line, field + (node.controller->python.empty() ? ".name" : ".python"),
                           e.what());
     } catch (const std::exception& e) {
@@ -504,7 +504,7 @@ Scenario LoadScenarioText(const std::string& text, const std::string& name) {
   return Load(name, {}, [&] { return ParseYamlText(text, name); });
 }
 
-void CheckControllers(const Scenario& scenario, agents::Registry& registry) {
+void CheckControllers(const Scenario& scenario, hosting::Registry& registry) {
   try {
     CheckEachController(scenario, registry);
   } catch (const ScenarioError& e) {

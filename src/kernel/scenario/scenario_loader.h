@@ -41,6 +41,6 @@ void SetPythonPath(const std::vector<std::string>& folders);
 Scenario LoadScenarioText(const std::string& text, const std::string& name);
 
 // Checks that every node's controller exists (loading libraries) and accepts its parameters.
-void CheckControllers(const Scenario& scenario, agents::Registry& registry);
+void CheckControllers(const Scenario& scenario, hosting::Registry& registry);
 
 }  // namespace sanet::scenario

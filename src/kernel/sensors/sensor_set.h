@@ -1,6 +1,6 @@
 // The sensors of one node, made from its model's sensor configurations by their kinds, and read
 // by instance name. Both paths that read a simulated robot's sensors (its controller through
-// agents::SimulatedNode, a front end through sim::Driver) come here.
+// hosting::SimulatedNode, a front end through sim::Driver) come here.
 #pragma once
 
 #include <memory>

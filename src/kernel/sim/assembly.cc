@@ -21,7 +21,7 @@ bool g_assembly_exists = false;
 constexpr std::size_t kStepsAhead = 8;
 
 // The controllers' clock in a simulated run: ns-3's.
-class SimulationClock : public agents::HostClock {
+class SimulationClock : public hosting::HostClock {
  public:
   double Now() const override { return ns3::Simulator::Now().GetSeconds(); }
   void After(double delay, std::function<void()> action) override {
@@ -38,7 +38,7 @@ ns3::Ptr<ns3::Node> Ns3Node() {
 
 }  // namespace
 
-Assembly::Assembly(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers)
+Assembly::Assembly(const RunSpec& spec, hosting::Registry& registry, RobotDrivers drivers)
     : spec_(spec), run_nodes_(spec.nodes), drivers_(drivers) {
   if (g_assembly_exists) throw WorldError("only one World may exist at a time (ns-3 is process-wide)");
   if (spec.physics_step <= 0) throw WorldError("physics step must be positive");
@@ -107,7 +107,7 @@ bool Assembly::remote(NodeId id) const {
   return drivers_ == RobotDrivers::kFrontEnds && robots::HasDrive(run_nodes_.at(id).model);
 }
 
-void Assembly::BuildNodes(agents::Registry& registry) {
+void Assembly::BuildNodes(hosting::Registry& registry) {
   registry.StartRun(spec_.seed);  // before any controller is made (isolated ones fork from here)
   for (NodeId id = 0; id < run_nodes_.size(); ++id) {
     const NodeSpec& n = run_nodes_[id];
@@ -115,21 +115,21 @@ void Assembly::BuildNodes(agents::Registry& registry) {
       AddNode(id, nullptr);
       continue;
     }
-    AddNode(id, spec_.isolate_controllers ? agents::MakeIsolatedController(*n.controller, registry)
-                                          : agents::MakeController(*n.controller, registry));
+    AddNode(id, spec_.isolate_controllers ? hosting::MakeIsolatedController(*n.controller, registry)
+                                          : hosting::MakeController(*n.controller, registry));
   }
 }
 
 // The simulated node and the controller's host of node `id`, whose body exists.
 void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
   const NodeSpec& n = run_nodes_[id];
-  nodes_.push_back(std::make_unique<agents::SimulatedNode>(id, n.name, *models_[id], *sensors_[id], *transport_, *this,
-                                                           *clock_,
-                                                           RandomStream(spec_.seed, "node/" + n.name + "/controller")));
-  const agents::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
-  hosts_.push_back(std::make_unique<agents::ControllerHost>(*nodes_.back(), std::move(controller),
-                                                            n.controller ? n.controller->rate : 1, impairments,
-                                                            spec_.seed, *clock_, HostHooks(id)));
+  nodes_.push_back(
+      std::make_unique<hosting::SimulatedNode>(id, n.name, *models_[id], *sensors_[id], *transport_, *this, *clock_,
+                                               RandomStream(spec_.seed, "node/" + n.name + "/controller")));
+  const hosting::MessageImpairments impairments{spec_.message_loss, spec_.message_delay};
+  hosts_.push_back(std::make_unique<hosting::ControllerHost>(*nodes_.back(), std::move(controller),
+                                                             n.controller ? n.controller->rate : 1, impairments,
+                                                             spec_.seed, *clock_, HostHooks(id)));
   states_.emplace_back();
 }
 
@@ -142,16 +142,16 @@ NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, cons
   if (local_) local_->AddNode();
   AddNode(id, nullptr);
   physics_->Settle();  // the physics thread reads the lists grown here
-  bus_.Publish(NodeSpawned{Now(), id, spawned_as, models_.at(id)->body().pose()});
+  Tell(NodeSpawned{Now(), id, spawned_as, models_.at(id)->body().pose()});
   Log(id, why);
   return id;
 }
 
-agents::ControllerHost::Hooks Assembly::HostHooks(NodeId id) {
-  agents::ControllerHost::Hooks hooks;
-  hooks.delivered = [this, id](const Message& m) { bus_.Publish(MessageDelivered{id, m}); };
-  hooks.dropped = [this, id](const Message& m) { bus_.Publish(MessageDropped{id, m}); };
-  hooks.failed = [this](const std::string& why) { bus_.Publish(ControllerFailed{why}); };
+hosting::ControllerHost::Hooks Assembly::HostHooks(NodeId id) {
+  hosting::ControllerHost::Hooks hooks;
+  hooks.delivered = [this, id](const Message& m) { Tell(MessageDelivered{id, m}); };
+  hooks.dropped = [this, id](const Message& m) { Tell(MessageDropped{id, m}); };
+  hooks.failed = [this](const std::string& why) { Tell(ControllerFailed{why}); };
   return hooks;
 }
 
@@ -160,15 +160,15 @@ void Assembly::Receive(NodeId to, const Message& m) {
   if (!remote(to)) return hosts_.at(to)->Receive(m);
   const InboxResult result = remote_inbox_ ? remote_inbox_(to, m) : InboxResult::kLost;
   if (result == InboxResult::kIgnored) return;
-  if (result == InboxResult::kDelivered) return bus_.Publish(MessageDelivered{to, m});
+  if (result == InboxResult::kDelivered) return Tell(MessageDelivered{to, m});
   Lost(to, m, "no client drives " + NameOf(to));
 }
 
 // The message's row, then a line in the addressee's log saying why.
 void Assembly::Lost(NodeId to, const Message& m, const std::string& why) {
-  bus_.Publish(MessageLost{Now(), to, m, why});
+  Tell(MessageLost{Now(), to, m, why});
   const std::string text = "message from " + NameOf(m.from) + " lost: " + why;
-  bus_.Publish(LogLine{m.time_received, to, text});
+  Tell(LogLine{m.time_received, to, text});
 }
 
 void Assembly::FollowBody(NodeId id, net::BodyMobilityModel* mobility) {
@@ -210,20 +210,20 @@ std::optional<NodeId> Assembly::Lookup(const std::string& name) const { return r
 
 double Assembly::Now() const { return ns3::Simulator::Now().GetSeconds(); }
 
-void Assembly::Log(NodeId node, const std::string& text) { bus_.Publish(LogLine{Now(), node, text}); }
+void Assembly::Log(NodeId node, const std::string& text) { Tell(LogLine{Now(), node, text}); }
 
 void Assembly::Transition(NodeId node, const std::string& from, const std::string& to, const std::string& why) {
   states_.at(node) = to;
-  bus_.Publish(Transitioned{Now(), node, from, to, why});
+  Tell(Transitioned{Now(), node, from, to, why});
 }
 
 void Assembly::Metric(NodeId node, const std::string& name, double value) {
-  bus_.Publish(MetricReported{Now(), node, name, value});
+  Tell(MetricReported{Now(), node, name, value});
 }
 
 void Assembly::ReadSensor(NodeId node, const std::string& instance, const std::string& kind,
                           const SensorReading& reading) {
-  if (bus_.Heard<SensorRead>()) bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
+  if (running_ && bus_.Heard<SensorRead>()) Tell(SensorRead{Now(), node, instance, kind, reading, Body(node)});
 }
 
 BodyState Assembly::Body(NodeId node) const {

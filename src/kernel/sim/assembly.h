@@ -31,9 +31,9 @@ class WirelessNetwork;
 
 namespace sanet::sim {
 
-class Assembly : public agents::NodeDirectory, public SnapshotSource {
+class Assembly : public hosting::NodeDirectory, public SnapshotSource {
  public:
-  Assembly(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers);
+  Assembly(const RunSpec& spec, hosting::Registry& registry, RobotDrivers drivers);
   ~Assembly() override;
   Assembly(const Assembly&) = delete;
   Assembly& operator=(const Assembly&) = delete;
@@ -42,8 +42,8 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   const RunSpec& spec() const { return spec_; }
   const RunNodes& run_nodes() const { return run_nodes_; }
   std::size_t size() const { return nodes_.size(); }
-  agents::SimulatedNode& node(NodeId id) { return *nodes_.at(id); }
-  agents::ControllerHost& host(NodeId id) { return *hosts_.at(id); }
+  hosting::SimulatedNode& node(NodeId id) { return *nodes_.at(id); }
+  hosting::ControllerHost& host(NodeId id) { return *hosts_.at(id); }
   robots::NodeModel& model(NodeId id) { return *models_.at(id); }
   sensors::SensorSet& sensors(NodeId id) { return *sensors_.at(id); }
   // The bodies' world; with `world.threads: 2` its steps run on a thread of their own.
@@ -61,8 +61,10 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   // The node whose body `body` is ("a body" if none is).
   std::string NameOfBody(const physics::Body* body) const;
 
-  // Where everything that happens in the run is published (sim/run_events.h).
+  // Where everything that happens in the run is published (sim/run_events.h): what the nodes
+  // report only while the run goes (SetRunning, by the stepper), as only then is it recorded.
   RunBus& bus() { return bus_; }
+  void SetRunning(bool running) { running_ = running; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
   void SwitchOff(NodeId id);
   // Adds a robot to the running world (its front end checked where it stands): its body, its own ns-3 node
@@ -78,7 +80,7 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   std::optional<Signal> SignalBetween(NodeId from, NodeId to) const;
   // A message that reached a node outside the run's own transport (between agents, over UDP),
   // recorded as delivered.
-  void RecordDelivery(NodeId to, const Message& message) { bus_.Publish(MessageDelivered{to, message}); }
+  void RecordDelivery(NodeId to, const Message& message) { Tell(MessageDelivered{to, message}); }
 
   // NodeDirectory
   std::optional<NodeId> Lookup(const std::string& name) const override;
@@ -101,12 +103,16 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   void BuildBodies();
   void AddBody(const NodeSpec& node);
   void BuildTransport();
-  void BuildNodes(agents::Registry& registry);
+  void BuildNodes(hosting::Registry& registry);
   void AddNode(NodeId id, std::unique_ptr<Controller> controller);
   void Receive(NodeId to, const Message& message);
   void Lost(NodeId to, const Message& message, const std::string& why);
+  template <typename Event>
+  void Tell(const Event& event) {
+    if (running_) bus_.Publish(event);
+  }
   double Now() const;  // s, simulated
-  agents::ControllerHost::Hooks HostHooks(NodeId id);
+  hosting::ControllerHost::Hooks HostHooks(NodeId id);
   void FollowBody(NodeId id, net::BodyMobilityModel* mobility);  // its radio, from its body's pose now
 
   const RunSpec spec_;
@@ -119,10 +125,11 @@ class Assembly : public agents::NodeDirectory, public SnapshotSource {
   std::unique_ptr<MessageLedger> transport_;
   net::WirelessNetwork* wireless_ = nullptr;  // the inner transport, when it is ns-3's network
   net::LocalTransport* local_ = nullptr;      // or when it is the local stand-in
-  std::unique_ptr<agents::HostClock> clock_;
-  std::vector<std::unique_ptr<agents::SimulatedNode>> nodes_;
-  std::vector<std::unique_ptr<agents::ControllerHost>> hosts_;
+  std::unique_ptr<hosting::HostClock> clock_;
+  std::vector<std::unique_ptr<hosting::SimulatedNode>> nodes_;
+  std::vector<std::unique_ptr<hosting::ControllerHost>> hosts_;
   RunBus bus_;
+  bool running_ = false;
   RemoteInbox remote_inbox_;
   std::vector<std::string> states_;  // per node: the state of its controller's last transition
 };

@@ -99,7 +99,7 @@ const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owne
   SensorReadings& r = readings_[robot];
   if (r.time == Now()) return r;  // read already at this instant: a second read would draw noise again
   // Read as a controller reads (one path: the run's log records what the owner read).
-  agents::SimulatedNode& node = parts_.node(robot);
+  hosting::SimulatedNode& node = parts_.node(robot);
   r.time = Now();
   r.height = parts_.model(robot).body().position3().z;
   r.velocity = parts_.Body(robot).velocity;

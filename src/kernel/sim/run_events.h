@@ -125,10 +125,16 @@ struct StepEnded {
   const WorldSnapshot& world;
 };
 
+// The run is over (its duration, an end condition, a failure or a stop): its last rows are
+// recorded; whoever holds events back (the ROS 2 presentation's radio window) sends them now.
+struct RunEnded {
+  double t;
+};
+
 // Radio frames (net::FrameEvent) cost something to hear: the network traces them only while
 // someone hears them.
 using RunBus = EventBus<RunStage, LogLine, Transitioned, MetricReported, MessageDelivered, MessageDropped, MessageLost,
                         ControllerFailed, NodeSpawned, SwitchedOff, SensorRead, PoseRow, net::FrameEvent, RouteChange,
-                        EngineWarning, StepEnded>;
+                        EngineWarning, StepEnded, RunEnded>;
 
 }  // namespace sanet::sim

@@ -20,7 +20,7 @@
 
 namespace sanet::sim {
 
-using ControllerSpec = agents::ControllerSpec;
+using ControllerSpec = hosting::ControllerSpec;
 
 struct NodeSpec {
   std::string name;
@@ -73,7 +73,7 @@ struct RunSpec {
   double message_delay = 0;          // s added before a controller gets a message
   double trajectory_interval = 0.1;  // s between trajectory samples
   std::vector<NodeEvent> events;
-  // Each controller runs in a child process of its own (agents/isolated_controller.h): a crash
+  // Each controller runs in a child process of its own (hosting/isolated_controller.h): a crash
   // in a plugin ends the run with its results instead of the process. Results are the same.
   bool isolate_controllers = false;
   // The run ends early when, over all nodes, `end_count` of these have happened: a controller logs

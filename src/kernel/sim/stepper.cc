@@ -29,12 +29,13 @@ class StageTimer {
 }  // namespace
 
 Stepper::Stepper(Assembly& world, Outputs& outputs) : world_(world), outputs_(outputs), bus_(world.bus()) {
+  world_.SetRunning(true);
   world_.poses().SetCatchUp([this] { CatchUp(); });
   for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
   moving_.assign(world_.size(), 0);
   if (bus_.Heard<StepEnded>()) world_.transport().Watch();
   if (bus_.Heard<net::FrameEvent>())
-    world_.transport().ObserveFrames([this](const net::FrameEvent& f) { bus_.Publish(f); });
+    world_.transport().ObserveFrames([&bus = bus_](const net::FrameEvent& f) { bus.Publish(f); });
   Subscribe();
 }
 
@@ -65,6 +66,7 @@ Stepper::~Stepper() {
   } catch (...) {               // a failed step, thrown once already (by Run, unwinding now)
   }
   world_.poses().SetCatchUp([] {});
+  world_.SetRunning(false);
 }
 
 double Stepper::Now() const { return ns3::Simulator::Now().GetSeconds(); }
@@ -107,6 +109,7 @@ void Stepper::End() {
   profile_.physics_wait = world_.physics().waited();
   world_.transport().Close();
   outputs_.Sample(Now(), /*final_row=*/true, Poses());
+  bus_.Publish(RunEnded{Now()});
 }
 
 std::uint64_t Stepper::events() const {
@@ -138,7 +141,7 @@ void Stepper::StartControllers() {
 // one event per round, in node order, as their separate events did (same time, scheduled in
 // node order).
 void Stepper::ControlStep(NodeId id) {
-  agents::ControllerHost& host = world_.host(id);
+  hosting::ControllerHost& host = world_.host(id);
   if (!host.running()) return;
   {
     StageTimer timer(profile_.controllers);

@@ -77,7 +77,6 @@ class Stepper {
   void CatchUp();
   void Record();
   void Notify();
-  void SeeFrame(const net::FrameEvent& frame);
   void ReportEngineMessage(double t, const physics::EngineMessage& message);
   void LookAtRoutes();
   void CollectMoving();

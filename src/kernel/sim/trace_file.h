@@ -1,7 +1,7 @@
-// A file of the run's trace written by a layer above sim (trace.mcap, by ros2_out), attached by
-// whoever runs the run (RunOptions::trace_files): made when the run starts if it writes a trace,
-// under a temporary name in the results folder, subscribed to the run's events; closed before the
-// results are committed.
+// A file of the run's trace written by a layer above sim (trace.mcap, by ros2_presentation),
+// attached by whoever runs the run (RunOptions::trace_files): made when the run starts if it
+// writes a trace, under a temporary name in the results folder, subscribed to the run's events;
+// closed before the results are committed.
 #pragma once
 
 #include <functional>

@@ -19,7 +19,7 @@ void World::Observe(std::function<void(const WorldSnapshot&)> observer) {
   observers_.push_back(bus().On<StepEnded>(RunStage::kObserve, [observer](const StepEnded& e) { observer(e.world); }));
 }
 
-World::World(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers)
+World::World(const RunSpec& spec, hosting::Registry& registry, RobotDrivers drivers)
     : parts_(std::make_unique<Assembly>(spec, registry, drivers)), driver_(std::make_unique<Driver>(*parts_)) {}
 World::~World() = default;
 

@@ -20,7 +20,7 @@
 
 namespace sanet::sim {
 
-using agents::MakeController;
+using hosting::MakeController;
 
 struct RunOptions {
   std::string output_dir;     // "" writes nothing (tests, benchmarks)
@@ -39,8 +39,8 @@ struct RunOptions {
   // run's (and RunResult::warnings); its other fields replace the run's (the server's "status"
   // when robots it expected never came).
   std::function<void(nlohmann::ordered_json& summary, trace::ResultsFolder& folder)> add_results = nullptr;
-  // Files of the trace written above sim (trace.mcap: ros2_out::RecordMcap), made when the run
-  // writes a trace (sim/trace_file.h).
+  // Files of the trace written above sim (trace.mcap: ros2_presentation::RunPresentation::
+  // McapFile), made when the run writes a trace (sim/trace_file.h).
   std::vector<MakeTraceFile> trace_files = {};
 };
 
@@ -53,7 +53,7 @@ class Assembly;
 class World {
  public:
   // `drivers`: kFrontEnds for a world whose robots a front end drives (`sanet serve`).
-  World(const RunSpec& spec, agents::Registry& registry, RobotDrivers drivers = RobotDrivers::kScenarioControllers);
+  World(const RunSpec& spec, hosting::Registry& registry, RobotDrivers drivers = RobotDrivers::kScenarioControllers);
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;

@@ -125,7 +125,7 @@ const std::vector<std::string>& GatherableTables() {
   return tables;
 }
 
-std::vector<PreparedRun> Prepare(const SweepSettings& s, agents::Registry& registry) {
+std::vector<PreparedRun> Prepare(const SweepSettings& s, hosting::Registry& registry) {
   std::vector<PreparedRun> prepared;
   std::string checked;  // the combination loaded last: seeds share it
   scenario::Scenario sc;

@@ -40,7 +40,7 @@ struct PreparedRun {
 
 // Loads the scenario with each combination's values (any mistake is a ScenarioError naming the
 // --vary value) and prepares every run.
-std::vector<PreparedRun> Prepare(const SweepSettings& settings, agents::Registry& registry);
+std::vector<PreparedRun> Prepare(const SweepSettings& settings, hosting::Registry& registry);
 
 struct SweepTally {
   int total = 0, completed = 0, failed = 0, ran_now = 0;

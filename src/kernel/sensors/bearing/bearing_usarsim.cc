@@ -5,7 +5,7 @@
 
 #include "wire/sensor_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 class BearingLines : public SensorLines {
@@ -45,4 +45,4 @@ const SensorLines& BearingSensorLines() {
   return lines;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

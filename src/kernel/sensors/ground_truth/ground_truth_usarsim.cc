@@ -1,7 +1,7 @@
 // Ground truth as USARSim's GroundTruth sensor: {Location x,y,z} {Orientation roll,pitch,yaw}.
 #include "wire/sensor_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 class GroundTruthLines : public SensorLines {
@@ -32,4 +32,4 @@ const SensorLines& GroundTruthSensorLines() {
   return lines;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -7,7 +7,7 @@
 #include "sensors/range_fan.h"
 #include "wire/sensor_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 // Sensor i of instance `instance` on the wire: IR<i> for the kind's own ring (USARSim's names),
@@ -62,4 +62,4 @@ const SensorLines& IrSensorLines() {
   return lines;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

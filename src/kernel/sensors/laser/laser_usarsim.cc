@@ -2,7 +2,7 @@
 #include "sensors/range_fan.h"
 #include "wire/sensor_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 class LaserLines : public SensorLines {
@@ -48,4 +48,4 @@ const SensorLines& LaserSensorLines() {
   return lines;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

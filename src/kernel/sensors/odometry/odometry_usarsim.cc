@@ -1,7 +1,7 @@
 // Odometry as USARSim's Odometry sensor: {Pose x,y,yaw}.
 #include "wire/sensor_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 class OdometryLines : public SensorLines {
@@ -30,4 +30,4 @@ const SensorLines& OdometrySensorLines() {
   return lines;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

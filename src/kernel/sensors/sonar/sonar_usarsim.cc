@@ -5,7 +5,7 @@
 #include "sensors/sonar/sonar.h"
 #include "wire/sensor_lines.h"
 
-namespace sanet::hil {
+namespace sanet::wire {
 namespace {
 
 class SonarLines : public SensorLines {
@@ -36,4 +36,4 @@ const SensorLines& SonarSensorLines() {
   return lines;
 }
 
-}  // namespace sanet::hil
+}  // namespace sanet::wire

@@ -7,8 +7,8 @@
 namespace sanet {
 namespace {
 
-using agents::node_calls::Get;
-using agents::node_calls::Put;
+using hosting::node_calls::Get;
+using hosting::node_calls::Put;
 
 std::optional<SensorReading> RoundTrip(const std::optional<SensorReading>& reading) {
   Writer w;

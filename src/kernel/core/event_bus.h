@@ -68,7 +68,9 @@ class EventBus {
   template <typename Event>
   bool Heard() const {
     const Kind<Event>& kind = std::get<Kind<Event>>(*kinds_);
-    return std::any_of(kind.entries.begin(), kind.entries.end(), [](const auto& e) { return !e.ended; }) ||
+    if (kind.entries.empty()) return !kind.waiting.empty();
+    return !kind.emptied ||
+           std::any_of(kind.entries.begin(), kind.entries.end(), [](const auto& e) { return !e.ended; }) ||
            !kind.waiting.empty();
   }
 
@@ -113,7 +115,7 @@ class EventBus {
       ++publishing;
       for (std::size_t i = 0; i < entries.size(); ++i)
         if (!entries[i].ended) entries[i].handler(event);
-      if (--publishing > 0) return;
+      if (--publishing > 0 || (!emptied && waiting.empty())) return;
       if (std::exchange(emptied, false))
         entries.erase(std::remove_if(entries.begin(), entries.end(), [](const auto& e) { return e.ended; }),
                       entries.end());

@@ -51,7 +51,7 @@ void Stepper::Subscribe() {
     CountTowardsEnd(spec.end_when_metric, e.name, world_.NameOf(e.node) + " reported '" + e.name + "'");
   }));
   subscriptions_.push_back(
-      bus_.On<ControllerFailed>(RunStage::kControl, [this](const ControllerFailed& e) { Failed(e.why); }));
+      bus_.On<ControllerFailed>(RunStage::kControl, [this](const ControllerFailed&) { Failed(); }));
   subscriptions_.push_back(bus_.On<NodeSpawned>(RunStage::kControl, [this](const NodeSpawned& e) { Spawned(e); }));
 }
 
@@ -300,7 +300,7 @@ void Stepper::CountTowardsEnd(const std::vector<std::string>& watched, const std
   ns3::Simulator::Stop(Period(world_.spec().end_grace));
 }
 
-void Stepper::Failed(const std::string& why) {
+void Stepper::Failed() {  // the outputs keep why (they heard it first)
   outputs_.Ended("controller failure", ns3::Simulator::Now().GetSeconds());
   stopped_ = true;
   ns3::Simulator::Stop();

@@ -59,7 +59,7 @@ class Stepper {
 
  private:
   void Subscribe();
-  void Failed(const std::string& why);
+  void Failed();  // a controller failed: the run ends now
   void Spawned(const NodeSpawned& spawned);
   void ScheduleAll();
   void StartControllers();

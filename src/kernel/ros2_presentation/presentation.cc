@@ -1,7 +1,6 @@
 #include "ros2_presentation/presentation.h"
 
-#include <chrono>
-
+#include "core/wall_timer.h"
 #include "sim/world.h"
 
 namespace sanet::ros2_presentation {
@@ -13,11 +12,10 @@ class RunPresentation::McapFileOf : public sim::TraceFile {
     presentation_.AddSink(sink_);
   }
   void Close() override {
-    const auto start = std::chrono::steady_clock::now();
+    WallTimer timer(presentation_.seconds_);
     presentation_.subscriptions_.clear();
     presentation_.messages_.Flush();
     sink_.Close();
-    presentation_.seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   void Report(nlohmann::ordered_json& trace_profile, std::vector<std::string>& warnings) const override {
     trace_profile["mcap"] = presentation_.seconds_;
@@ -48,9 +46,8 @@ void RunPresentation::AddSink(MessageSink& sink) {
 template <typename Event, typename Make>
 void RunPresentation::Present(Make make) {
   subscriptions_.push_back(bus_.On<Event>(sim::RunStage::kRecord, [this, make](const Event& e) {
-    const auto start = std::chrono::steady_clock::now();
+    WallTimer timer(seconds_);
     make(e);
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }));
 }
 

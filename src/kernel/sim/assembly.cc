@@ -223,7 +223,7 @@ void Assembly::Metric(NodeId node, const std::string& name, double value) {
 
 void Assembly::ReadSensor(NodeId node, const std::string& instance, const std::string& kind,
                           const SensorReading& reading) {
-  if (running_ && bus_.Heard<SensorRead>()) Tell(SensorRead{Now(), node, instance, kind, reading, Body(node)});
+  if (running_ && bus_.Heard<SensorRead>()) bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
 }
 
 BodyState Assembly::Body(NodeId node) const {

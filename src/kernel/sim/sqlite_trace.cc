@@ -1,9 +1,9 @@
 #include "sim/sqlite_trace.h"
 
-#include <chrono>
 #include <cstdio>
 
 #include "core/delivery.h"
+#include "core/wall_timer.h"
 
 namespace sanet::sim {
 namespace {
@@ -48,9 +48,8 @@ void SqliteTrace::Describe(const RunSpec& spec) {
 template <typename Event, typename Write>
 void SqliteTrace::Record(RunBus& bus, Write write) {
   subscriptions_.push_back(bus.On<Event>(RunStage::kRecord, [this, write](const Event& e) {
-    const auto start = std::chrono::steady_clock::now();
+    WallTimer timer(seconds_);
     write(e);
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }));
 }
 
@@ -75,9 +74,8 @@ void SqliteTrace::Subscribe(RunBus& bus) {
 
 void SqliteTrace::Close() {
   subscriptions_.clear();
-  const auto start = std::chrono::steady_clock::now();
+  WallTimer timer(seconds_);
   db_.Close();
-  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace sanet::sim

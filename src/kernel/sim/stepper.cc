@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/wall_timer.h"
+
 namespace sanet::sim {
 namespace {
 
@@ -14,17 +16,6 @@ ns3::Time Period(double seconds) { return ns3::NanoSeconds(std::llround(seconds 
 double Since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
-
-// Adds the wall time of a scope to one stage of the profile.
-class StageTimer {
- public:
-  explicit StageTimer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-  ~StageTimer() { total_ += Since(start_); }
-
- private:
-  double& total_;
-  std::chrono::steady_clock::time_point start_;
-};
 
 }  // namespace
 
@@ -132,7 +123,7 @@ void Stepper::ScheduleAll() {
 }
 
 void Stepper::StartControllers() {
-  StageTimer timer(profile_.controllers);
+  WallTimer timer(profile_.controllers);
   for (NodeId id = 0; id < world_.size() && outputs_.failure().empty(); ++id)
     if (world_.host(id).has_controller()) world_.host(id).Start();
 }
@@ -144,7 +135,7 @@ void Stepper::ControlStep(NodeId id) {
   hosting::ControllerHost& host = world_.host(id);
   if (!host.running()) return;
   {
-    StageTimer timer(profile_.controllers);
+    WallTimer timer(profile_.controllers);
     host.Step();
   }
   if (!host.running()) return;
@@ -157,7 +148,7 @@ void Stepper::ControlStep(NodeId id) {
 void Stepper::ControlRound(std::int64_t period_ns) {
   std::vector<NodeId>& nodes = control_rounds_.at(period_ns);
   {
-    StageTimer timer(profile_.controllers);
+    WallTimer timer(profile_.controllers);
     for (NodeId id : nodes)
       if (world_.host(id).running()) world_.host(id).Step();
   }
@@ -219,12 +210,12 @@ void Stepper::PhysicsStep() {
 void Stepper::Integrate(StepOutcome& outcome) {
   CollectMoving();  // awake before the step
   {
-    StageTimer timer(profile_.physics);
+    WallTimer timer(profile_.physics);
     world_.physics().step(outcome.dt);
   }
   CollectMoving();  // woken during it
   {
-    StageTimer timer(profile_.sensing);
+    WallTimer timer(profile_.sensing);
     for (NodeId id : moved_)
       if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep();
   }
@@ -271,7 +262,7 @@ void Stepper::Notify() {
 void Stepper::Record() {
   if (StopIfInterrupted()) return;
   {
-    StageTimer timer(profile_.recording);
+    WallTimer timer(profile_.recording);
     outputs_.Sample(Now(), false, Poses());
     LookAtRoutes();
   }

@@ -3,7 +3,6 @@
 // with @foxglove/rosmsg2-serialization from the schemas the server advertised. Prints JSON.
 //
 //   node client.mjs MODULES watch URL SECONDS TOPIC...   subscribe, collect, decode
-//   node client.mjs MODULES stall URL SECONDS            subscribe to everything, then stop reading
 //   node client.mjs MODULES hostile URL                  garbage, unknown operations, bad subscriptions
 //   node client.mjs MODULES knock URL PROTOCOL           the HTTP status of a handshake offering PROTOCOL
 import { createRequire } from "node:module";
@@ -67,20 +66,6 @@ async function watch(seconds, topics) {
           status: seen.status, closed: seen.closed });
 }
 
-async function stall(seconds) {
-  const { ws, client, seen } = connect();
-  await until(() => seen.channels.size > 0);
-  await sleep(300);
-  for (const c of seen.channels.values()) client.subscribe(c.id);
-  // Stop reading at once: the server's queue for us fills up (the server reports the drop). Reading
-  // first would let the kernel grow this socket's receive buffer to megabytes, which a short run may
-  // never fill on a loaded machine.
-  ws._socket.pause();
-  await sleep(seconds * 1000);
-  print({ stalled: seconds });
-  process.exit(0);
-}
-
 // A handshake's outcome: the refusal's HTTP status, or "opened".
 function knock(protocol) {
   return new Promise((done) => {
@@ -128,7 +113,6 @@ async function hostile() {
 }
 
 if (mode === "watch") await watch(Number(rest[0]), rest.slice(1));
-else if (mode === "stall") await stall(Number(rest[0]));
 else if (mode === "hostile") await hostile();
 else if (mode === "knock") print({ outcome: await knock(rest[0]) });
 else throw new Error(`unknown mode ${mode}`);

@@ -2,12 +2,15 @@
 """sanet's Foxglove WebSocket stream against the protocol's own client (tests/foxglove/client.mjs:
 npm's @foxglove/ws-protocol over ws, messages decoded with @foxglove/rosmsg2-serialization from the
 advertised schemas): a live run's /tf and a robot's scan arrive with simulated timestamps that
-advance and equal the messages' stamps; a client that stops reading is dropped while another keeps
-receiving, and the run's results do not change; garbage, unknown operations and clients without the
-subprotocol are answered as the protocol says; the connection cap holds; a finished run's trace.mcap
-replays in time order with every message the log has."""
+advance and equal the messages' stamps; a client that stops reading (a raw RFC 6455 client with a
+small receive buffer) is dropped while another keeps receiving, and the run's results do not change;
+garbage, unknown operations and clients without the subprotocol are answered as the protocol says;
+the connection cap holds; a finished run's trace.mcap replays in time order with every message the
+log has."""
+import base64
 import json
 import os
+import socket
 import subprocess
 import sys
 import tempfile
@@ -47,6 +50,61 @@ def wait_for(path, process, seconds=30):
 def fingerprint(folder):
     with open(os.path.join(folder, "summary.json")) as f:
         return json.load(f)["fingerprint"]
+
+
+class StallingClient(threading.Thread):
+    """A Foxglove client that subscribes to every channel and then stops reading, written from RFC 6455
+    and the protocol's spec on a raw socket: its receive buffer is set small before it connects, so
+    the kernel cannot absorb megabytes for it and the server's own queue must fill however fast or
+    slow the run and this machine are."""
+
+    def __init__(self, url, seconds):
+        super().__init__()
+        self.host, self.port = url.removeprefix("ws://").split(":")
+        self.seconds, self.channels, self.error = seconds, [], None
+
+    def run(self):
+        try:
+            with socket.socket() as s:
+                s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+                s.connect((self.host, int(self.port)))
+                s.sendall((f"GET / HTTP/1.1\r\nHost: {self.host}\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                           f"Sec-WebSocket-Key: {base64.b64encode(os.urandom(16)).decode()}\r\n"
+                           "Sec-WebSocket-Version: 13\r\nSec-WebSocket-Protocol: foxglove.websocket.v1\r\n\r\n").encode())
+                stream = s.makefile("rb")
+                while stream.readline() not in (b"\r\n", b""):
+                    pass
+                while not self.channels:
+                    opcode, payload = self.message(stream)
+                    if opcode == 1 and json.loads(payload).get("op") == "advertise":
+                        self.channels = [c["id"] for c in json.loads(payload)["channels"]]
+                subscribe = {"op": "subscribe", "subscriptions": [{"id": i, "channelId": c}
+                                                                  for i, c in enumerate(self.channels)]}
+                s.sendall(self.masked_text(json.dumps(subscribe).encode()))
+                time.sleep(self.seconds)  # and read nothing more
+        except Exception as e:  # reported by the test, not lost in a thread
+            self.error = e
+
+    @staticmethod
+    def message(stream):
+        """A whole message: its first frame's opcode and every fragment's payload (RFC 6455, 5.4)."""
+        opcode, payload, final = None, b"", False
+        while not final:
+            head = stream.read(2)
+            length = head[1] & 0x7F
+            if length >= 126:
+                length = int.from_bytes(stream.read(2 if length == 126 else 8), "big")
+            opcode = head[0] & 0x0F if opcode is None else opcode
+            payload, final = payload + stream.read(length), bool(head[0] & 0x80)
+        return opcode, payload
+
+    @staticmethod
+    def masked_text(payload):
+        mask = os.urandom(4)
+        assert len(payload) < 65536
+        head = bytes([0x81, 0x80 | 126]) + len(payload).to_bytes(2, "big") if len(payload) >= 126 \
+            else bytes([0x81, 0x80 | len(payload)])
+        return head + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(payload))
 
 
 class Live(unittest.TestCase):
@@ -94,11 +152,12 @@ class Live(unittest.TestCase):
 
     def test_a_client_that_stops_reading_is_dropped_and_the_others_go_on(self):
         run, url = self.start(HELP_REQUEST, "--foxglove-queue-mb", "1")
-        results = {}
-        staller = threading.Thread(target=lambda: results.update(stall=client("stall", url, "12")))
+        staller = StallingClient(url, 12)
         staller.start()
         watched = client("watch", url, "5", "/tf", "/radio/frames")
         staller.join()
+        self.assertIsNone(staller.error)
+        self.assertGreater(len(staller.channels), 10)
         self.assertEqual(run.wait(timeout=120), 0, run.stderr.read())
         with open(os.path.join(self.tmp.name, "live", "summary.json")) as f:
             served = json.load(f)["foxglove"]

@@ -55,6 +55,8 @@ struct BatteryReading {
   double fraction = 0;     // of the capacity, in [0, 1]
   double voltage = 0;      // V
   bool charging = false;
+  double capacity_j = 0;  // J when full
+  double power_w = 0;     // drawn now (positive while discharging)
 };
 
 // An inertial measurement unit, in its own frame (sensor_msgs/Imu's fields).

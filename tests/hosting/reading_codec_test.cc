@@ -32,7 +32,7 @@ TEST(ReadingCodec, EveryReadingTypeComesBackWhole) {
       RangeScan{{-0.5, 0.5}, {1.25, 8}, 8},
       Pose2D{1, -2, 0.5},
       BearingsReading{{{3, {2.5, -0.25}}, {7, {9, 1}}}},
-      BatteryReading{3600, 0.5, 3.7, true},
+      BatteryReading{3600, 0.5, 3.7, true, 7200, 0.25},
       imu,
       FixReading{48.1, 11.5, 520, FixReading::kSbasFix, {1, 0, 0, 0, 1, 0, 0, 0, 4}},
       JointStatesReading{{"left", "right"}, {0.1, 0.2}, {3, -3}},

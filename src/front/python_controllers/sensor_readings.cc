@@ -41,11 +41,13 @@ void BindMotionReadings(py::module_& m) {
 
 void BindOtherReadings(py::module_& m) {
   py::class_<BatteryReading>(m, "BatteryReading",
-                             "A battery: remaining_j (J), fraction (of capacity), voltage (V), charging")
+                             "A battery: remaining_j (J), fraction (of capacity), voltage (V), charging, capacity_j (J), power_w (W drawn now)")
       .def_readonly("remaining_j", &BatteryReading::remaining_j)
       .def_readonly("fraction", &BatteryReading::fraction)
       .def_readonly("voltage", &BatteryReading::voltage)
-      .def_readonly("charging", &BatteryReading::charging);
+      .def_readonly("charging", &BatteryReading::charging)
+      .def_readonly("capacity_j", &BatteryReading::capacity_j)
+      .def_readonly("power_w", &BatteryReading::power_w);
   py::class_<FixReading>(m, "FixReading",
                          "A satellite fix: latitude, longitude (degrees), altitude (m), status (-1 none, 0 fix, "
                          "1 SBAS, 2 GBAS), position_covariance (m^2, east-north-up, 3x3 row-major)")

@@ -91,6 +91,7 @@ SpawnPlan PlanSpawn(const sim::Driver& world, const std::optional<SpawnSpec>& sp
   node.model = cls->model;
   node.pose = request.pose;
   node.radio = cls->radio;
+  node.energy = cls->energy;
   return {node, cls->usarsim_class, ""};
 }
 

@@ -60,6 +60,8 @@ class ControllerHost {
   void Receive(const Message& message);
   // From now on the controller gets no steps and no messages (messages are still recorded).
   void SwitchOff() { off_ = true; }
+  // Its controller steps again where it stopped (the node came back), with its state as it was.
+  void SwitchOn() { off_ = false; }
 
  private:
   void Deliver(const Message& message);

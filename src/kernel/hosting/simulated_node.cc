@@ -3,7 +3,8 @@
 namespace sanet::hosting {
 
 sensors::ReadContext SimulatedNode::Context(std::optional<NodeId> target) const {
-  return {id_, directory_.NodeCount(), [this](NodeId node) { return directory_.TruePose(node); }, target};
+  return {id_, directory_.NodeCount(), [this](NodeId node) { return directory_.TruePose(node); }, target,
+          [this] { return directory_.Battery(id_); }};
 }
 
 std::optional<SensorReading> SimulatedNode::Sensor(const std::string& name) {
@@ -42,6 +43,12 @@ void SimulatedNode::SwitchOff() {
   model_.Drive({});
   off_ = true;
   transport_.SwitchOff(id_);
+}
+
+void SimulatedNode::SwitchOn() {
+  if (!off_) return;
+  off_ = false;
+  transport_.SwitchOn(id_);
 }
 
 }  // namespace sanet::hosting

@@ -32,6 +32,8 @@ class NodeDirectory {
   // random stream).
   virtual void ReadSensor(NodeId /*node*/, const std::string& /*instance*/, const std::string& /*kind*/,
                           const SensorReading& /*reading*/) {}
+  // The node's battery now; empty for a node with an infinite supply.
+  virtual std::optional<BatteryReading> Battery(NodeId /*node*/) const { return std::nullopt; }
 };
 
 class SimulatedNode : public Node {
@@ -91,6 +93,7 @@ class SimulatedNode : public Node {
 
   // The node stops for good: motors, radio (and, through its host, its controller).
   void SwitchOff();
+  void SwitchOn();  // back from a switch-off: its radio and drive work again
   bool switched_off() const { return off_; }
   robots::NodeModel& model() { return model_; }
   const robots::NodeModel& model() const { return model_; }

@@ -20,6 +20,7 @@ class LocalTransport : public Transport {
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId) override { return view_; }
   void SwitchOff(NodeId node) override { off_.at(node) = true; }
+  void SwitchOn(NodeId node) override { off_.at(node) = false; }
   // A node joins while the run goes (a spawned robot): it takes the next id.
   void AddNode() {
     ++node_count_;

@@ -26,6 +26,8 @@ class Transport {
   virtual NetworkView& View(NodeId node) = 0;
   // The node's radio goes silent: it neither sends nor receives from now on.
   virtual void SwitchOff(NodeId node) = 0;
+  // A node switched off comes back (its battery was recharged): its radio sends and receives again.
+  virtual void SwitchOn(NodeId node) = 0;
   // Puts the node's radio to sleep or wakes it (802.11 power save: asleep, it neither receives
   // nor transmits; frames sent meanwhile wait in the MAC's queue, which drops those that wait too
   // long). False where there is no radio to sleep.

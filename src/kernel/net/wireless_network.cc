@@ -390,8 +390,13 @@ double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
                                                             nodes_.Get(to)->GetObject<ns3::MobilityModel>());
 }
 
-void WirelessNetwork::SwitchOff(NodeId node) {
-  ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy()->SetOffMode();
+void WirelessNetwork::SwitchOff(NodeId node) { Phy(node)->SetOffMode(); }
+
+// Awake: a radio put to sleep before it went off wakes with the node.
+void WirelessNetwork::SwitchOn(NodeId node) {
+  if (!Phy(node)->IsStateOff()) return;
+  if (node < sleep_wanted_.size()) sleep_wanted_[node] = false;
+  Phy(node)->ResumeFromOff();
 }
 
 // The state asked for is kept, and the PHY brought to it only while it is neither sending nor

@@ -58,6 +58,7 @@ class WirelessNetwork : public Transport {
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId node) override { return *views_.at(node); }
   void SwitchOff(NodeId node) override;
+  void SwitchOn(NodeId node) override;
   bool SetSleep(NodeId node, bool asleep) override;
   void Open(trace::ResultsFolder& folder) override;
   void Close() override;
@@ -65,6 +66,8 @@ class WirelessNetwork : public Transport {
   void ObserveFrames(FrameObserver observer) override;
   void Moved(const std::vector<NodeId>& nodes) override;
   const AddressBook& addresses() const { return book_; }
+  // Node `id`'s Wi-Fi device (for the energy model that draws on its PHY's states).
+  ns3::Ptr<ns3::NetDevice> Device(NodeId id) const { return devices_.Get(id); }
   const PacketTrace& packet_trace() const { return trace_; }
 
  private:

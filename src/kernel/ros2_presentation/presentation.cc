@@ -69,6 +69,11 @@ void RunPresentation::Subscribe() {
   Present<sim::MetricReported>([&m](const sim::MetricReported& e) { m.Metric(e.t, e.node, e.name, e.value); });
   Present<sim::LogLine>([&m](const sim::LogLine& e) { m.Event(e.t, e.node, "log", e.text); });
   Present<sim::SwitchedOff>([&m](const sim::SwitchedOff& e) { m.Event(e.t, e.node, "switch_off", ""); });
+  Present<sim::Died>([&m](const sim::Died& e) { m.Event(e.t, e.node, "death", ""); });
+  Present<sim::Revived>([&m](const sim::Revived& e) { m.Event(e.t, e.node, "revival", ""); });
+  Present<sim::EnergySampled>([&m](const sim::EnergySampled& e) {
+    for (const sim::EnergyLevel& level : e.levels) m.Battery(e.t, level.node, level.battery);
+  });
   Present<sim::RunEnded>([&m](const sim::RunEnded&) { m.Flush(); });  // the last radio window
 }
 

@@ -178,12 +178,17 @@ void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D&
   if (node < where_.size()) where_[node] = {pose.x, pose.y};
 }
 
-// The kind's own ground truth is the trajectory's (Pose), not the reads'.
+// The kind's own ground truth is the trajectory's (Pose), not the reads'; a battery's are the
+// energy samples (Battery).
 void RunMessages::Read(double t, NodeId node, const std::string& instance, const std::string& kind,
                        const SensorReading& reading, const sim::BodyState& body) {
-  if (instance == "ground_truth" && kind == "ground_truth") return;
+  if ((instance == "ground_truth" && kind == "ground_truth") || kind == "battery") return;
   if (!FirstAt(t, node, instance)) return;
   PublishReading(node, instance, reading, ContextOf(t, node, body.pose, body.velocity));
+}
+
+void RunMessages::Battery(double t, NodeId node, const BatteryReading& battery) {
+  PublishReading(node, "battery", battery, ContextOf(t, node, Pose2D{}, Twist2D{}));
 }
 
 void RunMessages::PublishReading(NodeId node, const std::string& instance, const SensorReading& reading,

@@ -42,6 +42,8 @@ class RunMessages {
   // (ros2_presentation/sensor_messages.h).
   void Read(double t, NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,
             const sim::BodyState& body);
+  // A battery at an energy sample, on the node's `battery` sensor's topic if it carries one.
+  void Battery(double t, NodeId node, const BatteryReading& battery);
   void Frame(const net::FrameEvent& frame);
   // An application message at `t` (when it was delivered, or reached a radio but no controller).
   void Message(double t, const sanet::Message& m, NodeId to, bool delivered);

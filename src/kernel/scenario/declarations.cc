@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "scenario/energy_fields.h"
 #include "scenario/sensor_fields.h"
 
 namespace sanet::scenario {
@@ -562,6 +563,15 @@ const Fields<Scenario>& OutputsFields() {
     f.Number(
         "trajectory_interval", [](Scenario& s) -> double& { return s.run.trajectory_interval; }, "s", 0, 1e6,
         "between trajectory samples; at least `world.physics_step`", true);
+    f.Custom(
+        {"energy_interval", "number", "s", "`10`", "(0, 1e9]",
+         "between rows of `energy.csv` (with nodes that have `energy`)"},
+        [](const Field& v, Scenario& s) { s.run.energy_interval = v.NumberAbove(0, 1e9); },
+        [](const Scenario& s) {
+          const auto& nodes = s.run.nodes;
+          const bool energy = std::any_of(nodes.begin(), nodes.end(), [](const auto& n) { return n.energy; });
+          return energy ? NumberNode(s.run.energy_interval) : YAML::Node();
+        });
     f.Flag(
         "figures", [](Scenario& s) -> bool& { return s.run.figures; },
         "draw `map.svg` and `packets.svg` (and PNG copies); see [figures](#figures)");
@@ -798,9 +808,15 @@ const Fields<EventSettings>& EventFields() {
         {"node", "text", "", kRequired, "a node's name", "to whom"},
         [](const Field& v, EventSettings& e) { e.node = v.Text(); }, Unprinted<EventSettings>());
     f.Choice<sim::NodeEvent::Action>(
-         "action", Member(&EventSettings::action), {{"switch_off", sim::NodeEvent::Action::kSwitchOff}},
-         "`switch_off`: the node's controller stops, its motors stop and its radio goes off (ns-3's Wi-Fi off mode)")
+         "action", Member(&EventSettings::action),
+         {{"switch_off", sim::NodeEvent::Action::kSwitchOff}, {"recharge", sim::NodeEvent::Action::kRecharge}},
+         "`switch_off`: the node's controller stops, its motors stop and its radio goes off (ns-3's Wi-Fi off mode), "
+         "for good; `recharge`: energy goes into the node's battery (it needs `energy`), and a node dead of an empty "
+         "battery comes back once above its `revive` level (docs/energy.md)")
         .Required();
+    f.Custom({"energy_j", "number", "J", "to full", "(0, 1e12]", "with `recharge`: the energy added (never past full)"},
+             [](const Field& v, EventSettings& e) { e.energy_j = v.NumberAbove(0, 1e12); },
+             [](const EventSettings& e) { return e.energy_j ? NumberNode(*e.energy_j) : YAML::Node(); });
     return f;
   }();
   return fields;
@@ -864,6 +880,8 @@ const Fields<Keys>& NodeFields() {
     Key(f, "body", "mapping", "the model's", "overrides the model's dimensions; see [body](#body)");
     Key(f, "sensors", "mapping", "the model's", "adds, changes or removes sensors; see [sensors](#sensors)");
     Key(f, "radio", "mapping", "the network's", "this node's radio settings; see [radio](#radio)");
+    Key(f, "energy", "mapping", "none: an infinite supply",
+        "a battery, and what draws on it; see [energy](#energy) and docs/energy.md");
     Key(f, "controller", "mapping", "none", "without one, a node only acts when something pushes it");
     return f;
   }();
@@ -874,7 +892,7 @@ const Fields<Keys>& GridItemFields() {
   static const Fields<Keys> fields = [] {
     Fields<Keys> f;
     Key(f, "grid", "mapping", kRequired, "see the table below");
-    NodeKeys(f, {"model", "body", "sensors", "radio", "controller"},
+    NodeKeys(f, {"model", "body", "sensors", "radio", "energy", "controller"},
              "as for a single node; shared by the grid's nodes");
     return f;
   }();
@@ -886,7 +904,7 @@ const Fields<Keys>& SpawnClassFields() {
     Fields<Keys> f;
     Key(f, "class", "text", kRequired, "the class name INIT gives in {ClassName}, matched without regard to case");
     Key(f, "model", "`omni3` or `diffdrive`", kRequired, "see [model](#model); a spawned robot is no mote");
-    NodeKeys(f, {"body", "sensors", "radio"}, "as for a node");
+    NodeKeys(f, {"body", "sensors", "radio", "energy"}, "as for a node");
     return f;
   }();
   return fields;
@@ -905,6 +923,8 @@ std::vector<SectionTable> SectionTables() {
       {"nodes.grid_item", GridItemFields().Describe(Keys{})},
       {"nodes.grid", GridFields().Describe(GridSettings{})},
       {"radio", RadioFields().Describe(net::NodeRadio{})},
+      {"energy", EnergyFields().Describe(energy::EnergySpec{})},
+      {"energy.radio", RadioEnergyFields().Describe(energy::EnergySpec{})},
       {"controller", ControllerFields().Describe(sim::ControllerSpec{})},
       {"messages", MessagesFields().Describe(sim::RunSpec{})},
       {"events", EventFields().Describe(EventSettings{})},

@@ -67,6 +67,7 @@ struct EventSettings {
   double time = 0;
   std::string node;
   sim::NodeEvent::Action action = sim::NodeEvent::Action::kSwitchOff;
+  std::optional<double> energy_j;  // recharge: J added; unset: to full
 };
 const Fields<BoxSettings>& BoxFields();
 const Fields<WallSettings>& WallFields();

@@ -2,17 +2,20 @@
 
 #include "core/fingerprint.h"
 #include "scenario/declarations.h"
+#include "scenario/energy_fields.h"
 #include "scenario/sensor_fields.h"
 
 namespace sanet::scenario {
 namespace {
 
 // model, body, sensors and radio, as a node and a spawn class give them.
-void PutRobot(YAML::Node& out, const robots::ModelSpec& model, const net::NodeRadio& radio, bool has_network) {
+void PutRobot(YAML::Node& out, const robots::ModelSpec& model, const net::NodeRadio& radio,
+              const std::optional<energy::EnergySpec>& energy, bool has_network) {
   out["model"] = robots::ModelName(model.kind);
   out["body"] = BodyFields(model.kind).Print(model);
   out["sensors"] = PrintSensors(model);
   if (has_network && radio.tx_power) out["radio"] = RadioFields().Print(radio);
+  if (energy) out["energy"] = EnergyFields().Print(*energy);
 }
 
 YAML::Node Node(const sim::NodeSpec& n, bool has_network) {
@@ -22,7 +25,7 @@ YAML::Node Node(const sim::NodeSpec& n, bool has_network) {
   for (double v : {n.pose.x, n.pose.y, n.pose.theta}) pose.push_back(NumberNode(v));
   pose.SetStyle(YAML::EmitterStyle::Flow);
   out["pose"] = pose;
-  PutRobot(out, n.model, n.radio, has_network);
+  PutRobot(out, n.model, n.radio, n.energy, has_network);
   if (n.controller) out["controller"] = ControllerFields().Print(*n.controller);
   return out;
 }
@@ -33,7 +36,7 @@ YAML::Node Spawn(const sections::SpawnSpec& spawn, bool has_network) {
   for (const sections::SpawnClass& c : spawn.classes) {
     YAML::Node item;
     item["class"] = c.usarsim_class;
-    PutRobot(item, c.model, c.radio, has_network);
+    PutRobot(item, c.model, c.radio, c.energy, has_network);
     classes.push_back(item);
   }
   out["classes"] = classes;
@@ -46,7 +49,8 @@ YAML::Node Events(const sim::RunSpec& run) {
     YAML::Node event;
     event["time"] = NumberNode(e.time);
     event["node"] = run.nodes.at(e.node).name;
-    event["action"] = "switch_off";
+    event["action"] = e.action == sim::NodeEvent::Action::kRecharge ? "recharge" : "switch_off";
+    if (e.energy_j) event["energy_j"] = NumberNode(*e.energy_j);
     events.push_back(event);
   }
   return events;

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "scenario/declarations.h"
+#include "scenario/energy_fields.h"
 #include "scenario/placement.h"
 #include "scenario/sensor_fields.h"
 #include "sensors/sensor_registry.h"
@@ -114,7 +115,22 @@ struct NodeTemplate {
   std::optional<sim::ControllerSpec> controller;
   int controller_line = 0;
   net::NodeRadio radio;
+  std::optional<energy::EnergySpec> energy;
 };
+
+// A node with `energy` carries a battery sensor unless its `sensors` take it off; a battery
+// sensor on a node without one has nothing to read.
+void ReadEnergyAndSensors(const Field& f, NodeTemplate& t) {
+  if (auto energy = f.Get("energy")) {
+    t.energy = ReadEnergy(*energy);
+    t.model.sensors["battery"] = {"battery", sensors::FindKind("battery")->DefaultSettings(t.model)};
+  }
+  if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
+  if (t.energy) return;
+  for (const auto& [name, config] : t.model.sensors)
+    if (config.kind == "battery")
+      f.Require("sensors").Require(name).Fail("a battery sensor reads the node's battery: give the node `energy`");
+}
 
 NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_network) {
   NodeTemplate t;
@@ -128,7 +144,7 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_netw
     // The default sensors sit on the body: follow its new dimensions.
     t.model.sensors = sensors::DefaultSensors(t.model);
   }
-  if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
+  ReadEnergyAndSensors(f, t);
   if (auto c = f.Get("controller")) {
     sim::ControllerSpec spec;
     ControllerFields().Read(*c, spec);
@@ -204,7 +220,8 @@ void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& l
                 t.model,
                 {origin.x + c * spacing.x, origin.y + r * spacing.y, heading},
                 t.controller,
-                t.radio},
+                t.radio,
+                t.energy},
                t.controller_line);
 }
 
@@ -221,7 +238,7 @@ std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenar
     const auto pose = n.Require("pose").Numbers(3);
     CheckPlace(n.Require("pose"), {pose[0], pose[1]});
     list.Add(n.Require("name"), n.Require("pose"),
-             {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio},
+             {ReadName(n.Require("name")), t.model, {pose[0], pose[1], pose[2]}, t.controller, t.radio, t.energy},
              t.controller_line);
   }
   if (run.nodes.empty()) nodes.Fail("a scenario needs at least one node");
@@ -272,10 +289,15 @@ void ReadEvents(const Field& events, sim::RunSpec& run) {
     sim::NodeEvent event;
     event.time = settings.time;
     event.action = settings.action;
+    event.energy_j = settings.energy_j;
+    if (settings.energy_j && settings.action != sim::NodeEvent::Action::kRecharge)
+      e.Require("energy_j").Fail("is the energy of a `recharge`, not of a `" + e.Require("action").Text() + "`");
     bool found = false;
     for (std::size_t i = 0; i < run.nodes.size(); ++i)
       if (run.nodes[i].name == settings.node) event.node = static_cast<std::uint32_t>(i), found = true;
     if (!found) e.Require("node").Fail("no node named '" + settings.node + "'");
+    if (event.action == sim::NodeEvent::Action::kRecharge && !run.nodes[event.node].energy)
+      e.Require("node").Fail("'" + settings.node + "' has no `energy`: an infinite supply takes no recharge");
     run.events.push_back(event);
   }
 }
@@ -338,6 +360,7 @@ sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool
   if (t.model.kind == ModelKind::kMote) item.Require("model").Fail("a spawned robot is an omni3 or a diffdrive");
   c.model = t.model;
   c.radio = t.radio;
+  c.energy = t.energy;
   return c;
 }
 

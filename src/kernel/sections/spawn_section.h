@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "energy/energy_spec.h"
 #include "net/network_spec.h"
 #include "robots/node_model.h"
 #include "sim/run_spec.h"
@@ -19,6 +20,7 @@ struct SpawnClass {
   std::string usarsim_class;  // matched without regard to case, as Unreal's class names are
   robots::ModelSpec model;
   net::NodeRadio radio;
+  std::optional<energy::EnergySpec> energy;
 };
 
 struct SpawnSpec {

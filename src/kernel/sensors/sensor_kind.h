@@ -34,6 +34,7 @@ struct ReadContext {
   std::size_t node_count = 0;
   std::function<Pose2D(NodeId)> true_pose;
   std::optional<NodeId> target;
+  std::function<std::optional<BatteryReading>()> battery;  // empty without a battery
 };
 
 // One sensor on one node.

@@ -4,6 +4,7 @@
 #include <ns3/node-container.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "hosting/isolated_controller.h"
 #include "net/body_mobility_model.h"
@@ -34,6 +35,12 @@ ns3::Ptr<ns3::Node> Ns3Node() {
   auto node = ns3::CreateObject<ns3::Node>();
   node->AggregateObject(ns3::CreateObject<net::BodyMobilityModel>());
   return node;
+}
+
+std::string JoulesText(double joules) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g J", joules);
+  return text;
 }
 
 }  // namespace
@@ -131,6 +138,52 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
                                                              n.controller ? n.controller->rate : 1, impairments,
                                                              spec_.seed, *clock_, HostHooks(id)));
   states_.emplace_back();
+  off_for_good_.push_back(false);
+  AddBattery(id);
+}
+
+// Depletion and revival are handled in an event of their own at the same instant: the battery
+// notices them inside ns-3's PHY and energy calls, which must not switch the radio meanwhile.
+void Assembly::AddBattery(NodeId id) {
+  ns3::Ptr<ns3::NetDevice> radio = wireless_ ? wireless_->Device(id) : nullptr;
+  batteries_.Add(id, run_nodes_[id].energy, radio,
+                 {[this, id] { ns3::Simulator::ScheduleNow(&Assembly::Die, this, id); },
+                  [this, id] { ns3::Simulator::ScheduleNow(&Assembly::Revive, this, id); }});
+}
+
+void Assembly::Die(NodeId id) {
+  energy::NodeEnergy* energy = batteries_.Of(id);
+  if (!energy || !energy->depleted() || batteries_.dead(id) || off_for_good_[id]) return;
+  batteries_.Died(id, Now());
+  energy->SetOn(false);
+  if (!nodes_.at(id)->switched_off()) nodes_.at(id)->SwitchOff();
+  hosts_.at(id)->SwitchOff();
+  Log(id, "died: its battery ran down to its cutoff (" + JoulesText(energy->remaining_j()) + " left)");
+  Tell(Died{Now(), id});
+}
+
+void Assembly::Revive(NodeId id) {
+  energy::NodeEnergy* energy = batteries_.Of(id);
+  if (!energy || energy->depleted() || !batteries_.dead(id) || off_for_good_[id]) return;
+  batteries_.Revived(id);
+  energy->SetOn(true);
+  nodes_.at(id)->SwitchOn();
+  energy->RadioSwitchedOn();
+  hosts_.at(id)->SwitchOn();
+  Log(id, "revived: its battery was recharged to " + JoulesText(energy->remaining_j()));
+  Tell(Revived{Now(), id});
+}
+
+void Assembly::Recharge(NodeId id, std::optional<double> joules) {
+  energy::NodeEnergy* energy = batteries_.Of(id);
+  if (!energy) return Log(id, "recharge refused: the node has no energy section (an infinite supply)");
+  energy->Recharge(joules.value_or(energy->spec().battery_j));
+}
+
+std::optional<BatteryReading> Assembly::Battery(NodeId node) const {
+  const energy::NodeEnergy* energy = batteries_.Of(node);
+  if (!energy) return std::nullopt;
+  return energy->Reading();
 }
 
 NodeId Assembly::Spawn(const NodeSpec& node, const std::string& spawned_as, const std::string& why) {
@@ -190,6 +243,8 @@ std::vector<RadioPose> Assembly::RadioPoses(const std::vector<NodeId>& moved) co
 
 // A node switched off again stays off: ns-3 aborts when a radio that is off is switched off.
 void Assembly::SwitchOff(NodeId id) {
+  off_for_good_.at(id) = true;
+  if (energy::NodeEnergy* energy = batteries_.Of(id)) energy->SetOn(false);
   if (nodes_.at(id)->switched_off()) return;
   nodes_.at(id)->SwitchOff();
   hosts_.at(id)->SwitchOff();

@@ -15,6 +15,7 @@
 #include "hosting/simulated_node.h"
 #include "physics/pipelined_world.h"
 #include "sim/message_ledger.h"
+#include "sim/node_batteries.h"
 #include "sim/pose_pipeline.h"
 #include "sim/remote_inbox.h"
 #include "sim/run_events.h"
@@ -67,6 +68,10 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   void SetRunning(bool running) { running_ = running; }
   void SetRemoteInbox(RemoteInbox inbox) { remote_inbox_ = std::move(inbox); }
   void SwitchOff(NodeId id);
+  // Energy into node `id`'s battery (`joules`, or to full); a dead node recharged above its
+  // revive level comes back. Refused (a log line) for a node without energy.
+  void Recharge(NodeId id, std::optional<double> joules);
+  const NodeBatteries& batteries() const { return batteries_; }
   // Adds a robot to the running world (its front end checked where it stands): its body, its own ns-3 node
   // with the scenario's radio and routing, a simulated node and a host without a controller.
   // Every other node can see it from now on. Returns its id, the next one.
@@ -92,6 +97,7 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   void Metric(NodeId node, const std::string& name, double value) override;
   void ReadSensor(NodeId node, const std::string& instance, const std::string& kind,
                   const SensorReading& reading) override;
+  std::optional<BatteryReading> Battery(NodeId node) const override;
 
   // SnapshotSource
   BodyState Body(NodeId node) const override;
@@ -105,6 +111,9 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   void BuildTransport();
   void BuildNodes(hosting::Registry& registry);
   void AddNode(NodeId id, std::unique_ptr<Controller> controller);
+  void AddBattery(NodeId id);
+  void Die(NodeId id);     // its battery reached the cutoff
+  void Revive(NodeId id);  // a dead node's battery was recharged
   void Receive(NodeId to, const Message& message);
   void Lost(NodeId to, const Message& message, const std::string& why);
   template <typename Event>
@@ -132,6 +141,8 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   bool running_ = false;
   RemoteInbox remote_inbox_;
   std::vector<std::string> states_;  // per node: the state of its controller's last transition
+  NodeBatteries batteries_;
+  std::vector<bool> off_for_good_;  // per node: switched off (by an event), not dead
 };
 
 }  // namespace sanet::sim

@@ -27,6 +27,7 @@ class MessageLedger : public net::Transport {
   void Flood(NodeId from, const Bytes& payload) override;
   NetworkView& View(NodeId node) override { return inner_->View(node); }
   void SwitchOff(NodeId node) override { inner_->SwitchOff(node); }
+  void SwitchOn(NodeId node) override { inner_->SwitchOn(node); }
   bool SetSleep(NodeId node, bool asleep) override { return inner_->SetSleep(node, asleep); }
   void Open(trace::ResultsFolder& folder) override { inner_->Open(folder); }
   void Close() override { inner_->Close(); }

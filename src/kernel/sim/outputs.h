@@ -15,6 +15,7 @@
 
 #include "core/fingerprint.h"
 #include "net/network_traces.h"
+#include "sim/energy_outputs.h"
 #include "sim/run_events.h"
 #include "sim/run_nodes.h"
 #include "sim/run_spec.h"
@@ -135,6 +136,7 @@ class Outputs {
   std::string scenario_fingerprint_;  // with a provenance
   trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;
   trace::CsvSink* min_distance_ = nullptr;
+  EnergyOutputs energy_;
   std::vector<std::pair<double, double>> min_distances_;  // (time, smallest distance between robots)
   std::vector<double> delays_;                            // of every message delivered, s
   std::uint64_t messages_lost_ = 0;                       // dropped by the added message_loss

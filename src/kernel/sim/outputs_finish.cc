@@ -133,6 +133,7 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
                      const std::string& scenario_file, const std::vector<Pose2D>& final_poses,
                      nlohmann::ordered_json extra) {
   subscriptions_.clear();  // the run is over: nothing more is recorded
+  energy_.Stop();
   if (sqlite_) sqlite_->Close();
   for (const auto& file : trace_files_) file->Close();
   folder_.Commit();
@@ -144,6 +145,7 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
   fp.Add(transitions_.hash());
   fp.Add(metric_rows_.hash());
   if (min_distance_) fp.Add(min_distance_->hash());
+  energy_.AddTo(fp);
   if (network) {
     AddNetworkFiles(*network, fp);
     extra["network"] = NetworkSummary(*network);
@@ -202,6 +204,10 @@ void Outputs::WriteFigures(const std::vector<Pose2D>& final_poses, const std::op
   if (!in.received.empty()) {
     folder_.WriteWhole("packets.svg", trace::PacketsSvg(in));
     figures.push_back("packets");
+  }
+  if (const auto energy = energy_.Figure(spec_.name)) {
+    folder_.WriteWhole("energy.svg", *energy);
+    figures.push_back("energy");
   }
   // PNG copies where rsvg-convert is installed (./setup installs it).
   if (trace::PngExportAvailable())

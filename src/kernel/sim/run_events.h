@@ -86,6 +86,29 @@ struct SwitchedOff {
   NodeId node;
 };
 
+// A node's battery fell to its cutoff: it stopped as a switched-off node does (docs/energy.md).
+struct Died {
+  double t;
+  NodeId node;
+};
+
+// A dead node's battery was recharged above its revive level: it goes on.
+struct Revived {
+  double t;
+  NodeId node;
+};
+
+// Every battery at a sample (RunSpec::energy_interval, and the run's end): for energy.csv and
+// the ROS 2 presentation's BatteryState.
+struct EnergyLevel {
+  NodeId node;
+  BatteryReading battery;
+};
+struct EnergySampled {
+  double t;
+  const std::vector<EnergyLevel>& levels;
+};
+
 // What a node's driver read from its sensor `instance` of `kind`, with where its body truly is.
 struct SensorRead {
   double t;
@@ -134,7 +157,7 @@ struct RunEnded {
 // Radio frames (net::FrameEvent) cost something to hear: the network traces them only while
 // someone hears them.
 using RunBus = EventBus<RunStage, LogLine, Transitioned, MetricReported, MessageDelivered, MessageDropped, MessageLost,
-                        ControllerFailed, NodeSpawned, SwitchedOff, SensorRead, PoseRow, net::FrameEvent, RouteChange,
+                        ControllerFailed, NodeSpawned, SwitchedOff, Died, Revived, EnergySampled, SensorRead, PoseRow, net::FrameEvent, RouteChange,
                         EngineWarning, StepEnded, RunEnded>;
 
 }  // namespace sanet::sim

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "energy/energy_spec.h"
 #include "hosting/controller_spec.h"
 #include "net/network_spec.h"
 #include "net/wall_materials.h"
@@ -28,6 +29,7 @@ struct NodeSpec {
   Pose2D pose;
   std::optional<ControllerSpec> controller;
   net::NodeRadio radio;  // overrides of the network's radio settings
+  std::optional<energy::EnergySpec> energy;  // none: an infinite supply
 };
 
 // A robot with a controller: `sanet launch` runs it as an agent process, which talks to the
@@ -47,10 +49,14 @@ struct Obstacle {
 
 // Something that happens to a node at a given time.
 struct NodeEvent {
-  enum class Action { kSwitchOff };  // the node stops: controller, radio and motors
-  double time = 0;                   // s
+  enum class Action {
+    kSwitchOff,  // the node stops: controller, radio and motors
+    kRecharge,   // energy goes into its battery (a dead node recharged above its revive level comes back)
+  };
+  double time = 0;  // s
   std::uint32_t node = 0;
   Action action = Action::kSwitchOff;
+  std::optional<double> energy_j;  // recharge: J added; unset: to full
 };
 
 struct RunSpec {
@@ -72,6 +78,7 @@ struct RunSpec {
   double message_loss = 0;           // probability that a controller never gets a message
   double message_delay = 0;          // s added before a controller gets a message
   double trajectory_interval = 0.1;  // s between trajectory samples
+  double energy_interval = 10;       // s between rows of energy.csv (nodes with `energy` only)
   std::vector<NodeEvent> events;
   // Each controller runs in a child process of its own (hosting/isolated_controller.h): a crash
   // in a plugin ends the run with its results instead of the process. Results are the same.

@@ -70,6 +70,8 @@ void SqliteTrace::Subscribe(RunBus& bus) {
   Record<MetricReported>(bus, [this](const MetricReported& e) { db_.Metric(e.t, e.node, e.name, e.value); });
   Record<LogLine>(bus, [this](const LogLine& e) { db_.Event(e.t, e.node, "log", e.text); });
   Record<SwitchedOff>(bus, [this](const SwitchedOff& e) { db_.Event(e.t, e.node, "switch_off", ""); });
+  Record<Died>(bus, [this](const Died& e) { db_.Event(e.t, e.node, "death", ""); });
+  Record<Revived>(bus, [this](const Revived& e) { db_.Event(e.t, e.node, "revival", ""); });
 }
 
 void SqliteTrace::Close() {

@@ -44,6 +44,10 @@ void Stepper::Subscribe() {
   subscriptions_.push_back(
       bus_.On<ControllerFailed>(RunStage::kControl, [this](const ControllerFailed&) { Failed(); }));
   subscriptions_.push_back(bus_.On<NodeSpawned>(RunStage::kControl, [this](const NodeSpawned& e) { Spawned(e); }));
+  // A node back from the dead steps again from now on, in its round.
+  subscriptions_.push_back(bus_.On<Revived>(RunStage::kControl, [this](const Revived& e) {
+    if (world_.host(e.node).running()) ns3::Simulator::ScheduleNow(&Stepper::ControlStep, this, e.node);
+  }));
 }
 
 void Stepper::LookAtRoutes() {
@@ -100,6 +104,7 @@ void Stepper::End() {
   profile_.physics_wait = world_.physics().waited();
   world_.transport().Close();
   outputs_.Sample(Now(), /*final_row=*/true, Poses());
+  if (world_.batteries().any() && last_energy_sample_ < Now()) SampleEnergy(/*again=*/false);
   bus_.Publish(RunEnded{Now()});
 }
 
@@ -115,9 +120,9 @@ void Stepper::ScheduleAll() {
   ns3::Simulator::ScheduleNow(&Stepper::StartControllers, this);
   for (NodeId id = 0; id < world_.size(); ++id)
     if (world_.host(id).has_controller()) ns3::Simulator::ScheduleNow(&Stepper::ControlStep, this, id);
-  for (const NodeEvent& e : spec.events)
-    ns3::Simulator::Schedule(Period(e.time), &Stepper::SwitchOff, this, static_cast<NodeId>(e.node));
+  for (const NodeEvent& e : spec.events) ScheduleEvent(e);
   ns3::Simulator::ScheduleNow(&Stepper::Record, this);
+  if (world_.batteries().any()) ns3::Simulator::ScheduleNow(&Stepper::SampleEnergy, this, true);
   // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
   if (!vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
 }
@@ -142,7 +147,10 @@ void Stepper::ControlStep(NodeId id) {
   const ns3::Time period = Period(host.period());
   auto [group, added] = control_rounds_.try_emplace(period.GetNanoSeconds());
   if (added) ns3::Simulator::Schedule(period, &Stepper::ControlRound, this, period.GetNanoSeconds());
-  group->second.push_back(id);
+  std::vector<NodeId>& round = group->second;
+  // A node revived before its round noticed its death is in it still; the round stays in node order.
+  const auto at = std::lower_bound(round.begin(), round.end(), id);
+  if (at == round.end() || *at != id) round.insert(at, id);
 }
 
 void Stepper::ControlRound(std::int64_t period_ns) {
@@ -273,6 +281,28 @@ void Stepper::Record() {
 PoseReader Stepper::Poses() const {
   return {[this](NodeId id) { return world_.model(id).body().pose(); },
           [this](NodeId id) { return world_.model(id).body().velocity(); }, vehicles_};
+}
+
+void Stepper::ScheduleEvent(const NodeEvent& e) {
+  const auto node = static_cast<NodeId>(e.node);
+  switch (e.action) {
+    case NodeEvent::Action::kSwitchOff:
+      ns3::Simulator::Schedule(Period(e.time), &Stepper::SwitchOff, this, node);
+      break;
+    case NodeEvent::Action::kRecharge:
+      ns3::Simulator::Schedule(Period(e.time), [this, node, joules = e.energy_j] { world_.Recharge(node, joules); });
+      break;
+  }
+}
+
+void Stepper::SampleEnergy(bool again) {
+  if (bus_.Heard<EnergySampled>()) {
+    WallTimer timer(profile_.recording);
+    const std::vector<EnergyLevel> levels = world_.batteries().Levels();
+    bus_.Publish(EnergySampled{Now(), levels});
+  }
+  last_energy_sample_ = Now();
+  if (again) ns3::Simulator::Schedule(Period(world_.spec().energy_interval), &Stepper::SampleEnergy, this, true);
 }
 
 void Stepper::SwitchOff(NodeId node) {

@@ -76,6 +76,8 @@ class Stepper {
   void Integrate(StepOutcome& outcome);
   void CatchUp();
   void Record();
+  void SampleEnergy(bool again);  // every battery, for energy.csv; `again`: and the next sample
+  void ScheduleEvent(const NodeEvent& event);
   void Notify();
   void ReportEngineMessage(double t, const physics::EngineMessage& message);
   void LookAtRoutes();
@@ -97,6 +99,7 @@ class Stepper {
   std::vector<NodeId> moved_;  // bodies awake before or after the step in flight (physics thread)
   std::vector<char> moving_;   // per node: listed in moved_
   RouteWatch routes_;
+  double last_energy_sample_ = -1;  // s
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   std::uint64_t quiet_physics_steps_ = 0, events_at_last_step_ = 0;

@@ -95,6 +95,7 @@ RunResult World::Finish() {
   std::vector<Pose2D> final_poses;
   for (NodeId id = 0; id < parts_->size(); ++id) final_poses.push_back(parts_->model(id).body().pose());
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
+  if (parts_->batteries().any()) extra["energy"] = parts_->batteries().Summary(parts_->run_nodes());
   if (run->options.add_results) run->options.add_results(extra, outputs.folder());
   outputs.Finish(result, parts_->transport().Traces(), run->options.scenario_file, final_poses, extra);
   if (!outputs.failure().empty()) throw WorldError(outputs.failure());

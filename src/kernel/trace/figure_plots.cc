@@ -1,4 +1,4 @@
-// The figures that are plots rather than maps: a time series.
+// The figures that are plots rather than maps: time series.
 #include <algorithm>
 #include <cmath>
 
@@ -24,37 +24,83 @@ void Document(std::ostringstream& s, double w, double h, const std::string& titl
 
 }  // namespace
 
+namespace {
+
+struct Plot {
+  double w = 800, h = 360, left = 60, bottom = 44, top = 40, right = 20;
+  double x1 = 1, y1 = 1e-6;
+  double px(double x) const { return left + x / x1 * (w - left - right); }
+  double py(double y) const { return h - bottom - y / y1 * (h - top - bottom); }
+};
+
+// The frame, the ticks and the labels of a plot whose axes start at zero.
+void Axes(std::ostringstream& s, const Plot& p, const std::string& x_label, const std::string& y_label) {
+  s << "<line x1=\"" << p.left << "\" y1=\"" << p.h - p.bottom << "\" x2=\"" << p.w - p.right << "\" y2=\""
+    << p.h - p.bottom << "\" stroke=\"#000000\"/><line x1=\"" << p.left << "\" y1=\"" << p.top << "\" x2=\"" << p.left
+    << "\" y2=\"" << p.h - p.bottom << "\" stroke=\"#000000\"/>\n";
+  const double xs = svg::NiceStep(p.x1, 6), ys = svg::NiceStep(p.y1, 5);
+  for (double x = 0; x <= p.x1 + 1e-9; x += xs)
+    s << "<text x=\"" << Num(p.px(x)) << "\" y=\"" << p.h - p.bottom + 16
+      << "\" font-size=\"11\" text-anchor=\"middle\">" << Short(x) << "</text>\n";
+  for (double y = 0; y <= p.y1 + 1e-9; y += ys)
+    s << "<text x=\"" << p.left - 6 << "\" y=\"" << Num(p.py(y) + 4) << "\" font-size=\"11\" text-anchor=\"end\">"
+      << Short(y) << "</text>\n";
+  s << "<text x=\"" << Num((p.left + p.w - p.right) / 2) << "\" y=\"" << p.h - 8
+    << "\" font-size=\"12\" text-anchor=\"middle\">" << Escape(x_label) << "</text><text x=\"" << p.left + 6
+    << "\" y=\"" << p.top - 4 << "\" font-size=\"12\">" << Escape(y_label) << "</text>\n";
+}
+
+void Polyline(std::ostringstream& s, const Plot& p, const std::vector<std::pair<double, double>>& points,
+              const std::string& colour) {
+  s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.2\" points=\"";
+  for (const auto& [x, y] : points) s << Num(p.px(x)) << "," << Num(p.py(y)) << " ";
+  s << "\"/>\n";
+}
+
+using Points = std::vector<std::pair<double, double>>;
+
+Plot Fit(const std::vector<const Points*>& all, double y_at_least) {
+  Plot p;
+  p.y1 = std::max(y_at_least, 1e-6);
+  for (const auto* points : all)
+    for (const auto& [x, y] : *points) p.x1 = std::max(p.x1, x), p.y1 = std::max(p.y1, y);
+  p.y1 *= 1.05;
+  return p;
+}
+
+}  // namespace
+
+std::string LinesSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
+                     const std::vector<Series>& series) {
+  std::vector<const Points*> all;
+  for (const Series& one : series) all.push_back(&one.points);
+  const Plot p = Fit(all, 0);
+  std::ostringstream s;
+  Document(s, p.w, p.h, title);
+  Axes(s, p, x_label, y_label);
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const std::string colour = kColors[i % std::size(kColors)];
+    Polyline(s, p, series[i].points, colour);
+    s << "<text x=\"" << p.w - p.right - 4 << "\" y=\"" << p.top + 14 * i << "\" font-size=\"11\" "
+      << "text-anchor=\"end\" fill=\"" << colour << "\">" << Escape(series[i].name) << "</text>\n";
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
 std::string LineSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
                     const std::vector<std::pair<double, double>>& points, double reference) {
-  const double w = 800, h = 360, left = 60, bottom = 44, top = 40, right = 20;
-  double x1 = 1, y1 = std::max(reference * 1.3, 1e-6);
-  for (const auto& [x, y] : points) x1 = std::max(x1, x), y1 = std::max(y1, y);
-  y1 *= 1.05;
-  const auto px = [&](double x) { return left + x / x1 * (w - left - right); };
-  const auto py = [&](double y) { return h - bottom - y / y1 * (h - top - bottom); };
+  const Plot p = Fit({&points}, reference * 1.3);
   std::ostringstream s;
-  Document(s, w, h, title);
-  s << "<line x1=\"" << left << "\" y1=\"" << h - bottom << "\" x2=\"" << w - right << "\" y2=\"" << h - bottom
-    << "\" stroke=\"#000000\"/><line x1=\"" << left << "\" y1=\"" << top << "\" x2=\"" << left << "\" y2=\""
-    << h - bottom << "\" stroke=\"#000000\"/>\n";
-  const double xs = svg::NiceStep(x1, 6), ys = svg::NiceStep(y1, 5);
-  for (double x = 0; x <= x1 + 1e-9; x += xs)
-    s << "<text x=\"" << Num(px(x)) << "\" y=\"" << h - bottom + 16 << "\" font-size=\"11\" text-anchor=\"middle\">"
-      << Short(x) << "</text>\n";
-  for (double y = 0; y <= y1 + 1e-9; y += ys)
-    s << "<text x=\"" << left - 6 << "\" y=\"" << Num(py(y) + 4) << "\" font-size=\"11\" text-anchor=\"end\">"
-      << Short(y) << "</text>\n";
-  s << "<text x=\"" << Num((left + w - right) / 2) << "\" y=\"" << h - 8
-    << "\" font-size=\"12\" text-anchor=\"middle\">" << Escape(x_label) << "</text><text x=\"" << left + 6 << "\" y=\""
-    << top - 4 << "\" font-size=\"12\">" << Escape(y_label) << "</text>\n";
+  Document(s, p.w, p.h, title);
+  Axes(s, p, x_label, y_label);
   if (reference > 0)
-    s << "<line x1=\"" << left << "\" x2=\"" << w - right << "\" y1=\"" << Num(py(reference)) << "\" y2=\""
-      << Num(py(reference)) << "\" stroke=\"#888888\" stroke-dasharray=\"6,4\"/><text x=\"" << w - right - 4
-      << "\" y=\"" << Num(py(reference) - 4) << "\" font-size=\"11\" text-anchor=\"end\" fill=\"#555555\">reference "
-      << Short(reference) << " m</text>\n";
-  s << "<polyline fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.2\" points=\"";
-  for (const auto& [x, y] : points) s << Num(px(x)) << "," << Num(py(y)) << " ";
-  s << "\"/>\n</svg>\n";
+    s << "<line x1=\"" << p.left << "\" x2=\"" << p.w - p.right << "\" y1=\"" << Num(p.py(reference)) << "\" y2=\""
+      << Num(p.py(reference)) << "\" stroke=\"#888888\" stroke-dasharray=\"6,4\"/><text x=\"" << p.w - p.right - 4
+      << "\" y=\"" << Num(p.py(reference) - 4)
+      << "\" font-size=\"11\" text-anchor=\"end\" fill=\"#555555\">reference " << Short(reference) << " m</text>\n";
+  Polyline(s, p, points, "#1f77b4");
+  s << "</svg>\n";
   return s.str();
 }
 

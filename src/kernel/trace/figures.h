@@ -41,6 +41,13 @@ struct FigureInput {
 
 std::string MapSvg(const FigureInput& in, double tick);
 std::string PacketsSvg(const FigureInput& in);
+// Named time series as lines of their own colours, with a legend.
+struct Series {
+  std::string name;
+  std::vector<std::pair<double, double>> points;
+};
+std::string LinesSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
+                     const std::vector<Series>& series);
 // A time series as a line, with a dashed horizontal reference line when `reference` > 0.
 std::string LineSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
                     const std::vector<std::pair<double, double>>& points, double reference);

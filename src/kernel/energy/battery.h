@@ -1,0 +1,58 @@
+// A battery at a constant voltage, as ns-3's BasicEnergySource models one (energy drawn is the
+// models' total current times the voltage, over time), with what that source cannot do: start
+// partly charged, be recharged (capped at full), and report depletion at an exact instant. ns-3
+// 3.37's BasicEnergySource has one setter for both its capacity and what remains, relates its
+// thresholds to that, and notices depletion only at its periodic updates (a second by default).
+//
+// Depletion: at every update (each device model asks for one before its current changes) the
+// battery schedules its next update for the instant its charge would reach the cutoff at the
+// current draw, so a node dies when its charge does, not up to an update interval later.
+#pragma once
+
+#include <ns3/energy-source.h>
+#include <ns3/event-id.h>
+#include <ns3/nstime.h>
+
+namespace sanet::energy {
+
+class Battery : public ns3::EnergySource {
+ public:
+  static ns3::TypeId GetTypeId();
+
+  struct Settings {
+    double capacity_j = 0;
+    double voltage = 0;
+    double initial_fraction = 1;
+    double cutoff = 0;           // fraction: depleted at or below it
+    double revives_above = 0.05;  // fraction: recharged (after a depletion) above it
+  };
+  // Before the run; nothing is drawn until Start (every device model attached by then).
+  void Configure(const Settings& settings);
+  void Start();
+
+  double GetSupplyVoltage() const override { return settings_.voltage; }
+  // The capacity: ns-3's fractions are of it.
+  double GetInitialEnergy() const override { return settings_.capacity_j; }
+  double GetRemainingEnergy() override;
+  double GetEnergyFraction() override { return GetRemainingEnergy() / settings_.capacity_j; }
+  void UpdateEnergySource() override;
+
+  // Adds up to `joules`, never past full; returns what it took.
+  double Recharge(double joules);
+  bool depleted() const { return depleted_; }
+
+ private:
+  void DoDispose() override;
+  void Drain();              // what the models drew since the last update
+  void CheckThresholds();    // depleted or recharged now: tell the models
+  void ScheduleNextUpdate();
+
+  Settings settings_;
+  double remaining_j_ = 0;
+  bool depleted_ = false;
+  bool started_ = false;
+  ns3::Time last_update_;
+  ns3::EventId next_update_;
+};
+
+}  // namespace sanet::energy

@@ -1,0 +1,100 @@
+#include "scenario/energy_fields.h"
+
+#include <string>
+
+namespace sanet::scenario {
+namespace {
+
+using energy::EnergySpec;
+using energy::RadioCurrents;
+
+std::string PresetNames() {
+  std::string names;
+  for (const energy::RadioPreset& p : energy::RadioPresets()) names += (names.empty() ? "`" : ", `") + p.name + "`";
+  return names;
+}
+
+void ReadPreset(const Field& f, EnergySpec& spec) {
+  const std::string name = f.Text();
+  for (const energy::RadioPreset& p : energy::RadioPresets())
+    if (p.name == name) {
+      spec.radio_preset = name;
+      spec.radio = p.currents;
+      return;
+    }
+  std::string plain;
+  for (const energy::RadioPreset& p : energy::RadioPresets()) plain += (plain.empty() ? "" : ", ") + p.name;
+  f.Fail("unknown radio preset '" + name + "' (expected one of: " + plain + ")");
+}
+
+// A current in A, printed back always (the preset's when the scenario gives none).
+void Current(Fields<EnergySpec>& f, const char* key, double RadioCurrents::*member, const char* meaning) {
+  f.Number(
+      key, [member](EnergySpec& s) -> double& { return s.radio.*member; }, "A", 0, 1000, meaning);
+}
+
+}  // namespace
+
+const Fields<EnergySpec>& RadioEnergyFields() {
+  static const Fields<EnergySpec> fields = [] {
+    Fields<EnergySpec> f;
+    f.Custom({"preset", "text", "", "`ns3_wifi`", PresetNames(),
+              "the currents of a known radio (docs/energy.md lists their sources); the keys below change them"},
+             ReadPreset, [](const EnergySpec& s) { return YAML::Node(s.radio_preset); });
+    Current(f, "tx_a", &RadioCurrents::tx_a, "while transmitting");
+    Current(f, "rx_a", &RadioCurrents::rx_a, "while receiving a frame");
+    Current(f, "idle_a", &RadioCurrents::idle_a, "while listening to an idle channel");
+    f.Custom(
+        {"cca_busy_a", "number", "A", "`idle_a`", "[0, 1000]", "while the channel is busy (carrier sensed)"},
+        [](const Field& v, EnergySpec& s) { s.radio.cca_busy_a = v.Number(0, 1000); },
+        [](const EnergySpec& s) { return NumberNode(s.radio.cca_busy()); });
+    Current(f, "sleep_a", &RadioCurrents::sleep_a, "while asleep (Node::SetRadioSleep)");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<EnergySpec>& EnergyFields() {
+  static const Fields<EnergySpec> fields = [] {
+    Fields<EnergySpec> f;
+    f.Number("battery_j", Member(&EnergySpec::battery_j), "J", 0, 1e12, "the battery's capacity", true).Required();
+    f.Number("voltage", Member(&EnergySpec::voltage), "V", 0, 1000, "constant, the supply's", true);
+    f.Number("initial_fraction", Member(&EnergySpec::initial_fraction), "", 0, 1,
+             "the charge at the start, of the capacity");
+    f.Number("electronics_w", Member(&EnergySpec::electronics_w), "W", 0, 1e6,
+             "drawn while the node is alive and not switched off (processor, sensors at rest)");
+    f.Custom({"cutoff", "number", "", "`0`", "[0, 1)", "the node dies when its charge falls to this fraction"},
+             [](const Field& v, EnergySpec& s) {
+               s.cutoff = v.Number(0, 1);
+               if (s.cutoff >= 1) v.Fail("a cutoff of 1 or more kills the node at once: give a fraction below 1");
+             },
+             [](const EnergySpec& s) { return NumberNode(s.cutoff); });
+    f.Custom({"revive", "number", "", "`cutoff` + 0.05 (at most 1)", "(cutoff, 1]",
+              "a dead node comes back once recharged above this fraction"},
+             [](const Field& v, EnergySpec& s) { s.revive = v.Number(0, 1); },
+             [](const EnergySpec& s) { return NumberNode(s.RevivesAbove()); });
+    f.Custom({"radio", "text or mapping", "", "`ns3_wifi`", "a preset's name, or see [energy.radio](#energyradio)",
+              "the radio's current in each of its states (ns-3's WifiRadioEnergyModel)"},
+             [](const Field& v, EnergySpec& s) {
+               if (v.IsMap()) return RadioEnergyFields().Read(v, s);
+               ReadPreset(v, s);
+             },
+             [](const EnergySpec& s) { return RadioEnergyFields().Print(s); });
+    return f;
+  }();
+  return fields;
+}
+
+energy::EnergySpec ReadEnergy(const Field& f) {
+  EnergySpec spec;
+  EnergyFields().Read(f, spec);
+  if (spec.revive && *spec.revive <= spec.cutoff)
+    f.Require("revive").Fail("must be above the cutoff (" + ShortNumber(spec.cutoff) +
+                             "): a node revived at its cutoff would die again at once");
+  if (spec.initial_fraction < spec.cutoff)
+    f.Require("initial_fraction")
+        .Fail("is below the cutoff (" + ShortNumber(spec.cutoff) + "): the node would be dead from the start");
+  return spec;
+}
+
+}  // namespace sanet::scenario

@@ -1,0 +1,43 @@
+// The run's batteries: one energy::NodeEnergy per node that has `energy`, with when each died,
+// and the network's lifetime from those deaths (docs/energy.md).
+#pragma once
+
+#include <ns3/net-device.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <vector>
+
+#include "energy/node_energy.h"
+#include "sim/run_events.h"
+#include "sim/run_nodes.h"
+
+namespace sanet::sim {
+
+class NodeBatteries {
+ public:
+  // Node `id` (the next one) with `spec`'s energy, or none; `radio` is its Wi-Fi device or null.
+  void Add(NodeId id, const std::optional<energy::EnergySpec>& spec, ns3::Ptr<ns3::NetDevice> radio,
+           energy::NodeEnergy::Hooks hooks);
+  bool any() const { return count_ > 0; }
+  energy::NodeEnergy* Of(NodeId id) const { return id < energies_.size() ? energies_[id].get() : nullptr; }
+  std::vector<EnergyLevel> Levels() const;
+
+  void Died(NodeId id, double t) { died_.at(id) = t; }
+  void Revived(NodeId id) { died_.at(id).reset(); }
+  bool dead(NodeId id) const { return died_.at(id).has_value(); }
+
+  // summary.json's `energy`: per node what was used by component, charged and when it died; the
+  // network's lifetime (first death, half of the nodes dead, the last one alive).
+  nlohmann::ordered_json Summary(const RunNodes& nodes) const;
+
+ private:
+  nlohmann::ordered_json Lifetime() const;
+
+  std::vector<std::unique_ptr<energy::NodeEnergy>> energies_;
+  std::vector<std::optional<double>> died_;
+  std::size_t count_ = 0;
+};
+
+}  // namespace sanet::sim

@@ -69,7 +69,7 @@ check_private() {  # check_private PATTERN ALLOWED_DIRS...
     exit 1
   fi
 }
-check_private "ns3/" "/src/kernel/net/" "/src/kernel/sim/"
+check_private "ns3/" "/src/kernel/net/" "/src/kernel/energy/" "/src/kernel/sim/"
 check_private "ode/" "/src/kernel/physics/ode/"
 check_private "box2d/" "/src/kernel/physics/box2d/"
 check_private "yaml-cpp/" "/src/kernel/scenario/"

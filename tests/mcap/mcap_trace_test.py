@@ -3,7 +3,8 @@
 @foxglove/rosmsg and @foxglove/rosmsg2-serialization): every message of every channel decodes from
 the schemas in the file and writes back to the same bytes; log time = publish time = the message's
 stamp; ground truth equals trajectories.csv; the topics with a CSV twin have its rows; the frames
-compose (world -> R/odom -> R/base_link is the true pose); the readings are the run's; and the
+compose (world -> R/odom -> R/base_link is the true pose); the readings are the run's; batteries'
+BatteryState follows from energy.csv, with deaths and revivals among the events; and the
 fingerprint is the same with and without the trace."""
 import csv
 import json
@@ -274,5 +275,39 @@ class NamedInstances(unittest.TestCase):
             self.assertAlmostEqual(mounts["r/sonar"]["x"], 0.19, msg="at the body edge, body_width / 2")
 
 
+class Batteries(unittest.TestCase):
+    def test_battery_state_follows_from_the_battery(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            scenario = os.path.join(SOURCE, "scenarios", "sensor-network-energy.yaml")
+            run(scenario, tmp, "--set", "duration=420", "--set", "outputs.trace=true")
+            log = decode(os.path.join(tmp, "trace.mcap"))
+            energy = rows(tmp, "energy.csv")
+        self.assertEqual(log["errorCount"], 0, log["errors"])
+        self.assertEqual(log["channels"]["/m7/battery_state"]["schema"], "sensor_msgs/msg/BatteryState")
+        states = {(node, round(s["t"], 6)): s for node, series in log["batteries"].items() for s in series}
+        self.assertEqual(len(states), len(energy), "a message for every row of energy.csv")
+        capacity = {"reporter": 600.0}
+        for row in energy:
+            s = states[(row["node"], round(float(row["time"]), 6))]
+            battery_j = capacity.get(row["node"], 300.0)
+            remaining, power = float(row["remaining_j"]), float(row["power_w"])
+            self.assertAlmostEqual(s["voltage"], 3.0, places=5)
+            self.assertAlmostEqual(s["percentage"], remaining / battery_j, places=5)
+            self.assertAlmostEqual(s["charge"], remaining / (3 * 3600), places=6)
+            self.assertAlmostEqual(s["capacity"], battery_j / (3 * 3600), places=6)
+            self.assertAlmostEqual(s["current"], -power / 3, places=5)
+            self.assertTrue(math.isnan(s["temperature"]))
+            self.assertTrue(s["present"])
+            self.assertEqual(s["header"]["frame_id"], row["node"] + "/base_link")
+            # DISCHARGING while it draws, NOT_CHARGING once dead, FULL at the start.
+            expected = 4 if remaining >= battery_j else 2 if power > 0 else 3
+            self.assertEqual(s["power_supply_status"], expected, row)
+        kinds = [(e["node"], e["kind"]) for e in log["events"]]
+        self.assertIn(("old0", "death"), kinds)
+        self.assertIn(("m7", "revival"), kinds)
+        self.assertLess(kinds.index(("m7", "death")), kinds.index(("m7", "revival")))
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)
+

@@ -23,6 +23,12 @@ inline ParamValue Scalar(double v) {
   return p;
 }
 
+inline ParamValue Text(const std::string& text) {
+  ParamValue p;
+  p.rows = {{text}};
+  return p;
+}
+
 inline ParamValue Table(const std::vector<std::vector<double>>& rows) {
   ParamValue p;
   p.shape = ParamValue::Shape::kTable;

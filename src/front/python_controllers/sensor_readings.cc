@@ -41,7 +41,8 @@ void BindMotionReadings(py::module_& m) {
 
 void BindOtherReadings(py::module_& m) {
   py::class_<BatteryReading>(m, "BatteryReading",
-                             "A battery: remaining_j (J), fraction (of capacity), voltage (V), charging, capacity_j (J), power_w (W drawn now)")
+                             "A battery: remaining_j (J), fraction (of capacity), voltage (V), charging, capacity_j "
+                             "(J), power_w (W drawn now)")
       .def_readonly("remaining_j", &BatteryReading::remaining_j)
       .def_readonly("fraction", &BatteryReading::fraction)
       .def_readonly("voltage", &BatteryReading::voltage)

@@ -10,8 +10,10 @@ namespace sanet::energy {
 NS_OBJECT_ENSURE_REGISTERED(Battery);
 
 ns3::TypeId Battery::GetTypeId() {
-  static ns3::TypeId tid =
-      ns3::TypeId("sanet::energy::Battery").SetParent<ns3::EnergySource>().SetGroupName("Energy").AddConstructor<Battery>();
+  static ns3::TypeId tid = ns3::TypeId("sanet::energy::Battery")
+                               .SetParent<ns3::EnergySource>()
+                               .SetGroupName("Energy")
+                               .AddConstructor<Battery>();
   return tid;
 }
 
@@ -80,8 +82,8 @@ void Battery::ScheduleNextUpdate() {
   const double seconds = (remaining_j_ - settings_.cutoff * settings_.capacity_j) / watts;
   const double ns = std::ceil(std::max(0.0, seconds) * 1e9);
   if (ns > 9e18) return;  // past any run
-  next_update_ = ns3::Simulator::Schedule(ns3::NanoSeconds(static_cast<std::int64_t>(ns)),
-                                          &Battery::UpdateEnergySource, this);
+  next_update_ =
+      ns3::Simulator::Schedule(ns3::NanoSeconds(static_cast<std::int64_t>(ns)), &Battery::UpdateEnergySource, this);
 }
 
 void Battery::DoDispose() {

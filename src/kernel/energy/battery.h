@@ -23,7 +23,7 @@ class Battery : public ns3::EnergySource {
     double capacity_j = 0;
     double voltage = 0;
     double initial_fraction = 1;
-    double cutoff = 0;           // fraction: depleted at or below it
+    double cutoff = 0;            // fraction: depleted at or below it
     double revives_above = 0.05;  // fraction: recharged (after a depletion) above it
   };
   // Before the run; nothing is drawn until Start (every device model attached by then).
@@ -43,8 +43,8 @@ class Battery : public ns3::EnergySource {
 
  private:
   void DoDispose() override;
-  void Drain();              // what the models drew since the last update
-  void CheckThresholds();    // depleted or recharged now: tell the models
+  void Drain();            // what the models drew since the last update
+  void CheckThresholds();  // depleted or recharged now: tell the models
   void ScheduleNextUpdate();
 
   Settings settings_;

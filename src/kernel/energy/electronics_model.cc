@@ -47,9 +47,7 @@ void ElectronicsModel::Account() {
   last_ = ns3::Simulator::Now();
 }
 
-double ElectronicsModel::DoGetCurrentA() const {
-  return on_ && source_ ? watts_ / source_->GetSupplyVoltage() : 0;
-}
+double ElectronicsModel::DoGetCurrentA() const { return on_ && source_ ? watts_ / source_->GetSupplyVoltage() : 0; }
 
 void ElectronicsModel::HandleEnergyDepletion() {
   if (depleted_) depleted_();

@@ -29,11 +29,11 @@ struct RadioPreset {
 const std::vector<RadioPreset>& RadioPresets();
 
 struct EnergySpec {
-  double battery_j = 0;         // capacity, J
-  double voltage = 3;           // V, constant
-  double initial_fraction = 1;  // of the capacity, at the start
-  double electronics_w = 0;     // drawn while the node is alive
-  double cutoff = 0;            // the node dies when its charge falls to this fraction
+  double battery_j = 0;          // capacity, J
+  double voltage = 3;            // V, constant
+  double initial_fraction = 1;   // of the capacity, at the start
+  double electronics_w = 0;      // drawn while the node is alive
+  double cutoff = 0;             // the node dies when its charge falls to this fraction
   std::optional<double> revive;  // a dead node comes back once recharged above this fraction
   double RevivesAbove() const { return revive.value_or(std::min(1.0, cutoff + 0.05)); }
   std::string radio_preset = "ns3_wifi";

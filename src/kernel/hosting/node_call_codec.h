@@ -33,7 +33,9 @@ inline auto Members(NodeBearing& v) { return std::tie(v.node, v.reading); }
 inline auto Members(BearingsReading& v) { return std::tie(v.in_range); }
 inline auto Members(Vector3& v) { return std::tie(v.x, v.y, v.z); }
 inline auto Members(Quaternion& v) { return std::tie(v.x, v.y, v.z, v.w); }
-inline auto Members(BatteryReading& v) { return std::tie(v.remaining_j, v.fraction, v.voltage, v.charging, v.capacity_j, v.power_w); }
+inline auto Members(BatteryReading& v) {
+  return std::tie(v.remaining_j, v.fraction, v.voltage, v.charging, v.capacity_j, v.power_w);
+}
 inline auto Members(ImuReading& v) {
   return std::tie(v.angular_velocity, v.linear_acceleration, v.orientation, v.angular_velocity_covariance,
                   v.linear_acceleration_covariance, v.orientation_covariance);

@@ -814,9 +814,10 @@ const Fields<EventSettings>& EventFields() {
          "for good; `recharge`: energy goes into the node's battery (it needs `energy`), and a node dead of an empty "
          "battery comes back once above its `revive` level (docs/energy.md)")
         .Required();
-    f.Custom({"energy_j", "number", "J", "to full", "(0, 1e12]", "with `recharge`: the energy added (never past full)"},
-             [](const Field& v, EventSettings& e) { e.energy_j = v.NumberAbove(0, 1e12); },
-             [](const EventSettings& e) { return e.energy_j ? NumberNode(*e.energy_j) : YAML::Node(); });
+    f.Custom(
+        {"energy_j", "number", "J", "to full", "(0, 1e12]", "with `recharge`: the energy added (never past full)"},
+        [](const Field& v, EventSettings& e) { e.energy_j = v.NumberAbove(0, 1e12); },
+        [](const EventSettings& e) { return e.energy_j ? NumberNode(*e.energy_j) : YAML::Node(); });
     return f;
   }();
   return fields;

@@ -63,23 +63,26 @@ const Fields<EnergySpec>& EnergyFields() {
              "the charge at the start, of the capacity");
     f.Number("electronics_w", Member(&EnergySpec::electronics_w), "W", 0, 1e6,
              "drawn while the node is alive and not switched off (processor, sensors at rest)");
-    f.Custom({"cutoff", "number", "", "`0`", "[0, 1)", "the node dies when its charge falls to this fraction"},
-             [](const Field& v, EnergySpec& s) {
-               s.cutoff = v.Number(0, 1);
-               if (s.cutoff >= 1) v.Fail("a cutoff of 1 or more kills the node at once: give a fraction below 1");
-             },
-             [](const EnergySpec& s) { return NumberNode(s.cutoff); });
-    f.Custom({"revive", "number", "", "`cutoff` + 0.05 (at most 1)", "(cutoff, 1]",
-              "a dead node comes back once recharged above this fraction"},
-             [](const Field& v, EnergySpec& s) { s.revive = v.Number(0, 1); },
-             [](const EnergySpec& s) { return NumberNode(s.RevivesAbove()); });
-    f.Custom({"radio", "text or mapping", "", "`ns3_wifi`", "a preset's name, or see [energy.radio](#energyradio)",
-              "the radio's current in each of its states (ns-3's WifiRadioEnergyModel)"},
-             [](const Field& v, EnergySpec& s) {
-               if (v.IsMap()) return RadioEnergyFields().Read(v, s);
-               ReadPreset(v, s);
-             },
-             [](const EnergySpec& s) { return RadioEnergyFields().Print(s); });
+    f.Custom(
+        {"cutoff", "number", "", "`0`", "[0, 1)", "the node dies when its charge falls to this fraction"},
+        [](const Field& v, EnergySpec& s) {
+          s.cutoff = v.Number(0, 1);
+          if (s.cutoff >= 1) v.Fail("a cutoff of 1 or more kills the node at once: give a fraction below 1");
+        },
+        [](const EnergySpec& s) { return NumberNode(s.cutoff); });
+    f.Custom(
+        {"revive", "number", "", "`cutoff` + 0.05 (at most 1)", "(cutoff, 1]",
+         "a dead node comes back once recharged above this fraction"},
+        [](const Field& v, EnergySpec& s) { s.revive = v.Number(0, 1); },
+        [](const EnergySpec& s) { return NumberNode(s.RevivesAbove()); });
+    f.Custom(
+        {"radio", "text or mapping", "", "`ns3_wifi`", "a preset's name, or a mapping (the table below)",
+         "the radio's current in each of its states (ns-3's WifiRadioEnergyModel)"},
+        [](const Field& v, EnergySpec& s) {
+          if (v.IsMap()) return RadioEnergyFields().Read(v, s);
+          ReadPreset(v, s);
+        },
+        [](const EnergySpec& s) { return RadioEnergyFields().Print(s); });
     return f;
   }();
   return fields;

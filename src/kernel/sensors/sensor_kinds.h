@@ -10,5 +10,5 @@
   KIND(odometry, Odometry)        \
   KIND(ground_truth, GroundTruth) \
   KIND(bearing, Bearing)          \
-  KIND(sonar, Sonar)             \
+  KIND(sonar, Sonar)              \
   KIND(battery, Battery)

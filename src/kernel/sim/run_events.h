@@ -157,7 +157,7 @@ struct RunEnded {
 // Radio frames (net::FrameEvent) cost something to hear: the network traces them only while
 // someone hears them.
 using RunBus = EventBus<RunStage, LogLine, Transitioned, MetricReported, MessageDelivered, MessageDropped, MessageLost,
-                        ControllerFailed, NodeSpawned, SwitchedOff, Died, Revived, EnergySampled, SensorRead, PoseRow, net::FrameEvent, RouteChange,
-                        EngineWarning, StepEnded, RunEnded>;
+                        ControllerFailed, NodeSpawned, SwitchedOff, Died, Revived, EnergySampled, SensorRead, PoseRow,
+                        net::FrameEvent, RouteChange, EngineWarning, StepEnded, RunEnded>;
 
 }  // namespace sanet::sim

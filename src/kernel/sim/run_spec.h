@@ -28,7 +28,7 @@ struct NodeSpec {
   robots::ModelSpec model;
   Pose2D pose;
   std::optional<ControllerSpec> controller;
-  net::NodeRadio radio;  // overrides of the network's radio settings
+  net::NodeRadio radio;                      // overrides of the network's radio settings
   std::optional<energy::EnergySpec> energy;  // none: an infinite supply
 };
 

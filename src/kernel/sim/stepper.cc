@@ -104,7 +104,8 @@ void Stepper::End() {
   profile_.physics_wait = world_.physics().waited();
   world_.transport().Close();
   outputs_.Sample(Now(), /*final_row=*/true, Poses());
-  if (world_.batteries().any() && last_energy_sample_ < Now()) SampleEnergy(/*again=*/false);
+  // The run stops a nanosecond past its last events: a sample taken at its end is not taken again.
+  if (world_.batteries().any() && Now() - last_energy_sample_ > 1e-6) SampleEnergy(/*again=*/false);
   bus_.Publish(RunEnded{Now()});
 }
 

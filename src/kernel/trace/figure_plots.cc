@@ -97,8 +97,8 @@ std::string LineSvg(const std::string& title, const std::string& x_label, const 
   if (reference > 0)
     s << "<line x1=\"" << p.left << "\" x2=\"" << p.w - p.right << "\" y1=\"" << Num(p.py(reference)) << "\" y2=\""
       << Num(p.py(reference)) << "\" stroke=\"#888888\" stroke-dasharray=\"6,4\"/><text x=\"" << p.w - p.right - 4
-      << "\" y=\"" << Num(p.py(reference) - 4)
-      << "\" font-size=\"11\" text-anchor=\"end\" fill=\"#555555\">reference " << Short(reference) << " m</text>\n";
+      << "\" y=\"" << Num(p.py(reference) - 4) << "\" font-size=\"11\" text-anchor=\"end\" fill=\"#555555\">reference "
+      << Short(reference) << " m</text>\n";
   Polyline(s, p, points, "#1f77b4");
   s << "</svg>\n";
   return s.str();

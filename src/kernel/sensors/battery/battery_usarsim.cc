@@ -32,8 +32,7 @@ class BatteryLines : public SensorLines {
     const auto remaining = line.Number("Remaining"), capacity = line.Number("Capacity");
     const auto voltage = line.Number("Voltage"), power = line.Number("Power");
     if (!remaining || !capacity || !voltage || !power || *capacity <= 0) return std::nullopt;
-    return BatteryReading{*remaining, *remaining / *capacity, *voltage, Charging(line), *capacity,
-                          *power};
+    return BatteryReading{*remaining, *remaining / *capacity, *voltage, Charging(line), *capacity, *power};
   }
 };
 

@@ -1,0 +1,214 @@
+// Energy (docs/energy.md): a battery runs down at the rate its formula says and the node dies at
+// that instant; the radio's energy by state is each state's time in the PHY's own trace times its
+// current and the voltage; a dead node is silent and routes through it break until it is
+// recharged; its controller reads the battery as it drains.
+#include <gtest/gtest.h>
+#include <ns3/callback.h>
+#include <ns3/node-list.h>
+#include <ns3/wifi-net-device.h>
+#include <ns3/wifi-phy-state-helper.h>
+
+#include <array>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "sim/assembly.h"
+#include "support/test_world.h"
+
+namespace sanet {
+namespace {
+
+using namespace sanet::testing;
+using robots::ModelKind;
+
+constexpr double kVoltage = 3;
+constexpr double kIdleWatts = kVoltage * 0.273;  // ns-3's WifiRadioEnergyModel idle current
+
+energy::EnergySpec Battery(double joules, double electronics_w = 0, double initial_fraction = 1, double cutoff = 0) {
+  energy::EnergySpec e;
+  e.battery_j = joules;
+  e.voltage = kVoltage;
+  e.electronics_w = electronics_w;
+  e.initial_fraction = initial_fraction;
+  e.cutoff = cutoff;
+  return e;
+}
+
+sim::NodeSpec Mote(std::string name, Vec2 at, std::optional<energy::EnergySpec> energy,
+                   std::optional<sim::ControllerSpec> controller = std::nullopt) {
+  sim::NodeSpec n = Robot(std::move(name), ModelKind::kMote, {at.x, at.y, 0}, std::move(controller));
+  n.energy = energy;
+  if (energy) n.model.sensors["battery"] = {"battery", sensors::FindKind("battery")->DefaultSettings(n.model)};
+  return n;
+}
+
+// Motes 125 m apart hear only their neighbours (30 dBm, log-distance with exponent 3).
+sim::RunSpec WithRadio(double duration, std::vector<sim::NodeSpec> nodes, net::Routing routing) {
+  sim::RunSpec spec = Spec(duration, std::move(nodes));
+  spec.network = net::NetworkSpec{};
+  spec.network->tx_power = 30;
+  spec.network->routing = routing;
+  return spec;
+}
+
+std::map<NodeId, std::vector<double>> Deaths(sim::World& world, std::vector<Subscription>& keep) {
+  auto deaths = std::make_shared<std::map<NodeId, std::vector<double>>>();
+  keep.push_back(world.bus().On<sim::Died>(sim::RunStage::kRecord,
+                                           [deaths](const sim::Died& e) { (*deaths)[e.node].push_back(e.t); }));
+  world.Run({});
+  return *deaths;
+}
+
+TEST(Energy, ANodeDiesWhenItsChargeReachesTheCutoffAtTheTimeTheFormulaSays) {
+  // Idle radios (no routing, no traffic) and the electronics: P = V * idle_a + electronics_w.
+  const double watts = kIdleWatts + 0.05;
+  sim::World world(WithRadio(30,
+                             {Mote("full", {0, 0}, Battery(10, 0.05)), Mote("half", {10, 0}, Battery(10, 0.05, 0.5)),
+                              Mote("cut", {20, 0}, Battery(10, 0.05, 1, 0.2)), Mote("mains", {30, 0}, std::nullopt)},
+                             net::Routing::kNone),
+                   BuiltinRegistry());
+  std::vector<Subscription> keep;
+  const auto deaths = Deaths(world, keep);
+  ASSERT_EQ(deaths.size(), 3u) << "the node without energy lives on";
+  EXPECT_NEAR(deaths.at(0).at(0), 10 / watts, 1e-6);
+  EXPECT_NEAR(deaths.at(1).at(0), 5 / watts, 1e-6) << "half charged at the start: half the time";
+  EXPECT_NEAR(deaths.at(2).at(0), 8 / watts, 1e-6) << "a cutoff of 0.2 leaves a fifth unused";
+  const energy::NodeEnergy& cut = *world.parts().batteries().Of(2);
+  EXPECT_NEAR(cut.remaining_j(), 2, 1e-6) << "a dead node draws nothing more";
+  EXPECT_DOUBLE_EQ(cut.power_w(), 0);
+  const auto summary = world.parts().batteries().Summary(world.nodes());
+  EXPECT_NEAR(summary["lifetime"]["first_death_s"].get<double>(), 5 / watts, 1e-6);
+  EXPECT_NEAR(summary["lifetime"]["half_dead_s"].get<double>(), 8 / watts, 1e-6);
+  EXPECT_NEAR(summary["lifetime"]["last_alive_s"].get<double>(), 10 / watts, 1e-6);
+  EXPECT_FALSE(summary["nodes"].contains("mains")) << "only nodes with energy are listed";
+  EXPECT_NEAR(summary["nodes"]["full"]["used_j"]["electronics"].get<double>(), 0.05 * 10 / watts, 1e-6);
+}
+
+struct StateSeconds {
+  std::array<double, 8> seconds{};
+  double end = 0;     // the run's end: a frame logged ahead is counted up to it
+  double logged = 0;  // the end of the last period logged
+};
+
+void AddPeriod(StateSeconds* out, ns3::Time start, ns3::Time duration, WifiPhyState state) {
+  const double from = start.GetSeconds(), to = std::min(from + duration.GetSeconds(), out->end);
+  if (to > from) out->seconds.at(state) += to - from;
+  out->logged = std::max(out->logged, to);
+}
+
+TEST(Energy, TheRadiosEnergyByStateIsEachStatesTimeInThePhysTraceTimesItsCurrent) {
+  constexpr double kDuration = 20;
+  energy::EnergySpec e = Battery(1000);
+  e.radio.tx_a = 0.5, e.radio.rx_a = 0.3, e.radio.idle_a = 0.2, e.radio.cca_busy_a = 0.25;
+  sim::World world(WithRadio(kDuration,
+                             {Mote("talker", {0, 0}, e,
+                                   UseController("pinger", {{"to", Text("listener")},
+                                                            {"interval", Scalar(0.05)},
+                                                            {"size", Scalar(1200)},
+                                                            {"start", Scalar(0.5)}})),
+                              Mote("listener", {50, 0}, e)},
+                             net::Routing::kNone),
+                   BuiltinRegistry());
+  world.parts().node(0);  // built
+  std::array<StateSeconds, 2> trace;
+  for (NodeId id : {0u, 1u}) {
+    trace[id].end = kDuration;
+    auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(ns3::NodeList::GetNode(id)->GetDevice(0))->GetPhy();
+    phy->GetState()->TraceConnectWithoutContext("State", ns3::MakeBoundCallback(&AddPeriod, &trace[id]));
+  }
+  world.Run({});
+  for (NodeId id : {0u, 1u}) {
+    // The trace logs idle time when it ends: the last stretch is in the state the PHY is in now.
+    auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(ns3::NodeList::GetNode(id)->GetDevice(0))->GetPhy();
+    trace[id].seconds.at(phy->GetState()->GetState()) += kDuration - trace[id].logged;
+    const energy::NodeEnergy& energy = *world.parts().batteries().Of(id);
+    std::map<std::string, double> used;
+    for (const auto& [component, joules] : energy.Used()) used[component] = joules;
+    const auto& s = trace[id].seconds;
+    EXPECT_NEAR(used["radio_tx"], s[WifiPhyState::TX] * 0.5 * kVoltage, 1e-9);
+    EXPECT_NEAR(used["radio_rx"], s[WifiPhyState::RX] * 0.3 * kVoltage, 1e-9);
+    EXPECT_NEAR(used["radio_cca_busy"], s[WifiPhyState::CCA_BUSY] * 0.25 * kVoltage, 1e-9);
+    EXPECT_NEAR(used["radio_idle"], s[WifiPhyState::IDLE] * 0.2 * kVoltage, 1e-9);
+    EXPECT_GT(used[id == 0 ? "radio_tx" : "radio_rx"], 0.5) << "the traffic cost something";
+    double total = 0;
+    for (const auto& [component, joules] : used) total += joules;
+    // The battery drained by ns-3's models as they changed state, in step with the split by state.
+    EXPECT_NEAR(1000 - energy.remaining_j(), total, 1e-6 * total);
+  }
+}
+
+TEST(Energy, ADeadNodeIsSilentAndRoutesThroughItBreakUntilItIsRechargedAndHeardAgain) {
+  // a -- relay -- c, 125 m apart: a reaches c only through the relay, which dies at about 20 s
+  // and is recharged at 40 s.
+  sim::RunSpec spec =
+      WithRadio(70,
+                {Mote("a", {0, 0}, std::nullopt,
+                      UseController("pinger", {{"to", Text("c")}, {"interval", Scalar(1)}, {"start", Scalar(2)}})),
+                 Mote("relay", {125, 0}, Battery(20 * kIdleWatts)), Mote("c", {250, 0}, std::nullopt)},
+                net::Routing::kAodv);
+  spec.events.push_back({40, 1, sim::NodeEvent::Action::kRecharge, std::nullopt});
+  sim::World world(spec, BuiltinRegistry());
+  std::vector<double> delivered, relay_frames;
+  std::vector<std::pair<double, std::optional<NodeId>>> a_to_c;
+  std::vector<Subscription> keep;
+  keep.push_back(world.bus().On<sim::MessageDelivered>(sim::RunStage::kRecord, [&](const sim::MessageDelivered& e) {
+    if (e.to == 2) delivered.push_back(e.message.time_received);
+  }));
+  keep.push_back(world.bus().On<net::FrameEvent>(sim::RunStage::kRecord, [&](const net::FrameEvent& f) {
+    if (f.node == 1) relay_frames.push_back(f.t);
+  }));
+  keep.push_back(world.bus().On<sim::RouteChange>(sim::RunStage::kRecord, [&](const sim::RouteChange& r) {
+    if (r.node == 0 && r.destination == 2) a_to_c.emplace_back(r.time, r.next_hop);
+  }));
+  const auto deaths = Deaths(world, keep);
+  ASSERT_EQ(deaths.count(1), 1u);
+  const double died = deaths.at(1).front();
+  EXPECT_GT(died, 15);
+  EXPECT_LT(died, 21);
+  const auto count = [](const std::vector<double>& times, double from, double to) {
+    return std::count_if(times.begin(), times.end(), [&](double t) { return t > from && t < to; });
+  };
+  EXPECT_GT(count(delivered, 0, died), 10);
+  EXPECT_EQ(count(delivered, died + 0.1, 40), 0) << "nothing crosses a dead relay";
+  EXPECT_EQ(count(relay_frames, died + 1e-3, 40), 0) << "a dead radio neither sends nor receives";
+  EXPECT_GT(count(relay_frames, 40, 70), 10) << "recharged, it is heard again";
+  EXPECT_GT(count(delivered, 40, 70), 10) << "and carries a's messages again";
+  // a's route to c went through the relay, and was gone before the relay came back.
+  const auto route_before = [&](double time) {
+    std::optional<NodeId> next_hop;
+    for (const auto& [t, hop] : a_to_c)
+      if (t < time) next_hop = hop;
+    return next_hop;
+  };
+  EXPECT_EQ(route_before(died), std::optional<NodeId>(1));
+  EXPECT_NE(route_before(40), std::optional<NodeId>(1)) << "the route through the dead relay broke";
+}
+
+TEST(Energy, AControllerReadsItsBatteryAsItDrains) {
+  const double watts = kIdleWatts + 0.1;
+  std::vector<std::pair<double, BatteryReading>> readings;
+  {
+    sim::World world(WithRadio(12, {Mote("m", {0, 0}, Battery(100, 0.1))}, net::Routing::kNone), BuiltinRegistry());
+    world.Every(5, [&] {
+      const auto reading = world.parts().node(0).Sensor("battery");
+      ASSERT_TRUE(reading.has_value());
+      readings.emplace_back(world.Now(), std::get<BatteryReading>(*reading));
+    });
+    world.Run({});
+  }
+  ASSERT_EQ(readings.size(), 3u);
+  for (const auto& [t, b] : readings) {
+    EXPECT_NEAR(b.remaining_j, 100 - watts * t, 1e-6) << "at " << t;
+    EXPECT_NEAR(b.fraction, b.remaining_j / 100, 1e-12);
+    EXPECT_DOUBLE_EQ(b.voltage, kVoltage);
+    EXPECT_DOUBLE_EQ(b.capacity_j, 100);
+    EXPECT_NEAR(b.power_w, watts, 1e-9);
+    EXPECT_FALSE(b.charging);
+  }
+  sim::World without(WithRadio(1, {Mote("n", {0, 0}, std::nullopt)}, net::Routing::kNone), BuiltinRegistry());
+  EXPECT_FALSE(without.parts().node(0).Sensor("battery").has_value()) << "no energy, no battery";
+}
+
+}  // namespace
+}  // namespace sanet

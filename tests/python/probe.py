@@ -126,3 +126,24 @@ class Lister:
 
 class NotAController:
     pass
+
+
+class Gauge:
+    """Reports its battery every second as metrics, and logs when it is low."""
+
+    def __init__(self, params):
+        self.low = params.get("low", 0.5)
+        self.said = False
+
+    def start(self, node):
+        pass
+
+    def control_step(self, node):
+        if round(node.now() * 10) % 10:
+            return
+        b = node.sensor("battery")
+        node.metric("battery_j", b.remaining_j)
+        node.metric("battery_w", b.power_w)
+        if b.fraction < self.low and not self.said:
+            node.log(f"low battery: {b.fraction:.3f} of {b.capacity_j:.0f} J at {b.voltage:.1f} V")
+            self.said = True

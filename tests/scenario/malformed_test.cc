@@ -147,6 +147,37 @@ const Case kCases[] = {
      "ros2.domain", "between 0 and 232"},
     {"ros2_cmd_vel_type", "ros2: {cmd_vel: twistt}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 2,
      "ros2.cmd_vel", "expected one of: twist, twist_stamped"},
+    // energy (docs/energy.md)
+    {"energy_without_capacity", "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    energy: {voltage: 3}\n",
+     6, "nodes[0].energy", "missing required key 'battery_j'"},
+    {"energy_cutoff_of_one",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    energy: {battery_j: 10, cutoff: 1}\n", 6,
+     "nodes[0].energy.cutoff", "kills the node at once"},
+    {"energy_revive_below_cutoff",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n"
+     "    energy: {battery_j: 10, cutoff: 0.2, revive: 0.1}\n",
+     6, "nodes[0].energy.revive", "must be above the cutoff"},
+    {"energy_dead_from_the_start",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n"
+     "    energy: {battery_j: 10, cutoff: 0.5, initial_fraction: 0.3}\n",
+     6, "nodes[0].energy.initial_fraction", "dead from the start"},
+    {"energy_unknown_preset",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    energy: {battery_j: 10, radio: cc2402}\n", 6,
+     "nodes[0].energy.radio", "unknown radio preset 'cc2402' (expected one of: ns3_wifi, cc2420)"},
+    {"energy_negative_current",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n"
+     "    energy: {battery_j: 10, radio: {preset: cc2420, tx_a: -1}}\n",
+     6, "nodes[0].energy.radio.tx_a", "must be between 0 and 1000"},
+    {"battery_sensor_without_energy",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {battery: {}}\n", 6,
+     "nodes[0].sensors.battery", "give the node `energy`"},
+    {"recharge_without_energy",
+     "nodes:\n  - {name: m, model: mote, pose: [0, 0, 0]}\nevents:\n  - {time: 1, node: m, action: recharge}\n", 5,
+     "events[0].node", "an infinite supply takes no recharge"},
+    {"energy_j_on_a_switch_off",
+     "nodes:\n  - {name: m, model: mote, pose: [0, 0, 0], energy: {battery_j: 5}}\nevents:\n"
+     "  - {time: 1, node: m, action: switch_off, energy_j: 3}\n",
+     5, "events[0].energy_j", "is the energy of a `recharge`"},
 };
 
 class Malformed : public ::testing::TestWithParam<Case> {};

@@ -168,6 +168,10 @@ const Case kCases[] = {
      "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n"
      "    energy: {battery_j: 10, radio: {preset: cc2420, tx_a: -1}}\n",
      6, "nodes[0].energy.radio.tx_a", "must be between 0 and 1000"},
+    {"voltage_of_a_li_ion_pack",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n"
+     "    energy: {source: li_ion, battery_j: 20000, voltage: 3.7}\n",
+     6, "nodes[0].energy.voltage", "follows its discharge curve"},
     {"battery_sensor_without_energy",
      "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    sensors: {battery: {}}\n", 6,
      "nodes[0].sensors.battery", "give the node `energy`"},

@@ -13,9 +13,11 @@
 #include <ns3/event-id.h>
 #include <ns3/nstime.h>
 
+#include "energy/rechargeable.h"
+
 namespace sanet::energy {
 
-class Battery : public ns3::EnergySource {
+class Battery : public ns3::EnergySource, public Rechargeable {
  public:
   static ns3::TypeId GetTypeId();
 
@@ -37,9 +39,8 @@ class Battery : public ns3::EnergySource {
   double GetEnergyFraction() override { return GetRemainingEnergy() / settings_.capacity_j; }
   void UpdateEnergySource() override;
 
-  // Adds up to `joules`, never past full; returns what it took.
-  double Recharge(double joules);
-  bool depleted() const { return depleted_; }
+  double Recharge(double joules) override;
+  bool depleted() const override { return depleted_; }
 
  private:
   void DoDispose() override;

@@ -28,7 +28,13 @@ struct RadioPreset {
 };
 const std::vector<RadioPreset>& RadioPresets();
 
+enum class Chemistry {
+  kConstantVoltage,  // sanet's Battery (energy/battery.h)
+  kLiIon,            // a voltage curve: ns-3's LiIonEnergySource (energy/li_ion_cell.h)
+};
+
 struct EnergySpec {
+  Chemistry source = Chemistry::kConstantVoltage;
   double battery_j = 0;          // capacity, J
   double voltage = 3;            // V, constant
   double initial_fraction = 1;   // of the capacity, at the start

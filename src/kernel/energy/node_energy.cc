@@ -12,20 +12,38 @@ void Ignore() {}
 
 NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio, Hooks hooks)
     : spec_(spec), hooks_(std::move(hooks)) {
-  battery_ = ns3::CreateObject<Battery>();
-  battery_->SetNode(node);
+  MakeSource(node);
   electronics_ = ns3::CreateObject<ElectronicsModel>();
-  electronics_->SetEnergySource(battery_);
+  electronics_->SetEnergySource(source_);
   electronics_->SetCallbacks([this] { hooks_.depleted(); }, [this] { hooks_.revived(); });
-  battery_->AppendDeviceEnergyModel(electronics_);
+  source_->AppendDeviceEnergyModel(electronics_);
   electronics_->SetPower(spec.electronics_w);
-  battery_->Configure({spec.battery_j, spec.voltage, spec.initial_fraction, spec.cutoff, spec.RevivesAbove()});
   if (radio) InstallRadio(radio);
   // Last, with every model in place: a battery that starts at its cutoff is depleted at once.
-  battery_->Start();
+  StartSource();
 }
 
-NodeEnergy::~NodeEnergy() { battery_->Dispose(); }
+NodeEnergy::~NodeEnergy() { source_->Dispose(); }
+
+void NodeEnergy::MakeSource(ns3::Ptr<ns3::Node> node) {
+  if (spec_.source == Chemistry::kLiIon) {
+    auto cell = ns3::CreateObject<LiIonCell>();
+    cell->Configure(spec_.battery_j, spec_.initial_fraction, spec_.cutoff, spec_.RevivesAbove());
+    rechargeable_ = ns3::PeekPointer(cell);
+    source_ = cell;
+  } else {
+    auto battery = ns3::CreateObject<Battery>();
+    battery->Configure({spec_.battery_j, spec_.voltage, spec_.initial_fraction, spec_.cutoff, spec_.RevivesAbove()});
+    rechargeable_ = ns3::PeekPointer(battery);
+    source_ = battery;
+  }
+  source_->SetNode(node);
+}
+
+void NodeEnergy::StartSource() {
+  if (auto cell = ns3::DynamicCast<LiIonCell>(source_)) return cell->Start();
+  ns3::DynamicCast<Battery>(source_)->Start();
+}
 
 // ns-3's helper connects the model to the PHY's states; depletion and recharge are the node's to
 // handle (sim switches the whole node off), so the radio's own callbacks do nothing.
@@ -40,41 +58,43 @@ void NodeEnergy::InstallRadio(ns3::Ptr<ns3::NetDevice> radio) {
   helper.Set("SleepCurrentA", ns3::DoubleValue(c.sleep_a));
   helper.SetDepletionCallback(ns3::MakeCallback(&Ignore));
   helper.SetRechargedCallback(ns3::MakeCallback(&Ignore));
-  ns3::DeviceEnergyModelContainer models = helper.Install(radio, battery_);
+  ns3::DeviceEnergyModelContainer models = helper.Install(radio, source_);
   radio_ = ns3::DynamicCast<ns3::WifiRadioEnergyModel>(models.Get(0));
   radio_device_ = ns3::DynamicCast<ns3::WifiNetDevice>(radio);
-  if (!states_) states_ = std::make_unique<RadioStates>(radio_device_->GetPhy());
+  if (states_) return;
+  RadioStates::Currents amperes{};  // SWITCHING and OFF cost nothing here: sanet never switches channel
+  amperes[::WifiPhyState::TX] = c.tx_a, amperes[::WifiPhyState::RX] = c.rx_a;
+  amperes[::WifiPhyState::IDLE] = c.idle_a, amperes[::WifiPhyState::CCA_BUSY] = c.cca_busy();
+  amperes[::WifiPhyState::SLEEP] = c.sleep_a;
+  states_ = std::make_unique<RadioStates>(radio_device_->GetPhy(), amperes,
+                                          [source = source_] { return source->GetSupplyVoltage(); });
 }
 
 BatteryReading NodeEnergy::Reading() const {
-  const double remaining = battery_->GetRemainingEnergy();
-  return {remaining, remaining / spec_.battery_j, battery_->GetSupplyVoltage(), false, spec_.battery_j, power_w()};
+  const double remaining = source_->GetRemainingEnergy();
+  return {remaining, remaining / spec_.battery_j, source_->GetSupplyVoltage(), false, spec_.battery_j, power_w()};
 }
 
 double NodeEnergy::power_w() const {
   double amperes = electronics_->GetCurrentA();
   if (radio_) amperes += radio_->GetCurrentA();
-  return amperes * battery_->GetSupplyVoltage();
+  return amperes * source_->GetSupplyVoltage();
 }
 
 EnergyUse NodeEnergy::Used() const {
   EnergyUse use;
-  if (states_) {
-    const RadioCurrents& c = spec_.radio;
-    const double v = battery_->GetSupplyVoltage();
-    const auto in = [&](::WifiPhyState s, double amperes) { return states_->SecondsIn(s) * amperes * v; };
-    use = {{"radio_tx", in(::WifiPhyState::TX, c.tx_a)},
-           {"radio_rx", in(::WifiPhyState::RX, c.rx_a)},
-           {"radio_idle", in(::WifiPhyState::IDLE, c.idle_a)},
-           {"radio_cca_busy", in(::WifiPhyState::CCA_BUSY, c.cca_busy())},
-           {"radio_sleep", in(::WifiPhyState::SLEEP, c.sleep_a)}};
-  }
+  if (states_)
+    use = {{"radio_tx", states_->JoulesIn(::WifiPhyState::TX)},
+           {"radio_rx", states_->JoulesIn(::WifiPhyState::RX)},
+           {"radio_idle", states_->JoulesIn(::WifiPhyState::IDLE)},
+           {"radio_cca_busy", states_->JoulesIn(::WifiPhyState::CCA_BUSY)},
+           {"radio_sleep", states_->JoulesIn(::WifiPhyState::SLEEP)}};
   use.emplace_back("electronics", electronics_->GetTotalEnergyConsumption());
   return use;
 }
 
 double NodeEnergy::Recharge(double joules) {
-  const double taken = battery_->Recharge(joules);
+  const double taken = rechargeable_->Recharge(joules);
   charged_j_ += taken;
   return taken;
 }

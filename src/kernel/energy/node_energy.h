@@ -19,6 +19,7 @@
 #include "energy/battery.h"
 #include "energy/electronics_model.h"
 #include "energy/energy_spec.h"
+#include "energy/li_ion_cell.h"
 #include "energy/radio_states.h"
 #include "sanet/readings.h"
 
@@ -41,11 +42,11 @@ class NodeEnergy {
 
   const EnergySpec& spec() const { return spec_; }
   BatteryReading Reading() const;
-  double remaining_j() const { return battery_->GetRemainingEnergy(); }
+  double remaining_j() const { return source_->GetRemainingEnergy(); }
   double power_w() const;  // drawn now
   EnergyUse Used() const;
   double charged_j() const { return charged_j_; }
-  bool depleted() const { return battery_->depleted(); }
+  bool depleted() const { return rechargeable_->depleted(); }
   // Adds up to `joules` (never past full); returns what the battery took.
   double Recharge(double joules);
   // The electronics draw only while the node is on (alive and not switched off).
@@ -58,7 +59,11 @@ class NodeEnergy {
 
   EnergySpec spec_;
   Hooks hooks_;
-  ns3::Ptr<Battery> battery_;
+  void MakeSource(ns3::Ptr<ns3::Node> node);
+  void StartSource();
+
+  ns3::Ptr<ns3::EnergySource> source_;  // a Battery or a LiIonCell, as the spec says
+  Rechargeable* rechargeable_ = nullptr;
   ns3::Ptr<ElectronicsModel> electronics_;
   ns3::Ptr<ns3::WifiRadioEnergyModel> radio_;  // the radio's model since it was last switched on
   ns3::Ptr<ns3::WifiNetDevice> radio_device_;

@@ -1,22 +1,27 @@
 #include "energy/radio_states.h"
 
-#include <ns3/simulator.h>
 #include <ns3/wifi-phy-state-helper.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace sanet::energy {
 
-RadioStates::RadioStates(ns3::Ptr<ns3::WifiPhy> phy) : phy_(phy) {
+RadioStates::RadioStates(ns3::Ptr<ns3::WifiPhy> phy, Currents currents, std::function<double()> voltage)
+    : phy_(phy), currents_(currents), voltage_(std::move(voltage)) {
   logged_until_ = on_since_ = ns3::Simulator::Now();
   phy_->GetState()->TraceConnectWithoutContext("State", ns3::MakeCallback(&RadioStates::Logged, this));
+}
+
+double RadioStates::Joules(::WifiPhyState state, ns3::Time duration) const {
+  return duration.GetSeconds() * currents_.at(static_cast<std::size_t>(state)) * voltage_();
 }
 
 void RadioStates::Logged(ns3::Time start, ns3::Time duration, ::WifiPhyState state) {
   const ns3::Time end = start + duration;
   start = std::max(start, on_since_);
   if (end <= start) return;
-  time_.at(static_cast<std::size_t>(state)) += end - start;
+  joules_.at(static_cast<std::size_t>(state)) += Joules(state, end - start);
   if (end >= logged_until_) {
     logged_until_ = end;
     last_logged_ = state;
@@ -25,12 +30,13 @@ void RadioStates::Logged(ns3::Time start, ns3::Time duration, ::WifiPhyState sta
 
 // Up to now: a frame logged ahead is counted only as far as now; time not logged yet is in the
 // state the PHY is in now (idle or busy, sleeping, off).
-double RadioStates::SecondsIn(::WifiPhyState state) const {
+double RadioStates::JoulesIn(::WifiPhyState state) const {
   const ns3::Time now = ns3::Simulator::Now();
-  ns3::Time t = time_.at(static_cast<std::size_t>(state));
-  if (logged_until_ > now && state == last_logged_) t -= logged_until_ - now;
-  if (logged_until_ < now && phy_->GetState()->GetState() == state) t += now - std::max(logged_until_, on_since_);
-  return t.GetSeconds();
+  double joules = joules_.at(static_cast<std::size_t>(state));
+  if (logged_until_ > now && state == last_logged_) joules -= Joules(state, logged_until_ - now);
+  if (logged_until_ < now && phy_->GetState()->GetState() == state)
+    joules += Joules(state, now - std::max(logged_until_, on_since_));
+  return joules;
 }
 
 }  // namespace sanet::energy

@@ -57,8 +57,18 @@ const Fields<EnergySpec>& RadioEnergyFields() {
 const Fields<EnergySpec>& EnergyFields() {
   static const Fields<EnergySpec> fields = [] {
     Fields<EnergySpec> f;
+    f.Choice<energy::Chemistry>(
+        "source", Member(&EnergySpec::source),
+        {{"constant_voltage", energy::Chemistry::kConstantVoltage}, {"li_ion", energy::Chemistry::kLiIon}},
+        "`constant_voltage`: a battery at `voltage`; `li_ion`: a lithium-ion pack whose voltage follows its "
+        "discharge curve (ns-3's LiIonEnergySource, docs/energy.md)");
     f.Number("battery_j", Member(&EnergySpec::battery_j), "J", 0, 1e12, "the battery's capacity", true).Required();
-    f.Number("voltage", Member(&EnergySpec::voltage), "V", 0, 1000, "constant, the supply's", true);
+    f.Custom(
+        {"voltage", "number", "V", "`3`", "(0, 1000]", "constant, the supply's (not with `li_ion`)"},
+        [](const Field& v, EnergySpec& s) { s.voltage = v.NumberAbove(0, 1000); },
+        [](const EnergySpec& s) {
+          return s.source == energy::Chemistry::kLiIon ? YAML::Node() : NumberNode(s.voltage);
+        });
     f.Number("initial_fraction", Member(&EnergySpec::initial_fraction), "", 0, 1,
              "the charge at the start, of the capacity");
     f.Number("electronics_w", Member(&EnergySpec::electronics_w), "W", 0, 1e6,
@@ -91,6 +101,8 @@ const Fields<EnergySpec>& EnergyFields() {
 energy::EnergySpec ReadEnergy(const Field& f) {
   EnergySpec spec;
   EnergyFields().Read(f, spec);
+  if (spec.source == energy::Chemistry::kLiIon && f.Get("voltage"))
+    f.Require("voltage").Fail("a li_ion pack's voltage follows its discharge curve (4.05 V full): leave it out");
   if (spec.revive && *spec.revive <= spec.cutoff)
     f.Require("revive").Fail("must be above the cutoff (" + ShortNumber(spec.cutoff) +
                              "): a node revived at its cutoff would die again at once");

@@ -43,6 +43,12 @@ std::string JoulesText(double joules) {
   return text;
 }
 
+std::string VoltsText(double volts) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f V", volts);
+  return text;
+}
+
 }  // namespace
 
 Assembly::Assembly(const RunSpec& spec, hosting::Registry& registry, RobotDrivers drivers)
@@ -158,7 +164,8 @@ void Assembly::Die(NodeId id) {
   energy->SetOn(false);
   if (!nodes_.at(id)->switched_off()) nodes_.at(id)->SwitchOff();
   hosts_.at(id)->SwitchOff();
-  Log(id, "died: its battery ran down to its cutoff (" + JoulesText(energy->remaining_j()) + " left)");
+  Log(id, "died: its battery is exhausted (" + JoulesText(energy->remaining_j()) + " left at " +
+              VoltsText(energy->Reading().voltage) + ")");
   Tell(Died{Now(), id});
 }
 

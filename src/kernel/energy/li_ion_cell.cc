@@ -1,0 +1,84 @@
+#include "energy/li_ion_cell.h"
+
+#include <ns3/double.h>
+#include <ns3/simulator.h>
+
+#include <algorithm>
+
+#include "net/private_access.h"
+
+namespace sanet::net {
+// ns-3 keeps the drained capacity, which sets the cell's voltage, private and offers no setter.
+SANET_PRIVATE_MEMBER(LiIonDrainedAh, ns3::LiIonEnergySource, double, m_drainedCapacity);
+// Its charge, read without the update GetRemainingEnergy makes (which would come back here).
+SANET_PRIVATE_MEMBER(LiIonRemainingJ, ns3::LiIonEnergySource, ns3::TracedValue<double>, m_remainingEnergyJ);
+}  // namespace sanet::net
+
+namespace sanet::energy {
+
+NS_OBJECT_ENSURE_REGISTERED(LiIonCell);
+
+namespace {
+constexpr double kNominalVoltage = 3.6;  // V: joules to ampere-hours, as ns-3's default cell is rated
+}  // namespace
+
+ns3::TypeId LiIonCell::GetTypeId() {
+  static ns3::TypeId tid = ns3::TypeId("sanet::energy::LiIonCell")
+                               .SetParent<ns3::LiIonEnergySource>()
+                               .SetGroupName("Energy")
+                               .AddConstructor<LiIonCell>();
+  return tid;
+}
+
+double& LiIonCell::DrainedAh() { return this->*Get(net::LiIonDrainedAh()); }
+
+void LiIonCell::Configure(double capacity_j, double initial_fraction, double cutoff, double revives_above) {
+  capacity_j_ = capacity_j, cutoff_ = cutoff, revives_above_ = revives_above;
+  const double k = capacity_j / kDefaultCellJ;  // cells of ns-3's default in parallel
+  SetAttribute("LiIonEnergySourceInitialEnergyJ", ns3::DoubleValue(capacity_j));
+  SetAttribute("LiIonEnergyLowBatteryThreshold", ns3::DoubleValue(cutoff));
+  SetAttribute("RatedCapacity", ns3::DoubleValue(2.45 * k));
+  SetAttribute("NomCapacity", ns3::DoubleValue(1.1 * k));
+  SetAttribute("ExpCapacity", ns3::DoubleValue(1.2 * k));
+  SetAttribute("TypCurrent", ns3::DoubleValue(2.33 * k));
+  SetAttribute("InternalResistance", ns3::DoubleValue(0.083 / k));
+  const double drained_j = (1 - initial_fraction) * capacity_j;
+  DecreaseRemainingEnergy(drained_j);
+  DrainedAh() = drained_j / (kNominalVoltage * 3600);
+}
+
+void LiIonCell::Start() {
+  started_ = true;
+  Initialize();  // ns-3's periodic updates start here
+  CheckThresholds();
+}
+
+void LiIonCell::UpdateEnergySource() {
+  if (!started_) return;
+  ns3::LiIonEnergySource::UpdateEnergySource();
+  CheckThresholds();
+}
+
+double LiIonCell::Recharge(double joules) {
+  UpdateEnergySource();
+  const double taken = std::clamp(capacity_j_ - GetRemainingEnergy(), 0.0, joules);
+  IncreaseRemainingEnergy(taken);
+  DrainedAh() = std::max(0.0, DrainedAh() - taken / (kNominalVoltage * 3600));
+  UpdateEnergySource();  // the voltage at the new charge; ns-3's updates stop once it was drained
+  CheckThresholds(/*recharged=*/true);
+  return taken;
+}
+
+void LiIonCell::CheckThresholds(bool recharged) {
+  const double remaining = this->*Get(net::LiIonRemainingJ());
+  const bool empty = remaining <= cutoff_ * capacity_j_ || GetSupplyVoltage() <= kThresholdVoltage;
+  if (!depleted_ && empty) {
+    depleted_ = true;
+    NotifyEnergyDrained();
+  } else if (recharged && depleted_ && !empty && remaining > revives_above_ * capacity_j_) {
+    depleted_ = false;
+    NotifyEnergyRecharged();
+  }
+}
+
+}  // namespace sanet::energy

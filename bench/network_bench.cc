@@ -62,7 +62,8 @@ double RunSanet(int count, double duration, hosting::Registry& registry, net::Ch
                           sensors::DefaultModel(robots::ModelKind::kMote),
                           {kSpacing * (i % layout.side), kSpacing * (i / layout.side), 0},
                           std::nullopt,
-                          {}});
+                          {},
+                          std::nullopt});
   for (const auto& [source, destination] : layout.flows) {
     sim::ControllerSpec c;
     c.name = "pinger";

@@ -38,7 +38,8 @@ sim::RunSpec Robots(int count, double duration, physics::Solver solver,
                     sensors::DefaultModel(kind),
                     {3.0 * (i % side), 3.0 * (i / side), 0},
                     sim::ControllerSpec{},
-                    {}};
+                    {},
+                    std::nullopt};
     n.controller->name = "constant_velocity";  // a 1 m circle: the robots keep driving, apart
     ParamValue vx, omega;
     vx.rows = {{"0.3"}};
@@ -58,7 +59,8 @@ sim::RunSpec Motes(int count, double duration) {
                           sensors::DefaultModel(robots::ModelKind::kMote),
                           {10.0 * (i % 20), 10.0 * (i / 20), 0},
                           std::nullopt,
-                          {}});
+                          {},
+                          std::nullopt});
   return spec;
 }
 

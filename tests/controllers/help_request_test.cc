@@ -197,7 +197,8 @@ TEST(HelpRequest, EveryHopWasANextHopInTheRobotsRoutingTableWhenChosen) {
 
 TEST(HelpRequest, TheRobotGivesUpWhenTheTargetIsSwitchedOffOnTheWay) {
   sim::RunSpec spec = SmallHelpRequest();
-  spec.events.push_back({150, static_cast<std::uint32_t>(spec.nodes.size() - 2), sim::NodeEvent::Action::kSwitchOff});
+  spec.events.push_back(
+      {150, static_cast<std::uint32_t>(spec.nodes.size() - 2), sim::NodeEvent::Action::kSwitchOff, std::nullopt});
   spec.duration = 700;
   const auto transitions = Transitions(RunIn("switched-off", spec));
   EXPECT_FALSE(Find(transitions, "robot", "arrived"));
@@ -238,7 +239,7 @@ TEST(HelpRequest, AMoteNobodyAnswersRequestsThreeTimesAndGivesUp) {
 TEST(HelpRequest, ARobotWithoutAnswerAsksThreeTimesAndGivesUp) {
   sim::RunSpec spec = Local(200);
   spec.nodes = {HelpMote("target", 5, {20, 0}), HelpRobot("robot", {0, 0})};
-  spec.events.push_back({5.005, 0, sim::NodeEvent::Action::kSwitchOff});  // right after its request
+  spec.events.push_back({5.005, 0, sim::NodeEvent::Action::kSwitchOff, std::nullopt});  // right after its request
   const auto t = Transitions(RunIn("no-answer", spec));
   ASSERT_TRUE(Find(t, "robot", "request_assignment"));
   const Transition* gave_up = Find(t, "robot", "idle", "no answer from target after 3");
@@ -249,7 +250,7 @@ TEST(HelpRequest, ARobotWithoutAnswerAsksThreeTimesAndGivesUp) {
 TEST(HelpRequest, AMoteDropsASilentRobotAndRequestsAgain) {
   sim::RunSpec spec = Local(100);
   spec.nodes = {HelpMote("target", 5, {60, 0}), HelpRobot("robot", {0, 0}, /*hop_time=*/20)};
-  spec.events.push_back({8, 1, sim::NodeEvent::Action::kSwitchOff});  // after it took the request
+  spec.events.push_back({8, 1, sim::NodeEvent::Action::kSwitchOff, std::nullopt});  // after it took the request
   const std::string dir = RunIn("silent", spec);
   const auto t = Transitions(dir);
   ASSERT_TRUE(Find(t, "target", "wait", "takes the request"));

@@ -50,7 +50,7 @@ inline sim::ControllerSpec UseController(std::string name, std::vector<std::pair
 
 inline sim::NodeSpec Robot(std::string name, robots::ModelKind kind, Pose2D pose,
                            std::optional<sim::ControllerSpec> controller = std::nullopt) {
-  return {std::move(name), sensors::DefaultModel(kind), pose, std::move(controller), {}};
+  return {std::move(name), sensors::DefaultModel(kind), pose, std::move(controller), {}, std::nullopt};
 }
 
 // The settings of a node's sensor instance, as its kind keeps them (sensors::RangeFan for ir and

@@ -61,10 +61,12 @@ void Battery::Drain() {
 // The models hear it first thing: they change their current (and ask for an update, which finds
 // nothing more to drain) before this returns.
 void Battery::CheckThresholds() {
-  // A nanojoule's slack per joule: the update scheduled for the cutoff lands on it, not a hair above.
-  const double slack = 1e-9 * settings_.capacity_j;
-  if (!depleted_ && remaining_j_ <= settings_.cutoff * settings_.capacity_j + slack) {
+  // The checks close in on the cutoff from above: within a picojoule per joule of it, it is reached
+  // (a nanosecond's draw more would cross it).
+  const double cutoff_j = settings_.cutoff * settings_.capacity_j;
+  if (!depleted_ && remaining_j_ <= cutoff_j + 1e-12 * settings_.capacity_j) {
     depleted_ = true;
+    remaining_j_ = std::min(remaining_j_, cutoff_j);
     NotifyEnergyDrained();
   } else if (depleted_ && remaining_j_ > settings_.revives_above * settings_.capacity_j) {
     depleted_ = false;
@@ -72,22 +74,23 @@ void Battery::CheckThresholds() {
   }
 }
 
-// At the current draw the charge reaches the cutoff after (remaining - cutoff) / (I V) seconds;
-// the update is due then, rounded up to ns-3's nanosecond.
+// At the most the models can draw, the charge reaches the cutoff after
+// (remaining - cutoff) / most_watts seconds at the earliest, rounded up to ns-3's nanosecond. A
+// check already due before then stands.
 void Battery::ScheduleNextUpdate() {
-  next_update_.Cancel();
-  if (depleted_) return;
-  const double watts = CalculateTotalCurrent() * settings_.voltage;
-  if (watts <= 0) return;
-  const double seconds = (remaining_j_ - settings_.cutoff * settings_.capacity_j) / watts;
+  if (depleted_ || settings_.most_watts <= 0) return next_check_.Cancel();
+  const double seconds = (remaining_j_ - settings_.cutoff * settings_.capacity_j) / settings_.most_watts;
   const double ns = std::ceil(std::max(0.0, seconds) * 1e9);
   if (ns > 9e18) return;  // past any run
-  next_update_ =
-      ns3::Simulator::Schedule(ns3::NanoSeconds(static_cast<std::int64_t>(ns)), &Battery::UpdateEnergySource, this);
+  const ns3::Time at = ns3::Simulator::Now() + ns3::NanoSeconds(static_cast<std::int64_t>(ns));
+  if (next_check_.IsRunning() && next_check_at_ <= at) return;
+  next_check_.Cancel();
+  next_check_at_ = at;
+  next_check_ = ns3::Simulator::Schedule(at - ns3::Simulator::Now(), &Battery::UpdateEnergySource, this);
 }
 
 void Battery::DoDispose() {
-  next_update_.Cancel();
+  next_check_.Cancel();
   BreakDeviceEnergyModelRefCycle();
 }
 

@@ -4,9 +4,13 @@
 // 3.37's BasicEnergySource has one setter for both its capacity and what remains, relates its
 // thresholds to that, and notices depletion only at its periodic updates (a second by default).
 //
-// Depletion: at every update (each device model asks for one before its current changes) the
-// battery schedules its next update for the instant its charge would reach the cutoff at the
-// current draw, so a node dies when its charge does, not up to an update interval later.
+// Depletion: the battery looks at its charge whenever a device model's current changes (each asks
+// for an update first) and at a check it schedules for the instant its charge would reach the
+// cutoff were it drawn at the most the models can draw (`most_watts`). Such a check is never late,
+// so it need not move when the draw changes (a radio's state changes thousands of times a
+// second); at each check the next comes closer, and the one at which the charge has reached the
+// cutoff finds the node dead when its charge ran out, to the nanojoule, not up to an update
+// interval later. A node with a steady draw needs a few dozen checks in its life.
 #pragma once
 
 #include <ns3/energy-source.h>
@@ -27,6 +31,7 @@ class Battery : public ns3::EnergySource, public Rechargeable {
     double initial_fraction = 1;
     double cutoff = 0;            // fraction: depleted at or below it
     double revives_above = 0.05;  // fraction: recharged (after a depletion) above it
+    double most_watts = 0;        // the most the device models can draw at once
   };
   // Before the run; nothing is drawn until Start (every device model attached by then).
   void Configure(const Settings& settings);
@@ -53,7 +58,8 @@ class Battery : public ns3::EnergySource, public Rechargeable {
   bool depleted_ = false;
   bool started_ = false;
   ns3::Time last_update_;
-  ns3::EventId next_update_;
+  ns3::EventId next_check_;
+  ns3::Time next_check_at_;
 };
 
 }  // namespace sanet::energy

@@ -1,7 +1,8 @@
 #include "energy/node_energy.h"
 
 #include <ns3/wifi-net-device.h>
-#include <ns3/wifi-radio-energy-model-helper.h>
+
+#include <algorithm>
 
 namespace sanet::energy {
 namespace {
@@ -11,7 +12,7 @@ void Ignore() {}
 }  // namespace
 
 NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio, Hooks hooks)
-    : spec_(spec), hooks_(std::move(hooks)) {
+    : spec_(spec), hooks_(std::move(hooks)), has_radio_(radio != nullptr) {
   MakeSource(node);
   electronics_ = ns3::CreateObject<ElectronicsModel>();
   electronics_->SetEnergySource(source_);
@@ -33,11 +34,19 @@ void NodeEnergy::MakeSource(ns3::Ptr<ns3::Node> node) {
     source_ = cell;
   } else {
     auto battery = ns3::CreateObject<Battery>();
-    battery->Configure({spec_.battery_j, spec_.voltage, spec_.initial_fraction, spec_.cutoff, spec_.RevivesAbove()});
+    battery->Configure(
+        {spec_.battery_j, spec_.voltage, spec_.initial_fraction, spec_.cutoff, spec_.RevivesAbove(), MostWatts()});
     rechargeable_ = ns3::PeekPointer(battery);
     source_ = battery;
   }
   source_->SetNode(node);
+}
+
+// The radio's largest current (whatever its state) and the electronics together.
+double NodeEnergy::MostWatts() const {
+  const RadioCurrents& c = spec_.radio;
+  const double radio_a = has_radio_ ? std::max({c.tx_a, c.rx_a, c.idle_a, c.cca_busy(), c.switching_a, c.sleep_a}) : 0;
+  return radio_a * spec_.voltage + spec_.electronics_w;
 }
 
 void NodeEnergy::StartSource() {
@@ -45,29 +54,33 @@ void NodeEnergy::StartSource() {
   ns3::DynamicCast<Battery>(source_)->Start();
 }
 
-// ns-3's helper connects the model to the PHY's states; depletion and recharge are the node's to
-// handle (sim switches the whole node off), so the radio's own callbacks do nothing.
+// Installed as ns-3's WifiRadioEnergyModelHelper installs its model (the PHY's listener, the
+// source's list, the PHY's model), but the model is sanet's RadioEnergyModel, which the helper
+// cannot make. Depletion and recharge are the node's to handle (sim switches the whole node off),
+// so the radio's own callbacks do nothing.
 void NodeEnergy::InstallRadio(ns3::Ptr<ns3::NetDevice> radio) {
-  ns3::WifiRadioEnergyModelHelper helper;
   const RadioCurrents& c = spec_.radio;
-  helper.Set("TxCurrentA", ns3::DoubleValue(c.tx_a));
-  helper.Set("RxCurrentA", ns3::DoubleValue(c.rx_a));
-  helper.Set("IdleCurrentA", ns3::DoubleValue(c.idle_a));
-  helper.Set("CcaBusyCurrentA", ns3::DoubleValue(c.cca_busy()));
-  helper.Set("SwitchingCurrentA", ns3::DoubleValue(c.switching_a));
-  helper.Set("SleepCurrentA", ns3::DoubleValue(c.sleep_a));
-  helper.SetDepletionCallback(ns3::MakeCallback(&Ignore));
-  helper.SetRechargedCallback(ns3::MakeCallback(&Ignore));
-  ns3::DeviceEnergyModelContainer models = helper.Install(radio, source_);
-  radio_ = ns3::DynamicCast<ns3::WifiRadioEnergyModel>(models.Get(0));
+  radio_ = ns3::CreateObject<RadioEnergyModel>();
+  radio_->SetTxCurrentA(c.tx_a);
+  radio_->SetRxCurrentA(c.rx_a);
+  radio_->SetIdleCurrentA(c.idle_a);
+  radio_->SetCcaBusyCurrentA(c.cca_busy());
+  radio_->SetSwitchingCurrentA(c.switching_a);
+  radio_->SetSleepCurrentA(c.sleep_a);
+  radio_->SetEnergyDepletionCallback(ns3::MakeCallback(&Ignore));
+  radio_->SetEnergyRechargedCallback(ns3::MakeCallback(&Ignore));
+  radio_->SetEnergySource(source_);
+  source_->AppendDeviceEnergyModel(radio_);
   radio_device_ = ns3::DynamicCast<ns3::WifiNetDevice>(radio);
+  ns3::Ptr<ns3::WifiPhy> phy = radio_device_->GetPhy();
+  phy->SetWifiRadioEnergyModel(radio_);
+  phy->RegisterListener(radio_->GetPhyListener());
   if (states_) return;
   RadioStates::Currents amperes{};  // SWITCHING and OFF cost nothing here: sanet never switches channel
   amperes[::WifiPhyState::TX] = c.tx_a, amperes[::WifiPhyState::RX] = c.rx_a;
   amperes[::WifiPhyState::IDLE] = c.idle_a, amperes[::WifiPhyState::CCA_BUSY] = c.cca_busy();
   amperes[::WifiPhyState::SLEEP] = c.sleep_a;
-  states_ = std::make_unique<RadioStates>(radio_device_->GetPhy(), amperes,
-                                          [source = source_] { return source->GetSupplyVoltage(); });
+  states_ = std::make_unique<RadioStates>(phy, amperes, [source = source_] { return source->GetSupplyVoltage(); });
 }
 
 BatteryReading NodeEnergy::Reading() const {

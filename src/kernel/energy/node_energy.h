@@ -1,7 +1,7 @@
 // One node's energy on ns-3's energy framework: its battery (energy/battery.h), the electronics'
 // draw (energy/electronics_model.h) and, on a node with a Wi-Fi radio, ns-3's
-// WifiRadioEnergyModel driven by the PHY's real states, with the time in each state summed from
-// the PHY's trace (energy/radio_states.h) for the energy by state.
+// WifiRadioEnergyModel (energy/radio_energy_model.h) driven by the PHY's real states, with the time in each state
+// summed from the PHY's trace (energy/radio_states.h) for the energy by state.
 #pragma once
 
 #include <ns3/net-device.h>
@@ -20,6 +20,7 @@
 #include "energy/electronics_model.h"
 #include "energy/energy_spec.h"
 #include "energy/li_ion_cell.h"
+#include "energy/radio_energy_model.h"
 #include "energy/radio_states.h"
 #include "sanet/readings.h"
 
@@ -61,14 +62,16 @@ class NodeEnergy {
   Hooks hooks_;
   void MakeSource(ns3::Ptr<ns3::Node> node);
   void StartSource();
+  double MostWatts() const;
 
   ns3::Ptr<ns3::EnergySource> source_;  // a Battery or a LiIonCell, as the spec says
   Rechargeable* rechargeable_ = nullptr;
   ns3::Ptr<ElectronicsModel> electronics_;
-  ns3::Ptr<ns3::WifiRadioEnergyModel> radio_;  // the radio's model since it was last switched on
+  ns3::Ptr<RadioEnergyModel> radio_;  // the radio's model since it was last switched on
   ns3::Ptr<ns3::WifiNetDevice> radio_device_;
   std::unique_ptr<RadioStates> states_;
   double charged_j_ = 0;
+  bool has_radio_ = false;
 };
 
 }  // namespace sanet::energy

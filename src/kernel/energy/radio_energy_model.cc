@@ -1,0 +1,30 @@
+#include "energy/radio_energy_model.h"
+
+#include <ns3/simulator.h>
+
+#include "net/private_access.h"
+
+namespace sanet::net {
+// The model's pending switch to OFF, which ns-3 keeps private.
+SANET_PRIVATE_MEMBER(RadioSwitchToOff, ns3::WifiRadioEnergyModel, ns3::EventId, m_switchToOffEvent);
+}  // namespace sanet::net
+
+namespace sanet::energy {
+
+NS_OBJECT_ENSURE_REGISTERED(RadioEnergyModel);
+
+ns3::TypeId RadioEnergyModel::GetTypeId() {
+  static ns3::TypeId tid = ns3::TypeId("sanet::energy::RadioEnergyModel")
+                               .SetParent<ns3::WifiRadioEnergyModel>()
+                               .SetGroupName("Energy")
+                               .AddConstructor<RadioEnergyModel>();
+  return tid;
+}
+
+// Removing the switch that is running now (it calls this) does nothing: ns-3 sees it as expired.
+void RadioEnergyModel::ChangeState(int new_state) {
+  ns3::Simulator::Remove(this->*Get(net::RadioSwitchToOff()));
+  ns3::WifiRadioEnergyModel::ChangeState(new_state);
+}
+
+}  // namespace sanet::energy

@@ -31,18 +31,20 @@ network:
 messages: {loss: 0.1, delay: 0.05}
 events:
   - {time: 15, node: m3, action: switch_off}
+  - {time: 12, node: m4, action: recharge, energy_j: 40}
 end: {when_logged: [never logged, nor this], grace: 1}
 outputs: {trajectory_interval: 0.2, min_distance: true}
 spawn:
   max: 3
   classes:
     - {class: USARBot.P2AT, model: diffdrive, body: {max_speed: 0.7}, radio: {tx_power: 12}}
-    - {class: Omni, model: omni3, sensors: {laser: {fov: 1, beams: 11}}}
+    - {class: Omni, model: omni3, sensors: {laser: {fov: 1, beams: 11}}, energy: {source: li_ion, battery_j: 30000}}
 nodes:
   - grid: {name: m, rows: 2, cols: 3, origin: [0, -5], spacing: [10, 10], heading: 0.1}
     model: mote
     body: {size: 0.2}
     radio: {tx_power: 20}
+    energy: {battery_j: 50, voltage: 3.7, cutoff: 0.1, radio: {preset: cc2420, tx_a: 0.02}}
     controller: {name: pinger, rate: 2, params: {to: flood, interval: 2, size: 12}}
   - name: r
     model: omni3
@@ -116,7 +118,9 @@ class EffectiveScenario(unittest.TestCase):
             f.write(EVERYTHING)
         printed = self.check(path, 20)
         # Defaults are filled in and grids become their nodes.
-        for text in ["rx_threshold: -82", "reference_distance", "name: m5", "solver: exact", "mass: 0.05"]:
+        for text in ["rx_threshold: -82", "reference_distance", "name: m5", "solver: exact", "mass: 0.05",
+                     "preset: cc2420", "tx_a: 0.02", "revive: 0.15", "source: li_ion", "action: recharge",
+                     "energy_j: 40", "energy_interval: 10", "sleep_a: 2e-5"]:
             if text == "reference_distance":
                 self.assertNotIn(text, printed, "keys that do not apply to the model are left out")
             else:

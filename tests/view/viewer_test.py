@@ -3,12 +3,15 @@
 help-request run loads without console errors; seeking to t = 600 s puts the robot where
 trajectories.csv says (within 2 m); 25 motes are drawn; a mote's packet counts in the side panel
 equal packets.csv; screenshots of both case studies are taken (into docs/figures with
-SANET_UPDATE_FIGURES=1). Skipped, saying why, where Chromium or Selenium is missing.
+SANET_UPDATE_FIGURES=1). Nodes on batteries are coloured by their charge and dead ones dark grey,
+in the replay of sensor-network-energy and live; nodes without energy keep their colours.
+Skipped, saying why, where Chromium or Selenium is missing.
 Run with Debian's python: /usr/bin/python3 viewer_test.py SANET SOURCE"""
 import csv
 import json
 import os
 import shutil
+import sqlite3
 import subprocess
 import sys
 import tempfile
@@ -40,6 +43,29 @@ def wait_for_port(port_file, seconds=60):
         if time.time() > deadline:
             raise AssertionError(f"{port_file} did not appear within {seconds} s")
         time.sleep(0.005)
+
+
+# Colours the page draws nodes in (viewer.js), as window.sanet.state() gives them.
+MOTE, ROBOT, DEAD = "2060c0", "d04010", "404040"
+
+# Three motes, no radio: `short` runs down in 2 s, `long` loses 1 % a second, `plain` has no battery.
+BATTERIES = """name: batteries
+seed: 1
+duration: 10
+world: {size: [20, 20]}
+nodes:
+  - {name: short, model: mote, pose: [0, 0, 0], energy: {battery_j: 2, electronics_w: 1}}
+  - {name: long, model: mote, pose: [10, 0, 0], energy: {battery_j: 100, electronics_w: 1}}
+  - {name: plain, model: mote, pose: [0, 10, 0]}
+outputs: {energy_interval: 0.5, trace: true}
+"""
+
+
+def write_batteries(folder):
+    path = os.path.join(folder, "batteries.yaml")
+    with open(path, "w") as f:
+        f.write(BATTERIES)
+    return path
 
 
 def rows(folder, name):
@@ -78,6 +104,12 @@ class Viewer:
         return self.browser.execute_async_script(
             "const done = arguments[arguments.length - 1];"
             f"Promise.resolve({script}).then((v) => done(v === undefined ? null : v), (e) => done('error: ' + e));")
+
+    def nodes_at(self, t):
+        """Seeks to t and returns the drawn nodes by name, and whether the legend shows."""
+        self.call(f"window.sanet.seek({t})")
+        state = self.browser.execute_script("return window.sanet.state()")
+        return {n["name"]: n for n in state["nodes"]}, state["legend"]
 
     def errors(self):
         return [e for e in self.browser.get_log("browser") if e["level"] == "SEVERE"]
@@ -123,6 +155,17 @@ class ViewerTest(unittest.TestCase):
         self.viewer.call("window.sanet.seek(10.1)")
         self.assertGreater(self.viewer.browser.execute_script("return window.sanet.state().broadcastsShown"), 0)
 
+    def test_nodes_without_energy_keep_their_colours(self):
+        nodes, legend = self.viewer.nodes_at(300)
+        self.assertFalse(legend)
+        for n in nodes.values():
+            self.assertEqual(n["color"], MOTE if n["model"] == "mote" else ROBOT, n["name"])
+            self.assertIsNone(n["charge"])
+            self.assertFalse(n["dead"])
+        with sqlite3.connect(os.path.join(self.results, "trace.sqlite")) as db:
+            tables = [r[0] for r in db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")]
+        self.assertNotIn("energy", tables, "a run without energy has no energy table")
+
     def test_a_motes_panel_shows_its_packet_counts(self):
         self.viewer.call("window.sanet.select('m7')")
         cells = self.viewer.browser.execute_script(
@@ -154,6 +197,82 @@ class ViewerTest(unittest.TestCase):
             self.assertEqual(second.errors(), [])
         finally:
             second.close()
+
+
+@unittest.skipIf(missing(), f"the viewer's test needs a browser: {missing()}")
+class EnergyViewerTest(unittest.TestCase):
+    """The replay of sensor-network-energy to 420 s: ten `old` motes die at 217 s, the others at
+    362 s, m7 is recharged at 400 s; the reporter lives on."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.results = os.path.join(cls.tmp.name, "energy")
+        subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "sensor-network-energy.yaml"), "-q",
+                        "-o", cls.results, "--duration", "420", "--set", "outputs.trace=true"], check=True)
+        cls.viewer = Viewer(cls.results, os.path.join(cls.tmp.name, "v"))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.viewer.close()
+        cls.tmp.cleanup()
+
+    def test_the_trace_holds_the_batteries_samples(self):
+        with sqlite3.connect(os.path.join(self.results, "trace.sqlite")) as db:
+            count, nodes = db.execute("SELECT count(*), count(DISTINCT node) FROM energy").fetchone()
+            full = db.execute("SELECT fraction, remaining_j FROM energy WHERE t = 0 AND node = 0").fetchone()
+        self.assertEqual(nodes, 26)
+        self.assertEqual(count, len(rows(self.results, "energy.csv")))
+        self.assertEqual(full, (1.0, 300.0))
+
+    def test_old_motes_are_alive_before_217_s_and_dead_after(self):
+        before, legend = self.viewer.nodes_at(100)
+        self.assertTrue(legend)
+        after, _ = self.viewer.nodes_at(300)
+        old = [name for name in before if name.startswith("old")]
+        self.assertEqual(len(old), 10)
+        for name in old:
+            self.assertFalse(before[name]["dead"], name)
+            self.assertNotIn(before[name]["color"], (DEAD, MOTE), name)
+            self.assertTrue(after[name]["dead"], name)
+            self.assertEqual(after[name]["color"], DEAD, name)
+        for name in ("m0", "m7", "reporter"):
+            self.assertNotEqual(after[name]["color"], DEAD, name)
+
+    def test_m7_is_dead_at_380_s_and_alive_again_at_410_s(self):
+        nodes, _ = self.viewer.nodes_at(380)
+        self.assertTrue(nodes["m7"]["dead"])
+        self.assertEqual(nodes["m7"]["color"], DEAD)
+        self.assertEqual(nodes["m0"]["color"], DEAD)
+        self.assertNotEqual(nodes["reporter"]["color"], DEAD)
+        nodes, _ = self.viewer.nodes_at(410)
+        self.assertFalse(nodes["m7"]["dead"])
+        self.assertGreater(nodes["m7"]["charge"], 0.9)
+        self.assertNotIn(nodes["m7"]["color"], (DEAD, MOTE))
+
+    def test_a_full_node_is_coloured_unlike_a_nearly_empty_one(self):
+        full, _ = self.viewer.nodes_at(0)
+        self.assertEqual(full["m0"]["charge"], 1)
+        low, _ = self.viewer.nodes_at(210)
+        self.assertLess(low["old0"]["charge"], 0.1)
+        self.assertFalse(low["old0"]["dead"])
+        self.assertNotIn(low["old0"]["color"], (full["m0"]["color"], DEAD, MOTE))
+        self.assertEqual(self.viewer.errors(), [])
+
+    def test_a_mote_without_energy_keeps_its_colour_beside_motes_with_energy(self):
+        folder = os.path.join(self.tmp.name, "batteries")
+        subprocess.run([SANET, "run", write_batteries(self.tmp.name), "-q", "-o", folder], check=True)
+        viewer = Viewer(folder, os.path.join(self.tmp.name, "b"))
+        try:
+            nodes, legend = viewer.nodes_at(5)
+            self.assertTrue(legend)
+            self.assertEqual((nodes["short"]["dead"], nodes["short"]["color"]), (True, DEAD))
+            self.assertAlmostEqual(nodes["long"]["charge"], 0.95, delta=0.001)
+            self.assertNotIn(nodes["long"]["color"], (DEAD, MOTE))
+            self.assertEqual((nodes["plain"]["color"], nodes["plain"]["charge"]), (MOTE, None))
+            self.assertEqual(viewer.errors(), [])
+        finally:
+            viewer.close()
 
 
 def sse_frames(port_file, timeout=60):
@@ -211,6 +330,37 @@ class LiveTest(unittest.TestCase):
                 self.assertGreater(state["frames"], 10)
                 self.assertEqual(len(state["nodes"]), 28)
                 self.assertGreater(state["t"], 1)
+                self.assertEqual(viewer.errors(), [])
+            finally:
+                viewer.close()
+
+    @unittest.skipIf(missing(), f"needs a browser: {missing()}")
+    def test_a_live_view_colours_nodes_by_their_charge(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            port_file = os.path.join(tmp, "view-port")
+            run = subprocess.Popen([SANET, "run", write_batteries(tmp), "--real-time", "-q", "-o", os.path.join(tmp, "out"),
+                                    "--view", "--view-port", "0", "--view-port-file", port_file, "--foxglove-port", "0"],
+                                   stdout=subprocess.DEVNULL)
+            wait_for_port(port_file)
+            viewer = Viewer.__new__(Viewer)
+            viewer.server = run
+            with open(port_file) as f:
+                Viewer.open_browser(viewer, f"http://127.0.0.1:{int(f.read())}/")
+            try:
+                # `short` dies 2 s into the run, on the wall clock.
+                deadline = time.time() + 20
+                while True:
+                    state = viewer.browser.execute_script("return window.sanet.state()")
+                    nodes = {n["name"]: n for n in state["nodes"]}
+                    if nodes["short"]["dead"] or time.time() > deadline:
+                        break
+                    time.sleep(0.2)
+                self.assertTrue(state["legend"])
+                self.assertEqual(nodes["short"]["color"], DEAD)
+                self.assertFalse(nodes["long"]["dead"])
+                self.assertGreater(nodes["long"]["charge"], 0.8)
+                self.assertNotIn(nodes["long"]["color"], (DEAD, MOTE))
+                self.assertEqual((nodes["plain"]["color"], nodes["plain"]["charge"]), (MOTE, None))
                 self.assertEqual(viewer.errors(), [])
             finally:
                 viewer.close()

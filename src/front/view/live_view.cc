@@ -83,6 +83,29 @@ nlohmann::json LiveView::RunJson(const sim::RunSpec& spec) const {
 void LiveView::Observe(sim::RunBus& bus) {
   step_ended_ =
       bus.On<sim::StepEnded>(sim::RunStage::kObserve, [this](const sim::StepEnded& e) { AfterStep(e.world); });
+  energy_.push_back(bus.On<sim::EnergySampled>(sim::RunStage::kObserve, [this](const sim::EnergySampled& e) {
+    for (const sim::EnergyLevel& l : e.levels) {
+      while (charge_.size() <= l.node) charge_.push_back(nullptr);
+      charge_[l.node] = Rounded(l.battery.fraction);
+    }
+  }));
+  energy_.push_back(bus.On<sim::Died>(sim::RunStage::kObserve, [this](const sim::Died& e) { SetDead(e.node, true); }));
+  energy_.push_back(
+      bus.On<sim::Revived>(sim::RunStage::kObserve, [this](const sim::Revived& e) { SetDead(e.node, false); }));
+}
+
+void LiveView::SetDead(NodeId node, bool dead) {
+  if (dead_.size() <= node) dead_.resize(node + 1, false);
+  dead_[node] = dead;
+}
+
+// A run with batteries: "energy", each node's charge (null: none), and "dead", the dead nodes.
+void LiveView::AddEnergy(nlohmann::json& frame) const {
+  if (charge_.empty() && dead_.empty()) return;
+  frame["energy"] = charge_;
+  frame["dead"] = nlohmann::json::array();
+  for (NodeId id = 0; id < dead_.size(); ++id)
+    if (dead_[id]) frame["dead"].push_back(id);
 }
 
 void LiveView::AfterStep(const sim::WorldSnapshot& snapshot) {
@@ -99,6 +122,7 @@ void LiveView::AfterStep(const sim::WorldSnapshot& snapshot) {
   for (NodeId a = 0; a < neighbours.size(); ++a)
     for (NodeId b : neighbours[a])
       if (a < b) frame["links"].push_back({a, b});
+  AddEnergy(frame);
   std::string text = JsonText(frame);
   {
     std::lock_guard<std::mutex> lock(mutex_);

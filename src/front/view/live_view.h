@@ -1,6 +1,7 @@
 // The live view of a running world (`sanet run --view`, `sanet serve --view`): an observer that,
 // at most every `period` of wall-clock time, turns the world's snapshot into one frame (time,
-// poses, controller states, radio neighbours) and keeps only the latest; an HTTP server thread
+// poses, controller states, radio neighbours, and the batteries' charge and the dead nodes in a
+// run with energy) and keeps only the latest; an HTTP server thread
 // (cpp-httplib) streams the frames to browsers as server-sent events and serves the same page
 // as `sanet view`. The run only swaps a string under a lock: a slow browser misses frames, the
 // run never waits for it.
@@ -15,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "sim/run_events.h"
 #include "sim/run_spec.h"
@@ -40,7 +42,7 @@ class LiveView {
   int port() const { return port_; }
   std::uint64_t frames() const { return sequence_; }
 
-  // Draws the world on the run's bus from now on.
+  // Draws the world on the run's bus from now on: its steps, batteries, deaths and revivals.
   void Observe(sim::RunBus& bus);
   void AfterStep(const sim::WorldSnapshot& snapshot);
   // Ends the stream (the run is over): browsers see the last frame and `end`.
@@ -48,7 +50,10 @@ class LiveView {
 
  private:
   Subscription step_ended_;  // AfterStep, on the run's bus
+  std::vector<Subscription> energy_;
   nlohmann::json RunJson(const sim::RunSpec& spec) const;
+  void AddEnergy(nlohmann::json& frame) const;
+  void SetDead(NodeId node, bool dead);
   bool WaitForFrame(std::uint64_t after, std::string* frame);
 
   LiveSettings settings_;
@@ -57,6 +62,10 @@ class LiveView {
   std::thread thread_;
   int port_ = 0;
   std::chrono::steady_clock::time_point last_ = {};
+  // On the simulation thread: each node's charge at the latest sample (null: no battery), and
+  // whether it is dead.
+  nlohmann::json charge_ = nlohmann::json::array();
+  std::vector<bool> dead_;
   std::mutex mutex_;
   std::condition_variable changed_;
   std::string frame_;

@@ -156,4 +156,25 @@ nlohmann::json TraceReader::MinDistance() const {
   return out;
 }
 
+bool TraceReader::HasTable(const char* name) const {
+  sqlite3_stmt* s = nullptr;
+  sqlite3_prepare_v2(db_, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?1", -1, &s, nullptr);
+  sqlite3_bind_text(s, 1, name, -1, SQLITE_STATIC);
+  const bool found = sqlite3_step(s) == SQLITE_ROW;
+  sqlite3_finalize(s);
+  return found;
+}
+
+nlohmann::json TraceReader::Energy() const {
+  nlohmann::json energy = {{"levels", nlohmann::json::object()}, {"deaths", nlohmann::json::array()}};
+  if (!HasTable("energy")) return energy;
+  Query("SELECT node, t, fraction FROM energy ORDER BY rowid", [&](sqlite3_stmt* s, nlohmann::json&) {
+    energy["levels"][std::to_string(sqlite3_column_int64(s, 0))].push_back(
+        {sqlite3_column_double(s, 1), sqlite3_column_double(s, 2)});
+  });
+  energy["deaths"] = Query(
+      "SELECT t, node, kind = 'death' FROM events WHERE kind IN ('death', 'revival') ORDER BY rowid", AllColumns());
+  return energy;
+}
+
 }  // namespace sanet::view

@@ -31,8 +31,13 @@ class TraceReader {
   // Transitions: [[t, node, from, to, why], ...]; and min_distance.csv rows if any.
   nlohmann::json Transitions() const;
   nlohmann::json MinDistance() const;
+  // The batteries (trace.sqlite's energy table and death and revival events), for runs with
+  // energy: {"levels": {node: [[t, fraction], ...]}, "deaths": [[t, node, dead (1/0)], ...]}; both
+  // empty for a run without energy, whose trace has no energy table.
+  nlohmann::json Energy() const;
 
  private:
+  bool HasTable(const char* name) const;
   template <typename Row>
   nlohmann::json Query(const std::string& sql, Row row, double a = 0, double b = 0) const;
   std::string folder_;

@@ -31,6 +31,7 @@ void AddRoutes(httplib::Server& server, const TraceReader& trace, const std::str
   server.Get("/api/messages", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Messages()); });
   server.Get("/api/transitions", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Transitions()); });
   server.Get("/api/min_distance", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.MinDistance()); });
+  server.Get("/api/energy", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Energy()); });
   server.Get("/api/frames", [&](const httplib::Request& q, httplib::Response& r) {
     Json(r, trace.Frames(Number(q, "from", 0), Number(q, "to", 0)));
   });

@@ -72,6 +72,10 @@ void SqliteTrace::Subscribe(RunBus& bus) {
   Record<SwitchedOff>(bus, [this](const SwitchedOff& e) { db_.Event(e.t, e.node, "switch_off", ""); });
   Record<Died>(bus, [this](const Died& e) { db_.Event(e.t, e.node, "death", ""); });
   Record<Revived>(bus, [this](const Revived& e) { db_.Event(e.t, e.node, "revival", ""); });
+  Record<EnergySampled>(bus, [this](const EnergySampled& e) {
+    for (const EnergyLevel& l : e.levels)
+      db_.Energy(e.t, l.node, l.battery.remaining_j, l.battery.fraction, l.battery.power_w);
+  });
 }
 
 void SqliteTrace::Close() {

@@ -1,6 +1,7 @@
 // trace.sqlite (trace::RunTrace) from the run's events: the run, its nodes where they start and
 // the obstacles first, then pose rows, frames, route changes, messages, transitions, metrics and
-// the nodes' events (log lines, switch-offs, spawns) as they happen. docs/trace.md.
+// the nodes' events (log lines, switch-offs, spawns, deaths, revivals) and the batteries' samples
+// as they happen. docs/trace.md.
 #pragma once
 
 #include <memory>

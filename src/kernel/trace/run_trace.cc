@@ -32,6 +32,11 @@ CREATE INDEX messages_t ON messages(t_sent);
 CREATE INDEX routes_t ON routes(t);
 )sql";
 
+// Only in a run with batteries (RunTrace::Energy).
+constexpr const char* kEnergySchema =
+    "CREATE TABLE energy(t REAL, node INTEGER, remaining_j REAL, fraction REAL, power_w REAL)";
+constexpr const char* kEnergyIndex = "CREATE INDEX energy_t ON energy(t)";
+
 void BindOptional(sqlite3_stmt* s, int column, std::optional<double> value) {
   value ? sqlite3_bind_double(s, column, *value) : sqlite3_bind_null(s, column);
 }
@@ -67,7 +72,9 @@ void RunTrace::Close() {
   if (!db_) return;
   Exec("COMMIT");
   Exec(kIndexes);
-  for (sqlite3_stmt* s : {info_, node_, obstacle_, pose_, frame_, message_, route_, transition_, metric_, event_})
+  if (energy_) Exec(kEnergyIndex);
+  for (sqlite3_stmt* s :
+       {info_, node_, obstacle_, pose_, frame_, message_, route_, transition_, metric_, event_, energy_})
     sqlite3_finalize(s);
   sqlite3_close(db_);
   db_ = nullptr;
@@ -190,6 +197,19 @@ void RunTrace::Event(double t, std::uint32_t node, const char* kind, const std::
   sqlite3_bind_text(event_, 3, kind, -1, SQLITE_STATIC);
   sqlite3_bind_text(event_, 4, detail.c_str(), -1, SQLITE_TRANSIENT);
   Step(event_);
+}
+
+void RunTrace::Energy(double t, std::uint32_t node, double remaining_j, double fraction, double power_w) {
+  if (!energy_) {
+    Exec(kEnergySchema);
+    energy_ = Prepare("INSERT INTO energy VALUES (?, ?, ?, ?, ?)");
+  }
+  sqlite3_bind_double(energy_, 1, t);
+  sqlite3_bind_int64(energy_, 2, node);
+  sqlite3_bind_double(energy_, 3, remaining_j);
+  sqlite3_bind_double(energy_, 4, fraction);
+  sqlite3_bind_double(energy_, 5, power_w);
+  Step(energy_);
 }
 
 }  // namespace sanet::trace

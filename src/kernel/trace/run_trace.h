@@ -1,7 +1,8 @@
 // One run's trace of both worlds on the simulation clock, written to an SQLite database
 // (trace.sqlite): the nodes and obstacles, body poses whenever a body moved, every radio frame
 // sent and received, every application message, routing-table changes, controller transitions
-// and metrics, and events (log lines, switch-offs, spawns). Each table is in time order.
+// and metrics, events (log lines, switch-offs, spawns, deaths, revivals) and, in a run with
+// batteries, their charge at every sample. Each table is in time order.
 // SQLite because it is one file any language reads (Python's standard library, the sqlite3
 // shell), holds numbers compactly, and lets a viewer ask for a time window without reading the
 // rest. docs/trace.md describes every table. Rows go in large transactions; the file is written
@@ -38,6 +39,9 @@ class RunTrace {
   void Transition(double t, std::uint32_t node, const std::string& from, const std::string& to, const std::string& why);
   void Metric(double t, std::uint32_t node, const std::string& name, double value);
   void Event(double t, std::uint32_t node, const char* kind, const std::string& detail);
+  // A battery's sample. The table `energy` is made with the first one, so that a run without
+  // energy writes the same file as before there was energy.
+  void Energy(double t, std::uint32_t node, double remaining_j, double fraction, double power_w);
   // Ends the last transaction and closes the file (also done on destruction).
   void Close();
 
@@ -48,6 +52,7 @@ class RunTrace {
 
   sqlite3* db_ = nullptr;
   sqlite3_stmt *info_, *node_, *obstacle_, *pose_, *frame_, *message_, *route_, *transition_, *metric_, *event_;
+  sqlite3_stmt* energy_ = nullptr;  // with the table, at the first sample
   std::uint64_t rows_in_transaction_ = 0;
 };
 

@@ -18,6 +18,44 @@ function poseAt(rows, t) {
   return [t, a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2]), a[3] + f * (b[3] - a[3])];
 }
 
+// Batteries: a node with energy is drawn in viridis, from full (yellow-green) to empty (purple),
+// and dark grey once dead; viridis keeps its order for colour-blind eyes and in grey. The scale
+// stops short of its dark end, which a dead node's grey would be mistaken for.
+const chargeScale = ["#482475", "#414487", "#355f8d", "#2a788e", "#21918c", "#22a884", "#44bf70", "#7ad151", "#bddf26"];
+const deadColor = "#404040";
+
+function chargeColor(fraction) {
+  const f = Math.max(0, Math.min(1, fraction)) * (chargeScale.length - 1);
+  const i = Math.min(chargeScale.length - 2, Math.floor(f));
+  return new THREE.Color(chargeScale[i]).lerp(new THREE.Color(chargeScale[i + 1]), f - i);
+}
+
+// A node's colour: by its charge (a fraction; null: no battery) or dead, else its model's own.
+function paint(n, charge, dead) {
+  n.charge = charge; n.dead = dead;
+  if (dead) n.mesh.material.color.set(deadColor);
+  else if (charge !== null) n.mesh.material.color.copy(chargeColor(charge));
+  else n.mesh.material.color.setHex(n.color);
+}
+
+// The scale's legend, shown once some node has a battery.
+function showLegend() {
+  const legend = document.getElementById("legend");
+  if (!legend.hidden) return;
+  const stops = chargeScale.map((c, i) => `${c} ${(100 * i) / (chargeScale.length - 1)}%`).join(", ");
+  legend.innerHTML = `battery: empty <span class="scale" style="background: linear-gradient(to right, ${stops})"></span> full` +
+    ` <span class="swatch" style="background: ${deadColor}"></span> dead`;
+  legend.hidden = false;
+}
+
+// The latest of rows ([t, ...], in time order) at or before t, or null.
+function latest(rows, t) {
+  if (!rows.length || rows[0][0] > t) return null;
+  let lo = 0, hi = rows.length - 1;
+  while (lo < hi) { const mid = (lo + hi + 1) >> 1; if (rows[mid][0] <= t) lo = mid; else hi = mid - 1; }
+  return rows[lo];
+}
+
 function bounds(run, poses) {
   const xs = [], ys = [];
   for (const n of run.nodes) { xs.push(n.x); ys.push(n.y); }
@@ -46,7 +84,8 @@ function buildScene(run, poses, box) {
     const mote = n.model === "mote";
     const geometry = mote ? new THREE.BoxGeometry(moteSize, moteSize, moteSize)
                           : new THREE.CylinderGeometry(robotSize / 2, robotSize / 2, robotSize / 2, 20).rotateX(Math.PI / 2);
-    const mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({ color: mote ? 0x2060c0 : 0xd04010 }));
+    const color = mote ? 0x2060c0 : 0xd04010;
+    const mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({ color }));
     mesh.userData = n; scene.add(mesh);
     const label = document.createElement("div");
     label.className = "label" + (mote ? "" : " robot"); label.textContent = n.name;
@@ -59,7 +98,7 @@ function buildScene(run, poses, box) {
                              new THREE.LineBasicMaterial({ color: 0xe08060 }));
       scene.add(track);
     }
-    return { node: n, mesh, label, track, rows, mote, state: "" };
+    return { node: n, mesh, label, track, rows, mote, color, state: "", charge: null, dead: false };
   });
   return { scene, nodes };
 }
@@ -127,6 +166,8 @@ function place(world, t) {
     const last = world.transitions.filter((x) => x[1] === n.node.id && x[0] <= t).pop();
     n.state = last ? last[3] : "";
     n.label.textContent = n.node.name + (n.state ? ` [${n.state}]` : "");
+    const level = latest(n.levels, t), death = latest(n.deaths, t);
+    paint(n, level ? level[1] : null, Boolean(death && death[2]));
   }
 }
 
@@ -138,6 +179,10 @@ function placeLabels(world, camera, element) {
     n.label.style.display = visible ? "" : "none";
     n.label.style.left = ((v.x + 1) / 2) * w + "px"; n.label.style.top = ((1 - v.y) / 2) * h + "px";
   }
+}
+
+function battery(n) {
+  return (n.charge !== null ? `; battery: ${Math.round(100 * n.charge)} %` : "") + (n.dead ? " (dead)" : "");
 }
 
 async function showPanel(world, n, t) {
@@ -159,7 +204,7 @@ async function showPanel(world, n, t) {
   const states = world.transitions.filter((x) => x[1] === n.node.id && x[0] <= t)
     .map((x) => `<tr><td>${x[0].toFixed(1)}</td><td>${x[3]}</td><td>${x[4]}</td></tr>`).join("");
   document.getElementById("panel").innerHTML =
-    `<h3 id="panel-name">${n.node.name}</h3><p>${n.node.model}; state: ${n.state || "none"}</p>` +
+    `<h3 id="panel-name">${n.node.name}</h3><p>${n.node.model}; state: ${n.state || "none"}${battery(n)}</p>` +
     `<h4>Packets (whole run)</h4><table id="panel-packets">` +
     ["sent", "received", "forwarded", "dropped"].map((k) => `<tr><th>${k}</th><td data-key="${k}">${p[k] ?? "-"}</td></tr>`).join("") +
     `</table><h4>Messages up to now</h4><p>${sent} sent, ${received} received</p>` +
@@ -224,6 +269,14 @@ function plots(world, duration) {
   return () => { charts[0].draw(); charts[1].draw(); };
 }
 
+// A node as window.sanet.state() gives it: color is its mesh's, as "rrggbb".
+function nodeState(n) {
+  return { name: n.node.name, model: n.node.model, state: n.state, x: n.mesh.position.x, y: n.mesh.position.y,
+           charge: n.charge, dead: n.dead, color: n.mesh.material.color.getHexString() };
+}
+
+const legendShown = () => !document.getElementById("legend").hidden;
+
 function makeRenderer(element) {
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
   renderer.setPixelRatio(window.devicePixelRatio);
@@ -258,7 +311,9 @@ function live(run) {
       n.mesh.position.set(x, y, n.mote ? world.moteLift : 0.1); n.mesh.rotation.z = theta;
       n.state = frame.states[id] || "";
       n.label.textContent = n.node.name + (n.state ? ` [${n.state}]` : "");
+      if (frame.energy) paint(n, frame.energy[id] ?? null, frame.dead.includes(id));
     });
+    if (frame.energy) showLegend();
     for (const line of world.radio) world.scene.remove(line);
     world.radio = frame.links.map(([a, b]) => {
       const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([world.nodes[a].mesh.position, world.nodes[b].mesh.position]),
@@ -276,14 +331,13 @@ function live(run) {
     document.getElementById("clock").textContent += " (run ended)"; });
   renderer.domElement.onclick = (e) => {
     const n = nearestNode(world, camera(), renderer.domElement, e);
-    if (n) document.getElementById("panel").innerHTML = `<h3 id="panel-name">${n.node.name}</h3><p>${n.node.model}; state: ${n.state || "none"}</p>`;
+    if (n) document.getElementById("panel").innerHTML = `<h3 id="panel-name">${n.node.name}</h3><p>${n.node.model}; state: ${n.state || "none"}${battery(n)}</p>`;
   };
   window.sanet = {
     ready: true, live: true,
     state() {
-      return { t: state.t, frames: state.frames, ended: state.ended, linksUp: world.linksUp,
-               nodes: world.nodes.map((n) => ({ name: n.node.name, model: n.node.model, state: n.state,
-                                                x: n.mesh.position.x, y: n.mesh.position.y })) };
+      return { t: state.t, frames: state.frames, ended: state.ended, linksUp: world.linksUp, legend: legendShown(),
+               nodes: world.nodes.map(nodeState) };
     },
   };
 }
@@ -291,8 +345,8 @@ function live(run) {
 async function main() {
   const run = await api("/api/run");
   if (run.info.live) return live(run);
-  const [poses, messages, transitions, distances] = await Promise.all(
-    [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance")]);
+  const [poses, messages, transitions, distances, energy] = await Promise.all(
+    [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance"), api("/api/energy")]);
   // The run may have ended before the scenario's duration (an end condition).
   const duration = Number((run.summary && run.summary.simulated_s) || run.info.duration_s);
   document.getElementById("title").textContent = run.info.name;
@@ -302,6 +356,11 @@ async function main() {
   const box = bounds(run, poses);
   const world = { ...buildScene(run, poses, box), messages, transitions, distances, radio: [], linksUp: 0,
                   dotSize: Math.max(0.15, box.size / 200), moteLift: Math.max(0.05, box.size / 240) };
+  for (const n of world.nodes) {
+    n.levels = energy.levels[n.node.id] || [];
+    n.deaths = energy.deaths.filter((d) => d[1] === n.node.id);
+  }
+  if (Object.keys(energy.levels).length) showLegend();
   const cams = cameras(box, element);
   const controls = new THREE.OrbitControls(cams.perspective, renderer.domElement);
   controls.target.set(box.cx, box.cy, 0);
@@ -352,8 +411,7 @@ async function main() {
     select(name) { view.selected = world.nodes.find((n) => n.node.name === name) || null; return render(); },
     state() {
       return { t: view.t, duration, linksUp: world.linksUp, routesDrawn: world.routesDrawn || 0, broadcastsShown: world.broadcastsShown || 0, motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length,
-               nodes: world.nodes.map((n) => ({ name: n.node.name, model: n.node.model, state: n.state,
-                                                x: n.mesh.position.x, y: n.mesh.position.y })) };
+               legend: legendShown(), nodes: world.nodes.map(nodeState) };
     },
   };
   requestAnimationFrame(tick);

@@ -4,7 +4,9 @@ in-process controller is. A client written from docs/protocol.md:
 - drives a robot that a scenario event switches off: it moves before, not after (and is told);
 - receives a mote's messages to its robot (MSG, over the simulated network) and replies (SEND);
   both directions appear in messages.csv; once it has gone, the mote's messages are recorded as
-  lost."""
+  lost;
+- reads its robot's battery (docs/energy.md) as seconds left in STA and as sanet's SEN Battery
+  line."""
 import csv
 import json
 import os
@@ -26,7 +28,7 @@ nodes:
     model: mote
     pose: [0, 0, 0]
     controller: {name: pinger, params: {to: r1, interval: 0.5, start: 1, size: 8}}
-  - {name: r1, model: diffdrive, pose: [5, 0, 0]}
+  - {name: r1, model: diffdrive, pose: [5, 0, 0], energy: {battery_j: 40, voltage: 3, electronics_w: 0.2}}
   - {name: off, model: diffdrive, pose: [0, 5, 0]}
 """
 
@@ -87,17 +89,34 @@ class NodeRules(unittest.TestCase):
                     "SEND {Data 00}", "SEND {To r1} {Data 00}", "TRANSITION {From a} {To }",
                     "STATS {Steps many}", "RECV {From nobody} {Delivery unicast}"]:
             c.send(bad)
-        received, errors = [], []
+        received, errors, battery = [], [], {"STA": [], "SEN": []}
         for line in c.lines():
             if line.startswith("ERR"):
                 errors.append(line)
+            if line.startswith("STA"):
+                battery["STA"].append((float(field(line, "Time")), int(field(line, "Battery"))))
+            if line.startswith("SEN") and "{Type Battery}" in line:
+                battery["SEN"].append((float(field(line, "Time")), float(field(line, "Remaining")),
+                                       float(field(line, "Capacity")), float(field(line, "Power"))))
             if line.startswith("MSG"):
                 received.append(line)
                 c.send("SEND {Delivery unicast} {To m1} {Data cafe%04x}" % len(received))
             if len(received) == 4:
                 break
         c.close()  # the mote goes on sending: to a robot nobody drives now
-        cls.messages = {"received": received, "errors": errors}
+        cls.messages = {"received": received, "errors": errors, "battery": battery}
+
+    def test_the_client_reads_its_battery_in_sta_and_sen_lines(self):
+        watts = 3 * 0.273 + 0.2  # an idle 802.11 radio (ns-3's currents) and the electronics
+        sen, sta = self.messages["battery"]["SEN"], self.messages["battery"]["STA"]
+        self.assertGreater(len(sen), 3)
+        for t, remaining, capacity, power in sen:
+            self.assertEqual(capacity, 40)
+            self.assertAlmostEqual(remaining, 40 - watts * t, delta=0.05, msg=f"at {t}")
+            self.assertAlmostEqual(power, watts, delta=0.05)
+        self.assertGreater(len(sta), 3)
+        for t, seconds in sta:  # whole seconds left at the draw now
+            self.assertLessEqual(abs(seconds - (40 - watts * t) / watts), 1.5, f"at {t}")
 
     def test_a_switched_off_robot_ignores_drive_from_its_client(self):
         before, after = self.switched["before"], self.switched["after"]

@@ -40,6 +40,14 @@ std::vector<std::string> AgentRobots(const sim::Driver& driver) {
   return names;
 }
 
+// USARSim's STA gives a robot's battery as whole seconds left: at the power it draws now, for a
+// robot with `energy` (docs/energy.md); an hour for an infinite supply, as before.
+std::string BatterySeconds(const std::optional<BatteryReading>& battery) {
+  if (!battery) return "3600";
+  if (battery->power_w <= 0) return battery->remaining_j > 0 ? "3600" : "0";
+  return std::to_string(static_cast<long long>(battery->remaining_j / battery->power_w));
+}
+
 }  // namespace
 
 SimServer::SimServer(sim::Driver& driver, ServerSettings settings)
@@ -356,7 +364,7 @@ void SimServer::SendSensors(Client& c, double now) {
         .Add("RearSteer", 0.0)
         .Add("LightToggle", "False")
         .Add("LightIntensity", "0")
-        .Add("Battery", "3600")
+        .Add("Battery", BatterySeconds(driver_.Battery(*c.robot)))
         .Add("View", "-1");
     Send(c, status);
   }

@@ -93,6 +93,11 @@ bool Driver::SwitchedOff(NodeId robot) const {
   return parts_.node(robot).switched_off();
 }
 
+std::optional<BatteryReading> Driver::Battery(NodeId robot) const {
+  CheckId(robot);
+  return parts_.Battery(robot);
+}
+
 const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owner) {
   CheckOwner(robot, owner, "read the sensors of");
   readings_.resize(NodeCount());

@@ -81,6 +81,8 @@ class Driver {
   // std::logic_error for anyone but the owner.
   Node& NodeOf(NodeId robot, const std::string& owner);
   bool SwitchedOff(NodeId robot) const;
+  // The robot's battery now (docs/energy.md); empty for an infinite supply. It draws no noise.
+  std::optional<BatteryReading> Battery(NodeId robot) const;
   // The owner's read of every sensor; throws std::logic_error for anyone else. A second read at
   // the same simulated time gives the first (noisy sensors draw once).
   const SensorReadings& TakeReadings(NodeId robot, const std::string& owner);

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """sanet serve --ros2 against an independent DDS client (tests/ros2/ros2_client.c: C on Cyclone
 DDS, types from IDL written from ROS 2's definitions):
-- the client reads a robot's odom, scan, an IR range, /tf, /tf_static and /clock with ROS 2's
-  names, frames and types, publishes cmd_vel, and sees the robot move accordingly while /clock
+- the client reads a robot's odom, scan, an IR range, its battery (BatteryState), /tf, /tf_static
+  and /clock with ROS 2's names, frames and types, publishes cmd_vel, and sees the robot move accordingly while /clock
   advances; TwistStamped with --ros2-cmd-vel-stamped;
 - one owner per robot: a robot a USARSim client claimed does not take cmd_vel (refused, counted);
 - bad input: cmd_vel that is not a number, samples of another type under Twist's name, two
@@ -26,7 +26,7 @@ DOMAIN = 21  # its own: tests run side by side (ros2_agent has 22; launches take
 SCENARIO = """name: ros2-face
 duration: {duration}
 nodes:
-  - {{name: r1, model: diffdrive, pose: [0, 0, 0]}}
+  - {{name: r1, model: diffdrive, pose: [0, 0, 0], energy: {{battery_j: 360, voltage: 3, electronics_w: 0.2}}}}
   - {{name: r2, model: omni3, pose: [0, 4, 0]}}
   - {{name: m0, model: mote, pose: [6, 0, 0]}}
 """
@@ -97,6 +97,13 @@ class Face(unittest.TestCase):
         self.assertLess(seen["last_x"], 1.6)
         self.assertAlmostEqual(seen["last_y"], 0, delta=0.1)
         self.assertGreater(seen["clock"], 300, "/clock at 200 Hz")
+        # The battery drains at the electronics' 0.2 W and an idle radio's (no network: none).
+        self.assertGreater(seen["battery"], 30)
+        self.assertAlmostEqual(seen["battery_voltage"], 3, places=5)
+        self.assertAlmostEqual(seen["battery_current"], -0.2 / 3, places=5, msg="negative while discharging")
+        self.assertAlmostEqual(seen["battery_capacity"], 360 / (3 * 3600), places=6, msg="Ah")
+        self.assertEqual(seen["battery_status"], 2, "POWER_SUPPLY_STATUS_DISCHARGING")
+        self.assertAlmostEqual(seen["first_percentage"] - seen["last_percentage"], 0.2 * 5 / 360, delta=0.001)
         self.assertAlmostEqual(seen["last_clock"] - seen["first_clock"], 5, delta=1.0)
         r1 = summary["ros2"]["robots"]["r1"]
         self.assertGreater(r1["cmd_vel_taken"], 100)

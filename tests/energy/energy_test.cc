@@ -183,6 +183,77 @@ TEST(Energy, ADeadNodeIsSilentAndRoutesThroughItBreakUntilItIsRechargedAndHeardA
   };
   EXPECT_EQ(route_before(died), std::optional<NodeId>(1));
   EXPECT_NE(route_before(40), std::optional<NodeId>(1)) << "the route through the dead relay broke";
+  // Revived on a busy channel, it accounts for every joule: what it had and got is what it used
+  // and has.
+  const energy::NodeEnergy& relay = *world.parts().batteries().Of(1);
+  double used = 0;
+  for (const auto& [component, joules] : relay.Used()) used += joules;
+  EXPECT_NEAR(20 * kIdleWatts + relay.charged_j() - relay.remaining_j(), used, 1e-6);
+}
+
+TEST(Energy, ANodeThatDiesMidFrameOrAsleepAccountsForEveryJouleAndTheRunGoesOn) {
+  // A talker that keeps its radio busy dies most likely while it transmits; a mote that sleeps
+  // dies asleep (ns-3 cannot switch a sleeping radio off: it wakes first).
+  sim::World world(WithRadio(30,
+                             {Mote("talker", {0, 0}, Battery(3, 0.05),
+                                   UseController("pinger", {{"to", Text("broadcast")},
+                                                            {"interval", Scalar(0.01)},
+                                                            {"size", Scalar(1400)},
+                                                            {"start", Scalar(0.1)}})),
+                              Mote("sleeper", {2000, 0}, Battery(1, 0.05))},  // out of the talker's range
+                             net::Routing::kNone),
+                   BuiltinRegistry());
+  world.Every(0.5, [&] {
+    if (world.Now() > 0.25 && world.Now() < 0.75) world.parts().node(1).SetRadioSleep(true);
+  });
+  std::vector<Subscription> keep;
+  const auto deaths = Deaths(world, keep);
+  ASSERT_EQ(deaths.size(), 2u);
+  // Idle for 0.5 s, then asleep (ns-3's 33 mA): 1 J at 0.869 W, then at 0.149 W.
+  EXPECT_NEAR(deaths.at(1).at(0), 0.5 + (1 - 0.5 * (kIdleWatts + 0.05)) / (kVoltage * 0.033 + 0.05), 1e-3);
+  for (NodeId id : {0u, 1u}) {
+    const energy::NodeEnergy& e = *world.parts().batteries().Of(id);
+    double used = 0;
+    for (const auto& [component, joules] : e.Used()) used += joules;
+    EXPECT_NEAR(e.spec().battery_j - e.remaining_j(), used, 1e-6) << world.NameOf(id) << ": no frame counted twice";
+  }
+}
+
+TEST(Energy, TheLastSampleAndTheSummaryHoldTheChargeAtTheRunsEnd) {
+  const double watts = kIdleWatts + 0.1;
+  sim::RunSpec spec = WithRadio(12.5, {Mote("m", {0, 0}, Battery(100, 0.1))}, net::Routing::kNone);
+  spec.energy_interval = 10;
+  std::vector<std::pair<double, double>> samples;
+  double summary_remaining = 0;
+  {
+    sim::World world(spec, BuiltinRegistry());
+    std::vector<Subscription> keep;
+    keep.push_back(world.bus().On<sim::EnergySampled>(sim::RunStage::kRecord, [&](const sim::EnergySampled& e) {
+      samples.emplace_back(e.t, e.levels.at(0).battery.remaining_j);
+    }));
+    world.Run({});
+    summary_remaining = world.parts().batteries().Summary(world.nodes())["nodes"]["m"]["remaining_j"];
+  }
+  ASSERT_EQ(samples.size(), 3u) << "at 0, 10 and the end";
+  EXPECT_NEAR(samples.back().first, 12.5, 1e-6);
+  EXPECT_NEAR(samples.back().second, 100 - watts * 12.5, 1e-6) << "not the charge of the last update";
+  EXPECT_NEAR(summary_remaining, 100 - watts * 12.5, 1e-6);
+}
+
+TEST(Energy, ARobotSpawnedLaterStartsItsPackFull) {
+  energy::EnergySpec cell = Battery(20000, 0.1);
+  cell.source = energy::Chemistry::kLiIon;
+  sim::RunSpec spec = Spec(1100, {Mote("m", {0, 0}, std::nullopt)});
+  double remaining = 0;
+  {
+    sim::World world(spec, BuiltinRegistry());
+    world.Every(1000, [&] {
+      if (world.Now() > 999) world.parts().Spawn(Mote("late", {5, 0}, cell), "Mote", "spawned by the test");
+    });
+    world.Run({});
+    remaining = world.parts().batteries().Of(1)->remaining_j();
+  }
+  EXPECT_NEAR(remaining, 20000 - 0.1 * 100, 0.5) << "it drew for 100 s, not since the run began";
 }
 
 TEST(Energy, ALiIonPacksVoltageFallsAlongItsCurveUntilItDiesAndARechargeRaisesIt) {

@@ -40,12 +40,17 @@ std::vector<std::string> AgentRobots(const sim::Driver& driver) {
   return names;
 }
 
-// USARSim's STA gives a robot's battery as whole seconds left: at the power it draws now, for a
-// robot with `energy` (docs/energy.md); an hour for an infinite supply, as before.
-std::string BatterySeconds(const std::optional<BatteryReading>& battery) {
-  if (!battery) return "3600";
-  if (battery->power_w <= 0) return battery->remaining_j > 0 ? "3600" : "0";
-  return std::to_string(static_cast<long long>(battery->remaining_j / battery->power_w));
+// USARSim's STA gives a robot's battery as whole seconds left: to its cutoff at the power it draws
+// now, for a robot with `energy` (docs/energy.md), none once it is off; an hour for an infinite
+// supply, as before.
+std::string BatterySeconds(const sim::Driver& driver, NodeId robot) {
+  const std::optional<BatteryReading> battery = driver.Battery(robot);
+  const auto& energy = driver.Spec(robot).energy;
+  if (!battery || !energy) return "3600";
+  if (driver.SwitchedOff(robot)) return "0";
+  if (battery->power_w <= 0) return "3600";
+  const double usable_j = std::max(0.0, battery->remaining_j - energy->cutoff * battery->capacity_j);
+  return std::to_string(static_cast<long long>(usable_j / battery->power_w));
 }
 
 }  // namespace
@@ -364,7 +369,7 @@ void SimServer::SendSensors(Client& c, double now) {
         .Add("RearSteer", 0.0)
         .Add("LightToggle", "False")
         .Add("LightIntensity", "0")
-        .Add("Battery", BatterySeconds(driver_.Battery(*c.robot)))
+        .Add("Battery", BatterySeconds(driver_, *c.robot))
         .Add("View", "-1");
     Send(c, status);
   }

@@ -29,9 +29,12 @@ void Battery::Start() {
   ScheduleNextUpdate();
 }
 
+// What remains now, without an update: a read changes nothing (so who reads, and whether the run
+// still goes, changes no result), and the draw since the last update is the models' current one.
 double Battery::GetRemainingEnergy() {
-  UpdateEnergySource();
-  return remaining_j_;
+  const double seconds = (ns3::Simulator::Now() - last_update_).GetSeconds();
+  if (!started_ || seconds <= 0) return remaining_j_;
+  return std::max(0.0, remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds);
 }
 
 void Battery::UpdateEnergySource() {
@@ -58,8 +61,7 @@ void Battery::Drain() {
   if (seconds > 0) remaining_j_ = std::max(0.0, remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds);
 }
 
-// The models hear it first thing: they change their current (and ask for an update, which finds
-// nothing more to drain) before this returns.
+// The models hear it at once; the node dies (or comes back) in an event of its own, at this instant.
 void Battery::CheckThresholds() {
   // The checks close in on the cutoff from above: within a picojoule per joule of it, it is reached
   // (a nanosecond's draw more would cross it).
@@ -68,7 +70,7 @@ void Battery::CheckThresholds() {
     depleted_ = true;
     remaining_j_ = std::min(remaining_j_, cutoff_j);
     NotifyEnergyDrained();
-  } else if (depleted_ && remaining_j_ > settings_.revives_above * settings_.capacity_j) {
+  } else if (depleted_ && remaining_j_ >= settings_.revives_above * settings_.capacity_j) {
     depleted_ = false;
     NotifyEnergyRecharged();
   }
@@ -77,8 +79,11 @@ void Battery::CheckThresholds() {
 // At the most the models can draw, the charge reaches the cutoff after
 // (remaining - cutoff) / most_watts seconds at the earliest, rounded up to ns-3's nanosecond. A
 // check already due before then stands.
+//
+// Nothing is scheduled while nothing draws (a node switched off): each model asks for an update
+// after its current changed as well as before (energy/radio_energy_model.h), which schedules it.
 void Battery::ScheduleNextUpdate() {
-  if (depleted_ || settings_.most_watts <= 0) return next_check_.Cancel();
+  if (depleted_ || settings_.most_watts <= 0 || CalculateTotalCurrent() <= 0) return next_check_.Cancel();
   const double seconds = (remaining_j_ - settings_.cutoff * settings_.capacity_j) / settings_.most_watts;
   const double ns = std::ceil(std::max(0.0, seconds) * 1e9);
   if (ns > 9e18) return;  // past any run

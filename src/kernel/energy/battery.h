@@ -10,7 +10,8 @@
 // so it need not move when the draw changes (a radio's state changes thousands of times a
 // second); at each check the next comes closer, and the one at which the charge has reached the
 // cutoff finds the node dead when its charge ran out, to the nanojoule, not up to an update
-// interval later. A node with a steady draw needs a few dozen checks in its life.
+// interval later. Each check brings the charge's margin down by the share of the most the node
+// draws: a few dozen checks in its life near that, about 1,200 for a cc2420 mote listening.
 #pragma once
 
 #include <ns3/energy-source.h>

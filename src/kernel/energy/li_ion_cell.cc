@@ -10,8 +10,10 @@
 namespace sanet::net {
 // ns-3 keeps the drained capacity, which sets the cell's voltage, private and offers no setter.
 SANET_PRIVATE_MEMBER(LiIonDrainedAh, ns3::LiIonEnergySource, double, m_drainedCapacity);
-// Its charge, read without the update GetRemainingEnergy makes (which would come back here).
+// Its charge and its last update, read without the update GetRemainingEnergy makes; the last update
+// is set when a pack starts after the run did (a robot spawned later), which ns-3 takes as 0.
 SANET_PRIVATE_MEMBER(LiIonRemainingJ, ns3::LiIonEnergySource, ns3::TracedValue<double>, m_remainingEnergyJ);
+SANET_PRIVATE_MEMBER(LiIonLastUpdate, ns3::LiIonEnergySource, ns3::Time, m_lastUpdateTime);
 }  // namespace sanet::net
 
 namespace sanet::energy {
@@ -36,7 +38,8 @@ void LiIonCell::Configure(double capacity_j, double initial_fraction, double cut
   capacity_j_ = capacity_j, cutoff_ = cutoff, revives_above_ = revives_above;
   const double k = capacity_j / kDefaultCellJ;  // cells of ns-3's default in parallel
   SetAttribute("LiIonEnergySourceInitialEnergyJ", ns3::DoubleValue(capacity_j));
-  SetAttribute("LiIonEnergyLowBatteryThreshold", ns3::DoubleValue(cutoff));
+  // Below any charge: the cell decides when it is depleted (CheckThresholds), once.
+  SetAttribute("LiIonEnergyLowBatteryThreshold", ns3::DoubleValue(-1));
   SetAttribute("RatedCapacity", ns3::DoubleValue(2.45 * k));
   SetAttribute("NomCapacity", ns3::DoubleValue(1.1 * k));
   SetAttribute("ExpCapacity", ns3::DoubleValue(1.2 * k));
@@ -49,6 +52,7 @@ void LiIonCell::Configure(double capacity_j, double initial_fraction, double cut
 
 void LiIonCell::Start() {
   started_ = true;
+  this->*Get(net::LiIonLastUpdate()) = ns3::Simulator::Now();
   Initialize();  // ns-3's periodic updates start here
   CheckThresholds();
 }
@@ -57,6 +61,13 @@ void LiIonCell::UpdateEnergySource() {
   if (!started_) return;
   ns3::LiIonEnergySource::UpdateEnergySource();
   CheckThresholds();
+}
+
+double LiIonCell::GetRemainingEnergy() {
+  const double remaining = this->*Get(net::LiIonRemainingJ());
+  const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
+  if (!started_ || seconds <= 0) return remaining;
+  return std::max(0.0, remaining - CalculateTotalCurrent() * GetSupplyVoltage() * seconds);
 }
 
 double LiIonCell::Recharge(double joules) {
@@ -74,8 +85,10 @@ void LiIonCell::CheckThresholds(bool recharged) {
   const bool empty = remaining <= cutoff_ * capacity_j_ || GetSupplyVoltage() <= kThresholdVoltage;
   if (!depleted_ && empty) {
     depleted_ = true;
+    died_with_j_ = remaining;
     NotifyEnergyDrained();
-  } else if (recharged && depleted_ && !empty && remaining > revives_above_ * capacity_j_) {
+  } else if (recharged && depleted_ && !empty && remaining >= revives_above_ * capacity_j_ &&
+             remaining >= died_with_j_ + 0.05 * capacity_j_) {
     depleted_ = false;
     NotifyEnergyRecharged();
   }

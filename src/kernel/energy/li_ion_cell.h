@@ -8,7 +8,8 @@
 //   IncreaseRemainingEnergy changes the charge only);
 // - depletion when the charge reaches the cutoff or the voltage falls to the cell's threshold
 //   (3.3 V: the curve falls steeply, and without end, past it), and revival once recharged
-//   above the revive level, which ns-3's source never reports.
+//   above the revive level and by 5 % of its capacity above the charge it died with (without its
+//   load a cell's voltage recovers by itself), which ns-3's source never reports.
 // Like ns-3's source it looks at its charge at its periodic updates (every second) and whenever
 // a device model changes state, so a death may come up to a second after the threshold.
 #pragma once
@@ -30,6 +31,9 @@ class LiIonCell : public ns3::LiIonEnergySource, public Rechargeable {
   void Start();
 
   void UpdateEnergySource() override;
+  // What remains now, without an update (a read changes nothing; ns-3's own read updates, and
+  // does nothing once the simulator has stopped).
+  double GetRemainingEnergy() override;
   double Recharge(double joules) override;
   bool depleted() const override { return depleted_; }
 
@@ -40,6 +44,7 @@ class LiIonCell : public ns3::LiIonEnergySource, public Rechargeable {
   double& DrainedAh();
 
   double capacity_j_ = 0, cutoff_ = 0, revives_above_ = 0.05;
+  double died_with_j_ = 0;  // the charge it died with: a pack dead of its voltage needs more
   bool depleted_ = false, started_ = false;
 };
 

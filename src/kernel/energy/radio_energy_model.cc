@@ -1,5 +1,6 @@
 #include "energy/radio_energy_model.h"
 
+#include <ns3/energy-source.h>
 #include <ns3/simulator.h>
 
 #include "net/private_access.h"
@@ -22,9 +23,15 @@ ns3::TypeId RadioEnergyModel::GetTypeId() {
 }
 
 // Removing the switch that is running now (it calls this) does nothing: ns-3 sees it as expired.
+void RadioEnergyModel::SetEnergySource(ns3::Ptr<ns3::EnergySource> source) {
+  source_ = ns3::PeekPointer(source);
+  ns3::WifiRadioEnergyModel::SetEnergySource(source);
+}
+
 void RadioEnergyModel::ChangeState(int new_state) {
   ns3::Simulator::Remove(this->*Get(net::RadioSwitchToOff()));
   ns3::WifiRadioEnergyModel::ChangeState(new_state);
+  if (source_) source_->UpdateEnergySource();
 }
 
 }  // namespace sanet::energy

@@ -1,10 +1,12 @@
-// ns-3's WifiRadioEnergyModel, unchanged but for one thing. At every change of the radio's state
+// ns-3's WifiRadioEnergyModel, unchanged but for two things. At every change of the radio's state
 // ns-3's model schedules a switch to OFF for when its source would be empty at the new state's
 // current, and cancels the one before. A cancelled ns-3 event stays in the scheduler until its
 // time comes, hours or months ahead for a battery, so a radio that changes state thousands of
 // times a second filled the scheduler: 224,000 dead events in 5 s of a 400-mote field, each
 // insertion slower than the last. This model removes the pending switch first
-// (Simulator::Remove), so the scheduler holds one per radio.
+// (Simulator::Remove), so the scheduler holds one per radio. And it asks its source for an update
+// after the change as well as before (ns-3's asks before only), so that sanet's battery, which
+// schedules nothing while nothing draws, sees a current that starts.
 #pragma once
 
 #include <ns3/wifi-radio-energy-model.h>
@@ -14,7 +16,11 @@ namespace sanet::energy {
 class RadioEnergyModel : public ns3::WifiRadioEnergyModel {
  public:
   static ns3::TypeId GetTypeId();
+  void SetEnergySource(ns3::Ptr<ns3::EnergySource> source) override;
   void ChangeState(int new_state) override;
+
+ private:
+  ns3::EnergySource* source_ = nullptr;  // it holds this model: a Ptr would be a cycle
 };
 
 }  // namespace sanet::energy

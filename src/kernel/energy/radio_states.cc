@@ -19,7 +19,15 @@ double RadioStates::Joules(::WifiPhyState state, ns3::Time duration) const {
 
 void RadioStates::Logged(ns3::Time start, ns3::Time duration, ::WifiPhyState state) {
   const ns3::Time end = start + duration;
-  start = std::max(start, on_since_);
+  if (state == ::WifiPhyState::TX && last_logged_ == ::WifiPhyState::TX && start < logged_until_ &&
+      end < logged_until_) {  // the radio went off during the frame logged ahead: it ended here
+    joules_.at(static_cast<std::size_t>(state)) -= Joules(state, logged_until_ - end);
+    logged_until_ = end;
+    return;
+  }
+  // Periods do not overlap, but ns-3's trace may log one that does: the idle time before a sleep
+  // again when the radio goes off after it. What was counted already is not counted again.
+  start = std::max({start, on_since_, logged_until_});
   if (end <= start) return;
   joules_.at(static_cast<std::size_t>(state)) += Joules(state, end - start);
   if (end >= logged_until_) {

@@ -1,9 +1,11 @@
 // The energy a Wi-Fi PHY spent in each of its states, summed from its own state trace
 // (WifiPhyStateHelper's `State`): ns-3 gives a radio's energy only as a total. Each period the
 // trace logs costs its time times its state's current times the supply voltage when it is logged
-// (constant for sanet's Battery; the curve's for a LiIonCell). The trace logs a frame's
-// transmission or reception when it starts, for its whole duration, and idle, busy and sleeping
-// time when it ends; `JoulesIn` completes the picture up to now.
+// (constant for sanet's Battery; the curve's for a LiIonCell). The trace logs a transmission when
+// it starts, for its whole duration (and again, as far as it went, if the radio goes off during
+// it), and reception, idle, busy and sleeping time when it ends; `JoulesIn` completes the picture
+// up to now. Periods are counted once: ns-3 logs the idle time before a sleep again when a radio
+// that slept is switched off.
 #pragma once
 
 #include <ns3/nstime.h>

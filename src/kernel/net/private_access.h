@@ -1,7 +1,7 @@
-// Reading state that ns-3 keeps private and offers no accessor for (AODV's and DSDV's routing
-// tables). Standard C++ allows naming a private member in an explicit template instantiation;
-// that instantiation hands the member pointer to a friend function we can call.
-// Use only where ns-3 gives no public way, and say so where it is used.
+// Reaching state that ns-3 keeps private and offers no accessor for (AODV's and DSDV's routing
+// tables; a LiIonEnergySource's drained capacity; a WifiRadioEnergyModel's pending switch to OFF). Standard C++ allows
+// naming a private member in an explicit template instantiation; that instantiation hands the member pointer to a
+// friend function we can call. Use only where ns-3 gives no public way, and say so where it is used.
 #pragma once
 
 namespace sanet::net {

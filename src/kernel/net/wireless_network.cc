@@ -390,7 +390,13 @@ double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
                                                             nodes_.Get(to)->GetObject<ns3::MobilityModel>());
 }
 
-void WirelessNetwork::SwitchOff(NodeId node) { Phy(node)->SetOffMode(); }
+// ns-3 3.37 cannot switch a sleeping PHY off (WifiPhyStateHelper::SwitchToOff aborts the process
+// on any state but idle, busy, transmitting or receiving): it wakes first, in the same instant.
+void WirelessNetwork::SwitchOff(NodeId node) {
+  ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
+  if (phy->IsStateSleep()) phy->ResumeFromSleep();
+  phy->SetOffMode();
+}
 
 // Awake: a radio put to sleep before it went off wakes with the node.
 void WirelessNetwork::SwitchOn(NodeId node) {

@@ -37,15 +37,10 @@ ns3::Ptr<ns3::Node> Ns3Node() {
   return node;
 }
 
-std::string JoulesText(double joules) {
+// "12.5 J", "3.700 V": a quantity for a log line.
+std::string Quantity(const char* format, double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.6g J", joules);
-  return text;
-}
-
-std::string VoltsText(double volts) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f V", volts);
+  std::snprintf(text, sizeof text, format, value);
   return text;
 }
 
@@ -164,8 +159,8 @@ void Assembly::Die(NodeId id) {
   energy->SetOn(false);
   if (!nodes_.at(id)->switched_off()) nodes_.at(id)->SwitchOff();
   hosts_.at(id)->SwitchOff();
-  Log(id, "died: its battery is exhausted (" + JoulesText(energy->remaining_j()) + " left at " +
-              VoltsText(energy->Reading().voltage) + ")");
+  Log(id, "died: its battery is exhausted (" + Quantity("%.6g J", energy->remaining_j()) + " left at " +
+              Quantity("%.3f V", energy->Reading().voltage) + ")");
   Tell(Died{Now(), id});
 }
 
@@ -174,10 +169,10 @@ void Assembly::Revive(NodeId id) {
   if (!energy || energy->depleted() || !batteries_.dead(id) || off_for_good_[id]) return;
   batteries_.Revived(id);
   energy->SetOn(true);
+  energy->RadioSwitchedOn();  // its new model hears the radio come back (and what it hears at once)
   nodes_.at(id)->SwitchOn();
-  energy->RadioSwitchedOn();
   hosts_.at(id)->SwitchOn();
-  Log(id, "revived: its battery was recharged to " + JoulesText(energy->remaining_j()));
+  Log(id, "revived: its battery was recharged to " + Quantity("%.6g J", energy->remaining_j()));
   Tell(Revived{Now(), id});
 }
 

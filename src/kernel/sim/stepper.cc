@@ -123,7 +123,7 @@ void Stepper::ScheduleAll() {
     if (world_.host(id).has_controller()) ns3::Simulator::ScheduleNow(&Stepper::ControlStep, this, id);
   for (const NodeEvent& e : spec.events) ScheduleEvent(e);
   ns3::Simulator::ScheduleNow(&Stepper::Record, this);
-  if (world_.batteries().any()) ns3::Simulator::ScheduleNow(&Stepper::SampleEnergy, this, true);
+  StartEnergySamples();
   // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
   if (!vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
 }
@@ -296,6 +296,12 @@ void Stepper::ScheduleEvent(const NodeEvent& e) {
   }
 }
 
+void Stepper::StartEnergySamples() {
+  if (sampling_energy_ || !world_.batteries().any()) return;
+  sampling_energy_ = true;
+  ns3::Simulator::ScheduleNow(&Stepper::SampleEnergy, this, true);
+}
+
 void Stepper::SampleEnergy(bool again) {
   if (bus_.Heard<EnergySampled>()) {
     WallTimer timer(profile_.recording);
@@ -334,6 +340,7 @@ void Stepper::Spawned(const NodeSpawned& spawned) {
   const NodeId node = spawned.node;
   outputs_.FirstRow(spawned.t, node, spawned.pose);  // its first trajectory row, after the spawn itself
   moving_.resize(world_.size(), 0);
+  StartEnergySamples();  // the first battery may come with a spawned robot
   if (!world_.model(node).mobile()) return;
   if (vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
   vehicles_.push_back(node);

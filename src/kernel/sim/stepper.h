@@ -76,6 +76,7 @@ class Stepper {
   void Integrate(StepOutcome& outcome);
   void CatchUp();
   void Record();
+  void StartEnergySamples();      // once some node has a battery
   void SampleEnergy(bool again);  // every battery, for energy.csv; `again`: and the next sample
   void ScheduleEvent(const NodeEvent& event);
   void Notify();
@@ -100,6 +101,7 @@ class Stepper {
   std::vector<char> moving_;   // per node: listed in moved_
   RouteWatch routes_;
   double last_energy_sample_ = -1;  // s
+  bool sampling_energy_ = false;
   Profile profile_;
   std::uint64_t physics_steps_ = 0;
   std::uint64_t quiet_physics_steps_ = 0, events_at_last_step_ = 0;

@@ -13,6 +13,7 @@ bool Charging(const ProtocolMessage& line) {
 
 class BatteryLines : public SensorLines {
  public:
+  bool Extension() const override { return true; }  // USARSim's own clients read STA's Battery
   std::vector<ProtocolMessage> Write(const std::string& instance, const SensorReading& reading,
                                      const LineContext& context) const override {
     const auto& b = std::get<BatteryReading>(reading);

@@ -18,22 +18,13 @@ import json
 import os
 import statistics
 import subprocess
+import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from walls_bench import grid_scenario  # noqa: E402  (the field without its walls)
 BATTERY = "{battery_j: 1000000, voltage: 3, electronics_w: 0.01}"
-
-
-def field_scenario():
-    """400 motes 40 m apart, 40 of them sending across the field."""
-    lines = ["name: energy-400", "seed: 1", "duration: 30", "world:", "  size: [840, 840]",
-             "network: {routing: aodv, packet_log: false}", "outputs: {trace: false, figures: false}", "nodes:",
-             "  - grid: {name: m, rows: 20, cols: 20, origin: [0, 0], spacing: 40}", "    model: mote"]
-    for i in range(40):
-        source, to = (i * 10) % 400, (399 - i * 10) % 400
-        lines += [f"  - name: s{i}", "    model: mote", f"    pose: [{40 * (source % 20) + 1}, {40 * (source // 20) + 1}, 0]",
-                  f"    controller: {{name: pinger, params: {{to: m{to}, interval: 2, start: 1, size: 64}}}}"]
-    return "\n".join(lines) + "\n"
 
 
 def run(sanet, scenario, out, seconds, sets):
@@ -76,7 +67,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         field = os.path.join(tmp, "field.yaml")
         with open(field, "w") as f:
-            f.write(field_scenario())
+            f.write(grid_scenario(None))
         cases = [("400 motes", field, a.seconds, ["nodes.m.energy=" + BATTERY]),
                  ("swarm-1k", os.path.join(ROOT, "scenarios", "swarm-1k.yaml"), a.swarm_seconds,
                   ["nodes.r.energy=" + BATTERY])]

@@ -181,7 +181,7 @@ class Failures(unittest.TestCase):
             ("broken_syntax:Broken", "", "'nodes[0].controller.python': Python module 'broken_syntax' does not import",
              'broken_syntax.py", line 2'),
             ("nosuch:X", "", "'nodes[0].controller.python': no Python module 'nosuch' in", "--python-path"),
-            ("probe:Nope", "", "has no class 'Nope'", "controller classes there: Crash, Lister, Picky, Refusals, Talker"),
+            ("probe:Nope", "", "has no class 'Nope'", "controller classes there: Crash, Gauge, Lister, Picky, Refusals, Talker"),
             ("probe:NotAController", "", "is not a controller class", "control_step"),
             ("probe:Picky", "", "'nodes[0].controller.params.k': parameter 'k' is required", ""),
             ("probe:Picky", "k: 1, speed: 3", "'nodes[0].controller.params.speed': unknown parameter 'speed'",

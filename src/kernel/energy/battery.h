@@ -36,7 +36,7 @@ class Battery : public ns3::EnergySource, public Rechargeable {
   };
   // Before the run; nothing is drawn until Start (every device model attached by then).
   void Configure(const Settings& settings);
-  void Start();
+  void Start() override;
 
   double GetSupplyVoltage() const override { return settings_.voltage; }
   // The capacity: ns-3's fractions are of it.

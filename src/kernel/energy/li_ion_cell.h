@@ -28,7 +28,7 @@ class LiIonCell : public ns3::LiIonEnergySource, public Rechargeable {
 
   // Before the run: the attributes for a pack of `capacity_j`, and the charge at the start.
   void Configure(double capacity_j, double initial_fraction, double cutoff, double revives_above);
-  void Start();
+  void Start() override;
 
   void UpdateEnergySource() override;
   // What remains now, without an update (a read changes nothing; ns-3's own read updates, and

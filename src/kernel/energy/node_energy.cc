@@ -21,7 +21,7 @@ NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Pt
   electronics_->SetPower(spec.electronics_w);
   if (radio) InstallRadio(radio);
   // Last, with every model in place: a battery that starts at its cutoff is depleted at once.
-  StartSource();
+  rechargeable_->Start();
 }
 
 NodeEnergy::~NodeEnergy() { source_->Dispose(); }
@@ -49,10 +49,6 @@ double NodeEnergy::MostWatts() const {
   return radio_a * spec_.voltage + spec_.electronics_w;
 }
 
-void NodeEnergy::StartSource() {
-  if (auto cell = ns3::DynamicCast<LiIonCell>(source_)) return cell->Start();
-  ns3::DynamicCast<Battery>(source_)->Start();
-}
 
 // Installed as ns-3's WifiRadioEnergyModelHelper installs its model (the PHY's listener, the
 // source's list, the PHY's model), but the model is sanet's RadioEnergyModel, which the helper

@@ -61,7 +61,6 @@ class NodeEnergy {
   EnergySpec spec_;
   Hooks hooks_;
   void MakeSource(ns3::Ptr<ns3::Node> node);
-  void StartSource();
   double MostWatts() const;
 
   ns3::Ptr<ns3::EnergySource> source_;  // a Battery or a LiIonCell, as the spec says

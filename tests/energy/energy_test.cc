@@ -131,6 +131,10 @@ TEST(Energy, TheRadiosEnergyByStateIsEachStatesTimeInThePhysTraceTimesItsCurrent
     EXPECT_NEAR(used["radio_cca_busy"], s[WifiPhyState::CCA_BUSY] * 0.25 * kVoltage, 1e-9);
     EXPECT_NEAR(used["radio_idle"], s[WifiPhyState::IDLE] * 0.2 * kVoltage, 1e-9);
     EXPECT_GT(used[id == 0 ? "radio_tx" : "radio_rx"], 0.5) << "the traffic cost something";
+    std::map<std::string, double> seconds;
+    for (const auto& [state, in_state] : energy.RadioSeconds()) seconds[state] = in_state;
+    EXPECT_NEAR(seconds["tx"], s[WifiPhyState::TX], 1e-6);  // the run stops 1 ns past its end
+    EXPECT_NEAR(seconds["idle"], s[WifiPhyState::IDLE], 1e-6);
     double total = 0;
     for (const auto& [component, joules] : used) total += joules;
     // The battery drained by ns-3's models as they changed state, in step with the split by state.

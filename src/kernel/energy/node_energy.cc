@@ -49,7 +49,6 @@ double NodeEnergy::MostWatts() const {
   return radio_a * spec_.voltage + spec_.electronics_w;
 }
 
-
 // Installed as ns-3's WifiRadioEnergyModelHelper installs its model (the PHY's listener, the
 // source's list, the PHY's model), but the model is sanet's RadioEnergyModel, which the helper
 // cannot make. Depletion and recharge are the node's to handle (sim switches the whole node off),
@@ -71,12 +70,7 @@ void NodeEnergy::InstallRadio(ns3::Ptr<ns3::NetDevice> radio) {
   ns3::Ptr<ns3::WifiPhy> phy = radio_device_->GetPhy();
   phy->SetWifiRadioEnergyModel(radio_);
   phy->RegisterListener(radio_->GetPhyListener());
-  if (states_) return;
-  RadioStates::Currents amperes{};  // SWITCHING and OFF cost nothing here: sanet never switches channel
-  amperes[::WifiPhyState::TX] = c.tx_a, amperes[::WifiPhyState::RX] = c.rx_a;
-  amperes[::WifiPhyState::IDLE] = c.idle_a, amperes[::WifiPhyState::CCA_BUSY] = c.cca_busy();
-  amperes[::WifiPhyState::SLEEP] = c.sleep_a;
-  states_ = std::make_unique<RadioStates>(phy, amperes, [source = source_] { return source->GetSupplyVoltage(); });
+  if (!states_) states_ = std::make_unique<RadioStates>(phy);
 }
 
 BatteryReading NodeEnergy::Reading() const {
@@ -90,16 +84,33 @@ double NodeEnergy::power_w() const {
   return amperes * source_->GetSupplyVoltage();
 }
 
+namespace {
+
+constexpr std::pair<const char*, ::WifiPhyState> kRadioStates[] = {{"tx", ::WifiPhyState::TX},
+                                                                   {"rx", ::WifiPhyState::RX},
+                                                                   {"idle", ::WifiPhyState::IDLE},
+                                                                   {"cca_busy", ::WifiPhyState::CCA_BUSY},
+                                                                   {"sleep", ::WifiPhyState::SLEEP}};
+
+}  // namespace
+
 EnergyUse NodeEnergy::Used() const {
   EnergyUse use;
-  if (states_)
-    use = {{"radio_tx", states_->JoulesIn(::WifiPhyState::TX)},
-           {"radio_rx", states_->JoulesIn(::WifiPhyState::RX)},
-           {"radio_idle", states_->JoulesIn(::WifiPhyState::IDLE)},
-           {"radio_cca_busy", states_->JoulesIn(::WifiPhyState::CCA_BUSY)},
-           {"radio_sleep", states_->JoulesIn(::WifiPhyState::SLEEP)}};
+  if (radio_) {
+    RadioEnergyModel::ByState joules = radio_->JoulesByState();
+    for (std::size_t s = 0; s < joules.size(); ++s) joules[s] += earlier_radios_[s];
+    for (const auto& [name, state] : kRadioStates)
+      use.emplace_back(std::string("radio_") + name, joules[static_cast<std::size_t>(state)]);
+  }
   use.emplace_back("electronics", electronics_->GetTotalEnergyConsumption());
   return use;
+}
+
+EnergyUse NodeEnergy::RadioSeconds() const {
+  EnergyUse seconds;
+  if (states_)
+    for (const auto& [name, state] : kRadioStates) seconds.emplace_back(name, states_->SecondsIn(state));
+  return seconds;
 }
 
 double NodeEnergy::Recharge(double joules) {
@@ -115,6 +126,8 @@ void NodeEnergy::RadioSwitchedOn() {
   // the radio that came back gets a model of its own; the old one, off, draws nothing from now on.
   ns3::Ptr<ns3::WifiPhy> phy = radio_device_->GetPhy();
   phy->UnregisterListener(radio_->GetPhyListener());
+  const RadioEnergyModel::ByState joules = radio_->JoulesByState();
+  for (std::size_t s = 0; s < joules.size(); ++s) earlier_radios_[s] += joules[s];
   InstallRadio(radio_device_);
 }
 

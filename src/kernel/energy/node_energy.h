@@ -46,6 +46,9 @@ class NodeEnergy {
   double remaining_j() const { return source_->GetRemainingEnergy(); }
   double power_w() const;  // drawn now
   EnergyUse Used() const;
+  // Seconds the radio spent in each state by the PHY's own trace ("tx", "rx", "idle", "cca_busy",
+  // "sleep"); empty without a radio.
+  EnergyUse RadioSeconds() const;
   double charged_j() const { return charged_j_; }
   bool depleted() const { return rechargeable_->depleted(); }
   // Adds up to `joules` (never past full); returns what the battery took.
@@ -66,7 +69,8 @@ class NodeEnergy {
   ns3::Ptr<ns3::EnergySource> source_;  // a Battery or a LiIonCell, as the spec says
   Rechargeable* rechargeable_ = nullptr;
   ns3::Ptr<ElectronicsModel> electronics_;
-  ns3::Ptr<RadioEnergyModel> radio_;  // the radio's model since it was last switched on
+  ns3::Ptr<RadioEnergyModel> radio_;            // the radio's model since it was last switched on
+  RadioEnergyModel::ByState earlier_radios_{};  // what the models before it charged
   ns3::Ptr<ns3::WifiNetDevice> radio_device_;
   std::unique_ptr<RadioStates> states_;
   double charged_j_ = 0;

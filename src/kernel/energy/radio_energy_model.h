@@ -1,4 +1,6 @@
-// ns-3's WifiRadioEnergyModel, unchanged but for two things. At every change of the radio's state
+// ns-3's WifiRadioEnergyModel, unchanged but for three things. It keeps what it charged its
+// source in each state (ns-3's keeps a total only), so that the energy by state adds up to what
+// the battery lost. At every change of the radio's state
 // ns-3's model schedules a switch to OFF for when its source would be empty at the new state's
 // current, and cancels the one before. A cancelled ns-3 event stays in the scheduler until its
 // time comes, hours or months ahead for a battery, so a radio that changes state thousands of
@@ -9,18 +11,27 @@
 // schedules nothing while nothing draws, sees a current that starts.
 #pragma once
 
+#include <ns3/nstime.h>
+#include <ns3/simulator.h>
 #include <ns3/wifi-radio-energy-model.h>
+
+#include <array>
 
 namespace sanet::energy {
 
 class RadioEnergyModel : public ns3::WifiRadioEnergyModel {
  public:
   static ns3::TypeId GetTypeId();
+  using ByState = std::array<double, 8>;  // J, by WifiPhyState
   void SetEnergySource(ns3::Ptr<ns3::EnergySource> source) override;
   void ChangeState(int new_state) override;
+  // The joules it charged in each state, up to now.
+  ByState JoulesByState() const;
 
  private:
-  ns3::EnergySource* source_ = nullptr;  // it holds this model: a Ptr would be a cycle
+  ByState joules_{};
+  ns3::Time since_ = ns3::Simulator::Now();  // the start of the state it is in
+  ns3::EnergySource* source_ = nullptr;      // it holds this model: a Ptr would be a cycle
 };
 
 }  // namespace sanet::energy

@@ -1,6 +1,6 @@
 // What sanet asks of a node's energy source beyond ns-3's EnergySource: a start once its models are
-// attached, energy put back (capped at full), and whether it is depleted now. Both of sanet's sources have it (energy/battery.h,
-// energy/li_ion_cell.h).
+// attached, energy put back (capped at full), and whether it is depleted now. Both of sanet's sources have it
+// (energy/battery.h, energy/li_ion_cell.h).
 #pragma once
 
 namespace sanet::energy {

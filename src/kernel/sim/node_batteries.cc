@@ -38,11 +38,11 @@ nlohmann::ordered_json NodeBatteries::Summary(const RunNodes& nodes) const {
     double total = 0;
     for (const auto& [component, joules] : e.Used()) used[component] = joules, total += joules;
     used["total"] = total;
-    per_node[nodes.NameOf(id)] = {{"battery_j", e.spec().battery_j},
-                                  {"remaining_j", e.remaining_j()},
-                                  {"used_j", used},
-                                  {"charged_j", e.charged_j()},
-                                  {"died_s", TimeOrNull(died_[id])}};
+    nlohmann::ordered_json radio_s = nlohmann::ordered_json::object();
+    for (const auto& [state, seconds] : e.RadioSeconds()) radio_s[state] = seconds;
+    per_node[nodes.NameOf(id)] = {
+        {"battery_j", e.spec().battery_j}, {"remaining_j", e.remaining_j()}, {"used_j", used}, {"radio_s", radio_s},
+        {"charged_j", e.charged_j()},      {"died_s", TimeOrNull(died_[id])}};
   }
   return {{"nodes", per_node}, {"lifetime", Lifetime()}};
 }

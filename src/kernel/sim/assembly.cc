@@ -180,6 +180,9 @@ void Assembly::Recharge(NodeId id, std::optional<double> joules) {
   energy::NodeEnergy* energy = batteries_.Of(id);
   if (!energy) return Log(id, "recharge refused: the node has no energy section (an infinite supply)");
   energy->Recharge(joules.value_or(energy->spec().battery_j));
+  if (batteries_.dead(id) && energy->depleted())
+    Log(id, "recharged to " + Quantity("%.6g J", energy->remaining_j()) + ": below its revive level (" +
+                Quantity("%.6g", energy->spec().RevivesAbove() * 100) + " %), it stays dead");
 }
 
 std::optional<BatteryReading> Assembly::Battery(NodeId node) const {

@@ -15,6 +15,7 @@ void NodeBatteries::Add(NodeId id, const std::optional<energy::EnergySpec>& spec
                         energy::NodeEnergy::Hooks hooks) {
   energies_.resize(id + 1);
   died_.resize(id + 1);
+  first_died_.resize(id + 1);
   if (!spec) return;
   ns3::Ptr<ns3::Node> node = ns3::NodeList::GetNode(id);
   energies_[id] = std::make_unique<energy::NodeEnergy>(*spec, node, radio, std::move(hooks));
@@ -47,17 +48,18 @@ nlohmann::ordered_json NodeBatteries::Summary(const RunNodes& nodes) const {
   return {{"nodes", per_node}, {"lifetime", Lifetime()}};
 }
 
-// The k-th death (1-based) among the nodes with energy, if that many died.
+// The k-th first death (1-based) among the nodes with energy, if that many died.
 nlohmann::ordered_json NodeBatteries::Lifetime() const {
   std::vector<double> deaths;
   for (NodeId id = 0; id < energies_.size(); ++id)
-    if (energies_[id] && died_[id]) deaths.push_back(*died_[id]);
+    if (energies_[id] && first_died_[id]) deaths.push_back(*first_died_[id]);
   std::sort(deaths.begin(), deaths.end());
   const auto kth = [&](std::size_t k) -> std::optional<double> {
     return k >= 1 && k <= deaths.size() ? std::optional<double>(deaths[k - 1]) : std::nullopt;
   };
   return {{"nodes", count_},
-          {"dead", deaths.size()},
+          {"dead", static_cast<std::size_t>(
+                       std::count_if(died_.begin(), died_.end(), [](const auto& t) { return t.has_value(); }))},
           {"first_death_s", TimeOrNull(kth(1))},
           {"half_dead_s", TimeOrNull(kth((count_ + 1) / 2))},
           {"last_alive_s", TimeOrNull(kth(count_))}};

@@ -24,19 +24,24 @@ class NodeBatteries {
   energy::NodeEnergy* Of(NodeId id) const { return id < energies_.size() ? energies_[id].get() : nullptr; }
   std::vector<EnergyLevel> Levels() const;
 
-  void Died(NodeId id, double t) { died_.at(id) = t; }
+  void Died(NodeId id, double t) {
+    died_.at(id) = t;
+    if (!first_died_.at(id)) first_died_.at(id) = t;
+  }
   void Revived(NodeId id) { died_.at(id).reset(); }
   bool dead(NodeId id) const { return died_.at(id).has_value(); }
 
   // summary.json's `energy`: per node what was used by component, charged and when it died; the
-  // network's lifetime (first death, half of the nodes dead, the last one alive).
+  // network's lifetime from the nodes' first deaths (a revival does not undo one): the first,
+  // half of the nodes' and the last.
   nlohmann::ordered_json Summary(const RunNodes& nodes) const;
 
  private:
   nlohmann::ordered_json Lifetime() const;
 
   std::vector<std::unique_ptr<energy::NodeEnergy>> energies_;
-  std::vector<std::optional<double>> died_;
+  std::vector<std::optional<double>> died_;        // while dead
+  std::vector<std::optional<double>> first_died_;  // its first death, revived or not: the lifetime's
   std::size_t count_ = 0;
 };
 

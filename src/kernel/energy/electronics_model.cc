@@ -21,18 +21,18 @@ void ElectronicsModel::SetCallbacks(std::function<void()> depleted, std::functio
   recharged_ = std::move(recharged);
 }
 
-// The source drains what was drawn at the old current before the new one applies.
-void ElectronicsModel::SetPower(double watts) {
+void ElectronicsModel::SetPower(double watts) { Change(watts, on_); }
+
+void ElectronicsModel::SetOn(bool on) {
+  if (on != on_) Change(watts_, on);
+}
+
+// The source drains what was drawn at the old current before the new one applies, then sees the
+// new one (and schedules its checks for it).
+void ElectronicsModel::Change(double watts, bool on) {
   Account();
   if (source_) source_->UpdateEnergySource();
   watts_ = watts;
-  if (source_) source_->UpdateEnergySource();  // reschedules its depletion for the new draw
-}
-
-void ElectronicsModel::SetOn(bool on) {
-  if (on == on_) return;
-  Account();
-  if (source_) source_->UpdateEnergySource();
   on_ = on;
   if (source_) source_->UpdateEnergySource();
 }

@@ -31,6 +31,7 @@ class ElectronicsModel : public ns3::DeviceEnergyModel {
  private:
   double DoGetCurrentA() const override;
   void Account();  // what was drawn since the last change
+  void Change(double watts, bool on);
 
   ns3::Ptr<ns3::EnergySource> source_;
   double watts_ = 0;

@@ -8,9 +8,11 @@ namespace {
 using energy::EnergySpec;
 using energy::RadioCurrents;
 
-std::string PresetNames() {
+// The presets' names, each between `quote`s.
+std::string PresetNames(const std::string& quote) {
   std::string names;
-  for (const energy::RadioPreset& p : energy::RadioPresets()) names += (names.empty() ? "`" : ", `") + p.name + "`";
+  for (const energy::RadioPreset& p : energy::RadioPresets())
+    names += (names.empty() ? "" : ", ") + quote + p.name + quote;
   return names;
 }
 
@@ -22,9 +24,7 @@ void ReadPreset(const Field& f, EnergySpec& spec) {
       spec.radio = p.currents;
       return;
     }
-  std::string plain;
-  for (const energy::RadioPreset& p : energy::RadioPresets()) plain += (plain.empty() ? "" : ", ") + p.name;
-  f.Fail("unknown radio preset '" + name + "' (expected one of: " + plain + ")");
+  f.Fail("unknown radio preset '" + name + "' (expected one of: " + PresetNames("") + ")");
 }
 
 // A current in A, printed back always (the preset's when the scenario gives none).
@@ -38,7 +38,7 @@ void Current(Fields<EnergySpec>& f, const char* key, double RadioCurrents::*memb
 const Fields<EnergySpec>& RadioEnergyFields() {
   static const Fields<EnergySpec> fields = [] {
     Fields<EnergySpec> f;
-    f.Custom({"preset", "text", "", "`ns3_wifi`", PresetNames(),
+    f.Custom({"preset", "text", "", "`ns3_wifi`", PresetNames("`"),
               "the currents of a known radio (docs/energy.md lists their sources); the keys below change them"},
              ReadPreset, [](const EnergySpec& s) { return YAML::Node(s.radio_preset); });
     Current(f, "tx_a", &RadioCurrents::tx_a, "while transmitting");

@@ -157,7 +157,7 @@ void Assembly::Die(NodeId id) {
   if (!energy || !energy->depleted() || batteries_.dead(id) || off_for_good_[id]) return;
   batteries_.Died(id, Now());
   energy->SetOn(false);
-  if (!nodes_.at(id)->switched_off()) nodes_.at(id)->SwitchOff();
+  nodes_.at(id)->SwitchOff();  // not off already: neither dead nor switched off for good
   hosts_.at(id)->SwitchOff();
   Log(id, "died: its battery is exhausted (" + Quantity("%.6g J", energy->remaining_j()) + " left at " +
               Quantity("%.3f V", energy->Reading().voltage) + ")");

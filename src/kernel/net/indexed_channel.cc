@@ -90,7 +90,7 @@ double IndexedWifiChannel::LossAt(double tx_power_dbm, double distance) const {
 // exact power is checked anyway, so the range only has to be wide enough.
 double IndexedWifiChannel::Range(double tx_power_dbm) {
   if (auto found = ranges_.find(tx_power_dbm); found != ranges_.end()) return found->second;
-  const double target = floor_ - max_rx_gain_;
+  const double target = floor_ - max_rx_gain_ - margin_db_;
   double inside = 0, outside = 1;
   while (LossAt(tx_power_dbm, outside) >= target && outside < kFarthest) {
     inside = outside;

@@ -48,6 +48,9 @@ class IndexedWifiChannel : public ns3::YansWifiChannel {
   // walls, which only add loss, so that the candidates stay a superset of the radios reached
   // (probing through walls from wherever the probe stood would shrink the range wrongly).
   void SetRangeLossModel(ns3::Ptr<ns3::PropagationLossModel> loss) { range_loss_ = std::move(loss); }
+  // The most the loss models beyond the range model can add to a frame (dB: shadowing's clip and
+  // fading's cap): ranges reach that much farther, so that no frame lifted by them is missed.
+  void SetRangeMargin(double db) { margin_db_ = db; }
   double floor() const { return floor_; }
   // The radio at `index` (the order radios joined the channel: a node's id in sanet) has moved:
   // its grid cell is brought up to date. Call it after every change of position, before the
@@ -71,6 +74,7 @@ class IndexedWifiChannel : public ns3::YansWifiChannel {
   static void Receive(ns3::Ptr<ns3::YansWifiPhy> phy, ns3::Ptr<const ns3::WifiPpdu> ppdu, double rx_power_dbm);
 
   double floor_ = -101;
+  double margin_db_ = 0;
   double top_ = 0;  // highest antenna (m) seen: ranges are computed with both ends there
   double max_rx_gain_ = std::numeric_limits<double>::lowest();  // dB, the largest receiver gain: ranges
                                                                 // must reach its radio too

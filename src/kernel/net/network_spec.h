@@ -31,6 +31,29 @@ std::vector<double> DataRates(WifiStandard standard);
 // 802.11g, 5.18 GHz (channel 36) for 802.11a.
 inline double FrequencyHz(WifiStandard standard) { return standard == WifiStandard::k80211a ? 5.18e9 : 2.412e9; }
 
+// Log-normal shadowing, spatially correlated (net/shadowing.h); sigma 0 is none.
+struct Shadowing {
+  double sigma_db = 0;        // deviation of the shadowing (dB)
+  double correlation_m = 10;  // decorrelation distance: the correlation is exp(-moved / this)
+  double clip_sigmas = 3;     // values are clipped at +- this many sigmas
+  bool symmetric = true;      // the same both ways of a link, or drawn apart
+};
+
+// Fast fading per frame (net/fading.h).
+enum class FadingModel { kNone, kNakagami, kRayleigh };
+struct Fading {
+  FadingModel model = FadingModel::kNone;
+  double m = 1;  // Nakagami's shape (rayleigh: 1)
+};
+
+// Hardware variance (Zuniga and Krishnamachari's second cause of asymmetric links): each node's
+// transmit power and noise figure are off by a Gaussian amount drawn from the seed.
+struct HardwareSpread {
+  double tx_power_db = 0;      // deviation of each node's transmit power
+  double noise_figure_db = 0;  // deviation of each node's receiver noise figure
+  static constexpr double kClipSigmas = 3;
+};
+
 struct NetworkSpec {
   WifiStandard standard = WifiStandard::k80211b;
   double data_rate = 1;       // Mbps, one of the standard's rates; broadcasts go at the lowest
@@ -43,6 +66,9 @@ struct NetworkSpec {
   double reference_distance = 1.0;  // m
   double antenna_height = 1.0;      // m above each node, for two-ray ground
   double max_range = 0;             // m; beyond it nothing is received (0: no cut-off)
+  Shadowing shadowing;
+  Fading fading;
+  HardwareSpread spread;
   DelayModel delay = DelayModel::kConstantSpeed;
   double random_delay_max = 1e-6;  // s: `random` delays are uniform in [0, this]
 
@@ -62,6 +88,10 @@ struct NetworkSpec {
   bool packet_log = true;     // a CSV of packet events per node
 
   Ns3Attributes ns3;  // ns-3 attribute defaults (network.ns3), checked when read
+
+  // The run's seed (RunSpec::seed, set when the run is assembled): shadowing, fading and the
+  // hardware spread draw from it.
+  std::uint64_t seed = 0;
 };
 
 // Radio settings a node may override.

@@ -32,7 +32,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/statistics.h"
-#include "net/path_loss.h"
+#include "net/channel_losses.h"
+#include "net/hardware_spread.h"
 
 namespace sanet::net {
 namespace {
@@ -100,6 +101,9 @@ WirelessNetwork::~WirelessNetwork() {
 
 // The helpers every node's radio is installed with: standard, rates, channel, PHY and MAC.
 void WirelessNetwork::ConfigureRadios() {
+  ns3::TypeId::AttributeInformation noise_figure;  // its default, as network.ns3 left it
+  if (ns3::WifiPhy::GetTypeId().LookupAttributeByName("RxNoiseFigure", &noise_figure))
+    nominal_noise_figure_ = ns3::DynamicCast<const ns3::DoubleValue>(noise_figure.initialValue)->Get();
   wifi_.SetStandard(spec_.standard == WifiStandard::k80211b   ? ns3::WIFI_STANDARD_80211b
                     : spec_.standard == WifiStandard::k80211g ? ns3::WIFI_STANDARD_80211g
                                                               : ns3::WIFI_STANDARD_80211a);
@@ -121,15 +125,16 @@ void WirelessNetwork::ConfigureRadios() {
         ns3::StringValue("ns3::UniformRandomVariable[Min=0.0|Max=" + std::to_string(spec_.random_delay_max) + "]"));
   }
   ns3::Ptr<ns3::YansWifiChannel> yans = channel.Create();
-  const ns3::Ptr<ns3::PropagationLossModel> loss = PathLoss(spec_);
-  if (walls_) LastOf(loss)->SetNext(walls_);
-  yans->SetPropagationLossModel(loss);
+  const ChannelLosses losses = BuildChannelLosses(spec_, walls_);
+  mean_loss_ = losses.mean;
+  yans->SetPropagationLossModel(losses.frames);
   if (spec_.channel == ChannelModel::kIndexed) {
     indexed_ = ns3::CreateObject<IndexedWifiChannel>();
     ns3::PointerValue delay;
     yans->GetAttribute("PropagationDelayModel", delay);
-    indexed_->SetPropagationLossModel(loss);
-    indexed_->SetRangeLossModel(walls_ ? PathLoss(spec_) : loss);
+    indexed_->SetPropagationLossModel(losses.frames);
+    indexed_->SetRangeLossModel(losses.range);
+    indexed_->SetRangeMargin(losses.range_margin_db);
     indexed_->SetPropagationDelayModel(delay.Get<ns3::PropagationDelayModel>());
     indexed_->SetFloor(spec_.ChannelFloor());
     phy_.UseIndexedPhy();
@@ -141,11 +146,15 @@ void WirelessNetwork::ConfigureRadios() {
   mac_.SetType("ns3::AdhocWifiMac");
 }
 
+// Each node's own transmit power (and, with a hardware spread, its own noise figure) is set on the
+// helper just before its radio is made.
 ns3::NetDeviceContainer WirelessNetwork::InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio) {
-  const double power = radio.tx_power.value_or(spec_.tx_power);
+  const double power = TxPower(node->GetId(), radio);
   if (walls_) walls_->SetAntennaHeight(node->GetId(), radio.antenna_height);
   phy_.Set("TxPowerStart", ns3::DoubleValue(power));
   phy_.Set("TxPowerEnd", ns3::DoubleValue(power));
+  if (spec_.spread.noise_figure_db > 0)
+    phy_.Set("RxNoiseFigure", ns3::DoubleValue(std::max(0.0, nominal_noise_figure_ + NoiseFigureOffsetDb(spec_, node->GetId()))));
   ns3::NetDeviceContainer device = wifi_.Install(phy_, mac_, node);
   CountFrames(ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0))->GetPhy());
   return device;
@@ -381,13 +390,13 @@ void WirelessNetwork::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
                                             std::move(network), tap_ledger_));
 }
 
+double WirelessNetwork::TxPower(NodeId id, const NodeRadio& radio) const {
+  return radio.tx_power.value_or(spec_.tx_power) + TxPowerOffsetDb(spec_, id);
+}
+
 double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
-  auto channel = ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel());
-  ns3::PointerValue loss;
-  channel->GetAttribute("PropagationLossModel", loss);
-  return loss.Get<ns3::PropagationLossModel>()->CalcRxPower(radios_.at(from).tx_power.value_or(spec_.tx_power),
-                                                            nodes_.Get(from)->GetObject<ns3::MobilityModel>(),
-                                                            nodes_.Get(to)->GetObject<ns3::MobilityModel>());
+  return mean_loss_->CalcRxPower(TxPower(from, radios_.at(from)), nodes_.Get(from)->GetObject<ns3::MobilityModel>(),
+                                 nodes_.Get(to)->GetObject<ns3::MobilityModel>());
 }
 
 // ns-3 3.37 cannot switch a sleeping PHY off (WifiPhyStateHelper::SwitchToOff aborts the process

@@ -46,8 +46,9 @@ class WirelessNetwork : public Transport {
   // Joins a real IP stack to node `id` through the tap `fd` (net/tap_port.h): the stack uses the
   // node's address (AddressBook), and its tap interface has the address `tap_mac`.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
-  // The power (dBm) at which `to` receives `from`'s transmissions now: the channel's own
-  // propagation loss model at the nodes' positions (what ns-3 itself computes for each frame).
+  // The mean power (dBm) at which `to` receives `from`'s transmissions now: the channel's own
+  // propagation loss models at the nodes' positions (path loss, walls, shadowing: what ns-3
+  // itself computes for each frame, before the frame's fading).
   double ReceivedPower(NodeId from, NodeId to) const;
   // Frames received weaker than this (dBm) are not detected.
   double DetectionThreshold() const { return spec_.rx_threshold; }
@@ -72,6 +73,7 @@ class WirelessNetwork : public Transport {
 
  private:
   ns3::Ptr<ns3::WifiPhy> Phy(NodeId node) const;
+  double TxPower(NodeId id, const NodeRadio& radio) const;  // dBm, with the node's hardware spread
   void ApplySleep(NodeId node);  // brings the PHY to sleep_wanted_ when it can (SetSleep)
   void ConfigureRadios();
   ns3::NetDeviceContainer InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio);
@@ -115,7 +117,9 @@ class WirelessNetwork : public Transport {
   std::unique_ptr<FrameTrace> frames_;  // while someone traces the frames
   TapLedger tap_ledger_;
   ns3::Ptr<IndexedWifiChannel> indexed_;  // with `channel: indexed`
-  ns3::Ptr<ObstacleLossModel> walls_;     // last in the channel's loss chain, if any obstacle costs
+  ns3::Ptr<ObstacleLossModel> walls_;     // in the channel's loss chain, if any obstacle costs
+  ns3::Ptr<ns3::PropagationLossModel> mean_loss_;  // the channel's losses without fading
+  double nominal_noise_figure_ = 7;                // dB: WifiPhy's RxNoiseFigure (network.ns3 may set it)
   ChannelCounts frame_counts_;
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scenario/energy_fields.h"
+#include "scenario/link_variation_fields.h"
 #include "scenario/sensor_fields.h"
 
 namespace sanet::scenario {
@@ -260,6 +261,7 @@ const Fields<net::NetworkSpec>& NetworkFields() {
     f.Custom({"channel", "mapping", "", "indexed, see below", "see [channel](#channel)",
               "which radios each frame is handed to"},
              ReadChannel, PrintChannel);
+    f.Custom(HardwareSpreadEntry(), ReadHardwareSpread, PrintHardwareSpread);
     f.Choice<net::DelayModel>(
         "delay", Member(&NetworkSpec::delay),
         {{"constant_speed", net::DelayModel::kConstantSpeed}, {"random", net::DelayModel::kRandom}},
@@ -314,6 +316,8 @@ const Fields<net::NetworkSpec>& PropagationFields() {
     f.Number("antenna_height", Member(&NetworkSpec::antenna_height), "m", 0, 1000, "`two_ray_ground` only");
     f.Number("max_range", Member(&NetworkSpec::max_range), "m", 0, 1e7,
              "every model: nothing is received from farther (`0`: no cut-off)");
+    f.Custom(ShadowingEntry(), ReadShadowing, PrintShadowing);
+    f.Custom(FadingEntry(), ReadFading, PrintFading);
     return f;
   }();
   return fields;
@@ -919,6 +923,9 @@ std::vector<SectionTable> SectionTables() {
       {"obstacles.wall", WallFields().Describe(WallSettings{})},
       {"network", NetworkFields().Describe(net::NetworkSpec{})},
       {"network.propagation", PropagationFields().Describe(net::NetworkSpec{})},
+      {"network.propagation.shadowing", ShadowingFields().Describe(net::NetworkSpec{})},
+      {"network.propagation.fading", FadingFields().Describe(net::NetworkSpec{})},
+      {"network.hardware_spread", HardwareSpreadFields().Describe(net::NetworkSpec{})},
       {"network.channel", ChannelFields().Describe(net::NetworkSpec{})},
       {"nodes.node", NodeFields().Describe(Keys{})},
       {"nodes.grid_item", GridItemFields().Describe(Keys{})},

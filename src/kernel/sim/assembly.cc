@@ -99,7 +99,9 @@ void Assembly::BuildTransport() {
     std::vector<std::string> names;
     std::vector<net::NodeRadio> radios;
     for (const NodeSpec& n : run_nodes_) names.push_back(n.name), radios.push_back(n.radio);
-    auto wireless = std::make_unique<net::WirelessNetwork>(*spec_.network, nodes, names, radios, RadioWalls(spec_));
+    net::NetworkSpec network = *spec_.network;
+    network.seed = spec_.seed;  // shadowing, fading and hardware spread draw from the run's seed
+    auto wireless = std::make_unique<net::WirelessNetwork>(network, nodes, names, radios, RadioWalls(spec_));
     wireless_ = wireless.get();
     inner = std::move(wireless);
   } else {

@@ -135,6 +135,36 @@ TEST(IndexedChannel, WithWallsReceivesExactlyWhatYansReceives) {
   EXPECT_NE(yans_fingerprint, open_fingerprint);
 }
 
+// A grey-zone radio (shadowing correlated over 10 m, Nakagami fading, hardware spread) on the
+// crowded field with its robots driving through: the indexed channel's ranges widen by the
+// shadowing's clip and the fading's cap, and fading is drawn the same whoever asks, so it still
+// receives exactly what Yans receives; and the grey zone changes what is received.
+TEST(IndexedChannel, WithShadowingAndFadingReceivesExactlyWhatYansReceives) {
+  const auto grey = [](net::ChannelModel channel) {
+    sim::RunSpec spec = CrowdedField(channel);
+    spec.network->shadowing.sigma_db = 6;
+    spec.network->fading.model = net::FadingModel::kNakagami;
+    spec.network->fading.m = 1.5;
+    spec.network->spread.tx_power_db = 1;
+    spec.network->spread.noise_figure_db = 1;
+    return spec;
+  };
+  std::string plain_fingerprint, yans_fingerprint, indexed_fingerprint;
+  const nlohmann::json plain = Summary(CrowdedField(net::ChannelModel::kYans), "plain", &plain_fingerprint);
+  const nlohmann::json yans = Summary(grey(net::ChannelModel::kYans), "grey-yans", &yans_fingerprint);
+  const nlohmann::json indexed = Summary(grey(net::ChannelModel::kIndexed), "grey-indexed", &indexed_fingerprint);
+  const nlohmann::json& y = yans["network"];
+  const nlohmann::json& i = indexed["network"];
+  ASSERT_GT(y["channel"]["frames_received"].get<int>(), 1000);
+  EXPECT_NE(y["channel"]["frames_received"], plain["network"]["channel"]["frames_received"]);
+  EXPECT_NE(yans_fingerprint, plain_fingerprint);
+  EXPECT_EQ(i["channel"]["frames_sent"], y["channel"]["frames_sent"]);
+  EXPECT_EQ(i["channel"]["frames_received"], y["channel"]["frames_received"]);
+  EXPECT_EQ(i["packets"], y["packets"]);
+  EXPECT_EQ(i["route_discoveries"], y["route_discoveries"]);
+  EXPECT_EQ(indexed_fingerprint, yans_fingerprint);
+}
+
 // Radios on a line 10, 20, ... 150 m from a mote that broadcasts once a second, no routing (so
 // its frames are the only ones): with the default radio (16 dBm, log-distance exponent 3,
 // 46.6777 dB at 1 m) a frame arrives at the default floor (-91 dBm) at 102.6 m.

@@ -25,6 +25,7 @@
 #include "launch/namespaces.h"
 #include "launch/radio_taps.h"
 #include "launch_command.h"
+#include "link_curve_command.h"
 #include "merge_command.h"
 #include "options.h"
 #include "python_controllers/python_controller.h"
@@ -332,7 +333,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("sanet ") + SanetVersion() + " (" + SanetCommit() + ")");
   const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app), AddReport(app), AddServe(app),
-                                         AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app),   AddMerge(app)};
+                                         AddAgent(app), AddLaunch(app),   AddList(app),  AddView(app),   AddMerge(app),
+                                         AddLinkCurve(app)};
   if (UnknownCommand(argc, argv, app)) return kExitScenarioError;
   try {
     app.parse(argc, argv);

@@ -70,13 +70,29 @@ Plot Fit(const std::vector<const Points*>& all, double y_at_least) {
 
 }  // namespace
 
+namespace {
+
+void Bands(std::ostringstream& s, const Plot& p, const std::vector<Band>& bands) {
+  for (const Band& band : bands) {
+    const double x0 = p.px(std::max(0.0, band.from)), x1 = p.px(std::min(p.x1, band.to));
+    if (x1 <= x0) continue;
+    s << "<rect x=\"" << Num(x0) << "\" y=\"" << p.top << "\" width=\"" << Num(x1 - x0) << "\" height=\""
+      << p.h - p.top - p.bottom << "\" fill=\"" << band.fill << "\" fill-opacity=\"0.35\"/><text x=\""
+      << Num(0.5 * (x0 + x1)) << "\" y=\"" << p.top - 4 << "\" font-size=\"11\" text-anchor=\"middle\">"
+      << Escape(band.name) << "</text>\n";
+  }
+}
+
+}  // namespace
+
 std::string LinesSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
-                     const std::vector<Series>& series) {
+                     const std::vector<Series>& series, const std::vector<Band>& bands) {
   std::vector<const Points*> all;
   for (const Series& one : series) all.push_back(&one.points);
   const Plot p = Fit(all, 0);
   std::ostringstream s;
   Document(s, p.w, p.h, title);
+  Bands(s, p, bands);
   Axes(s, p, x_label, y_label);
   for (std::size_t i = 0; i < series.size(); ++i) {
     const std::string colour = kColors[i % std::size(kColors)];

@@ -46,8 +46,14 @@ struct Series {
   std::string name;
   std::vector<std::pair<double, double>> points;
 };
+// A stretch of the x axis shaded and named (a link curve's regions), under the lines.
+struct Band {
+  double from, to;
+  std::string name;
+  const char* fill;
+};
 std::string LinesSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
-                     const std::vector<Series>& series);
+                     const std::vector<Series>& series, const std::vector<Band>& bands = {});
 // A time series as a line, with a dashed horizontal reference line when `reference` > 0.
 std::string LineSvg(const std::string& title, const std::string& x_label, const std::string& y_label,
                     const std::vector<std::pair<double, double>>& points, double reference);

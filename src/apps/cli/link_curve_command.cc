@@ -94,8 +94,8 @@ Command AddLinkCurve(CLI::App& app) {
   cmd->add_option("--seed", a->seed, "Seed instead of the scenario's (each link draws its own from it)")->check(kSeedText);
   cmd->add_option("--from", a->options.from, "First distance (m); default: one step")->check(CLI::PositiveNumber);
   cmd->add_option("--to", a->options.to,
-                  "Last distance (m); default: where the strongest shadowing, fading and spread leave a frame 3 dB "
-                  "under rx_threshold")
+                  "Last distance (m); default: where a link 2.5 sigma above the mean shadowing and spread, in a "
+                  "frame faded less than 99 % of frames, still arrives 3 dB under rx_threshold")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--step", a->options.step, "Between distances (m); default: about 40 distances")
       ->check(CLI::PositiveNumber);

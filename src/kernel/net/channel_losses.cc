@@ -1,9 +1,26 @@
 #include "net/channel_losses.h"
 
+#include <ns3/double.h>
+#include <ns3/wifi-phy.h>
+
 #include "net/link_loss_models.h"
 #include "net/path_loss.h"
 
 namespace sanet::net {
+namespace {
+
+double PhyDefault(const char* attribute) {
+  ns3::TypeId::AttributeInformation info;
+  ns3::WifiPhy::GetTypeId().LookupAttributeByName(attribute, &info);
+  return ns3::DynamicCast<const ns3::DoubleValue>(info.initialValue)->Get();
+}
+
+// Under this (dBm, before the receiver's antenna gain) no radio takes a frame: every PHY has
+// WifiPhy's sensitivity and gain as network.ns3 left them (YansWifiChannel drops such frames
+// before the PHY sees them, as does the indexed channel).
+double UntakenBelowDbm() { return PhyDefault("RxSensitivity") - PhyDefault("RxGain"); }
+
+}  // namespace
 
 ChannelLosses BuildChannelLosses(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> walls) {
   ChannelLosses losses;
@@ -15,13 +32,14 @@ ChannelLosses BuildChannelLosses(const NetworkSpec& spec, ns3::Ptr<ObstacleLossM
     auto shadowing = ns3::CreateObject<ShadowingLossModel>();
     shadowing->SetField(field);
     LastOf(losses.mean)->SetNext(shadowing);
+    losses.shadowing = shadowing;
     losses.range_margin_db += field.MaxGainDb();
   }
   losses.frames = losses.mean;
   if (spec.fading.model != FadingModel::kNone) {
     const NakagamiFading fading(spec.seed, spec.fading);
     auto faded = ns3::CreateObject<FadingLossModel>();
-    faded->Set(losses.mean, fading);
+    faded->Set(losses.mean, fading, UntakenBelowDbm());
     losses.frames = faded;
     losses.range_margin_db += fading.MaxGainDb();
   }

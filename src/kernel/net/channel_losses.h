@@ -16,8 +16,11 @@
 
 namespace sanet::net {
 
+class ShadowingLossModel;
+
 struct ChannelLosses {
   ns3::Ptr<ns3::PropagationLossModel> frames, mean, range;
+  ns3::Ptr<ShadowingLossModel> shadowing;  // when sigma > 0
   double range_margin_db = 0;
 };
 

@@ -17,7 +17,11 @@ constexpr std::uint64_t kFadingKey = 0x46414445ull;  // "FADE"
 NakagamiFading::NakagamiFading(std::uint64_t seed, const Fading& spec)
     : seed_(seed), m_(spec.model == FadingModel::kRayleigh ? 1.0 : spec.m) {
   // The power gain is Gamma(m, 1/m): its quantile is the regularised incomplete gamma's inverse over m.
-  cap_db_ = 10 * std::log10(boost::math::gamma_p_inv(m_, 1 - kCapTail) / m_);
+  cap_db_ = GainQuantileDb(1 - kCapTail);
+}
+
+double NakagamiFading::GainQuantileDb(double q) const {
+  return 10 * std::log10(boost::math::gamma_p_inv(m_, q) / m_);
 }
 
 double NakagamiFading::Draw(std::uint32_t from, std::uint32_t to, std::int64_t instant) const {

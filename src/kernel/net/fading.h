@@ -30,6 +30,8 @@ class NakagamiFading {
   // The gain (a power ratio, mean 1) before it is capped.
   double Draw(std::uint32_t from, std::uint32_t to, std::int64_t instant) const;
   double MaxGainDb() const { return cap_db_; }
+  // The gain (dB) that a share `q` of the frames fade less than.
+  double GainQuantileDb(double q) const;
   double m() const { return m_; }
 
  private:

@@ -119,11 +119,16 @@ void IndexedWifiChannel::SendNear(ns3::Ptr<ns3::YansWifiPhy> sender, ns3::Ptr<co
   const ns3::Vector at = from->GetPosition();
   JoinNewRadios();
   near_.clear();
-  grid_->Near(at.x, at.y, Range(tx_power_dbm), near_);
+  const double range = Range(tx_power_dbm);
+  grid_->Near(at.x, at.y, range, near_);
   for (std::uint32_t index : near_) {
     const Radio& to = radios_[index];
     if (to.phy == sender || to.phy->GetChannelNumber() != sender->GetChannelNumber()) continue;
     ++counters_.candidates;
+    // Beyond the range (on the ground, never more than in 3D) even the loss models' most
+    // favourable draws leave the frame under the floor: skip them before any model is asked.
+    const ns3::Vector there = to.mobility->GetPosition();
+    if (std::hypot(there.x - at.x, there.y - at.y) > range) continue;
     const double rx_power_dbm = loss_->CalcRxPower(tx_power_dbm, from, to.mobility);
     if (rx_power_dbm + to.phy->GetRxGain() < floor_) continue;
     ++counters_.handed;

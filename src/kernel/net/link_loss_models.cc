@@ -24,13 +24,21 @@ ns3::TypeId ShadowingLossModel::GetTypeId() {
 
 double ShadowingLossModel::DoCalcRxPower(double tx_power_dbm, ns3::Ptr<ns3::MobilityModel> a,
                                          ns3::Ptr<ns3::MobilityModel> b) const {
-  const std::optional<std::uint32_t> from = NodeOf(a), to = NodeOf(b);
+  std::optional<std::uint32_t> from = NodeOf(a), to = NodeOf(b);
   if (!from || !to) return tx_power_dbm;
-  const ns3::Vector pa = a->GetPosition(), pb = b->GetPosition();
-  Kept& kept = kept_[(*from * 0x9E3779B1u ^ *to * 0x85EBCA77u) % kSlots];
-  if (!kept.used || kept.from != *from || kept.to != *to || kept.ax != pa.x || kept.ay != pa.y || kept.bx != pb.x ||
-      kept.by != pb.y)
-    kept = {*from, *to, pa.x, pa.y, pb.x, pb.y, field_.GainDb(*from, pa.x, pa.y, *to, pb.x, pb.y), true};
+  ns3::Vector pa = a->GetPosition(), pb = b->GetPosition();
+  if (symmetric_ && *to < *from) {
+    std::swap(from, to);
+    std::swap(pa, pb);
+  }
+  ++counters_.asked;
+  if (kept_.size() >= kMaxKept) kept_.clear();
+  auto [found, fresh] = kept_.try_emplace(std::uint64_t{*from} << 32 | *to);
+  Kept& kept = found->second;
+  if (fresh || kept.ax != pa.x || kept.ay != pa.y || kept.bx != pb.x || kept.by != pb.y) {
+    ++counters_.computed;
+    kept = {pa.x, pa.y, pb.x, pb.y, field_.GainDb(*from, pa.x, pa.y, *to, pb.x, pb.y)};
+  }
   return tx_power_dbm + kept.gain_db;
 }
 
@@ -45,6 +53,7 @@ ns3::TypeId FadingLossModel::GetTypeId() {
 double FadingLossModel::DoCalcRxPower(double tx_power_dbm, ns3::Ptr<ns3::MobilityModel> a,
                                       ns3::Ptr<ns3::MobilityModel> b) const {
   const double mean_dbm = mean_->CalcRxPower(tx_power_dbm, a, b);
+  if (mean_dbm + fading_.MaxGainDb() < untaken_below_dbm_) return mean_dbm + fading_.MaxGainDb();
   const std::optional<std::uint32_t> from = NodeOf(a), to = NodeOf(b);
   if (!from || !to) return mean_dbm;
   return mean_dbm + fading_.GainDb(*from, *to, ns3::Simulator::Now().GetTimeStep());

@@ -54,6 +54,8 @@ struct ChannelCounts {
   std::uint64_t candidates = 0, handed = 0;            // radios the grid offered, receptions scheduled
   std::size_t walls = 0;                               // obstacles that cost the radio something
   std::uint64_t wall_losses = 0, wall_walks = 0;       // pair losses asked for; computed through the grid
+  bool shadowing = false;                              // with shadowing on:
+  std::uint64_t shadowing_asked = 0, shadowing_computed = 0;  // links' values asked for; computed afresh
 };
 
 struct NetworkTraces {

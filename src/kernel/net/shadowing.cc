@@ -15,12 +15,20 @@ struct WaveVector {
   double x, y;
 };
 
-// A wave vector of the isotropic spectrum of exp(-r / d) in the plane.
+// A wave vector of the isotropic spectrum of exp(-r / d) in the plane: its length from the
+// inverse CDF, its direction a point of the unit disc drawn by rejection and scaled (no sine
+// or cosine: this runs for every term of every evaluation).
 WaveVector DrawWaveVector(CounterRandom& random, double d) {
   const double u = random.Uniform();
   const double k = std::sqrt(1 / ((1 - u) * (1 - u)) - 1) / d;
-  const double angle = 2 * M_PI * random.Uniform();
-  return {k * std::cos(angle), k * std::sin(angle)};
+  double x, y, r2;
+  do {
+    x = 2 * random.Uniform() - 1;
+    y = 2 * random.Uniform() - 1;
+    r2 = x * x + y * y;
+  } while (r2 > 1 || r2 == 0);
+  const double scale = k / std::sqrt(r2);
+  return {x * scale, y * scale};
 }
 
 }  // namespace

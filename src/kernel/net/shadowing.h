@@ -36,6 +36,7 @@ class ShadowingField {
   double GainDb(std::uint32_t from, double ax, double ay, std::uint32_t to, double bx, double by) const;
   // The most the field ever adds (dB).
   double MaxGainDb() const { return spec_.sigma_db * spec_.clip_sigmas; }
+  bool symmetric() const { return spec_.symmetric; }
 
  private:
   std::uint64_t seed_;

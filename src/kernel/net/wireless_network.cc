@@ -127,6 +127,7 @@ void WirelessNetwork::ConfigureRadios() {
   ns3::Ptr<ns3::YansWifiChannel> yans = channel.Create();
   const ChannelLosses losses = BuildChannelLosses(spec_, walls_);
   mean_loss_ = losses.mean;
+  shadowing_ = losses.shadowing;
   yans->SetPropagationLossModel(losses.frames);
   if (spec_.channel == ChannelModel::kIndexed) {
     indexed_ = ns3::CreateObject<IndexedWifiChannel>();
@@ -505,6 +506,11 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
     t.channel.walls = walls_->walls();
     t.channel.wall_losses = walls_->counters().asked;
     t.channel.wall_walks = walls_->counters().walked;
+  }
+  if (shadowing_) {
+    t.channel.shadowing = true;
+    t.channel.shadowing_asked = shadowing_->counters().asked;
+    t.channel.shadowing_computed = shadowing_->counters().computed;
   }
   if (indexed_) {
     t.channel.floor_dbm = spec_.ChannelFloor();

@@ -22,6 +22,7 @@
 #include "net/address_book.h"
 #include "net/frame_trace.h"
 #include "net/indexed_channel.h"
+#include "net/link_loss_models.h"
 #include "net/message_header.h"
 #include "net/network_spec.h"
 #include "net/ns3_attributes.h"
@@ -119,6 +120,7 @@ class WirelessNetwork : public Transport {
   ns3::Ptr<IndexedWifiChannel> indexed_;  // with `channel: indexed`
   ns3::Ptr<ObstacleLossModel> walls_;     // in the channel's loss chain, if any obstacle costs
   ns3::Ptr<ns3::PropagationLossModel> mean_loss_;  // the channel's losses without fading
+  ns3::Ptr<ShadowingLossModel> shadowing_;         // in mean_loss_, with shadowing on
   double nominal_noise_figure_ = 7;                // dB: WifiPhy's RxNoiseFigure (network.ns3 may set it)
   ChannelCounts frame_counts_;
 };

@@ -170,11 +170,11 @@ double MeanPower(const net::NetworkSpec& network, double distance) {
 }
 
 void DefaultDistances(const net::NetworkSpec& network, LinkCurveOptions& o) {
-  const double lift = network.shadowing.sigma_db * network.shadowing.clip_sigmas +
-                      net::HardwareSpread::kClipSigmas * network.spread.tx_power_db +
+  constexpr double kSigmas = 2.5, kFadingShare = 0.99;  // of the links and frames a curve shows
+  const double lift = kSigmas * (network.shadowing.sigma_db + network.spread.tx_power_db) +
                       (network.fading.model == net::FadingModel::kNone
                            ? 0
-                           : net::NakagamiFading(0, network.fading).MaxGainDb());
+                           : net::NakagamiFading(0, network.fading).GainQuantileDb(kFadingShare));
   const double target = network.rx_threshold - lift - 3;
   double far = 1;
   while (MeanPower(network, far) >= target && far < 1e6) far *= 2;

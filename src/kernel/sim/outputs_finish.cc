@@ -32,13 +32,15 @@ std::string RouteRow(const std::string& node, const std::string& destination, co
 }
 
 // Frames the radios sent and received whole; with walls, how often a pair's wall loss was asked
-// for and how often it had to be computed (the rest came from the cache); with the indexed
+// for and how often it had to be computed (the rest came from the cache), and the same of the
+// links' shadowing; with the indexed
 // channel also how many radios a frame was offered and handed to, on average.
 nlohmann::ordered_json ChannelSummary(const net::ChannelCounts& c) {
   nlohmann::ordered_json out = {
       {"model", c.model}, {"frames_sent", c.frames_sent}, {"frames_received", c.frames_received}};
   if (c.walls > 0)
     out["walls"] = {{"obstacles", c.walls}, {"losses_asked", c.wall_losses}, {"losses_computed", c.wall_walks}};
+  if (c.shadowing) out["shadowing"] = {{"asked", c.shadowing_asked}, {"computed", c.shadowing_computed}};
   if (!c.floor_dbm) return out;
   const double frames = c.frames_sent ? static_cast<double>(c.frames_sent) : 1.0;
   out["floor_dbm"] = *c.floor_dbm;

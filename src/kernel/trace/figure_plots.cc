@@ -72,14 +72,16 @@ Plot Fit(const std::vector<const Points*>& all, double y_at_least) {
 
 namespace {
 
+// Shaded under everything, named along the bottom of the plot (a name that would overlap
+// another is left out: a narrow band says nothing).
 void Bands(std::ostringstream& s, const Plot& p, const std::vector<Band>& bands) {
+  svg::Labels names;
   for (const Band& band : bands) {
     const double x0 = p.px(std::max(0.0, band.from)), x1 = p.px(std::min(p.x1, band.to));
     if (x1 <= x0) continue;
     s << "<rect x=\"" << Num(x0) << "\" y=\"" << p.top << "\" width=\"" << Num(x1 - x0) << "\" height=\""
-      << p.h - p.top - p.bottom << "\" fill=\"" << band.fill << "\" fill-opacity=\"0.35\"/><text x=\""
-      << Num(0.5 * (x0 + x1)) << "\" y=\"" << p.top - 4 << "\" font-size=\"11\" text-anchor=\"middle\">"
-      << Escape(band.name) << "</text>\n";
+      << p.h - p.top - p.bottom << "\" fill=\"" << band.fill << "\" fill-opacity=\"0.35\"/>\n";
+    names.Place(s, 0.5 * (x0 + x1), p.h - p.bottom - 6, band.name, 11, "#555555", "middle");
   }
 }
 

@@ -129,6 +129,12 @@ class LinkCurve(unittest.TestCase):
         self.assertGreater(near(faded)["rssi_q3_dbm"] - near(faded)["rssi_q1_dbm"], 3,
                            "Rayleigh power's quartiles lie 6.7 dB apart")
 
+    def test_frames_asked_faster_than_the_air_takes_them_are_not_counted_as_sent(self):
+        _, rows, _, _ = self.curve("hurried", "--links", "2", "--frames", "2000", "--interval", "0.0001", "--from",
+                                   "10", "--to", "10", "--step", "10")
+        self.assertLess(rows[0]["frames_sent"], 2 * 2000, "a 64-byte broadcast takes over a millisecond at 1 Mbps")
+        self.assertGreater(rows[0]["prr"], 0.99, "what was sent arrived, 10 m away")
+
     def test_along_a_line_through_a_wall(self):
         args = ["--links", "1", "--frames", "4", "--from", "5", "--to", "30", "--step", "5"]
         _, open_air, _, _ = self.curve("open", *args)
@@ -153,6 +159,9 @@ class LinkCurve(unittest.TestCase):
         self.assertIn("--along", done.stderr)
         done, _, _, _ = self.curve("bad-range", "--from", "40", "--to", "20", check=False)
         self.assertIn("--from", done.stderr)
+        done, _, _, _ = self.curve("bad-step", "--step", "1e-300", check=False)
+        self.assertEqual(done.returncode, 2)
+        self.assertIn("longer step", done.stderr)
         other = os.path.join(self.tmp.name, "other")
         os.makedirs(other, exist_ok=True)
         open(os.path.join(other, "notes.txt"), "w").close()

@@ -11,6 +11,7 @@ import socket
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 from protocol_client import serve
@@ -69,7 +70,9 @@ class GreyZoneUnderWss(unittest.TestCase):
         server, _, out = serve(SANET, SCENARIO, served, "--wss-port", "0", "--wss-port-file", port_file,
                                "--no-foxglove")
         while not os.path.exists(port_file):
-            pass
+            if server.poll() is not None:
+                raise RuntimeError("sanet serve ended before it listened")
+            time.sleep(0.01)
         with open(port_file) as f:
             wss_port = int(f.read())
         clients = {name: Wss(wss_port) for name in ("m0", "m7")}

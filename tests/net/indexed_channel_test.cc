@@ -165,6 +165,22 @@ TEST(IndexedChannel, WithShadowingAndFadingReceivesExactlyWhatYansReceives) {
   EXPECT_EQ(indexed_fingerprint, yans_fingerprint);
 }
 
+// Shadowing of sigma 0 (whatever its other keys) and no fading build no model at all: the same
+// run as the plain radio, byte for byte.
+TEST(IndexedChannel, ShadowingOfSigmaZeroChangesNothing) {
+  sim::RunSpec quiet = CrowdedField(net::ChannelModel::kIndexed);
+  quiet.duration = 4;
+  sim::RunSpec zero = quiet;
+  zero.network->shadowing.sigma_db = 0;
+  zero.network->shadowing.correlation_m = 3;
+  zero.network->shadowing.symmetric = false;
+  std::string plain_fingerprint, zero_fingerprint;
+  Summary(quiet, "sigma-plain", &plain_fingerprint);
+  const nlohmann::json z = Summary(zero, "sigma-zero", &zero_fingerprint);
+  EXPECT_EQ(zero_fingerprint, plain_fingerprint);
+  EXPECT_FALSE(z["network"]["channel"].contains("shadowing"));
+}
+
 // Radios on a line 10, 20, ... 150 m from a mote that broadcasts once a second, no routing (so
 // its frames are the only ones): with the default radio (16 dBm, log-distance exponent 3,
 // 46.6777 dB at 1 m) a frame arrives at the default floor (-91 dBm) at 102.6 m.

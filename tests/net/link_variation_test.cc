@@ -8,6 +8,7 @@
 #include <ns3/propagation-loss-model.h>
 #include <ns3/double.h>
 #include <ns3/rng-seed-manager.h>
+#include <ns3/simulator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -138,7 +139,8 @@ TEST(Shadowing, IsCorrelatedOverTheDecorrelationDistance) {
   }
 }
 
-// ns-3 nodes with mobility models, as the channel sees them.
+// ns-3 nodes with mobility models, as the channel sees them. Tests that make them end with
+// Simulator::Destroy, which empties ns-3's node list for the tests after them.
 struct Placed {
   ns3::Ptr<ns3::Node> node = ns3::CreateObject<ns3::Node>();
   ns3::Ptr<ns3::ConstantPositionMobilityModel> at = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
@@ -173,6 +175,7 @@ TEST(Shadowing, ARobotPassingAMoteSeesALinkThatFadesAndReturns) {
       for (std::size_t t = 0; t + lag < series.size(); t += 100) now.push_back(series[t]), later.push_back(series[t + lag]);
     EXPECT_NEAR(Correlation(now, later), std::exp(-lag * step / d), 0.07) << "frames apart: " << lag;
   }
+  ns3::Simulator::Destroy();
 }
 
 TEST(Fading, NakagamiWithMOneIsRayleighInPower) {
@@ -201,6 +204,7 @@ TEST(Fading, DrawsAsNs3sNakagamiModel) {
     for (int frame = 0; frame < 20000; ++frame) ours.push_back(fading.Draw(3, 4, frame));
     EXPECT_LT(TwoSampleKs(ours, Ns3NakagamiGains(m, 20000)), 0.02) << "m = " << m;
   }
+  ns3::Simulator::Destroy();
 }
 
 TEST(Fading, AFramesGainIsTheSameWhoeverAsksAndCappedAtItsQuantile) {

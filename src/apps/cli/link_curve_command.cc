@@ -22,6 +22,12 @@ struct LinkCurveArgs {
   bool force = false, quiet = false;
 };
 
+std::string Metres(double m) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g m", m);
+  return text;
+}
+
 // The folder is new, empty, or an earlier link curve's (replaced only with --force).
 void ClaimCurveFolder(const std::string& dir, bool force) {
   namespace fs = std::filesystem;
@@ -53,8 +59,17 @@ int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
       throw CLI::ValidationError("--along", "wants X0,Y0,X1,Y1: a line from one point towards another");
     a.options.along = {a.along[0], a.along[1], a.along[2], a.along[3]};
   }
+  const bool from_given = a.options.from > 0;
   sim::DefaultDistances(*sc.run.network, a.options);
-  if (a.options.from > a.options.to) throw CLI::ValidationError("--from", "is beyond --to");
+  if (a.options.from > a.options.to)
+    throw CLI::ValidationError(from_given ? "--from" : "--to",
+                               "the distances run from " + Metres(a.options.from) +
+                                   (from_given ? "" : " (one step, the default)") + " to " + Metres(a.options.to) +
+                                   ": the first is beyond the last");
+  if (sim::DistanceCount(a.options) > sim::kMostDistances)
+    throw CLI::ValidationError("--step", "asks for more than " + std::to_string(sim::kMostDistances) +
+                                             " distances from " + Metres(a.options.from) + " to " +
+                                             Metres(a.options.to) + ": take a longer step");
   const std::string dir = a.output.empty() ? "results/" + sc.run.name + "-link-curve" : a.output;
   ClaimCurveFolder(dir, a.force);
   if (!a.quiet)
@@ -115,7 +130,8 @@ Command AddLinkCurve(CLI::App& app) {
       ->delimiter(',')
       ->expected(4);
   cmd->add_option("-o,--output", a->output, "Folder for the results (default: results/<name>-link-curve)");
-  AddForce(cmd, a->force);
+  cmd->add_flag("--force", a->force,
+                "Replace an earlier link curve in the folder (a folder holding other files is refused)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing but errors");
   return {cmd, [a](hosting::Registry& registry) { return Measure(*a, registry); }};
 }

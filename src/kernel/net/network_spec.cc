@@ -2,6 +2,12 @@
 
 namespace sanet::net {
 
+std::uint32_t Ns3Seed(std::uint64_t seed) {
+  constexpr std::uint64_t kLargest = 4294944442;  // ns-3's RngStream: seeds must be under m2 = 4294944443
+  const std::uint64_t mapped = seed % 4294967295u + 1;
+  return static_cast<std::uint32_t>(mapped <= kLargest ? mapped : mapped - kLargest);
+}
+
 std::vector<double> DataRates(WifiStandard standard) {
   switch (standard) {
     case WifiStandard::k80211b:

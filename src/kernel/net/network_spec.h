@@ -22,6 +22,10 @@ enum class Routing { kNone, kAodv, kOlsr, kDsdv, kDsr };
 constexpr std::uint16_t kAodvPort = 654, kOlsrPort = 698, kDsdvPort = 269;
 constexpr std::uint8_t kUdpProtocol = 17;  // IP protocol number
 
+// The seed ns-3 is given for a run's seed: seed mod (2^32 - 1) + 1, folded under ns-3's largest
+// (its RngStream refuses seeds of 4294944443 and more).
+std::uint32_t Ns3Seed(std::uint64_t seed);
+
 const char* RoutingName(Routing routing);
 const char* ChannelName(ChannelModel model);
 const char* StandardName(WifiStandard standard);

@@ -81,7 +81,7 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
   }
   ConfigureRadios();
   // One node at a time: a node may transmit with its own power.
-  for (NodeId id = 0; id < nodes_.GetN(); ++id) devices_.Add(InstallRadio(nodes_.Get(id), radios.at(id)));
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) devices_.Add(InstallRadio(id, radios.at(id)));
   InstallInternet();
   for (NodeId id = 0; id < nodes_.GetN(); ++id) OpenSocket(id);
   jitter_ = ns3::CreateObject<ns3::UniformRandomVariable>();
@@ -149,13 +149,14 @@ void WirelessNetwork::ConfigureRadios() {
 
 // Each node's own transmit power (and, with a hardware spread, its own noise figure) is set on the
 // helper just before its radio is made.
-ns3::NetDeviceContainer WirelessNetwork::InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio) {
-  const double power = TxPower(node->GetId(), radio);
+ns3::NetDeviceContainer WirelessNetwork::InstallRadio(NodeId id, const NodeRadio& radio) {
+  const ns3::Ptr<ns3::Node> node = nodes_.Get(id);
+  const double power = TxPower(id, radio);
   if (walls_) walls_->SetAntennaHeight(node->GetId(), radio.antenna_height);
   phy_.Set("TxPowerStart", ns3::DoubleValue(power));
   phy_.Set("TxPowerEnd", ns3::DoubleValue(power));
   if (spec_.spread.noise_figure_db > 0)
-    phy_.Set("RxNoiseFigure", ns3::DoubleValue(std::max(0.0, nominal_noise_figure_ + NoiseFigureOffsetDb(spec_, node->GetId()))));
+    phy_.Set("RxNoiseFigure", ns3::DoubleValue(std::max(0.0, nominal_noise_figure_ + NoiseFigureOffsetDb(spec_, id))));
   ns3::NetDeviceContainer device = wifi_.Install(phy_, mac_, node);
   CountFrames(ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0))->GetPhy());
   return device;
@@ -205,7 +206,7 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   next_sequence_.push_back(0);
   floods_seen_.emplace_back();
   radios_.push_back(radio);
-  const ns3::NetDeviceContainer device = InstallRadio(node, radio);
+  const ns3::NetDeviceContainer device = InstallRadio(id, radio);
   devices_.Add(device);
   internet_.Install(node);
   if (spec_.routing == Routing::kDsr) {

@@ -77,7 +77,7 @@ class WirelessNetwork : public Transport {
   double TxPower(NodeId id, const NodeRadio& radio) const;  // dBm, with the node's hardware spread
   void ApplySleep(NodeId node);  // brings the PHY to sleep_wanted_ when it can (SetSleep)
   void ConfigureRadios();
-  ns3::NetDeviceContainer InstallRadio(ns3::Ptr<ns3::Node> node, const NodeRadio& radio);
+  ns3::NetDeviceContainer InstallRadio(NodeId id, const NodeRadio& radio);
   void CountFrames(ns3::Ptr<ns3::WifiPhy> phy);
   void InstallInternet();
   void AssignStreams();

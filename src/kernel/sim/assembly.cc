@@ -54,7 +54,7 @@ Assembly::Assembly(const RunSpec& spec, hosting::Registry& registry, RobotDriver
   try {
     clock_ = std::make_unique<SimulationClock>();
     poses_ = std::make_unique<PosePipeline>([this](const std::vector<NodeId>& moved) { transport_->Moved(moved); });
-    ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(spec.seed % 4294967295u) + 1);
+    ns3::RngSeedManager::SetSeed(net::Ns3Seed(spec.seed));
     BuildBodies();
     BuildTransport();
     BuildNodes(registry);

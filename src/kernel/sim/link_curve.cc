@@ -26,8 +26,10 @@ constexpr double kStart = 0.01;                     // s: the first frame, once 
 constexpr double kRegionShare = 0.95;               // of links, for the regions' bounds
 constexpr double kHeight = 0.05;                    // m: radios stand where a default mote's centre is
 
-// What one set heard: per receiver (by distance), frames received, their strengths and delays.
+// What one set heard: the frames its sender put on the air, and per receiver (by distance)
+// the frames received, their strengths and delays.
 struct SetHeard {
+  int sent = 0;
   std::vector<int> received;
   std::vector<std::vector<double>> rssi_dbm, delay_ms;
   explicit SetHeard(std::size_t n) : received(n, 0), rssi_dbm(n), delay_ms(n) {}
@@ -35,7 +37,7 @@ struct SetHeard {
 
 std::vector<double> Distances(const LinkCurveOptions& o) {
   std::vector<double> out;
-  for (int i = 0; o.from + i * o.step <= o.to + 1e-9; ++i) out.push_back(o.from + i * o.step);
+  for (std::size_t i = 0; i < DistanceCount(o); ++i) out.push_back(o.from + i * o.step);
   return out;
 }
 
@@ -68,6 +70,15 @@ net::NetworkSpec SetNetwork(const RunSpec& spec, int set) {
   return network;
 }
 
+// Frames the sender put on the air: a sender asked for frames faster than they take to send
+// drops some from its queue, and those were never sent.
+void CountSent(net::WirelessNetwork& wireless, SetHeard& heard) {
+  ns3::DynamicCast<ns3::WifiNetDevice>(wireless.Device(0))
+      ->GetPhy()
+      ->TraceConnectWithoutContext("PhyTxBegin", ns3::Callback<void, ns3::Ptr<const ns3::Packet>, double>(
+                                                     [&heard](ns3::Ptr<const ns3::Packet>, double) { ++heard.sent; }));
+}
+
 void ListenToStrengths(net::WirelessNetwork& wireless, std::size_t receivers, SetHeard& heard) {
   for (std::size_t i = 0; i < receivers; ++i) {
     auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(wireless.Device(i + 1))->GetPhy();
@@ -84,7 +95,7 @@ void ListenToStrengths(net::WirelessNetwork& wireless, std::size_t receivers, Se
 
 SetHeard MeasureSet(const RunSpec& spec, const LinkCurveOptions& o, const std::vector<double>& distances, int set) {
   const net::NetworkSpec network = SetNetwork(spec, set);
-  ns3::RngSeedManager::SetSeed(static_cast<std::uint32_t>(network.seed % 4294967295u) + 1);
+  ns3::RngSeedManager::SetSeed(net::Ns3Seed(network.seed));
   const ns3::NodeContainer nodes = PlaceSet(o, distances);
   std::vector<std::string> names = {"sender"};
   for (std::size_t i = 0; i < distances.size(); ++i) names.push_back("receiver" + std::to_string(i));
@@ -97,6 +108,7 @@ SetHeard MeasureSet(const RunSpec& spec, const LinkCurveOptions& o, const std::v
       ++heard.received[to - 1];
       heard.delay_ms[to - 1].push_back((m.time_received - m.time_sent) * 1e3);
     });
+    CountSent(wireless, heard);
     ListenToStrengths(wireless, distances.size(), heard);
     const Bytes payload(o.size, 0);
     for (int f = 0; f < o.frames; ++f)
@@ -116,7 +128,7 @@ Quartiles QuartilesOf(const std::vector<double>& samples) {
 }
 
 // Each distance's row from every set's record of it.
-std::vector<LinkCurveRow> Rows(const std::vector<double>& distances, const std::vector<SetHeard>& sets, int frames,
+std::vector<LinkCurveRow> Rows(const std::vector<double>& distances, const std::vector<SetHeard>& sets,
                                const net::NetworkSpec& network) {
   std::vector<LinkCurveRow> rows;
   for (std::size_t i = 0; i < distances.size(); ++i) {
@@ -125,8 +137,8 @@ std::vector<LinkCurveRow> Rows(const std::vector<double>& distances, const std::
     row.mean_dbm = MeanPower(network, distances[i]);
     std::vector<double> rssi, delay;
     for (const SetHeard& set : sets) {
-      const double prr = double(set.received[i]) / frames;
-      row.sent += frames;
+      const double prr = set.sent ? double(set.received[i]) / set.sent : 0;
+      row.sent += set.sent;
       row.received += set.received[i];
       row.share_90 += prr >= 0.9, row.share_50 += prr >= 0.5, row.share_10 += prr > 0.1;
       rssi.insert(rssi.end(), set.rssi_dbm[i].begin(), set.rssi_dbm[i].end());
@@ -141,6 +153,7 @@ std::vector<LinkCurveRow> Rows(const std::vector<double>& distances, const std::
 }
 
 void FindRegions(LinkCurve& curve) {
+  if (curve.sets_done == 0) return;  // stopped before the first set: nothing to say
   const auto& rows = curve.rows;
   for (const LinkCurveRow& row : rows) {
     if (row.share_90 < kRegionShare) break;
@@ -182,10 +195,17 @@ void DefaultDistances(const net::NetworkSpec& network, LinkCurveOptions& o) {
     const double middle = 0.5 * (near + far);
     (MeanPower(network, middle) >= target ? near : far) = middle;
   }
-  if (o.to <= 0) o.to = far;
+  const bool to_given = o.to > 0;
+  if (!to_given) o.to = far;
   if (o.step <= 0) o.step = trace::svg::NiceStep(o.to, 40);
   if (o.from <= 0) o.from = o.step;
-  o.to = std::ceil(o.to / o.step - 1e-9) * o.step;
+  if (!to_given) o.to = std::ceil(o.to / o.step - 1e-9) * o.step;  // a whole number of steps
+}
+
+std::size_t DistanceCount(const LinkCurveOptions& o) {
+  if (o.from > o.to) return 0;
+  const double count = std::floor((o.to - o.from) / o.step + 1e-9) + 1;
+  return count > kMostDistances ? kMostDistances + 1 : static_cast<std::size_t>(count);  // more: "too many"
 }
 
 LinkCurve MeasureLinkCurve(const RunSpec& spec, const LinkCurveOptions& o,
@@ -200,11 +220,11 @@ LinkCurve MeasureLinkCurve(const RunSpec& spec, const LinkCurveOptions& o,
     }
     sets.push_back(MeasureSet(spec, o, distances, set));
     for (std::size_t i = 0; i < distances.size(); ++i)
-      curve.links.push_back({set, distances[i], o.frames, sets.back().received[i]});
+      curve.links.push_back({set, distances[i], sets.back().sent, sets.back().received[i]});
     if (progress) progress(set + 1, o.sets);
   }
   curve.sets_done = static_cast<int>(sets.size());
-  curve.rows = Rows(distances, sets, o.frames, *spec.network);
+  curve.rows = Rows(distances, sets, *spec.network);
   FindRegions(curve);
   return curve;
 }

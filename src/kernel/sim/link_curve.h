@@ -52,7 +52,7 @@ struct LinkCurveRow {
 struct LinkRecord {
   int set = 0;
   double distance = 0;
-  int sent = 0, received = 0;
+  int sent = 0, received = 0;  // sent: the frames the set's sender put on the air
 };
 
 struct LinkCurve {
@@ -73,6 +73,10 @@ double MeanPower(const net::NetworkSpec& network, double distance);
 // shadowed 2.5 sigma up, on a radio 2.5 sigma stronger, in a frame faded less than 99 % of frames,
 // still arrives 3 dB under the detection threshold.
 void DefaultDistances(const net::NetworkSpec& network, LinkCurveOptions& options);
+constexpr std::size_t kMostDistances = 10000;
+// How many distances the options ask for (from, from + step, ... up to to); kMostDistances + 1
+// stands for any number over the most.
+std::size_t DistanceCount(const LinkCurveOptions& options);
 // Measures set by set; `progress(done, total)` after each, `stop()` asked between sets.
 LinkCurve MeasureLinkCurve(const RunSpec& spec, const LinkCurveOptions& options,
                            const std::function<void(int, int)>& progress, const std::function<bool()>& stop);

@@ -14,7 +14,7 @@ import tempfile
 import time
 import unittest
 
-from protocol_client import serve
+from protocol_client import Wss, serve
 
 SANET = sys.argv.pop(1)
 TX_POWER = 5
@@ -43,17 +43,6 @@ def position(name):
 def path_loss_dbm(a, b):
     (ax, ay), (bx, by) = position(a), position(b)
     return TX_POWER - 46.6777 - 30 * math.log10(math.hypot(ax - bx, ay - by))
-
-
-class Wss:
-    def __init__(self, port):
-        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
-        self.file = self.sock.makefile("rwb")
-
-    def ask(self, line):
-        self.file.write(line.encode() + b"\r\n")
-        self.file.flush()
-        return self.file.readline().decode().strip()
 
 
 def strength(answer):

@@ -47,6 +47,19 @@ class Client:
         self.sock.close()
 
 
+class Wss:
+    """A WSS control connection."""
+
+    def __init__(self, port):
+        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
+        self.file = self.sock.makefile("rwb")
+
+    def ask(self, line):
+        self.file.write(line.encode() + b"\r\n")
+        self.file.flush()
+        return self.file.readline().decode().strip()
+
+
 def field(line, key):
     m = re.search(r"\{" + key + r" ([^}]*)\}", line)
     return m.group(1) if m else None

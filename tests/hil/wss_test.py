@@ -16,7 +16,7 @@ import time
 import unittest
 import warnings
 
-from protocol_client import Client, field, serve
+from protocol_client import Client, Wss, field, serve
 
 SANET = sys.argv.pop(1)
 TX_POWER = 0
@@ -38,19 +38,6 @@ nodes:
 
 def model_dbm(distance):
     return TX_POWER - 46.6777 - 30 * math.log10(distance)
-
-
-class Wss:
-    """A WSS control connection."""
-
-    def __init__(self, port):
-        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
-        self.file = self.sock.makefile("rwb")
-
-    def ask(self, line):
-        self.file.write(line.encode() + b"\r\n")
-        self.file.flush()
-        return self.file.readline().decode().strip()
 
 
 def echo_server():

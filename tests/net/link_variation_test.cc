@@ -4,9 +4,9 @@
 // per node; and the loss models give ns-3 channels exactly those values.
 #include <gtest/gtest.h>
 #include <ns3/constant-position-mobility-model.h>
+#include <ns3/double.h>
 #include <ns3/node.h>
 #include <ns3/propagation-loss-model.h>
-#include <ns3/double.h>
 #include <ns3/rng-seed-manager.h>
 #include <ns3/simulator.h>
 
@@ -85,7 +85,8 @@ constexpr int kLinks = 4000;
 TEST(Shadowing, IsGaussianWithItsSigmaAcrossLinksAndClipped) {
   const ShadowingField field(7, Sigma(6));
   std::vector<double> gains;
-  for (std::uint32_t link = 0; link < kLinks; ++link) gains.push_back(field.GainDb(2 * link, 3, 4, 2 * link + 1, 20, -5));
+  for (std::uint32_t link = 0; link < kLinks; ++link)
+    gains.push_back(field.GainDb(2 * link, 3, 4, 2 * link + 1, 20, -5));
   EXPECT_NEAR(Mean(gains), 0, 0.25);
   EXPECT_NEAR(Deviation(gains), 6, 0.25);
   EXPECT_LT(KsDistance(gains, [](double x) { return NormalCdf(x / 6); }), 0.025);
@@ -172,7 +173,8 @@ TEST(Shadowing, ARobotPassingAMoteSeesALinkThatFadesAndReturns) {
   for (int lag : {1, 10, 50, 100}) {
     std::vector<double> now, later;
     for (const auto& series : strength)
-      for (std::size_t t = 0; t + lag < series.size(); t += 100) now.push_back(series[t]), later.push_back(series[t + lag]);
+      for (std::size_t t = 0; t + lag < series.size(); t += 100)
+        now.push_back(series[t]), later.push_back(series[t + lag]);
     EXPECT_NEAR(Correlation(now, later), std::exp(-lag * step / d), 0.07) << "frames apart: " << lag;
   }
   ns3::Simulator::Destroy();

@@ -36,14 +36,17 @@ void ClaimCurveFolder(const std::string& dir, bool force) {
   if (!fs::exists(fs::path(dir) / "link_curve.json"))
     throw CLI::ValidationError("--output", dir + " holds other files than a link curve's: give another folder");
   if (!force)
-    throw CLI::ValidationError("--output", dir + " holds an earlier link curve: --force replaces it, or give another folder");
+    throw CLI::ValidationError("--output",
+                               dir + " holds an earlier link curve: --force replaces it, or give another folder");
 }
 
 void PrintCurve(const sim::LinkCurve& curve, const std::string& dir) {
   std::printf("  %-10s %-9s %-6s %-8s %-8s\n", "distance", "mean dBm", "PRR", ">=0.9", ">0.1");
   for (const sim::LinkCurveRow& r : curve.rows)
     std::printf("  %7.1f m %9.1f %6.3f %8.2f %8.2f\n", r.distance, r.mean_dbm, r.Prr(), r.share_90, r.share_10);
-  auto bound = [](const std::optional<double>& v) { return v ? std::to_string(*v).substr(0, std::to_string(*v).find('.') + 2) + " m" : std::string("-"); };
+  auto bound = [](const std::optional<double>& v) {
+    return v ? std::to_string(*v).substr(0, std::to_string(*v).find('.') + 2) + " m" : std::string("-");
+  };
   std::printf("  connected up to %s, disconnected from %s (95 %% of links)", bound(curve.connected_to).c_str(),
               bound(curve.disconnected_from).c_str());
   if (curve.p50_dbm) std::printf("; half the frames arrive at a mean of %.1f dBm", *curve.p50_dbm);
@@ -52,7 +55,8 @@ void PrintCurve(const sim::LinkCurve& curve, const std::string& dir) {
 
 int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
   scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
-  if (!sc.run.network) throw CLI::ValidationError(a.file + ": the scenario has no `network`: there is no radio to measure");
+  if (!sc.run.network)
+    throw CLI::ValidationError(a.file + ": the scenario has no `network`: there is no radio to measure");
   if (a.seed) sc.run.seed = *a.seed;
   if (!a.along.empty()) {
     if (a.along.size() != 4 || (a.along[0] == a.along[2] && a.along[1] == a.along[3]))
@@ -62,10 +66,10 @@ int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
   const bool from_given = a.options.from > 0;
   sim::DefaultDistances(*sc.run.network, a.options);
   if (a.options.from > a.options.to)
-    throw CLI::ValidationError(from_given ? "--from" : "--to",
-                               "the distances run from " + Metres(a.options.from) +
-                                   (from_given ? "" : " (one step, the default)") + " to " + Metres(a.options.to) +
-                                   ": the first is beyond the last");
+    throw CLI::ValidationError(from_given ? "--from" : "--to", "the distances run from " + Metres(a.options.from) +
+                                                                   (from_given ? "" : " (one step, the default)") +
+                                                                   " to " + Metres(a.options.to) +
+                                                                   ": the first is beyond the last");
   if (sim::DistanceCount(a.options) > sim::kMostDistances)
     throw CLI::ValidationError("--step", "asks for more than " + std::to_string(sim::kMostDistances) +
                                              " distances from " + Metres(a.options.from) + " to " +
@@ -87,7 +91,8 @@ int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
   if (show) std::fprintf(stderr, "\r\033[K");
   sim::WriteLinkCurve(curve, sc.run, a.options, dir);
   if (curve.interrupted) {
-    std::fprintf(stderr, "sanet: %s after %d of %d links per distance; what was measured is in %s/ (status: interrupted)\n",
+    std::fprintf(stderr,
+                 "sanet: %s after %d of %d links per distance; what was measured is in %s/ (status: interrupted)\n",
                  InterruptReason().c_str(), curve.sets_done, a.options.sets, dir.c_str());
     return 128 + InterruptSignal();
   }
@@ -106,7 +111,8 @@ Command AddLinkCurve(CLI::App& app) {
       "link_curve.json with the connected, transitional and disconnected regions (docs/network.md#link-curves)");
   AddScenario(cmd, a->file);
   AddSet(cmd, a->sets);
-  cmd->add_option("--seed", a->seed, "Seed instead of the scenario's (each link draws its own from it)")->check(kSeedText);
+  cmd->add_option("--seed", a->seed, "Seed instead of the scenario's (each link draws its own from it)")
+      ->check(kSeedText);
   cmd->add_option("--from", a->options.from, "First distance (m); default: one step")->check(CLI::PositiveNumber);
   cmd->add_option("--to", a->options.to,
                   "Last distance (m); default: where a link 2.5 sigma above the mean shadowing and spread, in a "
@@ -123,7 +129,9 @@ Command AddLinkCurve(CLI::App& app) {
   cmd->add_option("--interval", a->options.interval, "Seconds between a sender's frames")
       ->capture_default_str()
       ->check(CLI::Range(1e-4, 60.0));
-  cmd->add_option("--size", a->options.size, "Bytes of each message")->capture_default_str()->check(CLI::Range(0, 1400));
+  cmd->add_option("--size", a->options.size, "Bytes of each message")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1400));
   cmd->add_option("--along", a->along,
                   "X0,Y0,X1,Y1: the lines start at (X0, Y0) in the scenario's world and run towards (X1, Y1), "
                   "through its walls (default: free space)")

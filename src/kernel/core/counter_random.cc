@@ -16,7 +16,8 @@ std::uint64_t Mix(std::uint64_t z) {
 }  // namespace
 
 // Each part of the key is mixed in after a step of its own, so (1, 2) and (2, 1) differ.
-CounterRandom::CounterRandom(std::uint64_t seed, std::initializer_list<std::uint64_t> key) : state_(Mix(seed + kGolden)) {
+CounterRandom::CounterRandom(std::uint64_t seed, std::initializer_list<std::uint64_t> key)
+    : state_(Mix(seed + kGolden)) {
   for (std::uint64_t part : key) state_ = Mix(state_ + kGolden + Mix(part + kGolden));
 }
 

@@ -20,9 +20,7 @@ NakagamiFading::NakagamiFading(std::uint64_t seed, const Fading& spec)
   cap_db_ = GainQuantileDb(1 - kCapTail);
 }
 
-double NakagamiFading::GainQuantileDb(double q) const {
-  return 10 * std::log10(boost::math::gamma_p_inv(m_, q) / m_);
-}
+double NakagamiFading::GainQuantileDb(double q) const { return 10 * std::log10(boost::math::gamma_p_inv(m_, q) / m_); }
 
 double NakagamiFading::Draw(std::uint32_t from, std::uint32_t to, std::int64_t instant) const {
   CounterRandom random(seed_, {kFadingKey, from, to, static_cast<std::uint64_t>(instant)});

@@ -48,13 +48,13 @@ using FrameObserver = std::function<void(const FrameEvent&)>;
 
 // What the channel did: how many radios each frame was handed to.
 struct ChannelCounts {
-  std::string model;                                   // as in the scenario
-  std::optional<double> floor_dbm;                     // indexed only, as are the counts
-  std::uint64_t frames_sent = 0, frames_received = 0;  // by the PHYs; received: whole and decoded
-  std::uint64_t candidates = 0, handed = 0;            // radios the grid offered, receptions scheduled
-  std::size_t walls = 0;                               // obstacles that cost the radio something
-  std::uint64_t wall_losses = 0, wall_walks = 0;       // pair losses asked for; computed through the grid
-  bool shadowing = false;                              // with shadowing on:
+  std::string model;                                          // as in the scenario
+  std::optional<double> floor_dbm;                            // indexed only, as are the counts
+  std::uint64_t frames_sent = 0, frames_received = 0;         // by the PHYs; received: whole and decoded
+  std::uint64_t candidates = 0, handed = 0;                   // radios the grid offered, receptions scheduled
+  std::size_t walls = 0;                                      // obstacles that cost the radio something
+  std::uint64_t wall_losses = 0, wall_walks = 0;              // pair losses asked for; computed through the grid
+  bool shadowing = false;                                     // with shadowing on:
   std::uint64_t shadowing_asked = 0, shadowing_computed = 0;  // links' values asked for; computed afresh
 };
 

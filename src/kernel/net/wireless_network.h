@@ -75,7 +75,7 @@ class WirelessNetwork : public Transport {
  private:
   ns3::Ptr<ns3::WifiPhy> Phy(NodeId node) const;
   double TxPower(NodeId id, const NodeRadio& radio) const;  // dBm, with the node's hardware spread
-  void ApplySleep(NodeId node);  // brings the PHY to sleep_wanted_ when it can (SetSleep)
+  void ApplySleep(NodeId node);                             // brings the PHY to sleep_wanted_ when it can (SetSleep)
   void ConfigureRadios();
   ns3::NetDeviceContainer InstallRadio(NodeId id, const NodeRadio& radio);
   void CountFrames(ns3::Ptr<ns3::WifiPhy> phy);
@@ -117,8 +117,8 @@ class WirelessNetwork : public Transport {
   std::vector<std::unique_ptr<TapPort>> taps_;
   std::unique_ptr<FrameTrace> frames_;  // while someone traces the frames
   TapLedger tap_ledger_;
-  ns3::Ptr<IndexedWifiChannel> indexed_;  // with `channel: indexed`
-  ns3::Ptr<ObstacleLossModel> walls_;     // in the channel's loss chain, if any obstacle costs
+  ns3::Ptr<IndexedWifiChannel> indexed_;           // with `channel: indexed`
+  ns3::Ptr<ObstacleLossModel> walls_;              // in the channel's loss chain, if any obstacle costs
   ns3::Ptr<ns3::PropagationLossModel> mean_loss_;  // the channel's losses without fading
   ns3::Ptr<ShadowingLossModel> shadowing_;         // in mean_loss_, with shadowing on
   double nominal_noise_figure_ = 7;                // dB: WifiPhy's RxNoiseFigure (network.ns3 may set it)

@@ -7,14 +7,18 @@ using net::NetworkSpec;
 const Fields<NetworkSpec>& ShadowingFields() {
   static const Fields<NetworkSpec> fields = [] {
     Fields<NetworkSpec> f;
-    f.Number("sigma_db", [](NetworkSpec& n) -> double& { return n.shadowing.sigma_db; }, "dB", 0, 30,
-             "deviation of the log-normal shadowing (`0`: none)");
-    f.Number("correlation_m", [](NetworkSpec& n) -> double& { return n.shadowing.correlation_m; }, "m", 0, 1e6,
-             "decorrelation distance: moving an end by x keeps exp(-x / this) of the correlation", true);
-    f.Number("clip_sigmas", [](NetworkSpec& n) -> double& { return n.shadowing.clip_sigmas; }, "", 1, 10,
-             "values are clipped at this many sigmas either way");
-    f.Flag("symmetric", [](NetworkSpec& n) -> bool& { return n.shadowing.symmetric; },
-           "the same shadowing both ways of a link (`false`: each way drawn apart)");
+    f.Number(
+        "sigma_db", [](NetworkSpec& n) -> double& { return n.shadowing.sigma_db; }, "dB", 0, 30,
+        "deviation of the log-normal shadowing (`0`: none)");
+    f.Number(
+        "correlation_m", [](NetworkSpec& n) -> double& { return n.shadowing.correlation_m; }, "m", 0, 1e6,
+        "decorrelation distance: moving an end by x keeps exp(-x / this) of the correlation", true);
+    f.Number(
+        "clip_sigmas", [](NetworkSpec& n) -> double& { return n.shadowing.clip_sigmas; }, "", 1, 10,
+        "values are clipped at this many sigmas either way");
+    f.Flag(
+        "symmetric", [](NetworkSpec& n) -> bool& { return n.shadowing.symmetric; },
+        "the same shadowing both ways of a link (`false`: each way drawn apart)");
     return f;
   }();
   return fields;
@@ -23,13 +27,15 @@ const Fields<NetworkSpec>& ShadowingFields() {
 const Fields<NetworkSpec>& FadingFields() {
   static const Fields<NetworkSpec> fields = [] {
     Fields<NetworkSpec> f;
-    f.Choice<net::FadingModel>("model", [](NetworkSpec& n) -> net::FadingModel& { return n.fading.model; },
-                               {{"none", net::FadingModel::kNone},
-                                {"nakagami", net::FadingModel::kNakagami},
-                                {"rayleigh", net::FadingModel::kRayleigh}},
-                               "fading drawn per frame: Nakagami-m, or Rayleigh (Nakagami with m = 1)");
-    f.Number("m", [](NetworkSpec& n) -> double& { return n.fading.m; }, "", 0.5, 100,
-             "Nakagami's shape: 1 is Rayleigh, larger fades less");
+    f.Choice<net::FadingModel>(
+        "model", [](NetworkSpec& n) -> net::FadingModel& { return n.fading.model; },
+        {{"none", net::FadingModel::kNone},
+         {"nakagami", net::FadingModel::kNakagami},
+         {"rayleigh", net::FadingModel::kRayleigh}},
+        "fading drawn per frame: Nakagami-m, or Rayleigh (Nakagami with m = 1)");
+    f.Number(
+        "m", [](NetworkSpec& n) -> double& { return n.fading.m; }, "", 0.5, 100,
+        "Nakagami's shape: 1 is Rayleigh, larger fades less");
     return f;
   }();
   return fields;
@@ -38,24 +44,28 @@ const Fields<NetworkSpec>& FadingFields() {
 const Fields<NetworkSpec>& HardwareSpreadFields() {
   static const Fields<NetworkSpec> fields = [] {
     Fields<NetworkSpec> f;
-    f.Number("tx_power_db", [](NetworkSpec& n) -> double& { return n.spread.tx_power_db; }, "dB", 0, 20,
-             "deviation of each node's transmit power from its setting");
-    f.Number("noise_figure_db", [](NetworkSpec& n) -> double& { return n.spread.noise_figure_db; }, "dB", 0, 20,
-             "deviation of each node's receiver noise figure from ns-3's (7 dB)");
+    f.Number(
+        "tx_power_db", [](NetworkSpec& n) -> double& { return n.spread.tx_power_db; }, "dB", 0, 20,
+        "deviation of each node's transmit power from its setting");
+    f.Number(
+        "noise_figure_db", [](NetworkSpec& n) -> double& { return n.spread.noise_figure_db; }, "dB", 0, 20,
+        "deviation of each node's receiver noise figure from ns-3's (7 dB)");
     return f;
   }();
   return fields;
 }
 
 FieldInfo ShadowingEntry() {
-  return {"shadowing", "mapping", "", "none", "see [shadowing](#shadowing)",
-          "log-normal shadowing, correlated in space"};
+  return {
+      "shadowing", "mapping", "", "none", "see [shadowing](#shadowing)", "log-normal shadowing, correlated in space"};
 }
-FieldInfo FadingEntry() {
-  return {"fading", "mapping", "", "none", "see [fading](#fading)", "fading per frame"};
-}
+FieldInfo FadingEntry() { return {"fading", "mapping", "", "none", "see [fading](#fading)", "fading per frame"}; }
 FieldInfo HardwareSpreadEntry() {
-  return {"hardware_spread", "mapping", "", "none", "see [hardware_spread](#hardware_spread)",
+  return {"hardware_spread",
+          "mapping",
+          "",
+          "none",
+          "see [hardware_spread](#hardware_spread)",
           "each radio's own transmit power and noise figure, drawn from the seed"};
 }
 

@@ -85,11 +85,9 @@ void ListenToStrengths(net::WirelessNetwork& wireless, std::size_t receivers, Se
     phy->TraceConnectWithoutContext(
         "MonitorSnifferRx",
         ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
-                      ns3::SignalNoiseDbm, uint16_t>([&heard, i](ns3::Ptr<const ns3::Packet>, uint16_t,
-                                                                 ns3::WifiTxVector, ns3::MpduInfo,
-                                                                 ns3::SignalNoiseDbm signal, uint16_t) {
-          heard.rssi_dbm[i].push_back(signal.signal);
-        }));
+                      ns3::SignalNoiseDbm, uint16_t>(
+            [&heard, i](ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
+                        ns3::SignalNoiseDbm signal, uint16_t) { heard.rssi_dbm[i].push_back(signal.signal); }));
   }
 }
 
@@ -112,9 +110,8 @@ SetHeard MeasureSet(const RunSpec& spec, const LinkCurveOptions& o, const std::v
     ListenToStrengths(wireless, distances.size(), heard);
     const Bytes payload(o.size, 0);
     for (int f = 0; f < o.frames; ++f)
-      ns3::Simulator::Schedule(ns3::Seconds(kStart + f * o.interval), [&wireless, &payload] {
-        wireless.Broadcast(0, payload);
-      });
+      ns3::Simulator::Schedule(ns3::Seconds(kStart + f * o.interval),
+                               [&wireless, &payload] { wireless.Broadcast(0, payload); });
     ns3::Simulator::Stop(ns3::Seconds(kStart + o.frames * o.interval + 1));
     ns3::Simulator::Run();
   }

@@ -27,11 +27,11 @@
 namespace sanet::sim {
 
 struct LinkCurveOptions {
-  double from = 0, to = 0, step = 0;  // m; 0: chosen from the radio (DefaultDistances)
-  int sets = 100;                     // links per distance
-  int frames = 50;                    // per link
-  double interval = 0.05;             // s between a sender's frames
-  int size = 64;                      // bytes of each message
+  double from = 0, to = 0, step = 0;           // m; 0: chosen from the radio (DefaultDistances)
+  int sets = 100;                              // links per distance
+  int frames = 50;                             // per link
+  double interval = 0.05;                      // s between a sender's frames
+  int size = 64;                               // bytes of each message
   std::optional<std::array<double, 4>> along;  // x0, y0, x1, y1: from (x0, y0) towards (x1, y1)
 };
 

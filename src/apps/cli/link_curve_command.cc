@@ -54,10 +54,11 @@ void PrintCurve(const sim::LinkCurve& curve, const std::string& dir) {
 }
 
 int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
-  scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
+  std::vector<std::string> sets = a.sets;
+  if (a.seed) sets.push_back("seed=" + std::to_string(*a.seed));  // as the scenario's own: scattered nodes follow it
+  scenario::Scenario sc = LoadChecked(a.file, sets, registry);
   if (!sc.run.network)
     throw CLI::ValidationError(a.file + ": the scenario has no `network`: there is no radio to measure");
-  if (a.seed) sc.run.seed = *a.seed;
   if (!a.along.empty()) {
     if (a.along.size() != 4 || (a.along[0] == a.along[2] && a.along[1] == a.along[3]))
       throw CLI::ValidationError("--along", "wants X0,Y0,X1,Y1: a line from one point towards another");

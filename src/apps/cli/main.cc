@@ -70,9 +70,14 @@ struct RunArgs {
   ViewArgs view;
 };
 
+// --seed as the scenario's own `seed`: what the loader draws from it (scattered nodes) follows.
+std::vector<std::string> WithSeed(std::vector<std::string> sets, const std::optional<std::uint64_t>& seed) {
+  if (seed) sets.push_back("seed=" + std::to_string(*seed));
+  return sets;
+}
+
 int Run(const RunArgs& args, hosting::Registry& registry) {
-  scenario::Scenario sc = LoadChecked(args.file, args.sets, registry);
-  if (args.seed) sc.run.seed = *args.seed;
+  scenario::Scenario sc = LoadChecked(args.file, WithSeed(args.sets, args.seed), registry);
   if (args.duration) sc.run.duration = *args.duration;
   if (args.threads) sc.run.threads = std::stoi(*args.threads);
   sc.run.isolate_controllers = args.isolate_controllers;

@@ -209,9 +209,9 @@ void Simulation::Load(const std::string& path, const py::dict& set, std::optiona
                       std::optional<double> duration) {
   std::vector<std::string> overrides;
   for (const auto& [key, value] : set) overrides.push_back(py::str(key).cast<std::string>() + "=" + YamlText(value));
+  if (seed) overrides.push_back("seed=" + std::to_string(*seed));  // scattered nodes follow it
   scenario_ = scenario::LoadScenario(path, overrides);
   scenario::CheckControllers(scenario_, registry_);
-  if (seed) scenario_.run.seed = *seed;
   if (duration) scenario_.run.duration = *duration;
   python_controllers_ = HasPythonControllers(scenario_.run);
   options_.warnings = scenario_.warnings;

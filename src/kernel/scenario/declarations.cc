@@ -893,12 +893,104 @@ const Fields<Keys>& NodeFields() {
   return fields;
 }
 
+namespace {
+
+// `region: {min: [x, y], max: [x, y]}` or `region: {polygon: [[x, y], ...]}`.
+void ReadScatterRegion(const Field& v, ScatterSettings& s) {
+  if (const auto polygon = v.Get("polygon")) {
+    v.ExpectKeys({"polygon"});
+    for (const Field& corner : polygon->Items()) s.region.polygon.push_back(ReadPoint(corner));
+    if (s.region.polygon.size() < 3) polygon->Fail("a polygon needs three corners or more");
+    s.region.min = s.region.max = s.region.polygon.front();
+    for (Vec2 p : s.region.polygon) {
+      s.region.min = {std::min(s.region.min.x, p.x), std::min(s.region.min.y, p.y)};
+      s.region.max = {std::max(s.region.max.x, p.x), std::max(s.region.max.y, p.y)};
+    }
+    if (s.region.Area() <= 0) polygon->Fail("its corners enclose no area");
+    return;
+  }
+  v.ExpectKeys({"min", "max"});
+  s.region.min = ReadPoint(v.Require("min"));
+  s.region.max = ReadPoint(v.Require("max"));
+  if (!(s.region.min.x < s.region.max.x && s.region.min.y < s.region.max.y))
+    v.Require("max").Fail("must be above and to the right of 'min'");
+}
+
+}  // namespace
+
+const Fields<ScatterSettings>& ScatterFields() {
+  static const Fields<ScatterSettings> fields = [] {
+    Fields<ScatterSettings> f;
+    f.Custom({"name", "text", "", kRequired, "letters, digits, `_`, `-`, `.`", "name prefix: nodes NAME0, NAME1, ..."},
+             [](const Field& v, ScatterSettings& s) { s.name = ReadName(v); }, Unprinted<ScatterSettings>());
+    f.Choice<ScatterDistribution>("distribution", Member(&ScatterSettings::distribution),
+                                  {{"uniform", ScatterDistribution::kUniform},
+                                   {"poisson", ScatterDistribution::kPoisson},
+                                   {"clustered", ScatterDistribution::kClustered}},
+                                  "`count` nodes uniformly; a Poisson number at `density`; or Thomas clusters");
+    f.Custom({"count", "whole number", "", "none", "[1, 100000]; uniform only", "how many nodes"},
+             [](const Field& v, ScatterSettings& s) { s.count = v.Integer(1, 100000); }, Unprinted<ScatterSettings>());
+    f.Custom({"density", "number", "nodes/m²", "none", "(0, 1000]; poisson only",
+              "mean nodes per square metre: the count is drawn, mean density × area"},
+             [](const Field& v, ScatterSettings& s) { s.density = v.NumberAbove(0, 1000); },
+             Unprinted<ScatterSettings>());
+    f.Custom({"region", "mapping `{min: [x, y], max: [x, y]}` or `{polygon: [[x, y], ...]}`", "m", kRequired,
+              "min below and left of max; a polygon of three corners or more", "where the nodes may stand"},
+             ReadScatterRegion, Unprinted<ScatterSettings>());
+    f.Number("min_separation", Member(&ScatterSettings::min_separation), "m", 0, 1e6,
+             "least distance between two of the item's nodes (their bodies never overlap in any case)");
+    f.Custom({"seed", "whole number", "", "the run's", "[0, 2^64)",
+              "draw the positions from this seed: the same deployment in every run"},
+             [](const Field& v, ScatterSettings& s) { s.seed = v.Unsigned(); }, Unprinted<ScatterSettings>());
+    const auto clustered = [&](const char* key, double ScatterSettings::*at, const char* unit, double max,
+                               const char* meaning) {
+      f.Custom({key, "number", unit, "none", "(0, " + ShortNumber(max) + "]; clustered only", meaning},
+               [=](const Field& v, ScatterSettings& s) { s.*at = v.NumberAbove(0, max); }, Unprinted<ScatterSettings>());
+    };
+    clustered("parent_density", &ScatterSettings::parent_density, "1/m²", 1e3, "cluster centres per square metre");
+    clustered("per_cluster", &ScatterSettings::per_cluster, "", 1e5, "mean nodes per cluster");
+    clustered("cluster_sigma", &ScatterSettings::cluster_sigma, "m", 1e6,
+              "deviation of a node's offset from its centre, each axis");
+    return f;
+  }();
+  return fields;
+}
+
+ScatterSettings ReadScatter(const Field& f) {
+  ScatterSettings s;
+  ScatterFields().Read(f, s);
+  using D = ScatterDistribution;
+  const std::pair<const char*, D> only[] = {{"count", D::kUniform},          {"density", D::kPoisson},
+                                            {"parent_density", D::kClustered}, {"per_cluster", D::kClustered},
+                                            {"cluster_sigma", D::kClustered}};
+  const char* const names[] = {"uniform", "poisson", "clustered"};
+  for (const auto& [key, distribution] : only) {
+    const auto given = f.Get(key);
+    if (given && s.distribution != distribution)
+      given->Fail(std::string("applies to `distribution: ") + names[static_cast<int>(distribution)] + "` only");
+    if (!given && s.distribution == distribution)
+      f.Fail(std::string("`distribution: ") + names[static_cast<int>(distribution)] + "` needs `" + key + "`");
+  }
+  return s;
+}
+
 const Fields<Keys>& GridItemFields() {
   static const Fields<Keys> fields = [] {
     Fields<Keys> f;
     Key(f, "grid", "mapping", kRequired, "see the table below");
     NodeKeys(f, {"model", "body", "sensors", "radio", "energy", "controller"},
              "as for a single node; shared by the grid's nodes");
+    return f;
+  }();
+  return fields;
+}
+
+const Fields<Keys>& ScatterItemFields() {
+  static const Fields<Keys> fields = [] {
+    Fields<Keys> f;
+    Key(f, "scatter", "mapping", kRequired, "see the table below");
+    NodeKeys(f, {"model", "body", "sensors", "radio", "energy", "controller"},
+             "as for a single node; shared by the scattered nodes");
     return f;
   }();
   return fields;
@@ -930,6 +1022,8 @@ std::vector<SectionTable> SectionTables() {
       {"nodes.node", NodeFields().Describe(Keys{})},
       {"nodes.grid_item", GridItemFields().Describe(Keys{})},
       {"nodes.grid", GridFields().Describe(GridSettings{})},
+      {"nodes.scatter_item", ScatterItemFields().Describe(Keys{})},
+      {"nodes.scatter", ScatterFields().Describe(ScatterSettings{})},
       {"radio", RadioFields().Describe(net::NodeRadio{})},
       {"energy", EnergyFields().Describe(energy::EnergySpec{})},
       {"energy.radio", RadioEnergyFields().Describe(energy::EnergySpec{})},

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scenario/fields.h"
+#include "scenario/scatter.h"
 #include "scenario/scenario_loader.h"
 
 namespace sanet::scenario {
@@ -72,6 +73,9 @@ struct EventSettings {
 const Fields<BoxSettings>& BoxFields();
 const Fields<WallSettings>& WallFields();
 const Fields<GridSettings>& GridFields();
+// A scatter item's `scatter` (scenario/scatter.h); ReadScatter checks what no single key can.
+const Fields<ScatterSettings>& ScatterFields();
+ScatterSettings ReadScatter(const Field& f);
 const Fields<EventSettings>& EventFields();
 // The top level: name, seed and duration are read here; the sections by their own code, in the
 // order declared (network before nodes, nodes before events).
@@ -80,6 +84,7 @@ const Fields<Scenario>& TopLevelFields();
 struct Keys {};
 const Fields<Keys>& NodeFields();
 const Fields<Keys>& GridItemFields();
+const Fields<Keys>& ScatterItemFields();
 const Fields<Keys>& SpawnClassFields();
 
 // Names keep to letters, digits, '_', '-' and '.': they end up in CSV files and folder names.

@@ -21,12 +21,14 @@ bool IsIndex(const std::string& s) {
   return !s.empty() && s.size() < 9 && s.find_first_not_of("0123456789") == std::string::npos;
 }
 
-// The name an item of a list goes by: its `name`, or its grid's.
+// The name an item of a list goes by: its `name`, or its grid's or scatter's.
 std::string ItemName(const YAML::Node& item) {
   if (!item.IsMap()) return "";
   if (item["name"] && item["name"].IsScalar()) return item["name"].Scalar();
-  const YAML::Node grid = item["grid"];
-  if (grid && grid.IsMap() && grid["name"] && grid["name"].IsScalar()) return grid["name"].Scalar();
+  for (const char* group : {"grid", "scatter"}) {
+    const YAML::Node named = item[group];
+    if (named && named.IsMap() && named["name"] && named["name"].IsScalar()) return named["name"].Scalar();
+  }
   return "";
 }
 

@@ -71,6 +71,36 @@ void CheckPlacement(const std::string& file, const sim::RunSpec& run, const std:
   CheckPairs(file, run, places);
 }
 
+namespace {
+long long CellKey(long long cx, long long cy) { return cx * 4000003LL + cy; }
+}  // namespace
+
+StartingRoom::StartingRoom(const sim::RunSpec& run) : run_(run) {
+  for (const sim::NodeSpec& n : run.nodes) widest_ = std::max(widest_, robots::InscribedRadius(n.model));
+  cell_ = std::max(2 * widest_, 1e-3);
+  for (NodeId id = 0; id < run.nodes.size(); ++id)
+    cells_[CellKey(Cell(run.nodes[id].pose.x), Cell(run.nodes[id].pose.y))].push_back(id);
+}
+
+long long StartingRoom::Cell(double v) const { return std::llround(std::floor(v / cell_)); }
+
+bool StartingRoom::Fits(Vec2 p, double radius) const {
+  for (const sim::Obstacle& o : run_.obstacles)
+    if (physics::DistanceFromAbove(p, o.box) < radius) return false;
+  const long long reach = static_cast<long long>(std::ceil((radius + widest_) / cell_));
+  const long long cx = Cell(p.x), cy = Cell(p.y);
+  for (long long dx = -reach; dx <= reach; ++dx)
+    for (long long dy = -reach; dy <= reach; ++dy) {
+      const auto near = cells_.find(CellKey(cx + dx, cy + dy));
+      if (near == cells_.end()) continue;
+      for (NodeId other : near->second) {
+        const sim::NodeSpec& n = run_.nodes[other];
+        if (Norm(n.pose.position() - p) < radius + robots::InscribedRadius(n.model)) return false;
+      }
+    }
+  return true;
+}
+
 std::vector<std::string> FieldWarnings(const std::string& file, const sim::RunSpec& run,
                                        const std::vector<NodePlace>& places) {
   // Centred on the nodes' median, not their middle, so that one node far away is the one named.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "sim/run_spec.h"
@@ -23,6 +24,20 @@ struct NodePlace {
 // obstacle), naming the other with its line. `obstacle_lines[i]` is world.obstacles[i]'s line.
 void CheckPlacement(const std::string& file, const sim::RunSpec& run, const std::vector<NodePlace>& places,
                     const std::vector<int>& obstacle_lines);
+
+// Room for one more body among a run's obstacles and the nodes it has so far: where a scatter
+// item may put a node, by the same rule CheckPlacement holds them to.
+class StartingRoom {
+ public:
+  explicit StartingRoom(const sim::RunSpec& run);
+  bool Fits(Vec2 p, double radius) const;
+
+ private:
+  long long Cell(double v) const;
+  const sim::RunSpec& run_;
+  double widest_ = 0, cell_ = 1;
+  std::unordered_map<long long, std::vector<NodeId>> cells_;
+};
 
 // Nodes far outside the field (the rectangle of world.size centred on the middle of the nodes
 // and obstacles, which plots and spawning use): one warning, naming the farthest.

@@ -8,6 +8,8 @@
 #include <functional>
 #include <map>
 
+#include "core/metres.h"
+#include "robots/node_model.h"
 #include "scenario/declarations.h"
 #include "scenario/energy_fields.h"
 #include "scenario/placement.h"
@@ -225,12 +227,44 @@ void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& l
                t.controller_line);
 }
 
+// `scatter: {name, distribution, count | density | cluster keys, region, min_separation, seed}`:
+// nodes NAME0, NAME1, ... where the seed puts them (scenario/scatter.h), clear of the obstacles
+// and of the nodes listed before the item.
+void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, NodeList& list) {
+  n.ExpectKeys(ScatterItemFields().Keys());
+  const Field item = n.Require("scatter");
+  const ScatterSettings s = ReadScatter(item);
+  CheckPlace(item.Require("region"), s.region.min);
+  CheckPlace(item.Require("region"), s.region.max);
+  const NodeTemplate t = ReadNodeTemplate(n, dir, sc.run.network.has_value());
+  const double radius = robots::InscribedRadius(t.model);
+  const StartingRoom room(sc.run);
+  const Scattered drawn = Scatter(s, sc.run.seed, 2 * radius, [&](Vec2 p) { return room.Fits(p, radius); });
+  if (!drawn.complete)
+    item.Fail("only " + std::to_string(drawn.positions.size()) + " of " + std::to_string(drawn.wanted) +
+              " nodes fitted: after " + std::to_string(kScatterAttempts) +
+              " draws no place in the region was clear of the obstacles, the nodes listed before and " +
+              Metres(std::max(s.min_separation, 2 * radius)) + " m from the others; ask for fewer or widen the region");
+  if (static_cast<long long>(drawn.positions.size()) > kMaxNodes)
+    item.Fail("drew " + std::to_string(drawn.positions.size()) + " nodes; a scenario holds at most " +
+              std::to_string(kMaxNodes));
+  for (std::size_t i = 0; i < drawn.positions.size(); ++i)
+    list.Add(item.Require("name"), item,
+             {s.name + std::to_string(i), t.model, {drawn.positions[i].x, drawn.positions[i].y, 0}, t.controller,
+              t.radio, t.energy},
+             t.controller_line);
+}
+
 std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
   sim::RunSpec& run = sc.run;
   NodeList list(sc);
   for (const Field& n : nodes.Items()) {
     if (n.IsMap() && n.Get("grid")) {
       ReadGrid(n, dir, run.network.has_value(), list);
+      continue;
+    }
+    if (n.IsMap() && n.Get("scatter")) {
+      ReadScattered(n, dir, sc, list);
       continue;
     }
     n.ExpectKeys(NodeFields().Keys());

@@ -17,9 +17,9 @@ bool SameClass(const std::string& a, const std::string& b) {
 std::vector<SpawnClass> DefaultSpawnClasses() {
   std::vector<SpawnClass> classes;
   for (const char* pioneer : {"USARBot.P2DX", "USARBot.P2AT", "USARBot.P3AT"})
-    classes.push_back({pioneer, sensors::DefaultModel(*robots::FindModel("diffdrive")), {}});
-  classes.push_back({"sanet.DiffDrive", sensors::DefaultModel(*robots::FindModel("diffdrive")), {}});
-  classes.push_back({"sanet.Omni3", sensors::DefaultModel(*robots::FindModel("omni3")), {}});
+    classes.push_back({pioneer, sensors::DefaultModel(*robots::FindModel("diffdrive")), {}, std::nullopt});
+  classes.push_back({"sanet.DiffDrive", sensors::DefaultModel(*robots::FindModel("diffdrive")), {}, std::nullopt});
+  classes.push_back({"sanet.Omni3", sensors::DefaultModel(*robots::FindModel("omni3")), {}, std::nullopt});
   return classes;
 }
 

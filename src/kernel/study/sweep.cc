@@ -130,10 +130,13 @@ std::vector<PreparedRun> Prepare(const SweepSettings& s, hosting::Registry& regi
   std::string checked;  // the combination loaded last: seeds share it
   scenario::Scenario sc;
   for (const RunPoint& point : Grid(s.parameters, s.seeds)) {
-    const std::string combination = nlohmann::json(point.values).dump();
+    // Loaded again for every seed: what the loader draws from the seed (scattered nodes) differs.
+    const std::string combination = nlohmann::json(point.values).dump() + " seed " + std::to_string(point.seed);
     if (combination != checked) {
       try {
-        sc = scenario::LoadScenario(s.scenario, AllSets(s, point));
+        std::vector<std::string> sets = AllSets(s, point);
+        sets.push_back("seed=" + std::to_string(point.seed));
+        sc = scenario::LoadScenario(s.scenario, sets);
         scenario::CheckControllers(sc, registry);
       } catch (const scenario::ScenarioError& e) {
         RefuseValue(e, point);

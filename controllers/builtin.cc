@@ -14,6 +14,9 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(FormationLeaderInfo());
   registry.Add(FormationFollowerInfo());
   registry.Add(FlockInfo());
+  registry.Add(RandomWaypointInfo());
+  registry.Add(TourInfo());
+  registry.Add(LawnmowerInfo());
 }
 
 }  // namespace sanet::controllers

@@ -14,5 +14,8 @@ ControllerInfo HelpRequestRobotInfo();
 ControllerInfo FormationLeaderInfo();
 ControllerInfo FormationFollowerInfo();
 ControllerInfo FlockInfo();
+ControllerInfo RandomWaypointInfo();
+ControllerInfo TourInfo();
+ControllerInfo LawnmowerInfo();
 
 }  // namespace sanet::controllers

@@ -28,6 +28,7 @@ class Pilot {
   // at time `now` (s).
   Twist2D Steer(double now, const Pose2D& pose, Vec2 goal, const RangeScan* scan, bool holonomic);
   bool following() const { return mode_ == Mode::kFollow; }
+  void SetSpeed(double speed) { s_.speed = speed; }
   void Reset() { mode_ = Mode::kGoal; }
 
  private:

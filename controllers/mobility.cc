@@ -15,7 +15,8 @@ namespace {
 // The rectangle `region: [[x0, y0], [x1, y1]]` (two opposite corners).
 std::pair<Vec2, Vec2> ReadRectangle(const Params& p, const char* key) {
   const auto corners = p.Table(key, 2, {});
-  if (corners.size() != 2) throw ParamError(key, p.Line(key), "parameter '" + std::string(key) + "' must be [[x0, y0], [x1, y1]]");
+  if (corners.size() != 2)
+    throw ParamError(key, p.Line(key), "parameter '" + std::string(key) + "' must be [[x0, y0], [x1, y1]]");
   const Vec2 low{std::min(corners[0][0], corners[1][0]), std::min(corners[0][1], corners[1][1])};
   const Vec2 high{std::max(corners[0][0], corners[1][0]), std::max(corners[0][1], corners[1][1])};
   if (low.x == high.x || low.y == high.y)
@@ -26,7 +27,8 @@ std::pair<Vec2, Vec2> ReadRectangle(const Params& p, const char* key) {
 // Drives through a list of points with the Pilot, one after the other.
 class Route {
  public:
-  explicit Route(const Params& p) : pilot_(PilotSettings::FromParams(p)), tolerance_(p.Number("tolerance", 0.3, 0.01)) {}
+  explicit Route(const Params& p)
+      : pilot_(PilotSettings::FromParams(p)), tolerance_(p.Number("tolerance", 0.3, 0.01)) {}
   // Steers towards `goal`; true once the robot is within the tolerance of it.
   bool Steer(Node& node, const Pose2D& pose, Vec2 goal) {
     if (Norm(goal - pose.position()) < tolerance_) {
@@ -57,7 +59,8 @@ class RandomWaypoint : public Controller {
         speed_min_(p.Number("speed_min", 0.3, 0.01, 10)),
         speed_max_(p.Number("speed_max", 1.0, 0.01, 10)),
         pause_(p.Number("pause", 0, 0)) {
-    if (speed_max_ < speed_min_) throw ParamError("speed_max", p.Line("speed_max"), "parameter 'speed_max' is under speed_min");
+    if (speed_max_ < speed_min_)
+      throw ParamError("speed_max", p.Line("speed_max"), "parameter 'speed_max' is under speed_min");
   }
 
   void ControlStep(Node& node) override {

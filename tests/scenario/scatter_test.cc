@@ -1,6 +1,8 @@
 // Scattered nodes: drawn from the run's seed (or the item's own), in their region, apart, out of
 // obstacles; Poisson counts with Poisson's mean and variance; Thomas clusters; an impossible
 // request refused at its line.
+#include "scenario/scatter.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <fstream>
 #include <set>
 
-#include "scenario/scatter.h"
 #include "scenario/scenario_loader.h"
 
 namespace sanet {

@@ -60,8 +60,10 @@ int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
   if (!sc.run.network)
     throw CLI::ValidationError(a.file + ": the scenario has no `network`: there is no radio to measure");
   if (!a.along.empty()) {
-    if (a.along.size() != 4 || (a.along[0] == a.along[2] && a.along[1] == a.along[3]))
+    if (a.along.size() != 4)
       throw CLI::ValidationError("--along", "wants X0,Y0,X1,Y1: a line from one point towards another");
+    if (a.along[0] == a.along[2] && a.along[1] == a.along[3])
+      throw CLI::ValidationError("--along", "its two points are the same: no direction to lay the line in");
     a.options.along = {a.along[0], a.along[1], a.along[2], a.along[3]};
   }
   const bool from_given = a.options.from > 0;
@@ -114,13 +116,13 @@ Command AddLinkCurve(CLI::App& app) {
   AddSet(cmd, a->sets);
   cmd->add_option("--seed", a->seed, "Seed instead of the scenario's (each link draws its own from it)")
       ->check(kSeedText);
-  cmd->add_option("--from", a->options.from, "First distance (m); default: one step")->check(CLI::PositiveNumber);
+  cmd->add_option("--from", a->options.from, "First distance (m); default: one step")->check(CLI::Range(1e-3, 1e7));
   cmd->add_option("--to", a->options.to,
                   "Last distance (m); default: where a link 2.5 sigma above the mean shadowing and spread, in a "
                   "frame faded less than 99 % of frames, still arrives 3 dB under rx_threshold")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-3, 1e7));
   cmd->add_option("--step", a->options.step, "Between distances (m); default: about 40 distances")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-3, 1e7));
   cmd->add_option("--links", a->options.sets, "Independent links per distance")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));

@@ -79,7 +79,13 @@ struct NetworkSpec {
   ChannelModel channel = ChannelModel::kIndexed;
   std::optional<double> channel_floor;               // dBm; unset: kFloorBelowThreshold under rx_threshold
   static constexpr double kFloorBelowThreshold = 9;  // dB: docs/network.md#the-indexed-channel
-  double ChannelFloor() const { return channel_floor.value_or(rx_threshold - kFloorBelowThreshold); }
+  // With fading, frames from far radios land under the floor and over the noise often enough to
+  // matter: the floor goes down to ns-3's default sensitivity at the default threshold (exact).
+  static constexpr double kFloorBelowThresholdFaded = 19;
+  double ChannelFloor() const {
+    const double below = fading.model == FadingModel::kNone ? kFloorBelowThreshold : kFloorBelowThresholdFaded;
+    return channel_floor.value_or(rx_threshold - below);
+  }
 
   Routing routing = Routing::kAodv;
   bool aodv_hello = true;       // AODV hello messages (neighbour sensing)

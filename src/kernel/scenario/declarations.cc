@@ -332,8 +332,8 @@ const Fields<net::NetworkSpec>& ChannelFields() {
                                 "`indexed`: only radios where a frame arrives at `floor` or stronger get it; "
                                 "`yans`: every radio (ns-3's YansWifiChannel)");
     f.Custom(
-        {"floor", "number", "dBm", "9 dB under `rx_threshold` (`-91`)", "[-200, `rx_threshold`]; indexed only",
-         "frames arriving weaker are not handed to the radio"},
+        {"floor", "number", "dBm", "9 dB under `rx_threshold` (`-91`); with fading 19 dB (`-101`)",
+         "[-200, `rx_threshold`]; indexed only", "frames arriving weaker are not handed to the radio"},
         [](const Field& v, NetworkSpec& n) { n.channel_floor = v.Number(-200, 0); },
         [](const NetworkSpec& n) { return NumberNode(n.ChannelFloor()); });
     return f;
@@ -921,31 +921,35 @@ void ReadScatterRegion(const Field& v, ScatterSettings& s) {
 const Fields<ScatterSettings>& ScatterFields() {
   static const Fields<ScatterSettings> fields = [] {
     Fields<ScatterSettings> f;
-    f.Custom({"name", "text", "", kRequired, "letters, digits, `_`, `-`, `.`", "name prefix: nodes NAME0, NAME1, ..."},
-             [](const Field& v, ScatterSettings& s) { s.name = ReadName(v); }, Unprinted<ScatterSettings>());
+    f.Custom(
+        {"name", "text", "", kRequired, "letters, digits, `_`, `-`, `.`", "name prefix: nodes NAME0, NAME1, ..."},
+        [](const Field& v, ScatterSettings& s) { s.name = ReadName(v); }, Unprinted<ScatterSettings>());
     f.Choice<ScatterDistribution>("distribution", Member(&ScatterSettings::distribution),
                                   {{"uniform", ScatterDistribution::kUniform},
                                    {"poisson", ScatterDistribution::kPoisson},
                                    {"clustered", ScatterDistribution::kClustered}},
                                   "`count` nodes uniformly; a Poisson number at `density`; or Thomas clusters");
-    f.Custom({"count", "whole number", "", "none", "[1, 100000]; uniform only", "how many nodes"},
-             [](const Field& v, ScatterSettings& s) { s.count = v.Integer(1, 100000); }, Unprinted<ScatterSettings>());
-    f.Custom({"density", "number", "nodes/m²", "none", "(0, 1000]; poisson only",
-              "mean nodes per square metre: the count is drawn, mean density × area"},
-             [](const Field& v, ScatterSettings& s) { s.density = v.NumberAbove(0, 1000); },
-             Unprinted<ScatterSettings>());
+    f.Custom(
+        {"count", "whole number", "", "none", "[1, 100000]; uniform only", "how many nodes"},
+        [](const Field& v, ScatterSettings& s) { s.count = v.Integer(1, 100000); }, Unprinted<ScatterSettings>());
+    f.Custom(
+        {"density", "number", "nodes/m²", "none", "(0, 1000]; poisson only",
+         "mean nodes per square metre: the count is drawn, mean density × area"},
+        [](const Field& v, ScatterSettings& s) { s.density = v.NumberAbove(0, 1000); }, Unprinted<ScatterSettings>());
     f.Custom({"region", "mapping `{min: [x, y], max: [x, y]}` or `{polygon: [[x, y], ...]}`", "m", kRequired,
               "min below and left of max; a polygon of three corners or more", "where the nodes may stand"},
              ReadScatterRegion, Unprinted<ScatterSettings>());
     f.Number("min_separation", Member(&ScatterSettings::min_separation), "m", 0, 1e6,
              "least distance between two of the item's nodes (their bodies never overlap in any case)");
-    f.Custom({"seed", "whole number", "", "the run's", "[0, 2^64)",
-              "draw the positions from this seed: the same deployment in every run"},
-             [](const Field& v, ScatterSettings& s) { s.seed = v.Unsigned(); }, Unprinted<ScatterSettings>());
+    f.Custom(
+        {"seed", "whole number", "", "the run's", "[0, 2^64)",
+         "draw the positions from this seed: the same deployment in every run"},
+        [](const Field& v, ScatterSettings& s) { s.seed = v.Unsigned(); }, Unprinted<ScatterSettings>());
     const auto clustered = [&](const char* key, double ScatterSettings::*at, const char* unit, double max,
                                const char* meaning) {
-      f.Custom({key, "number", unit, "none", "(0, " + ShortNumber(max) + "]; clustered only", meaning},
-               [=](const Field& v, ScatterSettings& s) { s.*at = v.NumberAbove(0, max); }, Unprinted<ScatterSettings>());
+      f.Custom(
+          {key, "number", unit, "none", "(0, " + ShortNumber(max) + "]; clustered only", meaning},
+          [=](const Field& v, ScatterSettings& s) { s.*at = v.NumberAbove(0, max); }, Unprinted<ScatterSettings>());
     };
     clustered("parent_density", &ScatterSettings::parent_density, "1/m²", 1e3, "cluster centres per square metre");
     clustered("per_cluster", &ScatterSettings::per_cluster, "", 1e5, "mean nodes per cluster");
@@ -960,8 +964,10 @@ ScatterSettings ReadScatter(const Field& f) {
   ScatterSettings s;
   ScatterFields().Read(f, s);
   using D = ScatterDistribution;
-  const std::pair<const char*, D> only[] = {{"count", D::kUniform},          {"density", D::kPoisson},
-                                            {"parent_density", D::kClustered}, {"per_cluster", D::kClustered},
+  const std::pair<const char*, D> only[] = {{"count", D::kUniform},
+                                            {"density", D::kPoisson},
+                                            {"parent_density", D::kClustered},
+                                            {"per_cluster", D::kClustered},
                                             {"cluster_sigma", D::kClustered}};
   const char* const names[] = {"uniform", "poisson", "clustered"};
   for (const auto& [key, distribution] : only) {

@@ -69,7 +69,10 @@ FieldInfo HardwareSpreadEntry() {
           "each radio's own transmit power and noise figure, drawn from the seed"};
 }
 
-void ReadShadowing(const Field& f, NetworkSpec& n) { ShadowingFields().Read(f, n); }
+void ReadShadowing(const Field& f, NetworkSpec& n) {
+  ShadowingFields().Read(f, n);
+  f.Require("sigma_db");  // without it the other keys would silently do nothing
+}
 
 void ReadFading(const Field& f, NetworkSpec& n) {
   FadingFields().Read(f, n);

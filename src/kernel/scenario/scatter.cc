@@ -73,7 +73,8 @@ Scattered ScatterClustered(const ScatterSettings& s, RandomStream& random, Spaci
   const double edge = kEdgeSigmas * s.cluster_sigma;
   wide.min = {wide.min.x - edge, wide.min.y - edge};
   wide.max = {wide.max.x + edge, wide.max.y + edge};
-  const long long parents = PoissonDraw(random, s.parent_density * (wide.max.x - wide.min.x) * (wide.max.y - wide.min.y));
+  const long long parents =
+      PoissonDraw(random, s.parent_density * (wide.max.x - wide.min.x) * (wide.max.y - wide.min.y));
   Scattered out;
   for (long long c = 0; c < parents; ++c) {
     const Vec2 centre = UniformIn(wide, random);
@@ -86,8 +87,8 @@ Scattered ScatterClustered(const ScatterSettings& s, RandomStream& random, Spaci
       if (!s.region.Contains(*first)) continue;  // outside the window: not deployed
       ++out.wanted;
       // Where the process put it, or, if that spot is taken, elsewhere around the same centre.
-      const auto p = Place(
-          s, spacing, fits, [&] { return first ? std::exchange(first, std::nullopt).value() : around(); });
+      const auto p =
+          Place(s, spacing, fits, [&] { return first ? std::exchange(first, std::nullopt).value() : around(); });
       if (!p) return out.complete = false, out;
       out.positions.push_back(*p);
     }

@@ -35,17 +35,17 @@ struct ScatterSettings {
   std::optional<long long> count;  // uniform
   std::optional<double> density;   // poisson: nodes per m²
   ScatterRegion region;
-  double min_separation = 0;        // m between scattered nodes' positions
+  double min_separation = 0;          // m between scattered nodes' positions
   std::optional<std::uint64_t> seed;  // instead of the run's
-  double parent_density = 0;        // clustered: cluster centres per m²
-  double per_cluster = 0;           // clustered: mean nodes per cluster
-  double cluster_sigma = 0;         // clustered: m, each axis of a node's offset from its centre
+  double parent_density = 0;          // clustered: cluster centres per m²
+  double per_cluster = 0;             // clustered: mean nodes per cluster
+  double cluster_sigma = 0;           // clustered: m, each axis of a node's offset from its centre
 };
 
 struct Scattered {
   std::vector<Vec2> positions;
-  long long wanted = 0;     // what the distribution asked for (drawn, for poisson and clustered)
-  bool complete = true;     // false: a position could not be placed; `positions` holds those that fitted
+  long long wanted = 0;  // what the distribution asked for (drawn, for poisson and clustered)
+  bool complete = true;  // false: a position could not be placed; `positions` holds those that fitted
 };
 
 constexpr int kScatterAttempts = 1000;  // draws for one position before it is given up

@@ -250,8 +250,12 @@ void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, NodeList& 
               std::to_string(kMaxNodes));
   for (std::size_t i = 0; i < drawn.positions.size(); ++i)
     list.Add(item.Require("name"), item,
-             {s.name + std::to_string(i), t.model, {drawn.positions[i].x, drawn.positions[i].y, 0}, t.controller,
-              t.radio, t.energy},
+             {s.name + std::to_string(i),
+              t.model,
+              {drawn.positions[i].x, drawn.positions[i].y, 0},
+              t.controller,
+              t.radio,
+              t.energy},
              t.controller_line);
 }
 

@@ -22,6 +22,17 @@ std::string QuartileCells(const Quartiles& q) {
   return Number(q.q1) + "," + Number(q.median) + "," + Number(q.q3);
 }
 
+// What the figure's title says of the radio: power, shadowing, fading, spread.
+std::string RadioText(const net::NetworkSpec& n) {
+  std::string text = Number(n.tx_power) + " dBm";
+  if (n.shadowing.sigma_db > 0)
+    text += ", shadowing " + Number(n.shadowing.sigma_db) + " dB over " + Number(n.shadowing.correlation_m) + " m";
+  if (n.fading.model != net::FadingModel::kNone) text += ", Nakagami m = " + Number(n.fading.m);
+  if (n.spread.tx_power_db > 0 || n.spread.noise_figure_db > 0)
+    text += ", spread " + Number(n.spread.tx_power_db) + "/" + Number(n.spread.noise_figure_db) + " dB";
+  return text;
+}
+
 std::string CurveCsv(const LinkCurve& curve) {
   std::ostringstream csv;
   csv << "distance_m,mean_dbm,links,frames_sent,frames_received,prr,share_prr_ge_90,share_prr_ge_50,"
@@ -83,7 +94,8 @@ void WriteLinkCurve(const LinkCurve& curve, const RunSpec& spec, const LinkCurve
   std::filesystem::create_directories(folder);
   WriteFileAtomically(folder + "/link_curve.csv", CurveCsv(curve));
   WriteFileAtomically(folder + "/link_curve_links.csv", LinksCsv(curve));
-  WriteFileAtomically(folder + "/link_curve.svg", CurveSvg(curve, spec.name + ": link curve"));
+  WriteFileAtomically(folder + "/link_curve.svg",
+                      CurveSvg(curve, spec.name + ": link curve, " + RadioText(*spec.network)));
   WriteFileAtomically(folder + "/link_curve.json", Summary(curve, spec, options).dump(2) + "\n");
 }
 

@@ -22,12 +22,13 @@ std::string QuartileCells(const Quartiles& q) {
   return Number(q.q1) + "," + Number(q.median) + "," + Number(q.q3);
 }
 
-// What the figure's title says of the radio: power, shadowing, fading, spread.
+// What the figure's title says of the radio (the y axis says it is a link curve): power,
+// shadowing, fading, spread.
 std::string RadioText(const net::NetworkSpec& n) {
   std::string text = Number(n.tx_power) + " dBm";
   if (n.shadowing.sigma_db > 0)
-    text += ", shadowing " + Number(n.shadowing.sigma_db) + " dB over " + Number(n.shadowing.correlation_m) + " m";
-  if (n.fading.model != net::FadingModel::kNone) text += ", Nakagami m = " + Number(n.fading.m);
+    text += ", shadowing " + Number(n.shadowing.sigma_db) + " dB/" + Number(n.shadowing.correlation_m) + " m";
+  if (n.fading.model != net::FadingModel::kNone) text += ", Nakagami " + Number(n.fading.m);
   if (n.spread.tx_power_db > 0 || n.spread.noise_figure_db > 0)
     text += ", spread " + Number(n.spread.tx_power_db) + "/" + Number(n.spread.noise_figure_db) + " dB";
   return text;
@@ -95,7 +96,7 @@ void WriteLinkCurve(const LinkCurve& curve, const RunSpec& spec, const LinkCurve
   WriteFileAtomically(folder + "/link_curve.csv", CurveCsv(curve));
   WriteFileAtomically(folder + "/link_curve_links.csv", LinksCsv(curve));
   WriteFileAtomically(folder + "/link_curve.svg",
-                      CurveSvg(curve, spec.name + ": link curve, " + RadioText(*spec.network)));
+                      CurveSvg(curve, spec.name + ": " + RadioText(*spec.network)));
   WriteFileAtomically(folder + "/link_curve.json", Summary(curve, spec, options).dump(2) + "\n");
 }
 

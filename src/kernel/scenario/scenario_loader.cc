@@ -3,6 +3,7 @@
 #include <arpa/inet.h>
 #include <net/if.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <functional>
@@ -38,6 +39,20 @@ void ReadBody(const Field& f, ModelSpec& m) {
     f.Fail("wheel_distance must keep the wheels under the body (less than body_radius + wheel_radius)");
 }
 
+// A row of a table that stands for nodes' starting positions (`{node: NAME}`, `{nodes: GROUP}`),
+// until every node is read (ResolveNodePlaces).
+constexpr const char* kNodeMark = "\x01node";
+constexpr const char* kGroupMark = "\x01nodes";
+
+bool IsNodePlace(const Field& item) { return item.IsMap() && (item.Get("node") || item.Get("nodes")); }
+
+std::vector<std::string> NodePlaceRow(const Field& item) {
+  item.ExpectKeys({"node", "nodes"});
+  if (item.Get("node") && item.Get("nodes")) item.Fail("give `node: NAME` or `nodes: GROUP`, not both");
+  return item.Get("node") ? std::vector<std::string>{kNodeMark, item.Require("node").Text()}
+                          : std::vector<std::string>{kGroupMark, item.Require("nodes").Text()};
+}
+
 ParamValue ReadParamValue(const Field& f) {
   ParamValue v;
   v.line = f.line();
@@ -49,11 +64,13 @@ ParamValue ReadParamValue(const Field& f) {
     v.rows = {{f.node().Scalar()}};
   } else if (f.IsSequence()) {
     const auto items = f.Items();
-    const bool table = !items.empty() && items[0].IsSequence();
+    const bool table = !items.empty() && (items[0].IsSequence() || IsNodePlace(items[0]));
     v.shape = table ? ParamValue::Shape::kTable : ParamValue::Shape::kList;
     if (!table) v.rows.emplace_back();
     for (const Field& item : items) {
-      if (table) {
+      if (table && IsNodePlace(item)) {
+        v.rows.push_back(NodePlaceRow(item));
+      } else if (table) {
         std::vector<std::string> row;
         for (const Field& cell : item.Items()) row.push_back(scalar(cell));
         v.rows.push_back(row);
@@ -288,6 +305,54 @@ std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenar
   return list.places();
 }
 
+// A node's starting position as a table row, to the last bit.
+std::vector<std::string> PlaceRow(const sim::NodeSpec& n) {
+  char x[32], y[32];
+  std::snprintf(x, sizeof x, "%.17g", n.pose.x);
+  std::snprintf(y, sizeof y, "%.17g", n.pose.y);
+  return {x, y};
+}
+
+// The rows of one table parameter, `{node: NAME}` and `{nodes: GROUP}` replaced by the starting
+// positions of that node, or of the group's nodes (a grid's or scatter's: GROUP0, GROUP1, ...).
+std::vector<std::vector<std::string>> ResolveRows(const ParamValue& value, const Scenario& sc, const std::string& field) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& row : value.rows) {
+    if (row.empty() || (row[0] != kNodeMark && row[0] != kGroupMark)) {
+      rows.push_back(row);
+      continue;
+    }
+    const std::size_t before = rows.size();
+    for (const sim::NodeSpec& n : sc.run.nodes) {
+      const bool member = n.name.size() > row[1].size() && n.name.compare(0, row[1].size(), row[1]) == 0 &&
+                          n.name.find_first_not_of("0123456789", row[1].size()) == std::string::npos;
+      if (row[0] == kNodeMark ? n.name == row[1] : member) rows.push_back(PlaceRow(n));
+    }
+    if (rows.size() == before)
+      throw ScenarioError(sc.file, value.line, field,
+                          (row[0] == kNodeMark ? "no node named '" : "no nodes of a grid or scatter named '") + row[1] + "'");
+  }
+  return rows;
+}
+
+// After every node is read: the places controller parameters name become numbers.
+void ResolveNodePlaces(Scenario& sc) {
+  for (std::size_t i = 0; i < sc.run.nodes.size(); ++i) {
+    auto& controller = sc.run.nodes[i].controller;
+    if (!controller) continue;
+    for (const auto& [key, value] : controller->params.All()) {
+      const auto marked = [](const std::vector<std::string>& row) {
+        return !row.empty() && (row[0] == kNodeMark || row[0] == kGroupMark);
+      };
+      if (value.shape != ParamValue::Shape::kTable || std::none_of(value.rows.begin(), value.rows.end(), marked))
+        continue;
+      ParamValue resolved = value;
+      resolved.rows = ResolveRows(value, sc, sc.controller_fields[i] + ".params." + key);
+      controller->params.Set(key, resolved);
+    }
+  }
+}
+
 // No body starts inside another or inside an obstacle; nodes far outside the field are a warning.
 void CheckWhereNodesStart(const Field& root, const std::vector<NodePlace>& places, Scenario& sc) {
   std::vector<int> obstacle_lines;
@@ -487,6 +552,7 @@ void Read(const Field& root, Scenario& sc) {
   if (auto world = root.Get("world")) ReadWorld(*world, run);
   CheckObstacleRadioNeedsANetwork(root, sc);
   CheckWhereNodesStart(root, ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc), sc);
+  ResolveNodePlaces(sc);
   if (auto messages = root.Get("messages")) ReadMessages(*messages, run);
   if (auto events = root.Get("events")) ReadEvents(*events, run);
   if (auto loop = root.Get("loop")) ReadLoop(*loop, sc);

@@ -98,5 +98,38 @@ class Mobility(unittest.TestCase):
         self.assertEqual(covered, cells, f"{covered} of {cells} cells")
 
 
+class ScatteredStudy(unittest.TestCase):
+    """Each seed of a sweep scatters its own deployment, and a tour through `{nodes: m}` visits
+    whatever the seed drew."""
+
+    def test_each_seed_of_a_sweep_has_its_own_deployment(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "field.yaml")
+            with open(path, "w") as f:
+                f.write("""name: field
+duration: 200
+nodes:
+  - scatter: {name: m, count: 5, region: {min: [0, 0], max: [40, 40]}, min_separation: 8}
+    model: mote
+  - name: mule
+    model: omni3
+    pose: [-5, -5, 0]
+    controller: {name: tour, params: {points: [{nodes: m}], order: nearest, speed: 1, tolerance: 1.5}}
+""")
+            study = os.path.join(tmp, "study")
+            subprocess.run([SANET, "sweep", path, "--seeds", "1-2", "-o", study, "-q"], check=True)
+            poses, reached = [], []
+            for run in sorted(os.listdir(os.path.join(study, "runs"))):
+                folder = os.path.join(study, "runs", run)
+                with open(os.path.join(folder, "scenario.yaml")) as f:
+                    poses.append([line for line in f if "pose:" in line])
+                with open(os.path.join(folder, "log.csv")) as f:
+                    reached.append(sorted(row["text"] for row in csv.DictReader(f) if row["text"].startswith("reached point")))
+            self.assertEqual(len(poses), 2)
+            self.assertNotEqual(poses[0], poses[1], "two seeds, two deployments")
+            for visited in reached:
+                self.assertEqual(visited, [f"reached point {i}" for i in range(5)], "every scattered mote visited")
+
+
 if __name__ == "__main__":
     unittest.main()

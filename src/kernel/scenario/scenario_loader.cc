@@ -315,7 +315,8 @@ std::vector<std::string> PlaceRow(const sim::NodeSpec& n) {
 
 // The rows of one table parameter, `{node: NAME}` and `{nodes: GROUP}` replaced by the starting
 // positions of that node, or of the group's nodes (a grid's or scatter's: GROUP0, GROUP1, ...).
-std::vector<std::vector<std::string>> ResolveRows(const ParamValue& value, const Scenario& sc, const std::string& field) {
+std::vector<std::vector<std::string>> ResolveRows(const ParamValue& value, const Scenario& sc,
+                                                  const std::string& field) {
   std::vector<std::vector<std::string>> rows;
   for (const auto& row : value.rows) {
     if (row.empty() || (row[0] != kNodeMark && row[0] != kGroupMark)) {
@@ -329,8 +330,9 @@ std::vector<std::vector<std::string>> ResolveRows(const ParamValue& value, const
       if (row[0] == kNodeMark ? n.name == row[1] : member) rows.push_back(PlaceRow(n));
     }
     if (rows.size() == before)
-      throw ScenarioError(sc.file, value.line, field,
-                          (row[0] == kNodeMark ? "no node named '" : "no nodes of a grid or scatter named '") + row[1] + "'");
+      throw ScenarioError(
+          sc.file, value.line, field,
+          (row[0] == kNodeMark ? "no node named '" : "no nodes of a grid or scatter named '") + row[1] + "'");
   }
   return rows;
 }

@@ -95,8 +95,7 @@ void WriteLinkCurve(const LinkCurve& curve, const RunSpec& spec, const LinkCurve
   std::filesystem::create_directories(folder);
   WriteFileAtomically(folder + "/link_curve.csv", CurveCsv(curve));
   WriteFileAtomically(folder + "/link_curve_links.csv", LinksCsv(curve));
-  WriteFileAtomically(folder + "/link_curve.svg",
-                      CurveSvg(curve, spec.name + ": " + RadioText(*spec.network)));
+  WriteFileAtomically(folder + "/link_curve.svg", CurveSvg(curve, spec.name + ": " + RadioText(*spec.network)));
   WriteFileAtomically(folder + "/link_curve.json", Summary(curve, spec, options).dump(2) + "\n");
 }
 

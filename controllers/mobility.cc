@@ -61,6 +61,9 @@ class RandomWaypoint : public Controller {
         pause_(p.Number("pause", 0, 0)) {
     if (speed_max_ < speed_min_)
       throw ParamError("speed_max", p.Line("speed_max"), "parameter 'speed_max' is under speed_min");
+    if (p.Has("speed"))
+      throw ParamError("speed", p.Line("speed"),
+                       "parameter 'speed': random_waypoint draws each leg's speed in [speed_min, speed_max]");
   }
 
   void ControlStep(Node& node) override {

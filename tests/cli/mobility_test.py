@@ -98,6 +98,28 @@ class Mobility(unittest.TestCase):
         self.assertEqual(covered, cells, f"{covered} of {cells} cells")
 
 
+class Mistakes(unittest.TestCase):
+    """A mobility controller's wrong parameters are refused at their line."""
+
+    def test_wrong_parameters_are_refused(self):
+        cases = [("random_waypoint", "{region: [[0, 0], [10, 10]], speed: 1}", "draws each leg's speed"),
+                 ("random_waypoint", "{region: [[0, 0], [10, 10]], speed_min: 2, speed_max: 1}", "under speed_min"),
+                 ("random_waypoint", "{region: [[0, 0], [0, 10]]}", "encloses no area"),
+                 ("tour", "{points: [{node: nobody}]}", "no node named 'nobody'"),
+                 ("tour", "{points: [[1, 1]], order: shortest}", "given or nearest"),
+                 ("lawnmower", "{region: [[0, 0], [10, 10]], along: z}", "x or y")]
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, params, message in cases:
+                path = os.path.join(tmp, "bad.yaml")
+                with open(path, "w") as f:
+                    f.write(f"duration: 5\nnodes:\n  - name: r\n    model: omni3\n    pose: [0, 0, 0]\n"
+                            f"    controller: {{name: {name}, params: {params}}}\n")
+                done = subprocess.run([SANET, "validate", path], capture_output=True, text=True)
+                self.assertEqual(done.returncode, 2, (name, params))
+                self.assertIn("bad.yaml:6:", done.stderr)
+                self.assertIn(message, done.stderr)
+
+
 class ScatteredStudy(unittest.TestCase):
     """Each seed of a sweep scatters its own deployment, and a tour through `{nodes: m}` visits
     whatever the seed drew."""

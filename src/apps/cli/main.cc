@@ -190,16 +190,21 @@ Command AddValidate(CLI::App& app) {
   auto file = std::make_shared<std::string>();
   auto sets = std::make_shared<std::vector<std::string>>();
   auto print = std::make_shared<bool>(false);
+  auto seed = std::make_shared<std::optional<std::uint64_t>>();
   CLI::App* cmd = app.add_subcommand("validate",
                                      "Check a scenario without running it: structure, types, ranges, "
                                      "models, controllers and their parameters");
   AddScenario(cmd, *file);
   AddSet(cmd, *sets);
   AddPythonPath(cmd);
+  cmd->add_option("--seed", *seed, "Seed instead of the scenario's (scattered nodes are drawn from it)")
+      ->check(kSeedText);
   cmd->add_flag("--print", *print,
-                "Print the effective scenario: every default filled in, grids as their nodes (it loads and runs "
-                "to the same fingerprint)");
-  return {cmd, [file, sets, print](hosting::Registry& r) { return Validate(*file, *sets, *print, r); }};
+                "Print the effective scenario: every default filled in, grids and scatters as their nodes (it "
+                "loads and runs to the same fingerprint)");
+  return {cmd, [file, sets, print, seed](hosting::Registry& r) {
+            return Validate(*file, WithSeed(*sets, *seed), *print, r);
+          }};
 }
 
 volatile std::sig_atomic_t g_view_stop = 0;

@@ -251,6 +251,9 @@ void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, NodeList& 
   n.ExpectKeys(ScatterItemFields().Keys());
   const Field item = n.Require("scatter");
   const ScatterSettings s = ReadScatter(item);
+  if (s.density && *s.density * s.region.Area() > kMaxNodes)
+    item.Require("density").Fail("expects " + std::to_string(std::llround(*s.density * s.region.Area())) +
+                                 " nodes over the region; a scenario holds at most " + std::to_string(kMaxNodes));
   CheckPlace(item.Require("region"), s.region.min);
   CheckPlace(item.Require("region"), s.region.max);
   const NodeTemplate t = ReadNodeTemplate(n, dir, sc.run.network.has_value());
@@ -330,9 +333,11 @@ std::vector<std::vector<std::string>> ResolveRows(const ParamValue& value, const
       if (row[0] == kNodeMark ? n.name == row[1] : member) rows.push_back(PlaceRow(n));
     }
     if (rows.size() == before)
-      throw ScenarioError(
-          sc.file, value.line, field,
-          (row[0] == kNodeMark ? "no node named '" : "no nodes of a grid or scatter named '") + row[1] + "'");
+      throw ScenarioError(sc.file, value.line, field,
+                          row[0] == kNodeMark
+                              ? "no node named '" + row[1] + "' (a grid's or scatter's nodes: `{nodes: GROUP}`)"
+                              : "no nodes of a grid or scatter named '" + row[1] + "' (with seed " +
+                                    std::to_string(sc.run.seed) + ", a scatter may have drawn none)");
   }
   return rows;
 }

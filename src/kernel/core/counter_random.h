@@ -12,6 +12,9 @@
 
 namespace sanet {
 
+// SplitMix64's output function: 64 bits mixed so that nearby inputs give unrelated outputs.
+std::uint64_t SplitMix64Mix(std::uint64_t z);
+
 class CounterRandom {
  public:
   using result_type = std::uint64_t;  // a UniformRandomBitGenerator, for <random>-style distributions

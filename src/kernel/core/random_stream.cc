@@ -2,17 +2,13 @@
 
 #include <cmath>
 
+#include "core/counter_random.h"
 #include "core/fingerprint.h"
 
 namespace sanet {
 namespace {
 
-std::uint64_t SplitMix64(std::uint64_t& x) {
-  std::uint64_t z = (x += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
+std::uint64_t SplitMix64(std::uint64_t& x) { return SplitMix64Mix(x += 0x9E3779B97F4A7C15ull); }
 
 std::uint64_t Rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 

@@ -1,24 +1,16 @@
 #include "net/channel_losses.h"
 
-#include <ns3/double.h>
-#include <ns3/wifi-phy.h>
-
 #include "net/link_loss_models.h"
+#include "net/ns3_attributes.h"
 #include "net/path_loss.h"
 
 namespace sanet::net {
 namespace {
 
-double PhyDefault(const char* attribute) {
-  ns3::TypeId::AttributeInformation info;
-  ns3::WifiPhy::GetTypeId().LookupAttributeByName(attribute, &info);
-  return ns3::DynamicCast<const ns3::DoubleValue>(info.initialValue)->Get();
-}
-
 // Under this (dBm, before the receiver's antenna gain) no radio takes a frame: every PHY has
 // WifiPhy's sensitivity and gain as network.ns3 left them (YansWifiChannel drops such frames
 // before the PHY sees them, as does the indexed channel).
-double UntakenBelowDbm() { return PhyDefault("RxSensitivity") - PhyDefault("RxGain"); }
+double UntakenBelowDbm() { return WifiPhyDefault("RxSensitivity") - WifiPhyDefault("RxGain"); }
 
 }  // namespace
 

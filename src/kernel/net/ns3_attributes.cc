@@ -1,6 +1,7 @@
 #include "net/ns3_attributes.h"
 
 #include <ns3/core-module.h>
+#include <ns3/wifi-phy.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -177,6 +178,13 @@ void Ns3Defaults::Restore() {
   for (auto it = earlier_.rbegin(); it != earlier_.rend(); ++it)
     ns3::Config::SetDefaultFailSafe(it->first, ns3::StringValue(it->second));
   earlier_.clear();
+}
+
+double WifiPhyDefault(const char* attribute) {
+  ns3::TypeId::AttributeInformation info;
+  if (!ns3::WifiPhy::GetTypeId().LookupAttributeByName(attribute, &info))
+    throw std::logic_error(std::string("WifiPhy has no attribute ") + attribute);
+  return ns3::DynamicCast<const ns3::DoubleValue>(info.initialValue)->Get();
 }
 
 }  // namespace sanet::net

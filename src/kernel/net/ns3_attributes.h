@@ -15,6 +15,10 @@ using Ns3Attributes = std::vector<std::pair<std::string, std::string>>;  // name
 // valid names where a name is wrong, and the scenario key to use where sanet sets it itself.
 std::string CheckNs3Attribute(const std::string& name, const std::string& value);
 
+// A number attribute of ns-3's WifiPhy as its default now stands (network.ns3 may have set it):
+// "RxSensitivity", "RxGain", "RxNoiseFigure".
+double WifiPhyDefault(const char* attribute);
+
 // Makes `attributes` the defaults of their types; puts the earlier ones back when it ends, so that
 // the next run in the process starts from ns-3's own. The values must have passed
 // CheckNs3Attribute (the scenario loader checks them): the one ns-3 aborts on is not tried here.

@@ -101,9 +101,7 @@ WirelessNetwork::~WirelessNetwork() {
 
 // The helpers every node's radio is installed with: standard, rates, channel, PHY and MAC.
 void WirelessNetwork::ConfigureRadios() {
-  ns3::TypeId::AttributeInformation noise_figure;  // its default, as network.ns3 left it
-  if (ns3::WifiPhy::GetTypeId().LookupAttributeByName("RxNoiseFigure", &noise_figure))
-    nominal_noise_figure_ = ns3::DynamicCast<const ns3::DoubleValue>(noise_figure.initialValue)->Get();
+  nominal_noise_figure_ = WifiPhyDefault("RxNoiseFigure");
   wifi_.SetStandard(spec_.standard == WifiStandard::k80211b   ? ns3::WIFI_STANDARD_80211b
                     : spec_.standard == WifiStandard::k80211g ? ns3::WIFI_STANDARD_80211g
                                                               : ns3::WIFI_STANDARD_80211a);

@@ -12,6 +12,9 @@
 namespace sanet::scenario {
 namespace {
 
+// A cell of a grid over the ground (CheckPairs', StartingRoom's) as one hash key.
+long long CellKey(long long cx, long long cy) { return cx * 4000003LL + cy; }
+
 std::string At(const sim::NodeSpec& n) { return n.name + " at (" + Metres(n.pose.x) + ", " + Metres(n.pose.y) + ")"; }
 
 void CheckObstacles(const std::string& file, const sim::RunSpec& run, const std::vector<NodePlace>& places,
@@ -40,14 +43,13 @@ void CheckPairs(const std::string& file, const sim::RunSpec& run, const std::vec
   for (NodeId id = 0; id < run.nodes.size(); ++id)
     widest = std::max(widest, radius[id] = robots::InscribedRadius(run.nodes[id].model));
   const double cell = std::max(2 * widest, 1e-3);
-  const auto key = [&](long long cx, long long cy) { return cx * 4000003LL + cy; };
   std::unordered_map<long long, std::vector<NodeId>> cells;
   for (NodeId id = 0; id < run.nodes.size(); ++id) {
     const sim::NodeSpec& n = run.nodes[id];
     const long long cx = std::llround(std::floor(n.pose.x / cell)), cy = std::llround(std::floor(n.pose.y / cell));
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy) {
-        const auto near = cells.find(key(cx + dx, cy + dy));
+        const auto near = cells.find(CellKey(cx + dx, cy + dy));
         if (near == cells.end()) continue;
         for (NodeId other : near->second) {
           const double gap = Norm(run.nodes[other].pose.position() - n.pose.position());
@@ -59,7 +61,7 @@ void CheckPairs(const std::string& file, const sim::RunSpec& run, const std::vec
                                   " m apart; move one of them");
         }
       }
-    cells[key(cx, cy)].push_back(id);
+    cells[CellKey(cx, cy)].push_back(id);
   }
 }
 
@@ -70,10 +72,6 @@ void CheckPlacement(const std::string& file, const sim::RunSpec& run, const std:
   CheckObstacles(file, run, places, obstacle_lines);
   CheckPairs(file, run, places);
 }
-
-namespace {
-long long CellKey(long long cx, long long cy) { return cx * 4000003LL + cy; }
-}  // namespace
 
 StartingRoom::StartingRoom(const sim::RunSpec& run) : run_(run) {
   for (const sim::NodeSpec& n : run.nodes) widest_ = std::max(widest_, robots::InscribedRadius(n.model));

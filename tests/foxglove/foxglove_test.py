@@ -58,10 +58,10 @@ class StallingClient(threading.Thread):
     the kernel cannot absorb megabytes for it and the server's own queue must fill however fast or
     slow the run and this machine are."""
 
-    def __init__(self, url, seconds):
+    def __init__(self, url, run):
         super().__init__()
         self.host, self.port = url.removeprefix("ws://").split(":")
-        self.seconds, self.channels, self.error = seconds, [], None
+        self.sanet, self.channels, self.error = run, [], None
 
     def run(self):
         try:
@@ -81,7 +81,10 @@ class StallingClient(threading.Thread):
                 subscribe = {"op": "subscribe", "subscriptions": [{"id": i, "channelId": c}
                                                                   for i, c in enumerate(self.channels)]}
                 s.sendall(self.masked_text(json.dumps(subscribe).encode()))
-                time.sleep(self.seconds)  # and read nothing more
+                # Read nothing more until the run ends, however slowly this machine runs it: the whole
+                # run's stream (about 19 MB) must pass through the server's queue and the kernel's.
+                while self.sanet.poll() is None:
+                    time.sleep(0.1)
         except Exception as e:  # reported by the test, not lost in a thread
             self.error = e
 
@@ -152,7 +155,7 @@ class Live(unittest.TestCase):
 
     def test_a_client_that_stops_reading_is_dropped_and_the_others_go_on(self):
         run, url = self.start(HELP_REQUEST, "--foxglove-queue-mb", "1")
-        staller = StallingClient(url, 12)
+        staller = StallingClient(url, run)
         staller.start()
         watched = client("watch", url, "5", "/tf", "/radio/frames")
         staller.join()

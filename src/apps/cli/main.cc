@@ -269,6 +269,13 @@ Command AddView(CLI::App& app) {
   cmd->add_option("--port-file", *port_file, "Once listening, write the port number to this file");
   auto foxglove = std::make_shared<FoxgloveArgs>();
   AddFoxgloveOptions(cmd, *foxglove, /*replay=*/true);
+  // The effective scenario the run wrote beside its results, for the radios' ranges.
+  settings->scenario = [settings] {
+    const std::string file = settings->results + "/scenario.yaml";
+    if (!std::filesystem::exists(file))
+      throw std::runtime_error(file + " not found: no scenario to measure the radio of");
+    return scenario::LoadScenario(file).run;
+  };
   return {cmd, [settings, port_file, foxglove](hosting::Registry&) { return View(*settings, *port_file, *foxglove); }};
 }
 

@@ -149,6 +149,13 @@ nlohmann::json TraceReader::Transitions() const {
   return Query("SELECT t, node, from_state, to_state, why FROM transitions ORDER BY rowid", AllColumns());
 }
 
+nlohmann::json TraceReader::Metrics() const {
+  nlohmann::json metrics = nlohmann::json::object();
+  for (auto& row : ReadCsv(folder_ + "/metrics.csv"))
+    metrics[row["name"]][row["node"]].push_back({std::stod(row["time"]), std::stod(row["value"])});
+  return metrics;
+}
+
 nlohmann::json TraceReader::MinDistance() const {
   nlohmann::json out = nlohmann::json::array();
   for (auto& row : ReadCsv(folder_ + "/min_distance.csv"))

@@ -1,5 +1,5 @@
-// Reads a run's results folder for the viewer: trace.sqlite (docs/trace.md) and the summary and
-// packet counts beside it, answered as JSON for the page.
+// Reads a run's results folder for the viewer: trace.sqlite (docs/trace.md) and the summary, packet
+// counts and metrics beside it, answered as JSON for the page.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -35,6 +35,9 @@ class TraceReader {
   // energy: {"levels": {node: [[t, fraction], ...]}, "deaths": [[t, node, dead (1/0)], ...]}; both
   // empty for a run without energy, whose trace has no energy table.
   nlohmann::json Energy() const;
+  // The controllers' metrics (metrics.csv, Node::Metric): {name: {node: [[t, value], ...]}}, in
+  // the order of the file; empty when the run has none.
+  nlohmann::json Metrics() const;
 
  private:
   bool HasTable(const char* name) const;

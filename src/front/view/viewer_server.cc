@@ -5,12 +5,14 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
 #include "core/json_text.h"
 #include "view/page_routes.h"
+#include "view/radio_ranges.h"
 #include "view/trace_reader.h"
 
 namespace sanet::view {
@@ -24,6 +26,24 @@ void Json(httplib::Response& response, const nlohmann::json& body) {
   response.set_content(JsonText(body), "application/json");
 }
 
+void AddRangeRoutes(httplib::Server& server, RadioRanges& ranges) {
+  server.Get("/api/radio_ranges", [&](const httplib::Request&, httplib::Response& r) { Json(r, ranges.Ranges()); });
+  server.Get("/api/radio_range_shape", [&](const httplib::Request& q, httplib::Response& r) {
+    Json(r, ranges.Shape(static_cast<std::size_t>(Number(q, "radio", 0)), Number(q, "x", 0), Number(q, "y", 0)));
+  });
+}
+
+// The run's scenario for the ranges, or why there is none.
+std::unique_ptr<RadioRanges> StartRanges(const ViewerSettings& settings) {
+  if (!settings.scenario)
+    return std::make_unique<RadioRanges>(std::nullopt, "this viewer was not given the run's scenario");
+  try {
+    return std::make_unique<RadioRanges>(settings.scenario(), "");
+  } catch (const std::exception& e) {
+    return std::make_unique<RadioRanges>(std::nullopt, e.what());
+  }
+}
+
 void AddRoutes(httplib::Server& server, const TraceReader& trace, const std::string& javascript) {
   AddPageRoutes(server, javascript);
   server.Get("/api/run", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Run()); });
@@ -32,6 +52,7 @@ void AddRoutes(httplib::Server& server, const TraceReader& trace, const std::str
   server.Get("/api/transitions", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Transitions()); });
   server.Get("/api/min_distance", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.MinDistance()); });
   server.Get("/api/energy", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Energy()); });
+  server.Get("/api/metrics", [&](const httplib::Request&, httplib::Response& r) { Json(r, trace.Metrics()); });
   server.Get("/api/frames", [&](const httplib::Request& q, httplib::Response& r) {
     Json(r, trace.Frames(Number(q, "from", 0), Number(q, "to", 0)));
   });
@@ -53,8 +74,10 @@ void ServeViewer(const ViewerSettings& settings, const std::function<void(int po
                  const std::function<bool()>& stop) {
   CheckLibraries(settings.javascript);
   const TraceReader trace(settings.results);
+  const std::unique_ptr<RadioRanges> ranges = StartRanges(settings);
   httplib::Server server;
   AddRoutes(server, trace, settings.javascript);
+  AddRangeRoutes(server, *ranges);
   ListenAlone(server);
   const int port = settings.port == 0 ? server.bind_to_any_port(settings.bind)
                                       : (server.bind_to_port(settings.bind, settings.port) ? settings.port : -1);

@@ -1,5 +1,7 @@
 // The sanet viewer: replays a run's trace (served as /api/... by `sanet view`) with three.js and
-// Chart.js. window.sanet is a small API for tests and scripts: ready, seek(t), state(), select(name).
+// Chart.js (the controllers' metrics in metrics.js, the radios' ranges in ranges.js). The page opens
+// paused at ?t=SECONDS. window.sanet is a small API for tests and scripts: ready, seek(t), state(),
+// select(name), ranges().
 "use strict";
 
 const api = (path) => fetch(path).then((r) => { if (!r.ok) throw new Error(path + ": " + r.status); return r.json(); });
@@ -247,13 +249,15 @@ function topControls(camera, canvas, box) {
   return controls;
 }
 
+// A chart plugin: a line at the time shown.
+const timeLine = { id: "timeline", afterDraw(chart) {
+  if (!chart.scales.x || chart.config.type === "bar") return;
+  const x = chart.scales.x.getPixelForValue(view.t), ctx = chart.ctx;
+  ctx.save(); ctx.strokeStyle = "#d04010"; ctx.beginPath();
+  ctx.moveTo(x, chart.chartArea.top); ctx.lineTo(x, chart.chartArea.bottom); ctx.stroke(); ctx.restore();
+} };
+
 function plots(world, duration) {
-  const timeLine = { id: "timeline", afterDraw(chart) {
-    if (!chart.scales.x || chart.config.type === "bar") return;
-    const x = chart.scales.x.getPixelForValue(view.t), ctx = chart.ctx;
-    ctx.save(); ctx.strokeStyle = "#d04010"; ctx.beginPath();
-    ctx.moveTo(x, chart.chartArea.top); ctx.lineTo(x, chart.chartArea.bottom); ctx.stroke(); ctx.restore();
-  } };
   const common = { animation: false, responsive: true, maintainAspectRatio: false, plugins: { legend: { display: false } } };
   const linear = { x: { type: "linear", min: 0, max: duration, title: { display: true, text: "time (s)" } } };
   const delays = world.messages.filter((m) => m[1] !== null).map((m) => ({ x: m[1], y: m[1] - m[0] }));
@@ -342,11 +346,28 @@ function live(run) {
   };
 }
 
+// The time the page opens at: ?t=SECONDS, within the run; a time it cannot show is said on the page.
+function startTime(duration) {
+  const asked = new URLSearchParams(location.search).get("t");
+  if (asked === null) return { t: 0, notice: "" };
+  const t = asked.trim() === "" ? NaN : Number(asked);
+  if (!Number.isFinite(t)) return { t: 0, notice: `?t=${asked} is not a time in seconds: showing t = 0` };
+  if (t < 0) return { t: 0, notice: `?t=${asked} is before the run: showing t = 0` };
+  if (t > duration) return { t: duration, notice: `?t=${asked} is past the run's end (${duration} s): showing its end` };
+  return { t, notice: "" };
+}
+
+function showNotice(text) {
+  const notice = document.getElementById("notice");
+  notice.textContent = text; notice.hidden = !text;
+}
+
 async function main() {
   const run = await api("/api/run");
   if (run.info.live) return live(run);
-  const [poses, messages, transitions, distances, energy] = await Promise.all(
-    [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance"), api("/api/energy")]);
+  const [poses, messages, transitions, distances, energy, metrics] = await Promise.all(
+    [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance"), api("/api/energy"),
+     api("/api/metrics")]);
   // The run may have ended before the scenario's duration (an end condition).
   const duration = Number((run.summary && run.summary.simulated_s) || run.info.duration_s);
   document.getElementById("title").textContent = run.info.name;
@@ -369,6 +390,11 @@ async function main() {
     controls.enabled = !top; zoom.enabled = top; };
   controls.enabled = false;
   const redrawPlots = plots(world, duration);
+  const metricPlots = metricCharts(metrics, duration, timeLine);
+  const ranges = radioRanges(world);
+  const opening = startTime(duration);
+  view.t = opening.t;
+  showNotice(opening.notice);
   const slider = document.getElementById("time");
   slider.max = duration;
   const camera = () => (document.getElementById("view").value === "3d" ? cams.perspective : cams.top);
@@ -379,11 +405,13 @@ async function main() {
       await showPanel(world, view.selected, view.t);
       drawRoutes(world, view.selected);
     }
+    ranges.update(view.selected);
     renderer.render(world.scene, camera());
     placeLabels(world, camera(), element);
     document.getElementById("clock").textContent = `t = ${view.t.toFixed(1)} s`;
     slider.value = view.t;
     redrawPlots();
+    metricPlots.redraw();
   }
   let last = performance.now();
   function tick(now) {
@@ -409,9 +437,13 @@ async function main() {
     ready: true,
     async seek(t) { view.playing = false; playButton.textContent = "Play"; view.t = Math.max(0, Math.min(duration, t)); await render(); },
     select(name) { view.selected = world.nodes.find((n) => n.node.name === name) || null; return render(); },
+    // Resolves once the ranges are measured and drawn (the server measures them as it starts).
+    async ranges() { await ranges.answer; await render(); await ranges.settled(); await render(); },
     state() {
-      return { t: view.t, duration, linksUp: world.linksUp, routesDrawn: world.routesDrawn || 0, broadcastsShown: world.broadcastsShown || 0, motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length,
-               legend: legendShown(), nodes: world.nodes.map(nodeState) };
+      return { t: view.t, duration, playing: view.playing, notice: document.getElementById("notice").textContent,
+               linksUp: world.linksUp, routesDrawn: world.routesDrawn || 0, broadcastsShown: world.broadcastsShown || 0,
+               motes: world.nodes.filter((n) => n.mote && n.mesh.visible).length, legend: legendShown(),
+               nodes: world.nodes.map(nodeState), metrics: metricPlots.state(), ranges: ranges.state() };
     },
   };
   requestAnimationFrame(tick);

@@ -536,6 +536,22 @@ YAML::Node PrintRegion(const sections::SpawnSpec& s) {
   return region;
 }
 
+// `true`, `false` or `{silence_s: N}` (on, with its own silence).
+void ReadRadioContacts(const Field& v, Scenario& s) {
+  if (v.IsSequence()) v.Fail("must be true, false or a mapping {silence_s: N}, not a list");
+  if (!v.IsMap()) return void(s.radio_contacts = v.Bool());
+  v.ExpectKeys({"silence_s"});
+  s.radio_contacts = true;
+  if (auto silence = v.Get("silence_s")) s.run.contact_silence = silence->NumberAbove(0, 1e9);
+}
+
+YAML::Node PrintRadioContacts(const Scenario& s) {
+  if (!s.run.radio_contacts) return YAML::Node(false);
+  YAML::Node on;
+  on["silence_s"] = NumberNode(s.run.contact_silence);
+  return on;
+}
+
 }  // namespace
 
 const Fields<sections::SpawnSpec>& SpawnFields() {
@@ -601,6 +617,13 @@ const Fields<Scenario>& OutputsFields() {
          "tools, Foxglove and PlotJuggler (docs/mcap.md); never changes the fingerprint"},
         [](const Field& v, Scenario& s) { s.trace = v.Bool(); },
         [](const Scenario& s) { return YAML::Node(s.run.trace); });
+    f.Custom(
+        {"radio_contacts", "boolean, or mapping `{silence_s: N}`", "s",
+         "`true` for runs of up to 200 nodes, `silence_s: 15`", "silence_s in (0, 1e9]",
+         "write `radio_contacts.csv`: each pair of nodes' contacts, from the frames their radios heard from each "
+         "other, and their quartiles in summary.json (see [radio_contacts.csv](#radio_contactscsv)); a contact ends "
+         "after more than `silence_s` without a frame; with a `network` only; never changes the fingerprint"},
+        ReadRadioContacts, PrintRadioContacts);
     return f;
   }();
   return fields;

@@ -567,6 +567,7 @@ void Read(const Field& root, Scenario& sc) {
   sc.output_folder = "results/" + run.name;
   if (auto outputs = root.Get("outputs")) ReadOutputs(*outputs, sc);
   run.trace = sc.trace.value_or(run.nodes.size() <= kMaxTracedNodes);
+  run.radio_contacts = sc.radio_contacts.value_or(run.nodes.size() <= kMaxTracedNodes);
   if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), sc);
   if (auto ros2 = root.Get("ros2")) ReadRos2(*ros2, sc);
   if (run.trajectory_interval < run.physics_step) {

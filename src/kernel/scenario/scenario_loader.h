@@ -26,6 +26,7 @@ struct Scenario {
   std::vector<int> controller_lines;           // per node: line of its controller (0 if none)
   std::vector<std::string> controller_fields;  // per node: its controller's field, "nodes[i].controller"
   std::optional<bool> trace;                   // outputs.trace as given (run.trace is the effective one)
+  std::optional<bool> radio_contacts;          // outputs.radio_contacts as given (likewise)
   std::vector<Override> overrides;             // --set, in the order given
   std::vector<std::string> warnings;           // "file:line: 'field': ..." for the command to print
 };

@@ -41,6 +41,7 @@ Outputs::Outputs(const RunSpec& spec, const RunNodes& nodes, RunBus& bus, const 
       transitions_(folder_.Csv("transitions.csv", trace::kTransitionsHeader)),
       metric_rows_(folder_.Csv("metrics.csv", trace::kMetricsHeader)),
       energy_(nodes, bus, folder_),
+      radio_contacts_(spec, nodes, bus, folder_),
       last_recorded_(nodes.size()) {
   if (spec_.min_distance) min_distance_ = &folder_.Csv("min_distance.csv", "time,min_distance,a,b");
   StartTrace(trace_files);

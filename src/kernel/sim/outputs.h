@@ -1,5 +1,5 @@
 // The outputs of one run: every results file (trajectories, log, messages, transitions, metrics,
-// smallest distance, the network's packets and routes), the figures, summary.json and the fingerprint.
+// smallest distance, the network's packets, routes and radio contacts), the figures, summary.json and the fingerprint.
 // It hears the run's events on the bus (RunStage::kRecord) and is handed the samples and the
 // network's traces; it alone decides what is written, in which form and in which order the
 // fingerprint takes it. Files are written whole (trace::ResultsFolder).
@@ -16,6 +16,7 @@
 #include "core/fingerprint.h"
 #include "net/network_traces.h"
 #include "sim/energy_outputs.h"
+#include "sim/radio_contact_outputs.h"
 #include "sim/run_events.h"
 #include "sim/run_nodes.h"
 #include "sim/run_spec.h"
@@ -137,6 +138,7 @@ class Outputs {
   trace::CsvSink &trajectories_, &log_, &messages_, &transitions_, &metric_rows_;
   trace::CsvSink* min_distance_ = nullptr;
   EnergyOutputs energy_;
+  RadioContactOutputs radio_contacts_;
   std::vector<std::pair<double, double>> min_distances_;  // (time, smallest distance between robots)
   std::vector<double> delays_;                            // of every message delivered, s
   std::uint64_t messages_lost_ = 0;                       // dropped by the added message_loss

@@ -136,6 +136,7 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
                      nlohmann::ordered_json extra) {
   subscriptions_.clear();  // the run is over: nothing more is recorded
   energy_.Stop();
+  radio_contacts_.Stop();
   if (sqlite_) sqlite_->Close();
   for (const auto& file : trace_files_) file->Close();
   folder_.Commit();
@@ -154,6 +155,10 @@ void Outputs::Finish(RunResult& result, const std::optional<net::NetworkTraces>&
     nlohmann::ordered_json taps = nlohmann::ordered_json::object();
     AddTapFiles(*network, taps);
     if (!taps.empty()) extra["network"]["taps"] = taps;
+  }
+  if (auto contacts = radio_contacts_.Write(result.simulated)) {  // not fingerprinted, as the trace
+    folder_.Commit();
+    extra["radio_contacts"] = *contacts;
   }
   result.fingerprint = fp.Hex();
   const nlohmann::ordered_json moved_motes = RunWarnings::MovedMotes(nodes_, final_poses);

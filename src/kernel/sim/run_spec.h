@@ -96,6 +96,10 @@ struct RunSpec {
   bool min_distance = false;      // record the smallest distance between robots over time
   double distance_reference = 0;  // m; the summary says how long the smallest distance stayed within 10 % of it
   double figure_tick = 50;        // s between time marks on trajectories
+  // Write radio_contacts.csv (sim/radio_contact_outputs.h): a contact ends after more than
+  // `contact_silence` s without a frame between its pair.
+  bool radio_contacts = false;
+  double contact_silence = 15;  // s
 };
 
 // Who drives a run's robots: their scenario controllers, or front ends (`sanet serve`'s clients),

@@ -17,6 +17,8 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(RandomWaypointInfo());
   registry.Add(TourInfo());
   registry.Add(LawnmowerInfo());
+  registry.Add(DataMuleSensorInfo());
+  registry.Add(DataMuleCollectorInfo());
 }
 
 }  // namespace sanet::controllers

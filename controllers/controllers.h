@@ -17,5 +17,7 @@ ControllerInfo FlockInfo();
 ControllerInfo RandomWaypointInfo();
 ControllerInfo TourInfo();
 ControllerInfo LawnmowerInfo();
+ControllerInfo DataMuleSensorInfo();
+ControllerInfo DataMuleCollectorInfo();
 
 }  // namespace sanet::controllers

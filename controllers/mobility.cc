@@ -2,6 +2,8 @@
 // waypoint, a tour through points (in the order given or nearest first) and a lawnmower sweep of
 // a rectangle. Each drives omni3 and diffdrive robots with the Pilot of `waypoint`, going round
 // the obstacles its laser or IR ring sees, and logs each point it reaches.
+#include "mobility.h"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -143,6 +145,8 @@ class Tour : public Controller {
   std::size_t next_ = 0;
 };
 
+}  // namespace
+
 std::unique_ptr<Controller> MakeTour(const Params& p) {
   std::vector<Vec2> points;
   for (const auto& row : p.Table("points", 2, {})) points.push_back({row[0], row[1]});
@@ -151,6 +155,8 @@ std::unique_ptr<Controller> MakeTour(const Params& p) {
     throw ParamError("order", p.Line("order"), "parameter 'order' must be given or nearest");
   return std::make_unique<Tour>(p, points, p.Flag("loop", false), order == "nearest");
 }
+
+namespace {
 
 // Boustrophedon lines `spacing` apart across the region, along x (or y), turning at each end.
 std::vector<Vec2> LawnmowerLines(std::pair<Vec2, Vec2> region, double spacing, bool along_y) {

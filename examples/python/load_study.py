@@ -18,7 +18,7 @@ def main():
     study = sanet.Study(sys.argv[1])
     metric = sys.argv[2] if len(sys.argv) > 2 else "ended_at_s"
     print("parameters:", ", ".join(study.parameters))
-    print(study.runs[["name", "seed", "status", *study.parameters]].to_string(index=False))
+    print(study.runs[["run_name", "seed", "status", *study.parameters]].to_string(index=False))
     print()
     print(study.report(metric).to_string(index=False))
 

@@ -225,7 +225,7 @@ class Report(unittest.TestCase):
         with open(table) as f:
             runs = list(csv.DictReader(f))
         self.assertEqual(len(runs), 8)
-        self.assertEqual(set(runs[0]), {"run", "seed", "status", "network.tx_power",
+        self.assertEqual(set(runs[0]), {"run_id", "run_name", "seed", "status", "network.tx_power",
                                         "nodes.reporter.controller.params.size", "message_delay_s.median"})
 
     def test_the_python_example_of_the_docs_reads_the_same_numbers(self):

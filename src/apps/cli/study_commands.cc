@@ -132,46 +132,66 @@ int Sweep(const SweepArgs& a, hosting::Registry& registry) {
 
 struct ReportArgs {
   std::string study, by, plot, csv;
-  std::vector<std::string> metrics;
-  bool list = false;
+  std::vector<std::string> metrics, derive;
+  study::PlotText text;
+  bool list = false, per_node = false;
 };
 
-// With several metrics, each gets its own plot: plot.svg -> plot-<metric>.svg.
-std::string PlotFile(const std::string& plot, const std::string& metric, std::size_t metrics) {
-  if (metrics == 1) return plot;
-  const fs::path p(plot);
-  return (p.parent_path() / (p.stem().string() + "-" + metric + p.extension().string())).string();
-}
-
-int List(const study::StudyReader& study) {
+int List(const study::StudyReader& study, bool per_node) {
   std::printf("parameters:%s\n", study.parameters().empty() ? " (none: seeds only)" : "");
   for (const std::string& p : study.parameters()) std::printf("  %s\n", p.c_str());
-  std::printf("runs: %zu\nmetrics (runs that have each):\n", study.runs().size());
-  for (const auto& [name, count] : study.Metrics()) std::printf("  %-60s %d\n", name.c_str(), count);
+  std::printf("runs: %zu\nmetrics (completed runs that have each%s):\n", study.runs().size(),
+              per_node ? "" : "; per-node metrics folded over the nodes, --per-node for each node's");
+  for (const auto& m : study.Metrics(per_node)) {
+    const std::string nodes = m.nodes > 0 ? "  (" + Count(m.nodes, "node") + ")" : "";
+    std::printf("  %-60s %d%s\n", m.name.c_str(), m.runs, nodes.c_str());
+  }
   return 0;
+}
+
+void Define(study::StudyReader& study, const std::vector<std::string>& derive) {
+  for (const std::string& d : derive) {
+    const std::size_t eq = d.find('=');
+    if (eq == std::string::npos) throw study::ReportError("--derive takes NAME=EXPRESSION, not '" + d + "'");
+    study.Define(d.substr(0, eq), d.substr(eq + 1));
+  }
+}
+
+// Runs that completed but gave the metric no value: a missing metric, or a division by zero.
+void NoteMissing(const study::StudyReader& study, const std::string& metric, std::size_t with_value) {
+  const int without = study.CompletedRuns() - static_cast<int>(with_value);
+  if (without > 0)
+    std::printf("note: %s of %d completed runs %s no value of %s (a metric it reads is missing, or it divides by 0)\n",
+                std::to_string(without).c_str(), study.CompletedRuns(), without == 1 ? "has" : "have", metric.c_str());
+}
+
+void Csv(const study::StudyReader& study, const ReportArgs& a) {
+  std::vector<std::string> metrics = a.metrics;
+  if (metrics.empty())
+    for (const auto& m : study.Metrics(a.per_node)) metrics.push_back(m.name);
+  study::WriteCsv(study, metrics, a.csv);
+  std::printf("runs in %s\n", a.csv.c_str());
 }
 
 int Report(const ReportArgs& a) {
   try {
-    const study::StudyReader study(a.study);
-    if (a.list || (a.metrics.empty() && a.csv.empty())) return List(study);
+    study::StudyReader study(a.study);
+    Define(study, a.derive);
+    if (a.list || (a.metrics.empty() && a.csv.empty())) return List(study, a.per_node);
     if (!a.plot.empty()) study::CheckPlotName(a.plot);
-    const std::string by = a.by.empty() && !study.parameters().empty() ? study.parameters().front() : a.by;
+    const std::string by =
+        study.Parameter(a.by.empty() && !study.parameters().empty() ? study.parameters().front() : a.by);
+    std::vector<study::MetricSeries> plotted;
     for (const std::string& metric : a.metrics) {
-      const std::vector<study::Series> series = study::Summarise(study, metric, by);
-      std::fputs(study::FormatTable(metric, study.Parameter(by), series).c_str(), stdout);
-      if (a.plot.empty()) continue;
-      const std::string file = PlotFile(a.plot, metric, a.metrics.size());
-      study::Plot(metric, study.Parameter(by), series, file);
-      std::printf("plot in %s\n", file.c_str());
+      plotted.push_back({metric, study::Summarise(study, metric, by)});
+      std::fputs(study::FormatTable(metric, by, plotted.back().series).c_str(), stdout);
+      NoteMissing(study, metric, study.Values(metric).size());
     }
-    if (!a.csv.empty()) {
-      std::vector<std::string> metrics = a.metrics;
-      if (metrics.empty())
-        for (const auto& [name, count] : study.Metrics()) metrics.push_back(name);
-      study::WriteCsv(study, metrics, a.csv);
-      std::printf("runs in %s\n", a.csv.c_str());
+    if (!a.plot.empty() && !plotted.empty()) {
+      study::Plot(plotted, by, a.text, a.plot);
+      std::printf("plot in %s\n", a.plot.c_str());
     }
+    if (!a.csv.empty()) Csv(study, a);
   } catch (const study::ReportError& e) {
     throw CLI::ValidationError(e.what());
   }
@@ -188,15 +208,23 @@ Command AddReport(CLI::App& app) {
       "interval per value, as a table, a plot (SVG/PNG) and CSV (docs/studies.md)");
   cmd->add_option("study", a->study, "The study's folder (or its study.sqlite)")->required();
   cmd->add_option("-m,--metric", a->metrics,
-                  "A number of the runs' summary.json by dotted name, e.g. network.route_discoveries.time_s.median "
-                  "(repeatable; --list shows them)");
+                  "A number of the runs' summary.json by dotted name (network.route_discoveries.time_s.median), an "
+                  "expression (sum(metrics.m*.created.count)) or a --derive name (repeatable; --list shows them)");
+  cmd->add_option("--derive", a->derive,
+                  "NAME=EXPRESSION: a metric of each run computed from its others, e.g. "
+                  "delivery=sum(metrics.mule.delivered.sum)/sum(metrics.m*.created.count): + - * / ( ), numbers, "
+                  "metrics, and sum mean min max count over a pattern with * (repeatable; docs/studies.md)");
   cmd->add_option("--by", a->by, "The varied parameter on the x axis (default: the first one varied)");
-  cmd->add_option("--plot", a->plot,
-                  "Plot the metric into this .svg or .png file (with several -m, one file each: NAME-METRIC.svg)");
+  cmd->add_option("--plot", a->plot, "Plot every -m into this .svg or .png file, a line each");
+  cmd->add_option("--title", a->text.title, "The plot's title (default: what it shows)");
+  cmd->add_option("--xlabel", a->text.xlabel, "The plot's x axis label (default: the parameter's last path part)");
+  cmd->add_option("--ylabel", a->text.ylabel, "The plot's y axis label (default: the metric, or 'value' for several)");
   cmd->add_option("--csv", a->csv,
-                  "Write one row per run (parameters, seed, status and the metrics, or every metric without -m) "
-                  "for pandas or a spreadsheet");
+                  "Write one row per run (run_id, run_name, seed, status, parameters and the -m metrics, or every "
+                  "metric without -m) for pandas or a spreadsheet");
   cmd->add_flag("--list", a->list, "List the study's parameters and metrics");
+  cmd->add_flag("--per-node", a->per_node,
+                "List (and write to --csv) each node's metrics, not the per-node metrics folded over the nodes");
   return {cmd, [a](hosting::Registry&) { return Report(*a); }};
 }
 

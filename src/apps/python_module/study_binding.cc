@@ -20,6 +20,13 @@ py::list Summary(const study::StudyReader& reader, const std::string& metric, co
   return rows;
 }
 
+// (name, runs, nodes) per metric, folded over the nodes unless `per_node`.
+py::list Metrics(const study::StudyReader& reader, bool per_node) {
+  py::list rows;
+  for (const auto& m : reader.Metrics(per_node)) rows.append(py::make_tuple(m.name, m.runs, m.nodes));
+  return rows;
+}
+
 }  // namespace
 
 void BindStudyReader(py::module_& m) {
@@ -27,7 +34,9 @@ void BindStudyReader(py::module_& m) {
   py::class_<study::StudyReader>(m, "StudyReader", "A study's database, as `sanet report` reads it (sanet.Study)")
       .def(py::init<const std::string&>(), "where"_a)
       .def("parameters", &study::StudyReader::parameters)
-      .def("metrics", &study::StudyReader::Metrics)
+      .def("metrics", &Metrics, "per_node"_a = false)
+      .def("define", &study::StudyReader::Define, "name"_a, "expression"_a)
+      .def("values", &study::StudyReader::Values, "metric"_a)
       .def("summarise", &Summary, "metric"_a, "by"_a = "");
 }
 

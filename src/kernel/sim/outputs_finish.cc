@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 #include "core/json_text.h"
 #include "core/statistics.h"
@@ -278,7 +279,12 @@ nlohmann::ordered_json Outputs::Summary(const RunResult& result, const std::stri
   j["messages_lost_before_their_controller"] = messages_undelivered_;
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
   for (const auto& [node, named] : metrics_)
-    for (const auto& [metric, values] : named) metrics[node][metric] = Quartiles(values);
+    for (const auto& [metric, values] : named) {
+      metrics[node][metric] = Quartiles(values);
+      // A controller's counts come one Metric call at a time, or as running totals: the sum says
+      // what the first kind adds up to.
+      metrics[node][metric]["sum"] = std::accumulate(values.begin(), values.end(), 0.0);
+    }
   j["metrics"] = metrics;
   j["transitions_to"] = transitions_to_;
   if (!min_distances_.empty()) j["min_distance"] = MinDistanceSummary();

@@ -6,12 +6,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/closest_names.h"
 #include "study/grid.h"
+#include "study/node_fold.h"
 #include "trace/csv_sink.h"
 
 namespace sanet::study {
@@ -55,9 +58,9 @@ std::string Label(const StudyRun& run, const std::vector<std::string>& parameter
   return label;
 }
 
-std::string Format(double v) {
+std::string Format(double v, int digits = 6) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
   return text;
 }
 
@@ -65,6 +68,7 @@ std::string Format(double v) {
 
 StudyReader::StudyReader(const std::string& where) {
   const std::string path = fs::is_directory(where) ? (fs::path(where) / "study.sqlite").string() : where;
+  folder_ = fs::path(path).parent_path().string();
   if (!fs::exists(path)) throw ReportError(where + " is not a study: no " + path + " (sanet sweep makes one)");
   if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
     sqlite3_close(db_);
@@ -90,34 +94,145 @@ StudyReader::StudyReader(const std::string& where) {
 
 StudyReader::~StudyReader() { sqlite3_close(db_); }
 
-std::vector<std::pair<std::string, int>> StudyReader::Metrics() const {
-  std::vector<std::pair<std::string, int>> metrics;
-  for (const auto& row : Query(db_, "SELECT name, count(*) FROM scalars GROUP BY name ORDER BY name"))
-    metrics.emplace_back(row[0], std::stoi(row[1]));
-  return metrics;
+const std::map<long, RunMetrics>& StudyReader::Completed() const {
+  if (completed_) return *completed_;
+  completed_.emplace();
+  for (const StudyRun& r : runs_)
+    if (r.status == "completed") (*completed_)[r.id];
+  for (const auto& row : Query(db_,
+                               "SELECT s.run, s.name, s.value FROM scalars s JOIN runs r ON r.id = s.run "
+                               "WHERE r.status = 'completed'"))
+    if (!row[2].empty()) (*completed_)[std::stol(row[0])][row[1]] = std::stod(row[2]);
+  return *completed_;
+}
+
+int StudyReader::CompletedRuns() const { return static_cast<int>(Completed().size()); }
+
+// From the study's nodes table; for a study begun before sanet kept one, from the run's
+// summary.json.
+std::set<std::string> StudyReader::NodesOf(long run) const {
+  if (auto it = nodes_.find(run); it != nodes_.end()) return it->second;
+  std::set<std::string>& names = nodes_[run];
+  if (!Query(db_, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'nodes'").empty())
+    for (const auto& row : Query(db_, "SELECT name FROM nodes WHERE run = " + std::to_string(run)))
+      names.insert(row[0]);
+  if (!names.empty()) return names;
+  for (const auto& row : Query(db_, "SELECT folder FROM runs WHERE id = " + std::to_string(run))) {
+    std::ifstream in(fs::path(folder_) / row[0] / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (summary.is_object() && summary.contains("nodes") && summary["nodes"].is_array())
+      for (const auto& n : summary["nodes"])
+        if (n.contains("name") && n["name"].is_string()) names.insert(n["name"].get<std::string>());
+  }
+  return names;
+}
+
+// A metric that more than one node of some run has is listed folded; one only ever a single
+// node has (the one robot's) keeps its own name. The list is in the order of the names inside.
+std::vector<StudyReader::MetricInfo> StudyReader::Metrics(bool per_node) const {
+  struct Family {
+    std::set<long> runs;
+    int nodes = 0;
+    std::map<std::string, int> names;  // -> runs that have it
+  };
+  std::map<std::string, Family> families;  // by pattern, or by name for run-wide metrics
+  for (const auto& [id, run] : Completed()) {
+    const std::set<std::string> nodes = per_node ? std::set<std::string>{} : NodesOf(id);
+    std::map<std::string, int> in_run;
+    for (const auto& [name, value] : run) {
+      const std::string pattern = NodePattern(name, nodes);
+      Family& f = families[pattern.empty() ? name : pattern];
+      f.runs.insert(id), ++f.names[name], ++in_run[pattern];
+    }
+    for (const auto& [pattern, count] : in_run)
+      if (!pattern.empty()) families[pattern].nodes = std::max(families[pattern].nodes, count);
+  }
+  std::vector<MetricInfo> list;
+  for (const auto& [key, f] : families) {
+    if (f.nodes > 1) {
+      list.push_back({FoldedExpression(key), static_cast<int>(f.runs.size()), f.nodes});
+      continue;
+    }
+    for (const auto& [name, runs] : f.names) list.push_back({name, runs, 0});
+  }
+  return list;
+}
+
+void StudyReader::Define(const std::string& name, const std::string& expression) {
+  const bool word = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+  });
+  if (!word) throw ReportError("--derive: '" + name + "' is not a name (letters, digits, '_' and '.')");
+  if (derived_.count(name)) throw ReportError("--derive: '" + name + "' is derived twice");
+  for (const auto& [id, run] : Completed())
+    if (run.count(name)) throw ReportError("--derive: '" + name + "' is already a metric of the runs");
+  try {
+    MetricExpression e = MetricExpression::Parse(expression);
+    CheckReads(e);
+    derived_.emplace(name, std::move(e));
+  } catch (const ExpressionError& e) {
+    throw ReportError("--derive " + name + ": " + e.what());
+  }
+}
+
+std::optional<double> StudyReader::Derive(const std::string& name, const RunMetrics& run) const {
+  auto it = derived_.find(name);
+  if (it == derived_.end()) return std::nullopt;
+  return it->second.Evaluate(run, [this](const std::string& n, const RunMetrics& r) { return Derive(n, r); });
+}
+
+// Every name the expression reads is a metric of some run or an earlier derived one, and every
+// pattern matches something: a typo is an error, not a column of nothing.
+void StudyReader::CheckReads(const MetricExpression& e) const {
+  const auto& completed = Completed();
+  if (completed.empty()) throw ReportError("no run of this study has completed yet");
+  for (const std::string& name : e.names()) {
+    const bool known = derived_.count(name) || std::any_of(completed.begin(), completed.end(),
+                                                           [&](const auto& r) { return r.second.count(name) > 0; });
+    if (!known) Unknown("metric", name);
+  }
+  for (const std::string& pattern : e.patterns()) {
+    const bool matched = std::any_of(completed.begin(), completed.end(), [&](const auto& r) {
+      return std::any_of(r.second.begin(), r.second.end(),
+                         [&](const auto& m) { return MatchesPattern(pattern, m.first); });
+    });
+    if (!matched) Unknown("metric matching", pattern);
+  }
+}
+
+void StudyReader::Unknown(const std::string& what, const std::string& name) const {
+  std::vector<std::string> names;
+  for (const MetricInfo& m : Metrics(/*per_node=*/true)) names.push_back(m.name);
+  for (const auto& [derived, e] : derived_) names.push_back(derived);
+  std::vector<std::string> close = ClosestNames(name, names);
+  for (const std::string& n : names)  // a part of a name: "delay" for message_delay_s.median
+    if (close.size() < 3 && n.find(name) != std::string::npos &&
+        std::find(close.begin(), close.end(), n) == close.end())
+      close.push_back(n);
+  throw ReportError("no completed run has a " + what + " '" + name + "'" +
+                    (close.empty() ? "" : " (did you mean " + OrList(close) + "?)") +
+                    "; sanet report --list lists them");
 }
 
 std::map<long, double> StudyReader::Values(const std::string& metric) const {
-  std::string quoted;
-  for (char c : metric) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+  std::optional<MetricExpression> parsed;
+  const MetricExpression* e = nullptr;
+  if (auto it = derived_.find(metric); it != derived_.end()) {
+    e = &it->second;
+  } else {
+    try {
+      parsed = MetricExpression::Parse(metric);
+    } catch (const ExpressionError& error) {
+      throw ReportError(std::string("-m: ") + error.what());
+    }
+    CheckReads(*parsed);
+    e = &*parsed;
+  }
   std::map<long, double> values;
-  for (const auto& row : Query(db_,
-                               "SELECT s.run, s.value FROM scalars s JOIN runs r ON r.id = s.run "
-                               "WHERE r.status = 'completed' AND s.name = '" +
-                                   quoted + "'"))
-    if (!row[1].empty()) values[std::stol(row[0])] = std::stod(row[1]);
-  if (!values.empty()) return values;
-  std::vector<std::string> names;
-  for (const auto& [name, count] : Metrics()) names.push_back(name);
-  if (names.empty()) throw ReportError("no run of this study has completed yet");
-  std::vector<std::string> close = ClosestNames(metric, names);
-  for (const std::string& name : names)  // a part of a name: "delay" for message_delay_s.median
-    if (close.size() < 3 && name.find(metric) != std::string::npos &&
-        std::find(close.begin(), close.end(), name) == close.end())
-      close.push_back(name);
-  throw ReportError("no completed run has a metric '" + metric + "'" +
-                    (close.empty() ? "" : " (did you mean " + OrList(close) + "?)") +
-                    "; sanet report --list lists them");
+  const auto derive = [this](const std::string& n, const RunMetrics& r) { return Derive(n, r); };
+  for (const auto& [id, run] : Completed())
+    if (const std::optional<double> v = e->Evaluate(run, derive)) values[id] = *v;
+  return values;
 }
 
 std::vector<double> StudyReader::EndConditionTimes() const {
@@ -209,14 +324,14 @@ std::string FormatTable(const std::string& metric, const std::string& by, const 
 void WriteCsv(const StudyReader& study, const std::vector<std::string>& metrics, const std::string& path) {
   std::vector<std::map<long, double>> columns;
   for (const std::string& m : metrics) columns.push_back(study.Values(m));
-  std::string csv = "run,seed,status";
+  std::string csv = "run_id,run_name,seed,status";
   for (const std::string& p : study.parameters()) csv += "," + trace::CsvField(p);
   for (const std::string& m : metrics) csv += "," + trace::CsvField(m);
   csv += "\n";
   for (const StudyRun& r : study.runs()) {
-    csv += trace::CsvField(r.name) + "," + std::to_string(r.seed) + "," + r.status;
+    csv += std::to_string(r.id) + "," + trace::CsvField(r.name) + "," + std::to_string(r.seed) + "," + r.status;
     for (const std::string& p : study.parameters()) csv += "," + trace::CsvField(r.values.at(p));
-    for (const auto& column : columns) csv += "," + (column.count(r.id) ? Format(column.at(r.id)) : "");
+    for (const auto& column : columns) csv += "," + (column.count(r.id) ? Format(column.at(r.id), 15) : "");
     csv += "\n";
   }
   WriteFileAtomically(path, csv);

@@ -77,11 +77,11 @@ void DrawSeries(const Series& s, int colour, bool numeric, const std::vector<std
 }
 
 void Legend(const std::vector<Series>& series) {
-  const int n = static_cast<int>(std::min<std::size_t>(series.size(), 6));
+  const int n = static_cast<int>(series.size());
   std::vector<PLINT> opts(n, PL_LEGEND_LINE), colours(n), styles(n, 1), text_colours(n, kBlack);
   std::vector<PLFLT> widths(n, 2.0);
   std::vector<const char*> texts(n);
-  for (int i = 0; i < n; ++i) colours[i] = kFirstSeries + i, texts[i] = series[i].label.c_str();
+  for (int i = 0; i < n; ++i) colours[i] = kFirstSeries + i % 6, texts[i] = series[i].label.c_str();
   PLFLT width = 0, height = 0;
   pllegend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
            PL_POSITION_TOP | PL_POSITION_RIGHT | PL_POSITION_INSIDE, 0.02, 0.02, 0.08, 0, kBlack, 1, 0, 0, n,
@@ -96,14 +96,39 @@ void CheckPlotName(const std::string& path) {
   if (ext != ".svg" && ext != ".png") throw ReportError("--plot: give a file ending in .svg or .png, not " + path);
 }
 
-void Plot(const std::string& metric, const std::string& by, const std::vector<Series>& series,
+namespace {
+
+// Every line of the plot: each metric's series, labelled by the metric where there are several.
+std::vector<Series> Lines(const std::vector<MetricSeries>& metrics) {
+  std::vector<Series> lines;
+  for (const MetricSeries& m : metrics)
+    for (const Series& s : m.series) {
+      std::string label = metrics.size() == 1 ? s.label : m.metric + (s.label.empty() ? "" : " (" + s.label + ")");
+      lines.push_back({label, s.points});
+    }
+  return lines;
+}
+
+PlotText Defaults(PlotText text, const std::vector<MetricSeries>& metrics, const std::string& by) {
+  if (text.xlabel.empty()) text.xlabel = by.empty() ? "all runs" : ShortName(by);
+  if (text.ylabel.empty()) text.ylabel = metrics.size() == 1 ? metrics.front().metric : "value";
+  if (text.title.empty())
+    text.title = "mean and 95% confidence interval" + std::string(by.empty() ? "" : " against " + ShortName(by));
+  return text;
+}
+
+}  // namespace
+
+void Plot(const std::vector<MetricSeries>& metrics, const std::string& by, const PlotText& asked,
           const std::string& path) {
   CheckPlotName(path);
   const std::string ext = std::filesystem::path(path).extension().string();
+  const std::vector<Series> series = Lines(metrics);
   const bool numeric = NumericAxis(series);
   const std::vector<std::string> categories = Categories(series);
-  if (categories.empty()) throw ReportError("nothing to plot: no completed run has " + metric);
+  if (categories.empty()) throw ReportError("nothing to plot: no completed run has a value");
   const Frame f = Bounds(series, numeric, categories.size());
+  const PlotText text = Defaults(asked, metrics, by);
   const std::string tmp = path + ".tmp" + ext;
   plsdev(ext == ".svg" ? "svg" : "pngcairo");
   plsfnam(tmp.c_str());
@@ -117,8 +142,7 @@ void Plot(const std::string& metric, const std::string& by, const std::vector<Se
     for (std::size_t i = 0; i < categories.size(); ++i)
       plmtex("b", 1.5, (1.0 + i - f.x0) / (f.x1 - f.x0), 0.5, categories[i].c_str());
   }
-  pllab(by.empty() ? "" : by.c_str(), metric.c_str(),
-        ("mean and 95% confidence interval" + std::string(by.empty() ? "" : " against " + ShortName(by))).c_str());
+  pllab(text.xlabel.c_str(), text.ylabel.c_str(), text.title.c_str());
   for (std::size_t i = 0; i < series.size(); ++i)
     DrawSeries(series[i], kFirstSeries + static_cast<int>(i % 6), numeric, categories);
   if (series.size() > 1) Legend(series);

@@ -135,7 +135,8 @@ CREATE TABLE IF NOT EXISTS parameters(run INTEGER NOT NULL REFERENCES runs(id), 
   number REAL, PRIMARY KEY(run, name));
 CREATE TABLE IF NOT EXISTS scalars(run INTEGER NOT NULL REFERENCES runs(id), name TEXT NOT NULL, value REAL,
   PRIMARY KEY(run, name));
-CREATE INDEX IF NOT EXISTS scalars_by_name ON scalars(name);)");
+CREATE INDEX IF NOT EXISTS scalars_by_name ON scalars(name);
+CREATE TABLE IF NOT EXISTS nodes(run INTEGER NOT NULL REFERENCES runs(id), name TEXT NOT NULL, PRIMARY KEY(run, name));)");
 }
 
 std::string StudyDb::Get(const std::string& key) const {
@@ -152,7 +153,7 @@ void StudyDb::Describe(const StudyInfo& info) {
       if (Get(key) != value)
         throw OtherStudy(path_ + " holds a study with other " + key + " (" + OneLine(Get(key)) + ", not " +
                          OneLine(value) + "): give this study another folder with -o");
-    return;
+    return CreateResultsView(info.parameters);
   }
   Statement put(db_, "INSERT OR REPLACE INTO study(key, value) VALUES (?, ?)");
   for (const auto& [key, value] : identity) put.Bind(1, key).Bind(2, value).Run();
@@ -162,7 +163,9 @@ void StudyDb::Describe(const StudyInfo& info) {
 }
 
 void StudyDb::CreateResultsView(const std::vector<std::string>& parameters) {
-  std::string sql = "CREATE VIEW IF NOT EXISTS results AS SELECT runs.id AS run, runs.name, runs.seed, runs.status";
+  // Made again each time: a study begun by sanet 0.x named the id `run` and the name `name`.
+  Exec("DROP VIEW IF EXISTS results");
+  std::string sql = "CREATE VIEW results AS SELECT runs.id AS run_id, runs.name AS run_name, runs.seed, runs.status";
   for (const std::string& p : parameters)
     sql +=
         ", (SELECT coalesce(number, value) FROM parameters WHERE run = runs.id AND name = '" + p + "') AS " + Quoted(p);
@@ -237,6 +240,10 @@ int StudyDb::Count(const std::string& status) const {
 void StudyDb::Scalars(long run, const nlohmann::json& summary) {
   Statement put(db_, "INSERT OR REPLACE INTO scalars(run, name, value) VALUES (?, ?, ?)");
   for (const auto& [name, value] : Numbers(summary)) put.Bind(1, run).Bind(2, name).Bind(3, value).Run();
+  Statement node(db_, "INSERT OR REPLACE INTO nodes(run, name) VALUES (?, ?)");
+  if (summary.contains("nodes") && summary["nodes"].is_array())
+    for (const auto& n : summary["nodes"])
+      if (n.contains("name") && n["name"].is_string()) node.Bind(1, run).Bind(2, n["name"].get<std::string>()).Run();
 }
 
 void StudyDb::ImportCsv(long run, const std::string& table, const std::string& path) {
@@ -268,6 +275,7 @@ void StudyDb::Finished(const std::string& name, const RunOutcome& o, const nlohm
     s.Bind(9, o.finished_utc).Bind(10, o.host).Bind(11, static_cast<long>(o.rank)).Bind(12, o.error).Bind(13, id);
     s.Run();
     Exec("DELETE FROM scalars WHERE run = " + std::to_string(id));
+    Exec("DELETE FROM nodes WHERE run = " + std::to_string(id));
     if (o.status == "completed") {
       Scalars(id, summary);
       for (const std::string& table : Tables()) {

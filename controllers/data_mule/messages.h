@@ -1,0 +1,28 @@
+// The data mule's three messages, on one byte of kind each:
+//   beacon   robot -> broadcast  "I am here": motes in range send what they hold
+//   reading  mote -> robot       one reading: its number and when it was made, padded to `size`
+//   ack      robot -> mote       the reading's number: the mote may forget it
+#pragma once
+
+#include <cstdint>
+
+#include "sanet/codec.h"
+
+namespace sanet::controllers::data_mule {
+
+enum Kind : std::uint8_t { kBeacon = 1, kReading = 2, kAck = 3 };
+
+struct Reading {
+  std::uint32_t number = 0;
+  double created = 0;  // s, simulated
+};
+
+inline Bytes ReadingMessage(const Reading& r, int size) {
+  Bytes b = Writer().U8(kReading).U32(r.number).F64(r.created).bytes();
+  if (static_cast<int>(b.size()) < size) b.resize(size, 0);
+  return b;
+}
+
+inline Bytes AckMessage(std::uint32_t number) { return Writer().U8(kAck).U32(number).bytes(); }
+
+}  // namespace sanet::controllers::data_mule

@@ -1,0 +1,18 @@
+// Per-node metrics folded by name, so that a study of 30 motes lists `metrics.*.created.count`
+// once instead of 30 times: a part of a metric's dotted name that is the name of one of the run's
+// nodes (summary.json's `metrics.<node>...` and `energy.nodes.<node>...`) becomes `*`.
+#pragma once
+
+#include <set>
+#include <string>
+
+namespace sanet::study {
+
+// The folded pattern of `name`, or "" when none of its parts (after the first) names a node.
+std::string NodePattern(const std::string& name, const std::set<std::string>& nodes);
+// What a folded metric is by default, as an expression: counts and sums add up over the nodes,
+// minima and maxima stay minima and maxima, every other statistic is averaged:
+// `sum(metrics.*.created.count)`, `mean(energy.nodes.*.remaining_j)`.
+std::string FoldedExpression(const std::string& pattern);
+
+}  // namespace sanet::study

@@ -73,19 +73,50 @@ def rows(folder, name):
         return list(csv.DictReader(f))
 
 
+def link_curve_crossing(folder):
+    """Where link_curve.csv's PRR first falls from at least 0.5 to under it, interpolated
+    linearly; and the two distances around it."""
+    curve = rows(folder, "link_curve.csv")
+    for a, b in zip(curve, curve[1:]):
+        pa, pb = float(a["prr"]), float(b["prr"])
+        if pa >= 0.5 > pb:
+            da, db = float(a["distance_m"]), float(b["distance_m"])
+            return da + (pa - 0.5) / (pa - pb) * (db - da), da, db
+    raise AssertionError(f"{folder}/link_curve.csv never crosses a PRR of 0.5")
+
+
+def nominal_range(scenario, tmp):
+    """The radio's range as the viewer documents it: `sanet link-curve --links 20` over its
+    default distances, then at 20 steps between the two around PRR 0.5, interpolated there."""
+    coarse, fine = os.path.join(tmp, "coarse"), os.path.join(tmp, "fine")
+    subprocess.run([SANET, "link-curve", scenario, "--links", "20", "-o", coarse, "-q"], check=True)
+    _, da, db = link_curve_crossing(coarse)
+    subprocess.run([SANET, "link-curve", scenario, "--links", "20", "--from", repr(da), "--to", repr(db),
+                    "--step", repr((db - da) / 20), "-o", fine, "-q"], check=True)
+    return link_curve_crossing(fine)[0]
+
+
+def position_at(results, name, t):
+    """A node's position at t, half way between trajectories.csv's samples around it."""
+    track = [r for r in rows(results, "trajectories.csv") if r["node"] == name]
+    before = max((r for r in track if float(r["time"]) <= t), key=lambda r: float(r["time"]))
+    after = min((r for r in track if float(r["time"]) >= t), key=lambda r: float(r["time"]))
+    return {axis: (float(before[axis]) + float(after[axis])) / 2 for axis in ("x", "y")}
+
+
 class Viewer:
     """`sanet view` on a results folder, and a headless browser on its page."""
 
-    def __init__(self, results, tmp):
+    def __init__(self, results, tmp, query=""):
         os.makedirs(tmp, exist_ok=True)
         port_file = os.path.join(tmp, "port")
         self.server = subprocess.Popen([SANET, "view", results, "--port", "0", "--port-file", port_file],
                                        stdout=subprocess.DEVNULL)
         wait_for_port(port_file)
         with open(port_file) as f:
-            self.open_browser(f"http://127.0.0.1:{int(f.read())}/")
+            self.open_browser(f"http://127.0.0.1:{int(f.read())}/", query)
 
-    def open_browser(self, url):
+    def open_browser(self, url, query=""):
         self.url = url
         options = webdriver.ChromeOptions()
         for argument in ["--headless=new", "--no-sandbox", "--window-size=1400,1000", "--enable-unsafe-swiftshader",
@@ -94,11 +125,22 @@ class Viewer:
         options.binary_location = shutil.which("chromium")
         options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
         self.browser = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
-        self.browser.get(self.url)
+        self.browser.get(self.url + query)
         for _ in range(300):
             if self.browser.execute_script("return Boolean(window.sanet && window.sanet.ready)"):
                 break
             time.sleep(0.1)
+
+    def goto(self, query):
+        """Opens the page again with `query` (say "?t=600") and waits until it is ready."""
+        self.browser.get(self.url + query)
+        for _ in range(300):
+            if self.browser.execute_script("return Boolean(window.sanet && window.sanet.ready)"):
+                break
+            time.sleep(0.1)
+
+    def state(self):
+        return self.browser.execute_script("return window.sanet.state()")
 
     def call(self, script):
         return self.browser.execute_async_script(
@@ -154,6 +196,95 @@ class ViewerTest(unittest.TestCase):
         # The help request floods the network at t = 10 s: its broadcasts are drawn as they go.
         self.viewer.call("window.sanet.seek(10.1)")
         self.assertGreater(self.viewer.browser.execute_script("return window.sanet.state().broadcastsShown"), 0)
+
+    def test_opened_at_a_time_it_shows_that_time(self):
+        try:
+            self.viewer.goto("?t=600")
+            state = self.viewer.state()
+            self.assertEqual((state["t"], state["playing"], state["notice"]), (600, False, ""))
+            self.assertEqual(self.viewer.browser.find_element("id", "clock").text, "t = 600.0 s")
+            robot = [n for n in state["nodes"] if n["name"] == "robot"][0]
+            expected = position_at(self.results, "robot", 600)
+            for axis in ("x", "y"):
+                self.assertAlmostEqual(robot[axis], expected[axis], delta=2.0)
+            self.viewer.goto("?t=abc")
+            state = self.viewer.state()
+            self.assertEqual(state["t"], 0)
+            self.assertIn("?t=abc is not a time in seconds", state["notice"])
+            self.assertTrue(self.viewer.browser.find_element("id", "notice").is_displayed())
+            self.viewer.goto("?t=1e9")
+            state = self.viewer.state()
+            self.assertEqual(state["t"], state["duration"])
+            self.assertIn("past the run's end", state["notice"])
+            self.assertEqual(self.viewer.errors(), [])
+        finally:
+            self.viewer.goto("")
+
+    def test_the_headless_screenshot_recipe_draws_the_time_asked(self):
+        """docs/viewer.md's one-line recipe: chromium --headless with a virtual time budget."""
+        url = self.viewer.url + "?t=600"
+        recipe = ["chromium", "--headless", "--no-sandbox", "--window-size=1400,1000", "--virtual-time-budget=10000"]
+        dom = subprocess.run(recipe + ["--dump-dom", url], capture_output=True, text=True, check=True).stdout
+        self.assertIn("t = 600.0 s", dom)
+        self.assertIn("radio range (half the frames arrive", dom)
+        shot = os.path.join(self.tmp.name, "recipe.png")
+        subprocess.run(recipe + [f"--screenshot={shot}", url], capture_output=True, check=True)
+        self.assertGreater(os.path.getsize(shot), 50000, "a drawn page (a blank one is about 23 kB)")
+
+    def test_a_controllers_metric_is_plotted(self):
+        metrics = {m["name"]: m for m in self.viewer.state()["metrics"]}
+        hops = [r for r in rows(self.results, "metrics.csv") if r["name"] == "hop_time"]
+        self.assertGreater(len(hops), 2)
+        self.assertEqual(metrics["hop_time"], {"name": "hop_time", "nodes": ["robot"], "folded": False,
+                                               "points": len(hops)})
+        self.assertEqual(set(metrics), {r["name"] for r in rows(self.results, "metrics.csv")})
+        chart = self.viewer.browser.find_element("css selector", '#metrics figure[data-metric="hop_time"] canvas')
+        self.assertTrue(chart.is_displayed())
+        self.assertGreater(chart.size["height"], 100)
+
+    def test_the_radio_range_has_the_link_curves_radius(self):
+        expected = nominal_range(os.path.join(self.results, "scenario.yaml"), os.path.join(self.tmp.name, "curve"))
+        self.viewer.call("window.sanet.seek(600)")
+        self.viewer.call("window.sanet.ranges()")
+        ranges = self.viewer.state()["ranges"]
+        self.assertEqual(ranges["error"], None)
+        self.assertFalse(ranges["walls"])
+        [radio] = ranges["radios"]
+        self.assertEqual(len(radio["nodes"]), 26)
+        self.assertAlmostEqual(radio["radius"], expected, delta=0.01)
+        self.assertLess(radio["precision"], 0.5)
+        # By default the robot's range is drawn while no node is selected, then the selected node's.
+        [drawn] = ranges["drawn"]
+        self.assertEqual(drawn["name"], "robot")
+        self.assertAlmostEqual(drawn["radius"], expected, delta=0.01)
+        try:
+            self.viewer.call("window.sanet.select('m7')")
+            self.assertEqual([d["name"] for d in self.viewer.state()["ranges"]["drawn"]], ["m7"])
+        finally:
+            self.viewer.call("window.sanet.select('')")
+
+    def test_the_radio_range_follows_the_walls_indoors(self):
+        results = os.path.join(self.tmp.name, "indoor")
+        subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "help-request-indoor.yaml"), "-q", "-o", results,
+                        "--duration", "30"], check=True)
+        expected = nominal_range(os.path.join(results, "scenario.yaml"), os.path.join(self.tmp.name, "indoor-curve"))
+        indoor = Viewer(results, os.path.join(self.tmp.name, "i"), "?ranges=all")
+        try:
+            indoor.call("window.sanet.ranges()")
+            ranges = indoor.state()["ranges"]
+            self.assertTrue(ranges["walls"])
+            self.assertAlmostEqual(ranges["radios"][0]["radius"], expected, delta=0.01)
+            drawn = {d["name"]: d for d in ranges["drawn"]}
+            self.assertEqual(len(drawn), len(indoor.state()["nodes"]))
+            # A room's mote reaches the nominal range through its door, and less far through its walls.
+            for name, d in drawn.items():
+                self.assertLessEqual(d["radius"], expected + 0.01, name)
+            self.assertAlmostEqual(drawn["north0"]["radius"], expected, delta=0.01)
+            self.assertLess(drawn["north0"]["shortest"], expected / 2)
+            self.assertIn("shaped by the walls", indoor.browser.find_element("id", "ranges-note").text)
+            self.assertEqual(indoor.errors(), [])
+        finally:
+            indoor.close()
 
     def test_nodes_without_energy_keep_their_colours(self):
         nodes, legend = self.viewer.nodes_at(300)

@@ -21,13 +21,15 @@ function rangeNote(info) {
     (info.walls ? "; shaped by the walls (mean power through them)" : "");
 }
 
-// The drawn range's largest distance from the node: what the page shows, for tests.
-function drawnRadius(line, centre) {
+// The drawn range's largest and smallest distances from the node: what the page shows, for tests.
+function drawnReach(line, centre) {
   const p = line.geometry.attributes.position;
-  let most = 0;
-  for (let i = 0; i < p.count; i++)
-    most = Math.max(most, Math.hypot(p.getX(i) * line.scale.x + line.position.x - centre.x, p.getY(i) * line.scale.y + line.position.y - centre.y));
-  return most;
+  let radius = 0, shortest = Infinity;
+  for (let i = 0; i < p.count; i++) {
+    const d = Math.hypot(p.getX(i) * line.scale.x + line.position.x - centre.x, p.getY(i) * line.scale.y + line.position.y - centre.y);
+    radius = Math.max(radius, d); shortest = Math.min(shortest, d);
+  }
+  return { radius, shortest };
 }
 
 function radioRanges(world) {
@@ -80,7 +82,7 @@ function radioRanges(world) {
     state() {
       const info = ranges.info || {};
       const drawn = [...ranges.lines].filter(([, line]) => line.visible)
-        .map(([n, line]) => ({ name: n.node.name, radius: drawnRadius(line, n.mesh.position) }));
+        .map(([n, line]) => ({ name: n.node.name, ...drawnReach(line, n.mesh.position) }));
       return { mode: select.value, error: info.error || null, walls: Boolean(info.walls), drawn,
                radios: (info.radios || []).map((r) => ({ txPower: r.tx_power_dbm, radius: r.radius_m, precision: r.precision_m,
                                                          nodes: r.nodes.map((id) => world.nodes[id].node.name) })) };

@@ -294,7 +294,7 @@ function makeRenderer(element) {
 function live(run) {
   document.getElementById("title").textContent = run.info.name + " (live)";
   for (const id of ["play", "time", "speed", "plots"]) document.getElementById(id).style.display = "none";
-  document.getElementById("speed").parentElement.style.display = "none";
+  for (const id of ["speed", "ranges"]) document.getElementById(id).parentElement.style.display = "none";
   document.getElementById("panel").innerHTML = "<p>Live: the latest state of the run, as it goes.</p>";
   const element = document.getElementById("world");
   const renderer = makeRenderer(element);
@@ -398,6 +398,7 @@ async function main() {
   const slider = document.getElementById("time");
   slider.max = duration;
   const camera = () => (document.getElementById("view").value === "3d" ? cams.perspective : cams.top);
+  let plottedAt = null;
   async function render() {
     place(world, view.t);
     drawRadio(world, await frameWindow(view.t), view.t);
@@ -410,8 +411,11 @@ async function main() {
     placeLabels(world, camera(), element);
     document.getElementById("clock").textContent = `t = ${view.t.toFixed(1)} s`;
     slider.value = view.t;
-    redrawPlots();
-    metricPlots.redraw();
+    if (view.t !== plottedAt) {  // the charts' time line moves only with the time
+      plottedAt = view.t;
+      redrawPlots();
+      metricPlots.redraw();
+    }
   }
   let last = performance.now();
   function tick(now) {

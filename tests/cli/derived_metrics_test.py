@@ -101,6 +101,16 @@ class DerivedMetrics(unittest.TestCase):
         per_node = csv_rows(self.export("per-node.csv", "--per-node"))
         self.assertIn("metrics.m7.created.count", per_node[0])
 
+    def test_every_reading_made_is_delivered_held_or_overflowed(self):
+        for run_name in self.runs:
+            rows = metric_rows(self.folder(run_name))
+            total = lambda name: sum(float(r["value"]) for r in rows if r["name"] == name)
+            self.assertGreater(total("delivered"), 0)
+            self.assertEqual(total("created"), total("delivered") + total("held_at_end") + total("overflowed"),
+                             run_name)
+            heard = [float(r["value"]) for r in rows if r["name"] == "motes_heard"]
+            self.assertEqual(len(heard), 1, "Finish reports once")
+
     def test_several_metrics_share_one_plot_with_its_labels(self):
         svg = os.path.join(self.tmp.name, "two.svg")
         done = sanet("report", self.study, "--derive", DELIVERY, "-m", "delivery", "-m",

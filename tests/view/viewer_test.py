@@ -61,6 +61,25 @@ outputs: {energy_interval: 0.5, trace: true}
 """
 
 
+# Twelve flocking robots, each reporting its neighbours (metric `neighbours`) every second; `loud`
+# has a radio of its own, 5 dB stronger than the others'.
+FLOCK = """name: flock
+seed: 1
+duration: 5
+world: {physics: 2d, size: [40, 40]}
+network: {radio: 802.11b, tx_power: -5, routing: none, broadcast_jitter: 0.1}
+nodes:
+  - grid: {name: r, rows: 3, cols: 4, origin: [4, 4], spacing: 4}
+    model: diffdrive
+    controller: {name: flock, rate: 10}
+  - name: loud
+    model: diffdrive
+    pose: [20, 20, 0]
+    radio: {tx_power: 0}
+    controller: {name: flock, rate: 10}
+"""
+
+
 def write_batteries(folder):
     path = os.path.join(folder, "batteries.yaml")
     with open(path, "w") as f:
@@ -85,14 +104,15 @@ def link_curve_crossing(folder):
     raise AssertionError(f"{folder}/link_curve.csv never crosses a PRR of 0.5")
 
 
-def nominal_range(scenario, tmp):
+def nominal_range(scenario, tmp, sets=()):
     """The radio's range as the viewer documents it: `sanet link-curve --links 20` over its
     default distances, then at 20 steps between the two around PRR 0.5, interpolated there."""
     coarse, fine = os.path.join(tmp, "coarse"), os.path.join(tmp, "fine")
-    subprocess.run([SANET, "link-curve", scenario, "--links", "20", "-o", coarse, "-q"], check=True)
+    curve = [SANET, "link-curve", scenario, "--links", "20", "-q", *sets]
+    subprocess.run(curve + ["-o", coarse], check=True)
     _, da, db = link_curve_crossing(coarse)
-    subprocess.run([SANET, "link-curve", scenario, "--links", "20", "--from", repr(da), "--to", repr(db),
-                    "--step", repr((db - da) / 20), "-o", fine, "-q"], check=True)
+    subprocess.run(curve + ["--from", repr(da), "--to", repr(db), "--step", repr((db - da) / 20), "-o", fine],
+                   check=True)
     return link_curve_crossing(fine)[0]
 
 
@@ -285,6 +305,37 @@ class ViewerTest(unittest.TestCase):
             self.assertEqual(indoor.errors(), [])
         finally:
             indoor.close()
+
+    def test_many_nodes_metric_is_folded_and_each_radio_has_its_range(self):
+        scenario = os.path.join(self.tmp.name, "flock.yaml")
+        with open(scenario, "w") as f:
+            f.write(FLOCK)
+        results = os.path.join(self.tmp.name, "flock")
+        subprocess.run([SANET, "run", scenario, "-q", "-o", results], check=True)
+        effective = os.path.join(results, "scenario.yaml")
+        quiet = nominal_range(effective, os.path.join(self.tmp.name, "quiet-curve"))
+        loud = nominal_range(effective, os.path.join(self.tmp.name, "loud-curve"), ["--set", "network.tx_power=0"])
+        flock = Viewer(results, os.path.join(self.tmp.name, "fl"), "?t=4&ranges=all")
+        try:
+            flock.call("window.sanet.ranges()")
+            state = flock.state()
+            [neighbours] = [m for m in state["metrics"] if m["name"] == "neighbours"]
+            self.assertTrue(neighbours["folded"])
+            self.assertEqual(len(neighbours["nodes"]), 13)
+            caption = flock.browser.find_element("css selector", '#metrics figure[data-metric="neighbours"] figcaption')
+            self.assertIn("mean over the 13 nodes", caption.text)
+            radios = {r["txPower"]: r for r in state["ranges"]["radios"]}
+            self.assertEqual(sorted(radios), [-5, 0])
+            self.assertEqual(radios[0]["nodes"], ["loud"])
+            self.assertEqual(len(radios[-5]["nodes"]), 12)
+            self.assertAlmostEqual(radios[-5]["radius"], quiet, delta=0.01)
+            self.assertAlmostEqual(radios[0]["radius"], loud, delta=0.01)
+            drawn = {d["name"]: d["radius"] for d in state["ranges"]["drawn"]}
+            self.assertAlmostEqual(drawn["loud"], loud, delta=0.01)
+            self.assertAlmostEqual(drawn["r0"], quiet, delta=0.01)
+            self.assertEqual(flock.errors(), [])
+        finally:
+            flock.close()
 
     def test_nodes_without_energy_keep_their_colours(self):
         nodes, legend = self.viewer.nodes_at(300)

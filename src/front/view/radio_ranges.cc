@@ -91,7 +91,14 @@ nlohmann::json RangeJson(const RadioRange& r) {
 RadioRanges::RadioRanges(std::optional<sim::RunSpec> spec, std::string why) : spec_(std::move(spec)), why_(why) {
   if (spec_ && !spec_->network) why_ = "the scenario has no network: no radio to draw the range of";
   if (!spec_ || !spec_->network) spec_.reset();
-  measured_ = std::async(std::launch::async, [this] { Measure(); }).share();
+  measured_ = std::async(std::launch::async, [this] {
+                try {
+                  Measure();
+                } catch (const std::exception& e) {  // said by Ranges() instead of ranges
+                  why_ = std::string("measuring the radio failed: ") + e.what();
+                  spec_.reset();
+                }
+              }).share();
 }
 
 RadioRanges::~RadioRanges() { measured_.wait(); }
@@ -125,7 +132,7 @@ nlohmann::json RadioRanges::Ranges() {
 
 nlohmann::json RadioRanges::Shape(std::size_t radio, double x, double y) {
   measured_.wait();
-  if (radio >= radios_.size() || !radios_[radio].radius_m)
+  if (!spec_ || radio >= radios_.size() || !radios_[radio].radius_m)
     throw std::invalid_argument("no radio " + std::to_string(radio) + " with a range");
   const RadioRange& range = radios_[radio];
   const std::lock_guard<std::mutex> lock(ns3_);

@@ -2,8 +2,9 @@
 // sensor networks", SNPA 2003): it makes a reading every `interval` s and keeps up to `buffer` of
 // them (the oldest dropped when full); when it hears the robot's beacon it sends the robot what
 // it holds, at most `batch` readings per beacon, and forgets a reading once the robot acknowledges
-// it. Metrics: `created` (1 per reading), `overflowed` (1 per reading dropped from a full buffer)
-// and, at the end (Finish), `held_at_end`: what never reached the robot.
+// it. Metrics: `created` (1 per reading) and, at the end (Finish), `held_at_end` (what it still
+// holds) and `overflowed` (readings dropped from a full buffer), both reported even when 0 so
+// that every run has them.
 #include <algorithm>
 #include <deque>
 #include <memory>
@@ -32,15 +33,16 @@ class DataMuleSensor : public Controller {
     next_ = interval_ * node.Random();  // motes out of step, as motes switched on by hand are
   }
 
+  // Every reading due by now, even several in one control step (an interval under the step's).
   void ControlStep(Node& node) override {
-    if (node.Now() < next_) return;
-    next_ += interval_;
-    if (static_cast<int>(held_.size()) >= buffer_) {
-      held_.pop_front();
-      node.Metric("overflowed", 1);
+    for (; node.Now() >= next_; next_ += interval_) {
+      if (static_cast<int>(held_.size()) >= buffer_) {
+        held_.pop_front();
+        ++overflowed_;
+      }
+      held_.push_back({made_++, node.Now()});
+      node.Metric("created", 1);
     }
-    held_.push_back({made_++, node.Now()});
-    node.Metric("created", 1);
   }
 
   void OnMessage(Node& node, const Message& m) override {
@@ -59,7 +61,10 @@ class DataMuleSensor : public Controller {
     }
   }
 
-  void Finish(Node& node) override { node.Metric("held_at_end", static_cast<double>(held_.size())); }
+  void Finish(Node& node) override {
+    node.Metric("held_at_end", static_cast<double>(held_.size()));
+    node.Metric("overflowed", static_cast<double>(overflowed_));
+  }
 
  private:
   std::string mule_;
@@ -67,7 +72,7 @@ class DataMuleSensor : public Controller {
   int size_, buffer_, batch_;
   std::optional<NodeId> robot_;
   std::deque<Reading> held_;
-  std::uint32_t made_ = 0;
+  std::uint32_t made_ = 0, overflowed_ = 0;
   double next_ = 0;
 };
 
@@ -77,7 +82,7 @@ ControllerInfo DataMuleSensorInfo() {
   return {"data_mule_sensor",
           "a data mule's mote: a reading every `interval` s, kept (at most `buffer`) until the robot `mule` "
           "acknowledges it; on the robot's beacon sends up to `batch` readings of `size` bytes; metrics created, "
-          "overflowed, held_at_end",
+          "and at the end held_at_end and overflowed",
           [](const Params& p) { return std::make_unique<DataMuleSensor>(p); }};
 }
 

@@ -75,12 +75,20 @@ class Study:
         return pandas.Series(values, name=metric, dtype=float).rename_axis("run_id")
 
     def report(self, metric, by=None, derive=None):
+        """`sanet report -m METRIC --by BY`'s table: a row per value of `by` (numbers when every value
+        is one) and combination of the other varied parameters (`series`, "" when there are none):
+        runs, mean, 95 % interval (ci_low, ci_high) and median over the completed runs. `metric` is
+        a name, an expression or a name of `derive` ({name: expression})."""
         import pandas
         self._define(derive)
         if by is None:  # as sanet report: the first varied parameter
             by = self.parameters[0] if self.parameters else ""
         rows = self._reader.summarise(metric, by)
-        return pandas.DataFrame(rows, columns=["series", "value", "runs", "mean", "ci_low", "ci_high", "median"])
+        table = pandas.DataFrame(rows, columns=["series", "value", "runs", "mean", "ci_low", "ci_high", "median"])
+        numbers = pandas.to_numeric(table["value"], errors="coerce")
+        if len(table) and numbers.notna().all():
+            table["value"] = numbers
+        return table
 
     def _define(self, derive):
         for name, expression in (derive or {}).items():

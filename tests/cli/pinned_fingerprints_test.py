@@ -27,7 +27,7 @@ PINNED = {
     "ros2-robots": (60, "baec0cf232e6c9a6"),  # nobody drives them in sanet run: they stand
     "ros2-team-radio": (60, "1eb346755b3dc49b"),  # the robots stand (driven in launch only), the motes ping
     "scattered-field": (300, "a3035def5023f458"),  # 30 motes scattered from the seed, a touring mule (issue 49)
-    "data-mule": (300, "0315ce4e1e3fc031"),  # motes keep readings until a touring robot collects them (issue 50)
+    "data-mule": (300, "3378f8d98c992bcc"),  # motes keep readings until a touring robot collects them (issue 50)
     "sensor-network": (60, "ca79ea1813db313a"),
     "sensor-network-energy": (600, "59b947a8e462943e"),  # on batteries: 24 of 26 motes die (issue 47)
     "swarm-1k": (5, "b78520b232205dd8"),

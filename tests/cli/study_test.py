@@ -208,7 +208,8 @@ class Report(unittest.TestCase):
         line = [l for l in out.stdout.splitlines() if l.split()[:2] == ["28", "2"]][0]
         self.assertAlmostEqual(float(line.split()[2]), mean_28, places=3)
         # Two seeds a group: the report says the intervals mean little.
-        self.assertIn("warning: 4 of 4 groups have fewer than 5 runs (the fewest: 2)", out.stdout)
+        self.assertIn("warning: 4 of 4 groups have fewer than 5 runs (the fewest: 2)", out.stderr)
+        self.assertEqual(out.stderr.count("warning:"), 1, "once, whatever the metrics")
 
     def test_plots_and_csv(self):
         svg = os.path.join(self.tmp.name, "plot.svg")

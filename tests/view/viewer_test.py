@@ -243,7 +243,7 @@ class ViewerTest(unittest.TestCase):
     def test_the_headless_screenshot_recipe_draws_the_time_asked(self):
         """docs/viewer.md's one-line recipe: chromium --headless with a virtual time budget."""
         url = self.viewer.url + "?t=600"
-        recipe = ["chromium", "--headless", "--no-sandbox", "--window-size=1400,1000", "--virtual-time-budget=10000"]
+        recipe = ["chromium", "--headless", "--no-sandbox", "--window-size=1400,1800", "--virtual-time-budget=10000"]
         dom = subprocess.run(recipe + ["--dump-dom", url], capture_output=True, text=True, check=True).stdout
         self.assertIn("t = 600.0 s", dom)
         self.assertIn("radio range (half the frames arrive", dom)
@@ -256,7 +256,8 @@ class ViewerTest(unittest.TestCase):
         hops = [r for r in rows(self.results, "metrics.csv") if r["name"] == "hop_time"]
         self.assertGreater(len(hops), 2)
         self.assertEqual(metrics["hop_time"], {"name": "hop_time", "nodes": ["robot"], "folded": False,
-                                               "points": len(hops)})
+                                               "cumulative": False, "points": len(hops),
+                                               "last": float(hops[-1]["value"])})
         self.assertEqual(set(metrics), {r["name"] for r in rows(self.results, "metrics.csv")})
         chart = self.viewer.browser.find_element("css selector", '#metrics figure[data-metric="hop_time"] canvas')
         self.assertTrue(chart.is_displayed())
@@ -305,6 +306,23 @@ class ViewerTest(unittest.TestCase):
             self.assertEqual(indoor.errors(), [])
         finally:
             indoor.close()
+
+    def test_a_metric_of_events_is_drawn_as_a_running_total(self):
+        results = os.path.join(self.tmp.name, "mule")
+        subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "data-mule.yaml"), "--duration", "200", "-q",
+                        "-o", results], check=True, capture_output=True)
+        created = [r for r in rows(results, "metrics.csv") if r["name"] == "created"]
+        mule = Viewer(results, os.path.join(self.tmp.name, "mule-view"), "?t=100")
+        try:
+            metrics = {m["name"]: m for m in mule.state()["metrics"]}
+            self.assertTrue(metrics["created"]["cumulative"])
+            self.assertTrue(metrics["created"]["folded"], "30 motes: one line")
+            self.assertEqual(metrics["created"]["points"], len(created))
+            self.assertEqual(metrics["created"]["last"], len(created), "the running total ends at every reading made")
+            self.assertFalse(metrics["held_at_end"]["cumulative"], "amounts stay values")
+            self.assertEqual(mule.errors(), [])
+        finally:
+            mule.close()
 
     def test_many_nodes_metric_is_folded_and_each_radio_has_its_range(self):
         scenario = os.path.join(self.tmp.name, "flock.yaml")

@@ -146,6 +146,9 @@ int List(const study::StudyReader& study, bool per_node) {
     const std::string nodes = m.nodes > 0 ? "  (" + Count(m.nodes, "node") + ")" : "";
     std::printf("  %-60s %d%s\n", m.name.c_str(), m.runs, nodes.c_str());
   }
+  if (!study.definitions().empty()) std::printf("derived (--derive):\n");
+  for (const auto& [name, expression] : study.definitions())
+    std::printf("  %-20s = %s\n", name.c_str(), expression.c_str());
   return 0;
 }
 
@@ -153,22 +156,31 @@ void Define(study::StudyReader& study, const std::vector<std::string>& derive) {
   for (const std::string& d : derive) {
     const std::size_t eq = d.find('=');
     if (eq == std::string::npos) throw study::ReportError("--derive takes NAME=EXPRESSION, not '" + d + "'");
-    study.Define(d.substr(0, eq), d.substr(eq + 1));
+    const auto trimmed = [](std::string t) {
+      t.erase(0, t.find_first_not_of(" \t"));
+      t.erase(t.find_last_not_of(" \t") + 1);
+      return t;
+    };
+    study.Define(trimmed(d.substr(0, eq)), trimmed(d.substr(eq + 1)));
   }
 }
 
-// Runs that completed but gave the metric no value: a missing metric, or a division by zero.
+// Runs that completed but gave the metric no value (docs/studies.md#expressions says when).
 void NoteMissing(const study::StudyReader& study, const std::string& metric, std::size_t with_value) {
   const int without = study.CompletedRuns() - static_cast<int>(with_value);
   if (without > 0)
-    std::printf("note: %s of %d completed runs %s no value of %s (a metric it reads is missing, or it divides by 0)\n",
-                std::to_string(without).c_str(), study.CompletedRuns(), without == 1 ? "has" : "have", metric.c_str());
+    std::fprintf(stderr,
+                 "note: %d of %d completed runs %s no value of %s (they lack a metric it reads, mean/min/max match "
+                 "nothing in them, or the result is not a finite number, as after a division by 0); they are left "
+                 "out\n",
+                 without, study.CompletedRuns(), without == 1 ? "has" : "have", metric.c_str());
 }
 
 void Csv(const study::StudyReader& study, const ReportArgs& a) {
   std::vector<std::string> metrics = a.metrics;
   if (metrics.empty())
-    for (const auto& m : study.Metrics(a.per_node)) metrics.push_back(m.name);
+    for (const auto& m : study.Metrics(a.per_node))
+      if (m.name != "seed") metrics.push_back(m.name);  // summary.json's seed: the seed column already
   study::WriteCsv(study, metrics, a.csv);
   std::printf("runs in %s\n", a.csv.c_str());
 }
@@ -182,11 +194,15 @@ int Report(const ReportArgs& a) {
     const std::string by =
         study.Parameter(a.by.empty() && !study.parameters().empty() ? study.parameters().front() : a.by);
     std::vector<study::MetricSeries> plotted;
+    std::string few;  // said once, after the tables, whatever the metrics
     for (const std::string& metric : a.metrics) {
       plotted.push_back({metric, study::Summarise(study, metric, by)});
       std::fputs(study::FormatTable(metric, by, plotted.back().series).c_str(), stdout);
       NoteMissing(study, metric, study.Values(metric).size());
+      if (few.empty()) few = study::FewRunsWarning(plotted.back().series);
     }
+    std::fflush(stdout);
+    std::fputs(few.c_str(), stderr);
     if (!a.plot.empty() && !plotted.empty()) {
       study::Plot(plotted, by, a.text, a.plot);
       std::printf("plot in %s\n", a.plot.c_str());

@@ -36,16 +36,19 @@ double StandardError(const sim::LinkCurve& curve, double distance) {
   return std::sqrt(squares / (prr.size() - 1) / prr.size());
 }
 
-sim::LinkCurve Curve(const sim::RunSpec& spec, sim::LinkCurveOptions& options) {
+using Stop = std::function<bool()>;
+
+sim::LinkCurve Curve(const sim::RunSpec& spec, sim::LinkCurveOptions& options, const Stop& stop) {
   if (options.step <= 0) sim::DefaultDistances(*spec.network, options);
-  return sim::MeasureLinkCurve(spec, options, nullptr, nullptr);
+  return sim::MeasureLinkCurve(spec, options, nullptr, stop);
 }
 
-// The two passes for one transmit power.
-void MeasureRange(const sim::RunSpec& spec, RadioRange& range) {
+// The two passes for one transmit power; `stop` cuts them short when the viewer closes.
+void MeasureRange(const sim::RunSpec& spec, RadioRange& range, const Stop& stop) {
   sim::LinkCurveOptions coarse;
   coarse.sets = kRangeLinks;
-  const sim::LinkCurve first = Curve(spec, coarse);
+  const sim::LinkCurve first = Curve(spec, coarse, stop);
+  if (stop()) return;
   range.coarse = {coarse.from, coarse.to, coarse.step};
   const auto drop = FirstDrop(first);
   if (!drop) return;
@@ -53,7 +56,7 @@ void MeasureRange(const sim::RunSpec& spec, RadioRange& range) {
   sim::LinkCurveOptions fine = coarse;
   fine.from = a.distance, fine.to = b.distance, fine.step = (b.distance - a.distance) / kRangeFineDistances;
   range.fine = {fine.from, fine.to, fine.step};
-  const sim::LinkCurve second = Curve(spec, fine);
+  const sim::LinkCurve second = Curve(spec, fine, stop);
   const auto fine_drop = FirstDrop(second);
   range.radius_m = fine_drop ? Crossing(second, *fine_drop) : Crossing(first, *drop);
   const double slope = (a.Prr() - b.Prr()) / (b.distance - a.distance);
@@ -101,17 +104,22 @@ RadioRanges::RadioRanges(std::optional<sim::RunSpec> spec, std::string why) : sp
               }).share();
 }
 
-RadioRanges::~RadioRanges() { measured_.wait(); }
+RadioRanges::~RadioRanges() {
+  stopping_ = true;  // Ctrl-C on sanet view does not wait for the measurement to finish
+  measured_.wait();
+}
 
 void RadioRanges::Measure() {
   if (!spec_) return;
   const std::lock_guard<std::mutex> lock(ns3_);
   const auto start = std::chrono::steady_clock::now();
   radios_ = Radios(*spec_);
+  const Stop stop = [this] { return stopping_.load(); };
   for (RadioRange& range : radios_) {
+    if (stop()) return;
     sim::RunSpec spec = *spec_;
     spec.network->tx_power = range.tx_power_dbm;
-    MeasureRange(spec, range);
+    MeasureRange(spec, range, stop);
   }
   const auto walls = sim::RadioWalls(*spec_);
   if (!walls.empty()) walls_.emplace(walls);

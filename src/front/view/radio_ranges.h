@@ -9,6 +9,7 @@
 // linearly in the second. Measuring starts when the viewer starts, on a thread of its own.
 #pragma once
 
+#include <atomic>
 #include <future>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -53,6 +54,7 @@ class RadioRanges {
   std::optional<net::ObstacleCrossings> walls_;
   double seconds_ = 0;
   std::mutex ns3_;  // ns-3's objects are made and used by one thread at a time
+  std::atomic<bool> stopping_{false};
   std::shared_future<void> measured_;
 };
 

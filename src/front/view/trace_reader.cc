@@ -2,10 +2,15 @@
 
 #include <sqlite3.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "trace/csv_rows.h"
 
 namespace sanet::view {
 namespace {
@@ -24,6 +29,13 @@ nlohmann::json Column(sqlite3_stmt* s, int i) {
 }
 
 // A small CSV file of the results folder as rows of named fields (no quoted commas in these).
+std::optional<double> FiniteNumber(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
 std::vector<std::map<std::string, std::string>> ReadCsv(const std::string& path) {
   std::vector<std::map<std::string, std::string>> rows;
   std::ifstream in(path);
@@ -149,10 +161,16 @@ nlohmann::json TraceReader::Transitions() const {
   return Query("SELECT t, node, from_state, to_state, why FROM transitions ORDER BY rowid", AllColumns());
 }
 
+// With the kept CSV reader: a controller's metric names are free text, quoted when they hold
+// commas. A row that is not time,node,name,value with numbers is left out, not the whole page.
 nlohmann::json TraceReader::Metrics() const {
   nlohmann::json metrics = nlohmann::json::object();
-  for (auto& row : ReadCsv(folder_ + "/metrics.csv"))
-    metrics[row["name"]][row["node"]].push_back({std::stod(row["time"]), std::stod(row["value"])});
+  trace::CsvRows rows(folder_ + "/metrics.csv");
+  for (std::vector<std::string> row; rows.ok() && rows.Next(row);) {
+    if (row.size() != 4) continue;
+    const std::optional<double> t = FiniteNumber(row[0]), value = FiniteNumber(row[3]);
+    if (t && value) metrics[row[2]][row[1]].push_back({*t, *value});
+  }
   return metrics;
 }
 

@@ -9,7 +9,7 @@
 namespace sanet::study {
 
 struct MetricExpression::Node {
-  enum class Kind { kNumber, kName, kAggregate, kNegate, kBinary } kind;
+  enum class Kind { kNumber, kName, kAggregate, kNegate, kBinary } kind = Kind::kNumber;
   double number = 0;
   std::string text;      // a name, or an aggregate's pattern
   char op = 0;           // + - * /
@@ -26,21 +26,29 @@ const std::vector<std::string> kAggregates = {"sum", "mean", "min", "max", "coun
 
 bool NameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '*'; }
 
-std::vector<std::string> Parts(const std::string& dotted) {
-  std::vector<std::string> parts(1);
-  for (char c : dotted)
-    if (c == '.')
-      parts.emplace_back();
-    else
-      parts.back() += c;
-  return parts;
+// `*` matches any run of characters (none included). Greedy with one backtrack point, so
+// linear in practice whatever the stars.
+bool GlobMatches(const std::string& pattern, const std::string& text) {
+  std::size_t p = 0, t = 0, star = std::string::npos, resume = 0;
+  while (t < text.size()) {
+    if (p < pattern.size() && pattern[p] == '*') {
+      star = p++, resume = t;
+    } else if (p < pattern.size() && pattern[p] == text[t]) {
+      ++p, ++t;
+    } else if (star != std::string::npos) {
+      p = star + 1, t = ++resume;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
 }
 
-// `*` matches any run of characters (none included).
-bool GlobMatches(const char* pattern, const char* text) {
-  if (*pattern == '\0') return *text == '\0';
-  if (*pattern == '*') return GlobMatches(pattern + 1, text) || (*text != '\0' && GlobMatches(pattern, text + 1));
-  return *text == *pattern && GlobMatches(pattern + 1, text + 1);
+std::unique_ptr<Node> Make(Kind kind) {
+  auto node = std::make_unique<Node>();
+  node->kind = kind;
+  return node;
 }
 
 // Recursive descent over the grammar in the header, keeping what the expression reads.
@@ -77,7 +85,7 @@ class Parser {
 
   std::unique_ptr<Node> Unary() {
     if (!Next('-')) return Primary();
-    auto node = std::make_unique<Node>(Node{Kind::kNegate});
+    auto node = Make(Kind::kNegate);
     node->left = Unary();
     return node;
   }
@@ -91,20 +99,27 @@ class Parser {
     }
     if (at_ < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[at_])) || text_[at_] == '.'))
       return Number();
-    const std::string word = Word("a metric, a number, an aggregate or '('");
-    if (std::find(kAggregates.begin(), kAggregates.end(), word) != kAggregates.end() && Next('('))
+    const bool quoted = at_ < text_.size() && text_[at_] == '`';
+    const std::string word = Word("a metric, a number, an aggregate or '('", /*pattern=*/false);
+    if (!quoted && Next('(')) {
+      if (std::find(kAggregates.begin(), kAggregates.end(), word) == kAggregates.end())
+        Fail("'" + word + "' is not an aggregate: sum, mean, min, max or count");
       return Aggregate(word);
+    }
     if (word.find('*') != std::string::npos)
       Fail("the pattern '" + word + "' stands for several metrics: aggregate it, e.g. sum(" + word + ")");
     names.push_back(word);
-    return std::make_unique<Node>(Node{Kind::kName, 0, word});
+    auto node = Make(Kind::kName);
+    node->text = word;
+    return node;
   }
 
   std::unique_ptr<Node> Aggregate(const std::string& function) {
-    const std::string pattern = Word("a metric's name or pattern inside " + function + "()");
+    const std::string pattern = Word("a metric's name or pattern inside " + function + "()", /*pattern=*/true);
     Expect(')');
     patterns.push_back(pattern);
-    auto node = std::make_unique<Node>(Node{Kind::kAggregate, 0, pattern});
+    auto node = Make(Kind::kAggregate);
+    node->text = pattern;
     node->function = function;
     return node;
   }
@@ -115,21 +130,36 @@ class Parser {
     const double value = std::strtod(start, &end);
     if (end == start) Fail("a number");
     at_ += static_cast<std::size_t>(end - start);
-    return std::make_unique<Node>(Node{Kind::kNumber, value});
+    auto node = Make(Kind::kNumber);
+    node->number = value;
+    return node;
   }
 
   static std::unique_ptr<Node> Binary(char op, std::unique_ptr<Node> left, std::unique_ptr<Node> right) {
-    auto node = std::make_unique<Node>(Node{Kind::kBinary});
+    auto node = Make(Kind::kBinary);
     node->op = op;
     node->left = std::move(left);
     node->right = std::move(right);
     return node;
   }
 
-  std::string Word(const std::string& wanted) {
+  // In a pattern every `*` is a wildcard; elsewhere only one beside a dot (`metrics.*.x`,
+  // `metrics.m*.x`), so that `a*b` and `a*2` multiply.
+  std::string Word(const std::string& wanted, bool pattern) {
     Skip();
+    if (at_ < text_.size() && text_[at_] == '`') {
+      const std::size_t close = text_.find('`', at_ + 1);
+      if (close == std::string::npos) Fail("a name opened with ` is not closed");
+      if (close == at_ + 1) Fail("an empty name between backquotes");
+      const std::string quoted = text_.substr(at_ + 1, close - at_ - 1);
+      at_ = close + 1;
+      return quoted;
+    }
     const std::size_t start = at_;
-    while (at_ < text_.size() && NameChar(text_[at_])) ++at_;
+    const auto wildcard = [&](std::size_t i) {
+      return pattern || (i > start && text_[i - 1] == '.') || (i + 1 < text_.size() && text_[i + 1] == '.');
+    };
+    while (at_ < text_.size() && NameChar(text_[at_]) && (text_[at_] != '*' || wildcard(at_))) ++at_;
     if (at_ == start) Fail(wanted + " expected");
     return text_.substr(start, at_ - start);
   }
@@ -206,12 +236,12 @@ Value Evaluate(const Node& n, const RunMetrics& run, const MetricExpression::Der
 
 }  // namespace
 
-bool MatchesPattern(const std::string& pattern, const std::string& name) {
-  const std::vector<std::string> want = Parts(pattern), have = Parts(name);
-  if (want.size() != have.size()) return false;
-  for (std::size_t i = 0; i < want.size(); ++i)
-    if (!GlobMatches(want[i].c_str(), have[i].c_str())) return false;
-  return true;
+bool MatchesPattern(const std::string& pattern, const std::string& name) { return GlobMatches(pattern, name); }
+
+std::string QuotedName(const std::string& name) {
+  const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), NameChar) &&
+                     !std::isdigit(static_cast<unsigned char>(name[0])) && name[0] != '.';
+  return plain ? name : "`" + name + "`";
 }
 
 MetricExpression MetricExpression::Parse(const std::string& text) {
@@ -234,6 +264,5 @@ std::optional<double> MetricExpression::Evaluate(const RunMetrics& run, const De
 
 const std::vector<std::string>& MetricExpression::names() const { return names_; }
 const std::vector<std::string>& MetricExpression::patterns() const { return patterns_; }
-bool MetricExpression::IsPlainName() const { return root_->kind == Kind::kName; }
 
 }  // namespace sanet::study

@@ -8,10 +8,11 @@
 //   AGG     := sum | mean | min | max | count
 //
 // A NAME is a metric's dotted name (`ended_at_s`, `metrics.mule.delivered.sum`) or an earlier
-// derived metric's name. A PATTERN is a dotted name whose parts may hold `*`, matching any
-// characters within one part: `metrics.m*.created.count` matches `metrics.m7.created.count`, not
-// `metrics.mule.x.created.count`. Each run is evaluated alone: an aggregate takes the run's
-// matches, so `sum(metrics.*.created.count)` is that run's total over its nodes.
+// derived metric's name: letters, digits, `_` and `.`, or anything but a backquote between
+// backquotes (`` `metrics.robot-1.hop time.mean` ``). A PATTERN is a name holding `*`, which
+// matches any characters, dots included: `metrics.m*.created.count` matches
+// `metrics.m7.created.count`. Each run is evaluated alone: an aggregate takes the run's matches,
+// so `sum(metrics.*.created.count)` is that run's total over its nodes.
 //
 // A run has no value when a NAME it needs is missing from it, when mean, min or max match nothing
 // in it, or when it divides by zero; sum and count of nothing are 0.
@@ -35,8 +36,10 @@ class ExpressionError : public std::runtime_error {
 // One run's metrics by name.
 using RunMetrics = std::map<std::string, double>;
 
-// Whether a dotted `name` matches a dotted `pattern` part by part (`*` within a part).
+// Whether `name` matches `pattern` (`*`: any characters).
 bool MatchesPattern(const std::string& pattern, const std::string& name);
+// `name` as an expression reads it: as it is, or between backquotes when it holds other characters.
+std::string QuotedName(const std::string& name);
 
 class MetricExpression {
  public:
@@ -53,8 +56,6 @@ class MetricExpression {
   // The plain names and the aggregates' patterns the expression reads.
   const std::vector<std::string>& names() const;
   const std::vector<std::string>& patterns() const;
-  // A lone name (`ended_at_s`), not an expression.
-  bool IsPlainName() const;
 
   struct Node;
 

@@ -1,15 +1,25 @@
 #include "study/node_fold.h"
 
+#include <array>
+
+#include "study/metric_expression.h"
+
 namespace sanet::study {
+namespace {
+
+// The sections of summary.json keyed by node name.
+constexpr std::array<const char*, 2> kPerNodeSections = {"metrics.", "energy.nodes."};
+
+}  // namespace
 
 std::string NodePattern(const std::string& name, const std::set<std::string>& nodes) {
-  const std::size_t first = name.find('.');
-  if (first == std::string::npos) return "";
-  for (std::size_t start = first + 1; start < name.size();) {
-    std::size_t end = name.find('.', start);
-    if (end == std::string::npos) end = name.size();
-    if (nodes.count(name.substr(start, end - start))) return name.substr(0, start) + "*" + name.substr(end);
-    start = end + 1;
+  for (const std::string section : kPerNodeSections) {
+    if (name.compare(0, section.size(), section) != 0) continue;
+    std::size_t longest = 0;  // node names may hold dots: "team.a0" before "team"
+    for (const std::string& node : nodes)
+      if (node.size() > longest && name.compare(section.size(), node.size() + 1, node + ".") == 0)
+        longest = node.size();
+    if (longest > 0) return section + "*" + name.substr(section.size() + longest);
   }
   return "";
 }
@@ -21,7 +31,7 @@ std::string FoldedExpression(const std::string& pattern) {
                          : last == "min"                  ? "min"
                          : last == "max"                  ? "max"
                                                           : "mean";
-  return std::string(function) + "(" + pattern + ")";
+  return std::string(function) + "(" + QuotedName(pattern) + ")";
 }
 
 }  // namespace sanet::study

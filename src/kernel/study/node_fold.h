@@ -1,6 +1,6 @@
 // Per-node metrics folded by name, so that a study of 30 motes lists `metrics.*.created.count`
-// once instead of 30 times: a part of a metric's dotted name that is the name of one of the run's
-// nodes (summary.json's `metrics.<node>...` and `energy.nodes.<node>...`) becomes `*`.
+// once instead of 30 times: in summary.json's sections keyed by node (`metrics.<node>...` and
+// `energy.nodes.<node>...`), the node's name becomes `*`.
 #pragma once
 
 #include <set>
@@ -8,7 +8,7 @@
 
 namespace sanet::study {
 
-// The folded pattern of `name`, or "" when none of its parts (after the first) names a node.
+// The folded pattern of `name`, or "" when it is not a metric of one of `nodes`.
 std::string NodePattern(const std::string& name, const std::set<std::string>& nodes);
 // What a folded metric is by default, as an expression: counts and sums add up over the nodes,
 // minima and maxima stay minima and maxima, every other statistic is averaged:

@@ -159,10 +159,12 @@ std::vector<StudyReader::MetricInfo> StudyReader::Metrics(bool per_node) const {
 }
 
 void StudyReader::Define(const std::string& name, const std::string& expression) {
-  const bool word = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
-  });
-  if (!word) throw ReportError("--derive: '" + name + "' is not a name (letters, digits, '_' and '.')");
+  const bool word = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+                    std::all_of(name.begin(), name.end(), [](char c) {
+                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+                    });
+  if (!word)
+    throw ReportError("--derive: '" + name + "' is not a name (a letter or '_', then letters, digits, '_' and '.')");
   if (derived_.count(name)) throw ReportError("--derive: '" + name + "' is derived twice");
   for (const auto& [id, run] : Completed())
     if (run.count(name)) throw ReportError("--derive: '" + name + "' is already a metric of the runs");
@@ -170,6 +172,7 @@ void StudyReader::Define(const std::string& name, const std::string& expression)
     MetricExpression e = MetricExpression::Parse(expression);
     CheckReads(e);
     derived_.emplace(name, std::move(e));
+    definitions_.emplace_back(name, expression);
   } catch (const ExpressionError& e) {
     throw ReportError("--derive " + name + ": " + e.what());
   }
@@ -200,21 +203,35 @@ void StudyReader::CheckReads(const MetricExpression& e) const {
   }
 }
 
+// A name is compared with every metric's and derived name; a pattern with the folded ones.
 void StudyReader::Unknown(const std::string& what, const std::string& name) const {
+  const bool pattern = name.find('*') != std::string::npos;
   std::vector<std::string> names;
-  for (const MetricInfo& m : Metrics(/*per_node=*/true)) names.push_back(m.name);
+  for (const MetricInfo& m : Metrics(/*per_node=*/!pattern)) {
+    if (!pattern) names.push_back(m.name);
+    if (pattern && m.nodes > 0)
+      names.push_back(m.name.substr(m.name.find('(') + 1, m.name.size() - m.name.find('(') - 2));
+  }
   for (const auto& [derived, e] : derived_) names.push_back(derived);
   std::vector<std::string> close = ClosestNames(name, names);
   for (const std::string& n : names)  // a part of a name: "delay" for message_delay_s.median
     if (close.size() < 3 && n.find(name) != std::string::npos &&
         std::find(close.begin(), close.end(), n) == close.end())
       close.push_back(n);
+  const std::string order = derived_.empty() || pattern ? "" : " (a --derive name is known only after its definition)";
   throw ReportError("no completed run has a " + what + " '" + name + "'" +
-                    (close.empty() ? "" : " (did you mean " + OrList(close) + "?)") +
+                    (close.empty() ? "" : " (did you mean " + OrList(close) + "?)") + order +
                     "; sanet report --list lists them");
 }
 
+// A derived name, then a metric's exact name (whatever characters it holds), then an expression.
 std::map<long, double> StudyReader::Values(const std::string& metric) const {
+  std::map<long, double> values;
+  if (!derived_.count(metric)) {
+    for (const auto& [id, run] : Completed())
+      if (auto it = run.find(metric); it != run.end()) values[id] = it->second;
+    if (!values.empty()) return values;
+  }
   std::optional<MetricExpression> parsed;
   const MetricExpression* e = nullptr;
   if (auto it = derived_.find(metric); it != derived_.end()) {
@@ -228,7 +245,6 @@ std::map<long, double> StudyReader::Values(const std::string& metric) const {
     CheckReads(*parsed);
     e = &*parsed;
   }
-  std::map<long, double> values;
   const auto derive = [this](const std::string& n, const RunMetrics& r) { return Derive(n, r); };
   for (const auto& [id, run] : Completed())
     if (const std::optional<double> v = e->Evaluate(run, derive)) values[id] = *v;
@@ -317,7 +333,6 @@ std::string FormatTable(const std::string& metric, const std::string& by, const 
       out << line;
     }
   }
-  out << FewRunsWarning(series);
   return out.str();
 }
 

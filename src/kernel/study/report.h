@@ -55,6 +55,8 @@ class StudyReader {
   // run id -> value of a metric, a derived metric or an expression, for the completed runs that
   // have one. Unknown names: ReportError with the closest.
   std::map<long, double> Values(const std::string& metric) const;
+  // The --derive definitions, in the order given: (name, expression).
+  const std::vector<std::pair<std::string, std::string>>& definitions() const { return definitions_; }
   int CompletedRuns() const;
   // A varied parameter by its path or its short name ("NodeTraversalTime"); "" stays "".
   std::string Parameter(const std::string& name) const;
@@ -73,6 +75,7 @@ class StudyReader {
   std::vector<std::string> parameters_;
   std::vector<StudyRun> runs_;
   std::map<std::string, MetricExpression> derived_;
+  std::vector<std::pair<std::string, std::string>> definitions_;
   mutable std::optional<std::map<long, RunMetrics>> completed_;
   mutable std::map<long, std::set<std::string>> nodes_;
 };
@@ -93,8 +96,10 @@ struct Series {
 // are numbers).
 std::vector<Series> Summarise(const StudyReader& study, const std::string& metric, const std::string& by);
 
+// "" or a warning that some groups have too few runs for their intervals to mean much.
+std::string FewRunsWarning(const std::vector<Series>& series);
 std::string FormatTable(const std::string& metric, const std::string& by, const std::vector<Series>& series);
-// Per run: name, seed, status, parameters, then each metric. Written whole.
+// Per run: id, name, seed, status, parameters, then each metric. Written whole.
 void WriteCsv(const StudyReader& study, const std::vector<std::string>& metrics, const std::string& path);
 // A plot's file name must end in .svg or .png (ReportError otherwise).
 void CheckPlotName(const std::string& path);

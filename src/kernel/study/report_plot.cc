@@ -14,6 +14,9 @@ namespace sanet::study {
 namespace {
 
 constexpr int kBlack = 1, kFirstSeries = 2;
+// The page's share of height per legend line, and how far under the plot (in its heights) the
+// legend starts, clear of the x axis's label.
+constexpr double kLegendLine = 0.05, kLegendDrop = 0.24;
 // Series colours: the same palette as the run figures.
 constexpr int kPalette[][3] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44},
                                {148, 103, 189}, {255, 127, 14}, {140, 86, 75}};
@@ -81,12 +84,13 @@ void Legend(const std::vector<Series>& series) {
   std::vector<PLINT> opts(n, PL_LEGEND_LINE), colours(n), styles(n, 1), text_colours(n, kBlack);
   std::vector<PLFLT> widths(n, 2.0);
   std::vector<const char*> texts(n);
-  for (int i = 0; i < n; ++i) colours[i] = kFirstSeries + i % 6, texts[i] = series[i].label.c_str();
+  for (int i = 0; i < n; ++i)
+    colours[i] = kFirstSeries + i % 6, styles[i] = 1 + i / 6 % 8, texts[i] = series[i].label.c_str();
   PLFLT width = 0, height = 0;
-  pllegend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-           PL_POSITION_TOP | PL_POSITION_RIGHT | PL_POSITION_INSIDE, 0.02, 0.02, 0.08, 0, kBlack, 1, 0, 0, n,
-           opts.data(), 1.0, 0.8, 2.0, 0.0, text_colours.data(), texts.data(), nullptr, nullptr, nullptr, nullptr,
-           colours.data(), styles.data(), widths.data(), nullptr, nullptr, nullptr, nullptr);
+  pllegend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, PL_POSITION_BOTTOM | PL_POSITION_OUTSIDE,
+           0.0, kLegendDrop, 0.08, 0, kBlack, 1, 0, 0, n, opts.data(), 1.0, 0.8, 2.0, 0.0, text_colours.data(),
+           texts.data(), nullptr, nullptr, nullptr, nullptr, colours.data(), styles.data(), widths.data(), nullptr,
+           nullptr, nullptr, nullptr);
 }
 
 }  // namespace
@@ -136,15 +140,23 @@ void Plot(const std::vector<MetricSeries>& metrics, const std::string& by, const
   Colours(series.size());
   plinit();
   plcol0(kBlack);
-  plenv(f.x0, f.x1, f.y0, f.y1, 0, numeric ? 0 : -2);
+  // A legend goes under the plot, a line each, so that it never covers a point.
+  pladv(0);
+  plvpor(0.1, 0.95,
+         series.size() > 1 ? 0.18 + kLegendLine * static_cast<double>(std::min<std::size_t>(series.size(), 8)) : 0.12,
+         0.9);
+  plwind(f.x0, f.x1, f.y0, f.y1);
+  plbox(numeric ? "bcnst" : "bc", 0, 0, "bcnstv", 0, 0);
   if (!numeric) {
-    plbox("bc", 0, 0, "bcnstv", 0, 0);
     for (std::size_t i = 0; i < categories.size(); ++i)
       plmtex("b", 1.5, (1.0 + i - f.x0) / (f.x1 - f.x0), 0.5, categories[i].c_str());
   }
   pllab(text.xlabel.c_str(), text.ylabel.c_str(), text.title.c_str());
-  for (std::size_t i = 0; i < series.size(); ++i)
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    pllsty(1 + static_cast<int>(i / 6 % 8));  // past six colours, the line style tells them apart
     DrawSeries(series[i], kFirstSeries + static_cast<int>(i % 6), numeric, categories);
+  }
+  pllsty(1);
   if (series.size() > 1) Legend(series);
   plend();
   std::filesystem::rename(tmp, path);

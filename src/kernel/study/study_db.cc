@@ -163,7 +163,9 @@ void StudyDb::Describe(const StudyInfo& info) {
 }
 
 void StudyDb::CreateResultsView(const std::vector<std::string>& parameters) {
-  // Made again each time: a study begun by sanet 0.x named the id `run` and the name `name`.
+  // Made again each time (a study begun by an earlier sanet named the id `run` and the name
+  // `name`), in one transaction so that a reader never finds it missing.
+  Exec("BEGIN");
   Exec("DROP VIEW IF EXISTS results");
   std::string sql = "CREATE VIEW results AS SELECT runs.id AS run_id, runs.name AS run_name, runs.seed, runs.status";
   for (const std::string& p : parameters)
@@ -171,6 +173,7 @@ void StudyDb::CreateResultsView(const std::vector<std::string>& parameters) {
         ", (SELECT coalesce(number, value) FROM parameters WHERE run = runs.id AND name = '" + p + "') AS " + Quoted(p);
   sql += ", runs.fingerprint, runs.wall_s, runs.ended_by, runs.ended_at_s FROM runs";
   Exec(sql);
+  Exec("COMMIT");
 }
 
 std::vector<std::string> StudyDb::Tables() const {

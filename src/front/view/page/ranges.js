@@ -49,8 +49,10 @@ function radioRanges(world) {
     at.answer = api(`/api/radio_range_shape?radio=${radio}&x=${p.x}&y=${p.y}`).then((points) => {
       line.geometry.dispose();
       line.geometry = new THREE.BufferGeometry().setFromPoints(points.map(([x, y]) => new THREE.Vector3(x, y, 0.25)));
-      at.pending = false;
-    });
+      line.userData.shaped = true;
+    }).catch((e) => {  // said on the page; asked again when the node next moves
+      document.getElementById("ranges-note").textContent = `radio range through the walls: ${e.message || e}`;
+    }).finally(() => { at.pending = false; });
   }
   function lineOf(n, radio) {
     if (!ranges.lines.has(n)) {
@@ -72,9 +74,10 @@ function radioRanges(world) {
         const radio = radioOf(n), show = radio >= 0 && ranges.info.radios[radio].radius_m !== null && wanted(n, selected);
         if (!show) { if (ranges.lines.has(n)) ranges.lines.get(n).visible = false; continue; }
         const line = lineOf(n, radio);
-        line.visible = true;
         if (ranges.info.walls) shape(n, radio, line);
         else line.position.set(n.mesh.position.x, n.mesh.position.y, 0.25);
+        // Through walls, hidden until its first shape arrives (not a unit circle at the origin).
+        line.visible = !ranges.info.walls || Boolean(line.userData.shaped);
       }
     },
     // Waits for the shapes asked for (through walls) to arrive.

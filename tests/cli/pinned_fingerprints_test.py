@@ -28,6 +28,7 @@ PINNED = {
     "ros2-team-radio": (60, "1eb346755b3dc49b"),  # the robots stand (driven in launch only), the motes ping
     "scattered-field": (300, "a3035def5023f458"),  # 30 motes scattered from the seed, a touring mule (issue 49)
     "data-mule": (300, "3378f8d98c992bcc"),  # motes keep readings until a touring robot collects them (issue 50)
+    "duty-cycled-motes": (300, "c3ae6bddc2b56796"),  # radios awake 1 s of 10, phases drawn from the seed (issue 51)
     "sensor-network": (60, "ca79ea1813db313a"),
     "sensor-network-energy": (600, "59b947a8e462943e"),  # on batteries: 24 of 26 motes die (issue 47)
     "swarm-1k": (5, "b78520b232205dd8"),

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "net/duty_cycle.h"
 #include "net/ns3_attributes.h"
 
 namespace sanet::net {
@@ -106,8 +107,9 @@ struct NetworkSpec {
 
 // Radio settings a node may override.
 struct NodeRadio {
-  std::optional<double> tx_power;  // dBm
-  double antenna_height = 0;       // m above the node's position, for the walls between antennas only
+  std::optional<double> tx_power;       // dBm
+  double antenna_height = 0;            // m above the node's position, for the walls between antennas only
+  std::optional<DutyCycle> duty_cycle;  // none: awake unless its controller puts it to sleep
 };
 
 }  // namespace sanet::net

@@ -89,6 +89,7 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
   jitter_->SetAttribute("Max", ns3::DoubleValue(0.01));
   AssignStreams();
   for (NodeId id = 0; id < nodes_.GetN(); ++id) trace_.Attach(id, nodes_.Get(id));
+  for (NodeId id = 0; id < nodes_.GetN(); ++id) StartDutyCycle(id);
   if (spec_.flow_monitor) {
     flow_helper_ = std::make_unique<ns3::FlowMonitorHelper>();
     flow_monitor_ = flow_helper_->Install(nodes_);
@@ -221,6 +222,7 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   next_stream_ += ns3::InternetStackHelper().AssignStreams(ns3::NodeContainer(node), next_stream_);
   next_stream_ += AssignRoutingStreams(node, next_stream_);
   trace_.Attach(id, node);
+  StartDutyCycle(id);
   if (flow_monitor_) flow_helper_->Install(node);
   if (!pcap_dir_.empty()) OpenPcap(id);
   if (frames_) frames_->Attach(id, ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0)));
@@ -412,6 +414,7 @@ void WirelessNetwork::SwitchOn(NodeId node) {
   if (!Phy(node)->IsStateOff()) return;
   if (node < sleep_wanted_.size()) sleep_wanted_[node] = false;
   Phy(node)->ResumeFromOff();
+  if (node < cycle_asleep_.size()) ApplySleep(node);  // back in its duty cycle
 }
 
 // The state asked for is kept, and the PHY brought to it only while it is neither sending nor
@@ -425,13 +428,37 @@ bool WirelessNetwork::SetSleep(NodeId node, bool asleep) {
   return true;
 }
 
+// A radio with a duty cycle sleeps outside its awake windows, and also inside them while its
+// controller asks (SetSleep): either may put it to sleep. Each change of the cycle is an event.
+void WirelessNetwork::StartDutyCycle(NodeId node) {
+  std::optional<DutyCycle>& cycle = radios_.at(node).duty_cycle;
+  if (!cycle) return;
+  cycle->phase = PhaseOf(*cycle, spec_.seed, node);
+  cycle->random_phase = false;
+  if (cycle_asleep_.size() <= node) cycle_asleep_.resize(node + 1, false);
+  if (sleep_wanted_.size() <= node) sleep_wanted_.resize(node + 1, false);
+  // As an event: the energy model, attached after the radios, then sees the PHY's first sleep.
+  ns3::Simulator::ScheduleNow(&WirelessNetwork::CycleStep, this, node);
+}
+
+void WirelessNetwork::CycleStep(NodeId node) {
+  // ns-3 keeps whole nanoseconds: a change less than one away counts as come, and the next one is
+  // at least one away, or a phase drawn from the seed would schedule this again at the same instant.
+  const ns3::Time now = ns3::Simulator::Now();
+  const CycleState state = CycleAt(*radios_.at(node).duty_cycle, now.GetSeconds() + 1e-9);
+  cycle_asleep_[node] = state.asleep;
+  ApplySleep(node);
+  const ns3::Time wait = std::max(ns3::Seconds(state.next_change) - now, ns3::NanoSeconds(1));
+  ns3::Simulator::Schedule(wait, &WirelessNetwork::CycleStep, this, node);
+}
+
 ns3::Ptr<ns3::WifiPhy> WirelessNetwork::Phy(NodeId node) const {
   return ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy();
 }
 
 void WirelessNetwork::ApplySleep(NodeId node) {
   ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
-  const bool wanted = sleep_wanted_[node];
+  const bool wanted = sleep_wanted_[node] || (node < cycle_asleep_.size() && cycle_asleep_[node]);
   if (phy->IsStateOff() || wanted == phy->IsStateSleep()) return;
   if (!wanted) return phy->ResumeFromSleep();
   if (phy->IsStateTx() || phy->IsStateRx() || phy->IsStateSwitching()) {  // after this frame, if still wanted

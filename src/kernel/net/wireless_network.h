@@ -75,7 +75,9 @@ class WirelessNetwork : public Transport {
  private:
   ns3::Ptr<ns3::WifiPhy> Phy(NodeId node) const;
   double TxPower(NodeId id, const NodeRadio& radio) const;  // dBm, with the node's hardware spread
-  void ApplySleep(NodeId node);                             // brings the PHY to sleep_wanted_ when it can (SetSleep)
+  void ApplySleep(NodeId node);  // brings the PHY to sleep when it can, if its controller or its cycle wants it
+  void StartDutyCycle(NodeId node);
+  void CycleStep(NodeId node);  // the cycle's state now, and an event at its next change
   void ConfigureRadios();
   ns3::NetDeviceContainer InstallRadio(NodeId id, const NodeRadio& radio);
   void CountFrames(ns3::Ptr<ns3::WifiPhy> phy);
@@ -99,6 +101,7 @@ class WirelessNetwork : public Transport {
   ns3::NodeContainer nodes_;
   ns3::NetDeviceContainer devices_;
   std::vector<bool> sleep_wanted_;  // per node: what SetSleep asked for last
+  std::vector<bool> cycle_asleep_;  // per node: whether its duty cycle has it asleep now
   AddressBook book_;
   std::vector<std::string> names_;
   PacketTrace trace_;

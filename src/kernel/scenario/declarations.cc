@@ -645,6 +645,36 @@ const Fields<ModelSpec>& BodyFields(ModelKind kind) {
   return MoteBodyFields();
 }
 
+namespace {
+
+void ReadDutyCycle(const Field& v, net::NodeRadio& r) {
+  if (!v.IsMap()) v.Fail("must be a mapping {period_s, awake_s, phase_s}");
+  v.ExpectKeys({"period_s", "awake_s", "phase_s"});
+  net::DutyCycle cycle;
+  cycle.period = v.Require("period_s").NumberAbove(0, 1e6);
+  cycle.awake = v.Require("awake_s").NumberAbove(0, cycle.period);
+  if (auto phase = v.Get("phase_s"); phase && phase->IsScalar() && phase->node().Scalar() == "random") {
+    cycle.random_phase = true;
+  } else if (phase) {
+    cycle.phase = phase->Number(0, cycle.period);
+    if (cycle.phase >= cycle.period)
+      phase->Fail("must be under period_s (" + ShortNumber(cycle.period) + "), or random");
+  }
+  r.duty_cycle = cycle;
+}
+
+YAML::Node PrintDutyCycle(const net::NodeRadio& r) {
+  if (!r.duty_cycle) return YAML::Node();
+  YAML::Node cycle;
+  cycle["period_s"] = NumberNode(r.duty_cycle->period);
+  cycle["awake_s"] = NumberNode(r.duty_cycle->awake);
+  cycle["phase_s"] = r.duty_cycle->random_phase ? YAML::Node("random") : NumberNode(r.duty_cycle->phase);
+  cycle.SetStyle(YAML::EmitterStyle::Flow);
+  return cycle;
+}
+
+}  // namespace
+
 const Fields<net::NodeRadio>& RadioFields() {
   static const Fields<net::NodeRadio> fields = [] {
     Fields<net::NodeRadio> f;
@@ -657,6 +687,12 @@ const Fields<net::NodeRadio>& RadioFields() {
          "the antenna above the node's centre, for the walls between antennas only (path loss keeps its distances)"},
         [](const Field& v, net::NodeRadio& r) { r.antenna_height = v.Number(0, 1000); },
         [](const net::NodeRadio& r) { return r.antenna_height > 0 ? NumberNode(r.antenna_height) : YAML::Node(); });
+    f.Custom({"duty_cycle", "mapping `{period_s, awake_s, phase_s}`", "s", "none: always awake; phase_s `0`",
+              "period_s in (0, 1e6], awake_s in (0, period_s], phase_s in [0, period_s) or `random`",
+              "the radio is awake `awake_s` of every `period_s`, from `phase_s` on (`random`: each node's drawn "
+              "from the seed), and asleep (802.11 sleep, `energy.radio.sleep_a`) the rest; frames sent while asleep "
+              "wait in the MAC's queue (see [duty cycles](energy.md#duty-cycles))"},
+             ReadDutyCycle, PrintDutyCycle);
     return f;
   }();
   return fields;

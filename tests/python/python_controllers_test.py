@@ -241,10 +241,13 @@ class Tools(unittest.TestCase):
             server = subprocess.Popen([SANET, "serve", scenario, "--port", "0", "--port-file", port_file, "-q", "-o",
                                        os.path.join(tmp, "served"), "--duration", "30"])
             try:
-                for _ in range(100):
+                for _ in range(600):  # a loaded CI machine starts the server slowly
                     if os.path.exists(port_file) and open(port_file).read().strip():
                         break
+                    self.assertIsNone(server.poll(), "the server ended before it listened")
                     time.sleep(0.1)
+                else:
+                    self.fail("the server wrote no port file in 60 s")
                 elsewhere = os.path.join(tmp, "elsewhere")
                 os.mkdir(elsewhere)
                 with open(os.path.join(elsewhere, "probe.py"), "w") as f:

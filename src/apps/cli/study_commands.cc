@@ -198,7 +198,10 @@ int Report(const ReportArgs& a) {
     for (const std::string& metric : a.metrics) {
       plotted.push_back({metric, study::Summarise(study, metric, by)});
       std::fputs(study::FormatTable(metric, by, plotted.back().series).c_str(), stdout);
-      NoteMissing(study, metric, study.Values(metric).size());
+      std::size_t with_value = 0;
+      for (const study::Series& s : plotted.back().series)
+        for (const study::Point& p : s.points) with_value += static_cast<std::size_t>(p.stats.count);
+      NoteMissing(study, metric, with_value);
       if (few.empty()) few = study::FewRunsWarning(plotted.back().series);
     }
     std::fflush(stdout);

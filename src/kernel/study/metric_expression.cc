@@ -238,11 +238,12 @@ Value Evaluate(const Node& n, const RunMetrics& run, const MetricExpression::Der
 
 bool MatchesPattern(const std::string& pattern, const std::string& name) { return GlobMatches(pattern, name); }
 
-std::string QuotedName(const std::string& name) {
-  const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), NameChar) &&
-                     !std::isdigit(static_cast<unsigned char>(name[0])) && name[0] != '.';
-  return plain ? name : "`" + name + "`";
+bool IsPlainName(const std::string& name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), NameChar) &&
+         (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_' || name[0] == '*');
 }
+
+std::string QuotedName(const std::string& name) { return IsPlainName(name) ? name : "`" + name + "`"; }
 
 MetricExpression MetricExpression::Parse(const std::string& text) {
   Parser parser(text);

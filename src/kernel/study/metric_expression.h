@@ -38,6 +38,9 @@ using RunMetrics = std::map<std::string, double>;
 
 // Whether `name` matches `pattern` (`*`: any characters).
 bool MatchesPattern(const std::string& pattern, const std::string& name);
+// Whether an expression reads `name` without backquotes: a letter or `_`, then letters, digits,
+// `_`, `.` (and `*`, a pattern's).
+bool IsPlainName(const std::string& name);
 // `name` as an expression reads it: as it is, or between backquotes when it holds other characters.
 std::string QuotedName(const std::string& name);
 

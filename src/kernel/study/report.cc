@@ -15,6 +15,7 @@
 #include "core/closest_names.h"
 #include "study/grid.h"
 #include "study/node_fold.h"
+#include "study/study_db.h"
 #include "trace/csv_sink.h"
 
 namespace sanet::study {
@@ -84,6 +85,7 @@ StudyReader::StudyReader(const std::string& where) {
       runs_.push_back({std::stol(row[0]), row[1], row[3], std::stoull(row[2]), {}});
     std::map<long, StudyRun*> by_id;
     for (StudyRun& r : runs_) by_id[r.id] = &r;
+    has_nodes_table_ = !Query(db_, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'nodes'").empty();
     for (const auto& row : Query(db_, "SELECT run, name, value FROM parameters"))
       by_id.at(std::stol(row[0]))->values[row[1]] = row[2];
   } catch (const std::exception& e) {
@@ -113,16 +115,14 @@ int StudyReader::CompletedRuns() const { return static_cast<int>(Completed().siz
 std::set<std::string> StudyReader::NodesOf(long run) const {
   if (auto it = nodes_.find(run); it != nodes_.end()) return it->second;
   std::set<std::string>& names = nodes_[run];
-  if (!Query(db_, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'nodes'").empty())
+  if (has_nodes_table_)
     for (const auto& row : Query(db_, "SELECT name FROM nodes WHERE run = " + std::to_string(run)))
       names.insert(row[0]);
   if (!names.empty()) return names;
   for (const auto& row : Query(db_, "SELECT folder FROM runs WHERE id = " + std::to_string(run))) {
     std::ifstream in(fs::path(folder_) / row[0] / "summary.json");
-    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-    if (summary.is_object() && summary.contains("nodes") && summary["nodes"].is_array())
-      for (const auto& n : summary["nodes"])
-        if (n.contains("name") && n["name"].is_string()) names.insert(n["name"].get<std::string>());
+    for (const std::string& name : NodeNames(nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false)))
+      names.insert(name);
   }
   return names;
 }
@@ -159,11 +159,7 @@ std::vector<StudyReader::MetricInfo> StudyReader::Metrics(bool per_node) const {
 }
 
 void StudyReader::Define(const std::string& name, const std::string& expression) {
-  const bool word = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
-                    std::all_of(name.begin(), name.end(), [](char c) {
-                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
-                    });
-  if (!word)
+  if (!IsPlainName(name) || name.find('*') != std::string::npos)
     throw ReportError("--derive: '" + name + "' is not a name (a letter or '_', then letters, digits, '_' and '.')");
   if (derived_.count(name)) throw ReportError("--derive: '" + name + "' is derived twice");
   for (const auto& [id, run] : Completed())

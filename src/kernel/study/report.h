@@ -78,6 +78,7 @@ class StudyReader {
   std::vector<std::pair<std::string, std::string>> definitions_;
   mutable std::optional<std::map<long, RunMetrics>> completed_;
   mutable std::map<long, std::set<std::string>> nodes_;
+  bool has_nodes_table_ = false;  // studies begun before sanet kept one have none
 };
 
 struct Point {

@@ -103,6 +103,14 @@ std::vector<std::pair<std::string, double>> Numbers(const nlohmann::json& j) {
   return out;
 }
 
+std::vector<std::string> NodeNames(const nlohmann::json& summary) {
+  std::vector<std::string> names;
+  if (summary.is_object() && summary.contains("nodes") && summary["nodes"].is_array())
+    for (const auto& n : summary["nodes"])
+      if (n.is_object() && n.contains("name") && n["name"].is_string()) names.push_back(n["name"].get<std::string>());
+  return names;
+}
+
 StudyDb::StudyDb(const std::string& path) : path_(path) {
   if (sqlite3_open(path.c_str(), &db_) != SQLITE_OK) {
     const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
@@ -244,9 +252,7 @@ void StudyDb::Scalars(long run, const nlohmann::json& summary) {
   Statement put(db_, "INSERT OR REPLACE INTO scalars(run, name, value) VALUES (?, ?, ?)");
   for (const auto& [name, value] : Numbers(summary)) put.Bind(1, run).Bind(2, name).Bind(3, value).Run();
   Statement node(db_, "INSERT OR REPLACE INTO nodes(run, name) VALUES (?, ?)");
-  if (summary.contains("nodes") && summary["nodes"].is_array())
-    for (const auto& n : summary["nodes"])
-      if (n.contains("name") && n["name"].is_string()) node.Bind(1, run).Bind(2, n["name"].get<std::string>()).Run();
+  for (const std::string& name : NodeNames(summary)) node.Bind(1, run).Bind(2, name).Run();
 }
 
 void StudyDb::ImportCsv(long run, const std::string& table, const std::string& path) {

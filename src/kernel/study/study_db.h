@@ -89,5 +89,7 @@ class StudyDb {
 // Every number in `j` by dotted name ("network.route_discoveries.time_s.median"); lists and texts
 // are left out.
 std::vector<std::pair<std::string, double>> Numbers(const nlohmann::json& j);
+// The names in summary.json's `nodes` list (none when it has no such list).
+std::vector<std::string> NodeNames(const nlohmann::json& summary);
 
 }  // namespace sanet::study

@@ -269,9 +269,10 @@ Command AddView(CLI::App& app) {
   cmd->add_option("--port-file", *port_file, "Once listening, write the port number to this file");
   auto foxglove = std::make_shared<FoxgloveArgs>();
   AddFoxgloveOptions(cmd, *foxglove, /*replay=*/true);
-  // The effective scenario the run wrote beside its results, for the radios' ranges.
-  settings->scenario = [settings] {
-    const std::string file = settings->results + "/scenario.yaml";
+  // The effective scenario the run wrote beside its results, for the radios' ranges. The lambda
+  // lives inside *settings, so it holds a plain pointer: a shared_ptr would own itself and leak.
+  settings->scenario = [results = &settings->results] {
+    const std::string file = *results + "/scenario.yaml";
     if (!std::filesystem::exists(file))
       throw std::runtime_error(file + " not found: no scenario to measure the radio of");
     return scenario::LoadScenario(file).run;

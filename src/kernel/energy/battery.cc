@@ -34,7 +34,7 @@ void Battery::Start() {
 double Battery::GetRemainingEnergy() {
   const double seconds = (ns3::Simulator::Now() - last_update_).GetSeconds();
   if (!started_ || seconds <= 0) return remaining_j_;
-  return std::max(0.0, remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds);
+  return std::clamp(remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds, 0.0, settings_.capacity_j);
 }
 
 void Battery::UpdateEnergySource() {
@@ -54,11 +54,50 @@ double Battery::Recharge(double joules) {
   return taken;
 }
 
+double Battery::Take(double joules) {
+  UpdateEnergySource();
+  if (!started_) return 0;
+  const double taken = std::clamp(joules, 0.0, remaining_j_);
+  remaining_j_ -= taken;
+  CheckThresholds();
+  ScheduleNextUpdate();
+  return taken;
+}
+
+void Battery::AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) {
+  UpdateEnergySource();
+  harvesters_.push_back(harvester);
+  ConnectEnergyHarvester(harvester);
+  harvester->SetEnergySource(this);
+  UpdateEnergySource();
+}
+
+// Up to now without an update, as GetRemainingEnergy: after the run ns-3 has finished and updates
+// no more.
+double Battery::harvested_j() {
+  const double seconds = (ns3::Simulator::Now() - last_update_).GetSeconds();
+  if (!started_ || seconds <= 0) return harvested_j_;
+  const double after = remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds;
+  const double lost = std::max(0.0, after - settings_.capacity_j);
+  return harvested_j_ + std::max(0.0, HarvestedWatts() * seconds - lost);
+}
+
+double Battery::HarvestedWatts() const {
+  double watts = 0;
+  for (const auto& h : harvesters_) watts += h->GetPower();
+  return watts;
+}
+
+// The draw less the harvest, constant since the last update; what would go past full is lost.
 void Battery::Drain() {
   const ns3::Time now = ns3::Simulator::Now();
   const double seconds = (now - last_update_).GetSeconds();
   last_update_ = now;
-  if (seconds > 0) remaining_j_ = std::max(0.0, remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds);
+  if (seconds <= 0) return;
+  const double after = remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds;
+  const double lost = std::max(0.0, after - settings_.capacity_j);
+  remaining_j_ = std::clamp(after, 0.0, settings_.capacity_j);
+  harvested_j_ += std::max(0.0, HarvestedWatts() * seconds - lost);
 }
 
 // The models hear it at once; the node dies (or comes back) in an event of its own, at this instant.
@@ -83,8 +122,21 @@ void Battery::CheckThresholds() {
 // Nothing is scheduled while nothing draws (a node switched off): each model asks for an update
 // after its current changed as well as before (energy/radio_energy_model.h), which schedules it.
 void Battery::ScheduleNextUpdate() {
-  if (depleted_ || settings_.most_watts <= 0 || CalculateTotalCurrent() <= 0) return next_check_.Cancel();
-  const double seconds = (remaining_j_ - settings_.cutoff * settings_.capacity_j) / settings_.most_watts;
+  const double net_w = CalculateTotalCurrent() * settings_.voltage;
+  if (net_w < 0) return ScheduleWhileCharging(-net_w);
+  if (depleted_ || settings_.most_watts <= 0 || net_w <= 0) return next_check_.Cancel();
+  ScheduleCheckIn((remaining_j_ - settings_.cutoff * settings_.capacity_j) / settings_.most_watts);
+}
+
+// At the gain it has now, the charge reaches the revive level (a dead battery) or full then; a
+// full battery has nothing to wait for.
+void Battery::ScheduleWhileCharging(double gain_w) {
+  const double target_j = (depleted_ ? settings_.revives_above : 1.0) * settings_.capacity_j;
+  if (remaining_j_ >= target_j) return next_check_.Cancel();
+  ScheduleCheckIn((target_j - remaining_j_) / gain_w);
+}
+
+void Battery::ScheduleCheckIn(double seconds) {
   const double ns = std::ceil(std::max(0.0, seconds) * 1e9);
   if (ns > 9e18) return;  // past any run
   const ns3::Time at = ns3::Simulator::Now() + ns3::NanoSeconds(static_cast<std::int64_t>(ns));

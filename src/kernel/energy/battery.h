@@ -12,11 +12,17 @@
 // cutoff finds the node dead when its charge ran out, to the nanojoule, not up to an update
 // interval later. Each check brings the charge's margin down by the share of the most the node
 // draws: a few dozen checks in its life near that, about 1,200 for a cc2420 mote listening.
+//
+// Charging: harvesters (energy/charge_harvester.h) give power that ns-3's CalculateTotalCurrent
+// nets against the models' draw. While the net is a gain, the battery checks itself when its
+// charge would reach the revive level (dead) or full, and takes nothing past full.
 #pragma once
 
 #include <ns3/energy-source.h>
 #include <ns3/event-id.h>
 #include <ns3/nstime.h>
+
+#include <vector>
 
 #include "energy/rechargeable.h"
 
@@ -46,16 +52,24 @@ class Battery : public ns3::EnergySource, public Rechargeable {
   void UpdateEnergySource() override;
 
   double Recharge(double joules) override;
+  double Take(double joules) override;
+  void AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) override;
+  double harvested_j() override;
   bool depleted() const override { return depleted_; }
 
  private:
   void DoDispose() override;
-  void Drain();            // what the models drew since the last update
+  double HarvestedWatts() const;
+  void Drain();            // what the models drew, less what the harvesters gave, since the last update
   void CheckThresholds();  // depleted or recharged now: tell the models
   void ScheduleNextUpdate();
+  void ScheduleWhileCharging(double gain_w);
+  void ScheduleCheckIn(double seconds);  // a check no later than that (an earlier one stands)
 
   Settings settings_;
   double remaining_j_ = 0;
+  double harvested_j_ = 0;
+  std::vector<ns3::Ptr<ns3::EnergyHarvester>> harvesters_;
   bool depleted_ = false;
   bool started_ = false;
   ns3::Time last_update_;

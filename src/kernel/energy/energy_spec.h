@@ -33,6 +33,25 @@ enum class Chemistry {
   kLiIon,            // a voltage curve: ns-3's LiIonEnergySource (energy/li_ion_cell.h)
 };
 
+// What a robot's drive draws (docs/energy.md#motion): `idle_w` while the node is on, and the
+// motors' positive mechanical work with the rolling resistance's, over `efficiency`.
+struct DriveCosts {
+  double efficiency = 0.6;           // of the motors, gears and drivers: electrical power to wheel power
+  double idle_w = 0.5;               // motor drivers and encoders, moving or not
+  double rolling_resistance = 0.01;  // coefficient: the force it takes to roll, per newton of weight
+};
+
+// A wireless charger a robot carries for the motes around it (docs/energy.md#chargers): it
+// radiates `power_w`, of which a mote at distance d (antenna to antenna, m) receives
+// power_w * alpha / (d + beta)^2, at most `power_w`, out to `range_m`.
+struct WirelessCharger {
+  double power_w = 0;
+  double range_m = 0;
+  double alpha = 0.0034;  // m^2: Friis at 915 MHz, 8 dBi and 2 dBi antennas, a 50 % rectifier (docs)
+  double beta = 0.2316;   // m
+  double Efficiency(double d) const { return d > range_m ? 0 : std::min(1.0, alpha / ((d + beta) * (d + beta))); }
+};
+
 struct EnergySpec {
   Chemistry source = Chemistry::kConstantVoltage;
   double battery_j = 0;          // capacity, J
@@ -44,6 +63,8 @@ struct EnergySpec {
   double RevivesAbove() const { return revive.value_or(std::min(1.0, cutoff + 0.05)); }
   std::string radio_preset = "ns3_wifi";
   RadioCurrents radio;
+  std::optional<DriveCosts> drive;  // a robot's (set by the loader); a mote has none
+  std::optional<WirelessCharger> wireless_charger;
 };
 
 }  // namespace sanet::energy

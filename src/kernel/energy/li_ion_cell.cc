@@ -59,15 +59,58 @@ void LiIonCell::Start() {
 
 void LiIonCell::UpdateEnergySource() {
   if (!started_) return;
+  const double harvested_w = HarvestedWatts();
+  const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
   ns3::LiIonEnergySource::UpdateEnergySource();
-  CheckThresholds();
+  KeepBelowFull(harvested_w, seconds);
+  CheckThresholds(/*recharged=*/harvested_w > 0);
+}
+
+void LiIonCell::KeepBelowFull(double harvested_w, double seconds) {
+  if (harvested_w <= 0 || seconds <= 0) return;
+  ns3::TracedValue<double>& remaining = this->*Get(net::LiIonRemainingJ());
+  const double lost = std::max(0.0, remaining.Get() - capacity_j_);
+  if (lost > 0) remaining = capacity_j_;
+  DrainedAh() = std::max(0.0, DrainedAh());
+  harvested_j_ += std::max(0.0, harvested_w * seconds - lost);
+}
+
+double LiIonCell::HarvestedWatts() const {
+  double watts = 0;
+  for (const auto& h : harvesters_) watts += h->GetPower();
+  return watts;
 }
 
 double LiIonCell::GetRemainingEnergy() {
   const double remaining = this->*Get(net::LiIonRemainingJ());
   const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
   if (!started_ || seconds <= 0) return remaining;
-  return std::max(0.0, remaining - CalculateTotalCurrent() * GetSupplyVoltage() * seconds);
+  return std::clamp(remaining - CalculateTotalCurrent() * GetSupplyVoltage() * seconds, 0.0, capacity_j_);
+}
+
+double LiIonCell::Take(double joules) {
+  UpdateEnergySource();
+  const double taken = std::clamp(joules, 0.0, GetRemainingEnergy());
+  DecreaseRemainingEnergy(taken);
+  DrainedAh() += taken / (kNominalVoltage * 3600);
+  UpdateEnergySource();  // the voltage at the new charge
+  CheckThresholds();
+  return taken;
+}
+
+void LiIonCell::AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) {
+  UpdateEnergySource();
+  harvesters_.push_back(harvester);
+  ConnectEnergyHarvester(harvester);
+  harvester->SetEnergySource(this);
+}
+
+// Up to now without an update, as GetRemainingEnergy.
+double LiIonCell::harvested_j() {
+  const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
+  if (!started_ || seconds <= 0) return harvested_j_;
+  const double after = this->*Get(net::LiIonRemainingJ()) - CalculateTotalCurrent() * GetSupplyVoltage() * seconds;
+  return harvested_j_ + std::max(0.0, HarvestedWatts() * seconds - std::max(0.0, after - capacity_j_));
 }
 
 double LiIonCell::Recharge(double joules) {

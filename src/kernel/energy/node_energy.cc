@@ -9,16 +9,29 @@ namespace {
 
 void Ignore() {}
 
+// A constant draw while the node is on, on `source`.
+ns3::Ptr<ElectronicsModel> ConstantModel(ns3::Ptr<ns3::EnergySource> source, double watts) {
+  auto model = ns3::CreateObject<ElectronicsModel>();
+  model->SetEnergySource(source);
+  source->AppendDeviceEnergyModel(model);
+  model->SetPower(watts);
+  return model;
+}
+
 }  // namespace
 
-NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio, Hooks hooks)
+NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio,
+                       double sensors_w, Hooks hooks)
     : spec_(spec), hooks_(std::move(hooks)), has_radio_(radio != nullptr) {
-  MakeSource(node);
-  electronics_ = ns3::CreateObject<ElectronicsModel>();
-  electronics_->SetEnergySource(source_);
+  MakeSource(node, sensors_w);
+  electronics_ = ConstantModel(source_, spec.electronics_w);
   electronics_->SetCallbacks([this] { hooks_.depleted(); }, [this] { hooks_.revived(); });
-  source_->AppendDeviceEnergyModel(electronics_);
-  electronics_->SetPower(spec.electronics_w);
+  if (spec.drive) drive_idle_ = ConstantModel(source_, spec.drive->idle_w);
+  sensors_ = ConstantModel(source_, sensors_w);
+  if (spec.wireless_charger) charger_ = ConstantModel(source_, 0);
+  harvester_ = ns3::CreateObject<ChargeHarvester>();
+  harvester_->SetNode(node);
+  rechargeable_->AddHarvester(harvester_);
   if (radio) InstallRadio(radio);
   // Last, with every model in place: a battery that starts at its cutoff is depleted at once.
   rechargeable_->Start();
@@ -26,7 +39,7 @@ NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Pt
 
 NodeEnergy::~NodeEnergy() { source_->Dispose(); }
 
-void NodeEnergy::MakeSource(ns3::Ptr<ns3::Node> node) {
+void NodeEnergy::MakeSource(ns3::Ptr<ns3::Node> node, double sensors_w) {
   if (spec_.source == Chemistry::kLiIon) {
     auto cell = ns3::CreateObject<LiIonCell>();
     cell->Configure(spec_.battery_j, spec_.initial_fraction, spec_.cutoff, spec_.RevivesAbove());
@@ -34,19 +47,50 @@ void NodeEnergy::MakeSource(ns3::Ptr<ns3::Node> node) {
     source_ = cell;
   } else {
     auto battery = ns3::CreateObject<Battery>();
-    battery->Configure(
-        {spec_.battery_j, spec_.voltage, spec_.initial_fraction, spec_.cutoff, spec_.RevivesAbove(), MostWatts()});
+    battery->Configure({spec_.battery_j, spec_.voltage, spec_.initial_fraction, spec_.cutoff, spec_.RevivesAbove(),
+                        MostWatts(sensors_w)});
     rechargeable_ = ns3::PeekPointer(battery);
     source_ = battery;
   }
   source_->SetNode(node);
 }
 
-// The radio's largest current (whatever its state) and the electronics together.
-double NodeEnergy::MostWatts() const {
+// The radio's largest current (whatever its state) and the constant draws together. The wheels'
+// work is taken as it is done (Take), which checks the charge itself.
+double NodeEnergy::MostWatts(double sensors_w) const {
   const RadioCurrents& c = spec_.radio;
   const double radio_a = has_radio_ ? std::max({c.tx_a, c.rx_a, c.idle_a, c.cca_busy(), c.switching_a, c.sleep_a}) : 0;
-  return radio_a * spec_.voltage + spec_.electronics_w;
+  return radio_a * spec_.voltage + spec_.electronics_w + (spec_.drive ? spec_.drive->idle_w : 0) + sensors_w +
+         (spec_.wireless_charger ? spec_.wireless_charger->power_w : 0);
+}
+
+void NodeEnergy::SetOn(bool on) {
+  electronics_->SetOn(on);
+  if (drive_idle_) drive_idle_->SetOn(on);
+  sensors_->SetOn(on);
+  if (charger_) charger_->SetOn(on);
+  if (!on) motion_w_ = 0;
+}
+
+void NodeEnergy::SetRadiating(bool on) {
+  if (!charger_ || on == radiating_) return;
+  radiating_ = on;
+  charger_->SetPower(on ? spec_.wireless_charger->power_w : 0);
+}
+
+void NodeEnergy::Drove(double motor_work_j, double weight_rolled_j, double dt) {
+  if (!spec_.drive) return;
+  const DriveCosts& d = *spec_.drive;
+  const double work_j =
+      (motor_work_j - drove_.motor_work_j) + d.rolling_resistance * (weight_rolled_j - drove_.weight_rolled_j);
+  drove_ = {motor_work_j, weight_rolled_j};
+  const double electrical_j = depleted() ? 0 : work_j / d.efficiency;
+  motion_w_ = dt > 0 ? electrical_j / dt : 0;
+  if (electrical_j > 0) motion_j_ += rechargeable_->Take(electrical_j);
+}
+
+void NodeEnergy::SensorRead(double joules) {
+  if (joules > 0 && !depleted()) readings_j_ += rechargeable_->Take(joules);
 }
 
 // Installed as ns-3's WifiRadioEnergyModelHelper installs its model (the PHY's listener, the
@@ -73,15 +117,21 @@ void NodeEnergy::InstallRadio(ns3::Ptr<ns3::NetDevice> radio) {
   if (!states_) states_ = std::make_unique<RadioStates>(phy);
 }
 
+// Charging while chargers give it something and it is not full; the power is what it draws less
+// what they give.
 BatteryReading NodeEnergy::Reading() const {
   const double remaining = source_->GetRemainingEnergy();
-  return {remaining, remaining / spec_.battery_j, source_->GetSupplyVoltage(), false, spec_.battery_j, power_w()};
+  const double fraction = remaining / spec_.battery_j;
+  const bool charging = charging_w() > 0 && !full();
+  return {remaining, fraction, source_->GetSupplyVoltage(), charging, spec_.battery_j, power_w() - charging_w()};
 }
 
 double NodeEnergy::power_w() const {
-  double amperes = electronics_->GetCurrentA();
+  double amperes = electronics_->GetCurrentA() + sensors_->GetCurrentA();
+  if (drive_idle_) amperes += drive_idle_->GetCurrentA();
+  if (charger_) amperes += charger_->GetCurrentA();
   if (radio_) amperes += radio_->GetCurrentA();
-  return amperes * source_->GetSupplyVoltage();
+  return amperes * source_->GetSupplyVoltage() + motion_w_;
 }
 
 namespace {
@@ -103,6 +153,9 @@ EnergyUse NodeEnergy::Used() const {
       use.emplace_back(std::string("radio_") + name, joules[static_cast<std::size_t>(state)]);
   }
   use.emplace_back("electronics", electronics_->GetTotalEnergyConsumption());
+  use.emplace_back("motion", (drive_idle_ ? drive_idle_->GetTotalEnergyConsumption() : 0) + motion_j_);
+  use.emplace_back("sensors", sensors_->GetTotalEnergyConsumption() + readings_j_);
+  if (charger_) use.emplace_back("wireless_charger", charger_->GetTotalEnergyConsumption());
   return use;
 }
 

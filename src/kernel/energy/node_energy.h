@@ -1,7 +1,10 @@
 // One node's energy on ns-3's energy framework: its battery (energy/battery.h), the electronics'
 // draw (energy/electronics_model.h) and, on a node with a Wi-Fi radio, ns-3's
 // WifiRadioEnergyModel (energy/radio_energy_model.h) driven by the PHY's real states, with the time in each state
-// summed from the PHY's trace (energy/radio_states.h) for the energy by state.
+// summed from the PHY's trace (energy/radio_states.h) for the energy by state. A robot's drive
+// draws its idle power as a constant model and its wheels' work as it is done (Drove); sensors
+// draw their power as a constant model and their readings' energy as they are taken; a
+// harvester (energy/charge_harvester.h) puts in what chargers give.
 #pragma once
 
 #include <ns3/net-device.h>
@@ -17,6 +20,7 @@
 #include <vector>
 
 #include "energy/battery.h"
+#include "energy/charge_harvester.h"
 #include "energy/electronics_model.h"
 #include "energy/energy_spec.h"
 #include "energy/li_ion_cell.h"
@@ -29,14 +33,20 @@ namespace sanet::energy {
 // Joules used, by component, in the order summary.json lists them.
 using EnergyUse = std::vector<std::pair<std::string, double>>;
 
+struct DriveTallySoFar {
+  double motor_work_j = 0, weight_rolled_j = 0;
+};
+
 class NodeEnergy {
  public:
   struct Hooks {
     std::function<void()> depleted;  // the charge fell to the cutoff
     std::function<void()> revived;   // a dead node's charge rose above RevivesAbove
   };
-  // `radio`: the node's Wi-Fi device, or null (a run without a network).
-  NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio, Hooks hooks);
+  // `radio`: the node's Wi-Fi device, or null (a run without a network); `sensors_w`: what its
+  // sensors draw while it is on.
+  NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio, double sensors_w,
+             Hooks hooks);
   ~NodeEnergy();
   NodeEnergy(const NodeEnergy&) = delete;
   NodeEnergy& operator=(const NodeEnergy&) = delete;
@@ -49,12 +59,24 @@ class NodeEnergy {
   // Seconds the radio spent in each state by the PHY's own trace ("tx", "rx", "idle", "cca_busy",
   // "sleep"); empty without a radio.
   EnergyUse RadioSeconds() const;
-  double charged_j() const { return charged_j_; }
+  // Put in by recharges and chargers.
+  double charged_j() const { return charged_j_ + rechargeable_->harvested_j(); }
+  // The drive's tally so far (physics::DriveTally's two sums, J): what it did since the last call
+  // is drawn now, over the drive's efficiency, in the `dt` seconds it took.
+  void Drove(double motor_work_j, double weight_rolled_j, double dt);
+  // A sensor reading that costs `joules`.
+  void SensorRead(double joules);
+  // The power chargers give the node now, W.
+  void SetCharging(double watts) { harvester_->SetPower(watts); }
+  double charging_w() const { return harvester_->GetPower(); }
+  // A robot's wireless charger radiates (drawing its power_w) or not.
+  void SetRadiating(bool on);
+  bool full() const { return remaining_j() >= spec_.battery_j * (1 - 1e-12); }
   bool depleted() const { return rechargeable_->depleted(); }
   // Adds up to `joules` (never past full); returns what the battery took.
   double Recharge(double joules);
   // The electronics draw only while the node is on (alive and not switched off).
-  void SetOn(bool on) { electronics_->SetOn(on); }
+  void SetOn(bool on);
   // The radio is on again after an off (a revival).
   void RadioSwitchedOn();
 
@@ -63,12 +85,20 @@ class NodeEnergy {
 
   EnergySpec spec_;
   Hooks hooks_;
-  void MakeSource(ns3::Ptr<ns3::Node> node);
-  double MostWatts() const;
+  void MakeSource(ns3::Ptr<ns3::Node> node, double sensors_w);
+  double MostWatts(double sensors_w) const;
 
   ns3::Ptr<ns3::EnergySource> source_;  // a Battery or a LiIonCell, as the spec says
   Rechargeable* rechargeable_ = nullptr;
   ns3::Ptr<ElectronicsModel> electronics_;
+  ns3::Ptr<ElectronicsModel> drive_idle_;  // a robot's; null on a mote
+  ns3::Ptr<ElectronicsModel> sensors_;
+  ns3::Ptr<ChargeHarvester> harvester_;
+  ns3::Ptr<ElectronicsModel> charger_;  // a robot's wireless charger; null without one
+  bool radiating_ = false;
+  double motion_j_ = 0, motion_w_ = 0;  // the wheels' electrical energy, and its power in the last step
+  double readings_j_ = 0;
+  DriveTallySoFar drove_;
   ns3::Ptr<RadioEnergyModel> radio_;            // the radio's model since it was last switched on
   RadioEnergyModel::ByState earlier_radios_{};  // what the models before it charged
   ns3::Ptr<ns3::WifiNetDevice> radio_device_;

@@ -1,7 +1,11 @@
 // What sanet asks of a node's energy source beyond ns-3's EnergySource: a start once its models are
-// attached, energy put back (capped at full), and whether it is depleted now. Both of sanet's sources have it
-// (energy/battery.h, energy/li_ion_cell.h).
+// attached, energy put back (capped at full) at once or by harvesters, energy taken at once, and
+// whether it is depleted now. Both of sanet's sources have it (energy/battery.h,
+// energy/li_ion_cell.h).
 #pragma once
+
+#include <ns3/energy-harvester.h>
+#include <ns3/ptr.h>
 
 namespace sanet::energy {
 
@@ -13,6 +17,13 @@ class Rechargeable {
   virtual void Start() = 0;
   // Adds up to `joules`, never past full; returns what it took. The models hear of a revival.
   virtual double Recharge(double joules) = 0;
+  // Takes `joules` at once (a wheel's work in a physics step, a sensor's reading); returns what it took.
+  virtual double Take(double joules) = 0;
+  // A harvester whose power the source nets against its models' draw (ns-3's
+  // ConnectEnergyHarvester), never charging past full.
+  virtual void AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) = 0;
+  // What the harvesters put in up to now (less what a full battery could not take).
+  virtual double harvested_j() = 0;
   virtual bool depleted() const = 0;
 };
 

@@ -99,6 +99,18 @@ class Body {
   virtual bool awake() const = 0;
 };
 
+// What a vehicle's drive has done since it was made, for the energy it cost (the energy layer
+// turns it into electrical energy, docs/energy.md#motion).
+struct DriveTally {
+  // The motors' positive mechanical work: over every step and wheel, the torque the motor
+  // applied times the angle its wheel turned against the chassis, where that is positive (a motor
+  // that brakes gives nothing back).
+  double motor_work_j = 0;
+  // Over every step and wheel, the weight the wheel carries times the distance its rim rolled:
+  // the rolling resistance's work is its coefficient times this.
+  double weight_rolled_j = 0;
+};
+
 class Vehicle : public virtual Body {
  public:
   virtual std::size_t wheel_count() const = 0;
@@ -107,6 +119,7 @@ class Vehicle : public virtual Body {
   virtual void set_wheel_speed(std::size_t wheel, double rad_per_s) = 0;
   // Accumulated wheel rotation since creation (rad), unwrapped.
   virtual double wheel_angle(std::size_t wheel) const = 0;
+  virtual DriveTally drive_tally() const = 0;
 };
 
 // A message the engine printed (ODE's "LCP internal error" and the like), kept for the run's

@@ -29,6 +29,7 @@ class PipelinedWorld::GatedVehicle : public GatedBody, public Vehicle {
     vehicle_.set_wheel_speed(wheel, rad_per_s);
   }
   double wheel_angle(std::size_t wheel) const override { return world_.SettleConst(), vehicle_.wheel_angle(wheel); }
+  DriveTally drive_tally() const override { return world_.SettleConst(), vehicle_.drive_tally(); }
 
  private:
   Vehicle& vehicle_;

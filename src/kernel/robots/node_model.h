@@ -22,6 +22,10 @@ inline const char* ModelName(ModelKind kind) { return ModelOf(kind).Name(); }
 struct SensorConfig {
   std::string kind;
   std::any settings;
+  // What it costs a node with `energy` (docs/energy.md#sensors): while the node is on, and per
+  // reading taken.
+  double power_w = 0;
+  double energy_j = 0;
 };
 // A node's sensors by instance name: a kind's own name for its default instance ("laser"), any
 // other name for more of a kind ("laser_rear").

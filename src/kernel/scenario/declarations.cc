@@ -101,6 +101,46 @@ YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
 
 }  // namespace
 
+const Fields<sim::Charger>& ChargerFields() {
+  static const Fields<sim::Charger> fields = [] {
+    Fields<sim::Charger> f;
+    f.Custom(
+        {"position", "point `[x, y]`", "m", kRequired, "", "the charger's centre"},
+        [](const Field& v, sim::Charger& c) { c.position = ReadPoint(v); },
+        [](const sim::Charger& c) {
+          return Numbers({c.position.x, c.position.y});
+        });
+    f.Number("radius", Member(&sim::Charger::radius), "m", 0, 1e4, "a node whose reference point is this close charges",
+             true)
+        .Required();
+    f.Number("power_w", Member(&sim::Charger::power_w), "W", 0, 1e6,
+             "what a node inside receives into its battery (never past full)", true)
+        .Required();
+    return f;
+  }();
+  return fields;
+}
+
+namespace {
+
+// world.chargers: a list of ChargerFields, printed where there are any.
+void AddChargers(Fields<sim::RunSpec>& f) {
+  f.Custom(
+      {"chargers", "list of chargers", "", "none", "", "see [chargers](#chargers): they charge nodes with `energy`"},
+      [](const Field& v, sim::RunSpec& s) {
+        if (v.node().IsNull()) return;
+        for (const Field& c : v.Items()) ChargerFields().Read(c, s.chargers.emplace_back());
+      },
+      [](const sim::RunSpec& s) {
+        if (s.chargers.empty()) return YAML::Node();
+        YAML::Node list(YAML::NodeType::Sequence);
+        for (const sim::Charger& c : s.chargers) list.push_back(ChargerFields().Print(c));
+        return list;
+      });
+}
+
+}  // namespace
+
 const Fields<sim::RunSpec>& WorldFields() {
   using sim::RunSpec;
   static const Fields<RunSpec> fields = [] {
@@ -142,6 +182,7 @@ const Fields<sim::RunSpec>& WorldFields() {
             for (const Field& o : v.Items()) s.obstacles.push_back(ReadObstacle(o));
         },
         [](const RunSpec& s) { return s.obstacles.empty() ? YAML::Node() : PrintObstacles(s.obstacles); });
+    AddChargers(f);
     f.Custom(
         {"obstacle_material", "text", "", "`none`", MaterialList("`"),
          "material of the obstacles that name none: `none` costs the radio nothing"},
@@ -1092,6 +1133,8 @@ std::vector<SectionTable> SectionTables() {
       {"radio", RadioFields().Describe(net::NodeRadio{})},
       {"energy", EnergyFields().Describe(energy::EnergySpec{})},
       {"energy.radio", RadioEnergyFields().Describe(energy::EnergySpec{})},
+      {"energy.wireless_charger", WirelessChargerFields().Describe(energy::WirelessCharger{})},
+      {"world.chargers", ChargerFields().Describe(sim::Charger{})},
       {"controller", ControllerFields().Describe(sim::ControllerSpec{})},
       {"messages", MessagesFields().Describe(sim::RunSpec{})},
       {"events", EventFields().Describe(EventSettings{})},

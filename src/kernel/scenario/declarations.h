@@ -17,6 +17,7 @@ namespace sanet::scenario {
 constexpr double kFarthest = 1e6;
 
 const Fields<sim::RunSpec>& WorldFields();
+const Fields<sim::Charger>& ChargerFields();  // an item of world.chargers
 const Fields<net::NetworkSpec>& NetworkFields();
 const Fields<net::NetworkSpec>& PropagationFields();
 const Fields<net::NetworkSpec>& ChannelFields();

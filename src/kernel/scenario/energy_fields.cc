@@ -33,7 +33,54 @@ void Current(Fields<EnergySpec>& f, const char* key, double RadioCurrents::*memb
       key, [member](EnergySpec& s) -> double& { return s.radio.*member; }, "A", 0, 1000, meaning);
 }
 
+// A key of the drive's costs: read into `drive` (which the loader keeps on robots only), printed
+// on robots.
+void DriveCost(Fields<EnergySpec>& f, FieldInfo info, double energy::DriveCosts::*member, double max, bool above_zero) {
+  f.Custom(
+      std::move(info),
+      [member, max, above_zero](const Field& v, EnergySpec& s) {
+        if (!s.drive) s.drive.emplace();
+        (*s.drive).*member = above_zero ? v.NumberAbove(0, max) : v.Number(0, max);
+      },
+      [member](const EnergySpec& s) { return s.drive ? NumberNode((*s.drive).*member) : YAML::Node(); });
+}
+
+void DriveCosts(Fields<EnergySpec>& f) {
+  const energy::DriveCosts d;
+  DriveCost(f,
+            {"motion_efficiency", "number", "", "`" + ShortNumber(d.efficiency) + "`", "(0, 1]",
+             "a robot's: of its motors, gears and drivers, the wheels' mechanical power over the electrical power "
+             "drawn (docs/energy.md#motion)"},
+            &energy::DriveCosts::efficiency, 1, true);
+  DriveCost(f,
+            {"drive_idle_w", "number", "W", "`" + ShortNumber(d.idle_w) + "`", "[0, 1e6]",
+             "a robot's: what its drive draws while the node is on, moving or not (motor drivers, encoders)"},
+            &energy::DriveCosts::idle_w, 1e6, false);
+  DriveCost(f,
+            {"rolling_resistance", "number", "", "`" + ShortNumber(d.rolling_resistance) + "`", "[0, 1]",
+             "a robot's: the force it takes to roll its wheels, per newton of the weight they carry"},
+            &energy::DriveCosts::rolling_resistance, 1, false);
+}
+
 }  // namespace
+
+const Fields<energy::WirelessCharger>& WirelessChargerFields() {
+  static const Fields<energy::WirelessCharger> fields = [] {
+    Fields<energy::WirelessCharger> f;
+    f.Number("power_w", Member(&energy::WirelessCharger::power_w), "W", 0, 1e6,
+             "what the charger radiates while the robot is on (drawn from the robot's battery)", true)
+        .Required();
+    f.Number("range_m", Member(&energy::WirelessCharger::range_m), "m", 0, 1e4,
+             "motes farther than this (antenna to antenna) receive nothing", true)
+        .Required();
+    f.Number("alpha", Member(&energy::WirelessCharger::alpha), "m^2", 0, 1e6,
+             "the received share is alpha / (d + beta)^2, at most 1 (docs/energy.md#chargers)", true);
+    f.Number("beta", Member(&energy::WirelessCharger::beta), "m", 0, 1e3,
+             "the model's correction of Friis's equation at short distances", false);
+    return f;
+  }();
+  return fields;
+}
 
 const Fields<EnergySpec>& RadioEnergyFields() {
   static const Fields<EnergySpec> fields = [] {
@@ -93,14 +140,28 @@ const Fields<EnergySpec>& EnergyFields() {
           ReadPreset(v, s);
         },
         [](const EnergySpec& s) { return RadioEnergyFields().Print(s); });
+    DriveCosts(f);
+    f.Custom(
+        {"wireless_charger", "mapping", "", "none", "{power_w, range_m, alpha, beta} (the table below)",
+         "a robot's: a charger that powers the motes near it (docs/energy.md#chargers)"},
+        [](const Field& v, EnergySpec& s) { WirelessChargerFields().Read(v, s.wireless_charger.emplace()); },
+        [](const EnergySpec& s) {
+          return s.wireless_charger ? WirelessChargerFields().Print(*s.wireless_charger) : YAML::Node();
+        });
     return f;
   }();
   return fields;
 }
 
-energy::EnergySpec ReadEnergy(const Field& f) {
+energy::EnergySpec ReadEnergy(const Field& f, bool has_drive) {
   EnergySpec spec;
   EnergyFields().Read(f, spec);
+  if (!has_drive) {
+    for (const char* key : {"motion_efficiency", "drive_idle_w", "rolling_resistance", "wireless_charger"})
+      if (const auto v = f.Get(key)) v->Fail("is a robot's: a mote has no drive to carry it");
+  } else if (!spec.drive) {
+    spec.drive.emplace();
+  }
   if (spec.source == energy::Chemistry::kLiIon && f.Get("voltage"))
     f.Require("voltage").Fail("a li_ion pack's voltage follows its discharge curve (4.05 V full): leave it out");
   if (spec.revive && *spec.revive <= spec.cutoff)

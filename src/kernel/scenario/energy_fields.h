@@ -11,7 +11,9 @@ namespace sanet::scenario {
 const Fields<energy::EnergySpec>& EnergyFields();
 // energy.radio as a mapping: a preset, and currents that change its figures.
 const Fields<energy::EnergySpec>& RadioEnergyFields();
-// Reads `energy`, checking what no single key can (the revive level above the cutoff).
-energy::EnergySpec ReadEnergy(const Field& f);
+const Fields<energy::WirelessCharger>& WirelessChargerFields();
+// Reads `energy`, checking what no single key can (the revive level above the cutoff); a node
+// that `has_drive` gets its drive's costs (docs/energy.md#motion), which a mote's refuses.
+energy::EnergySpec ReadEnergy(const Field& f, bool has_drive);
 
 }  // namespace sanet::scenario

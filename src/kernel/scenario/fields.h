@@ -107,6 +107,10 @@ class Fields {
     f.ExpectKeys(keys);
     for (const Entry& e : entries_)
       if (e.info.default_text == kRequired) f.Require(e.info.key);
+    ReadPresent(f, s);
+  }
+  // Reads the declared keys present in `f`, leaving the check of the others to the caller.
+  void ReadPresent(const Field& f, S& s) const {
     for (const Entry& e : entries_)
       if (e.read)  // fields without a reader are read by the section's own code
         if (auto value = f.Get(e.info.key)) e.read(*value, s);

@@ -141,7 +141,7 @@ struct NodeTemplate {
 // sensor on a node without one has nothing to read.
 void ReadEnergyAndSensors(const Field& f, NodeTemplate& t) {
   if (auto energy = f.Get("energy")) {
-    t.energy = ReadEnergy(*energy);
+    t.energy = ReadEnergy(*energy, robots::HasDrive(t.model));
     t.model.sensors["battery"] = {"battery", sensors::FindKind("battery")->DefaultSettings(t.model)};
   }
   if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);

@@ -54,6 +54,28 @@ bool IsToken(const std::string& name) {
                      [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
+// power_w and energy_j, printed only where set (a sensor that costs nothing says nothing).
+const Fields<robots::SensorConfig>& DrawFields() {
+  static const Fields<robots::SensorConfig> fields = [] {
+    Fields<robots::SensorConfig> f;
+    const auto printed = [](double robots::SensorConfig::*member) {
+      return [member](const robots::SensorConfig& c) { return c.*member > 0 ? NumberNode(c.*member) : YAML::Node(); };
+    };
+    f.Custom(
+        {"power_w", "number", "W", "`0`", "[0, 1e6]",
+         "drawn from the node's battery while the node is on (with `energy`; docs/energy.md#sensors)"},
+        [](const Field& v, robots::SensorConfig& c) { c.power_w = v.Number(0, 1e6); },
+        printed(&robots::SensorConfig::power_w));
+    f.Custom(
+        {"energy_j", "number", "J", "`0`", "[0, 1e6]",
+         "drawn from the node's battery at each reading its controller (or robot client) takes"},
+        [](const Field& v, robots::SensorConfig& c) { c.energy_j = v.Number(0, 1e6); },
+        printed(&robots::SensorConfig::energy_j));
+    return f;
+  }();
+  return fields;
+}
+
 void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec& model) {
   if (!IsToken(name))
     value.Fail(
@@ -70,16 +92,18 @@ void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec
     return;
   }
   const auto it = model.sensors.find(name);
-  std::any settings = kind.DefaultSettings(model);
+  robots::SensorConfig config{kind_name, kind.DefaultSettings(model)};
+  std::any& settings = config.settings;
   if (value.IsScalar()) {  // true: the kind's default instance
     if (FieldsOf(kind_name).NeedsKeys())
       value.Fail("a " + kind_name + " sensor needs " + KeysOf(kind, model, true) + ": give {" +
                  KeysOf(kind, model, true) + ": ...} instead of true");
   } else {
-    if (it != model.sensors.end() && it->second.kind == kind_name) settings = it->second.settings;
+    if (it != model.sensors.end() && it->second.kind == kind_name) config = it->second;
     FieldsOf(kind_name).Read(value, settings);
+    DrawFields().ReadPresent(value, config);
   }
-  model.sensors[name] = {kind_name, std::move(settings)};
+  model.sensors[name] = std::move(config);
 }
 
 // No two instances publish on one topic (`scan: {kind: sonar}` beside the laser's /R/scan).
@@ -102,7 +126,8 @@ void CheckTopics(const Field& field, const robots::ModelSpec& model) {
 
 // The instance as the effective scenario prints it: a named one starts with its kind.
 YAML::Node PrintInstance(const std::string& name, const robots::SensorConfig& config) {
-  const YAML::Node keys = FieldsOf(config.kind).Print(config.settings);
+  YAML::Node keys = FieldsOf(config.kind).Print(config.settings);
+  for (const auto& entry : DrawFields().Print(config)) keys[entry.first.Scalar()] = entry.second;
   if (name == config.kind) return keys;
   YAML::Node out(YAML::NodeType::Map);
   out["kind"] = config.kind;
@@ -151,7 +176,9 @@ std::vector<std::pair<std::string, std::vector<FieldInfo>>> SensorTables() {
         break;
       }
     }
-    tables.push_back({"sensors." + name, FieldsOf(name).Describe(kind->DefaultSettings(example))});
+    std::vector<FieldInfo> keys = FieldsOf(name).Describe(kind->DefaultSettings(example));
+    for (FieldInfo& draw : DrawFields().Describe(robots::SensorConfig{})) keys.push_back(std::move(draw));
+    tables.push_back({"sensors." + name, std::move(keys)});
   }
   return tables;
 }

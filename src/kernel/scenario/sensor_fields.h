@@ -20,6 +20,10 @@
 
 namespace sanet::scenario {
 
+// The keys every sensor instance has, which ReadSensors reads beside the kind's own: its kind,
+// and its draw on the node's battery.
+inline const std::vector<std::string> kInstanceKeys = {"kind", "power_w", "energy_j"};
+
 class SensorFields {
  public:
   virtual ~SensorFields() = default;
@@ -46,7 +50,7 @@ class DeclaredKeys : public SensorFields {
       : fields_(fields), needs_keys_(needs_keys) {}
   void Read(const Field& field, std::any& settings) const override {
     auto s = std::any_cast<Settings>(settings);
-    fields_.Read(field, s, {"kind"});
+    fields_.Read(field, s, kInstanceKeys);
     settings = s;
   }
   YAML::Node Print(const std::any& settings) const override {

@@ -149,7 +149,9 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
 // notices them inside ns-3's PHY and energy calls, which must not switch the radio meanwhile.
 void Assembly::AddBattery(NodeId id) {
   ns3::Ptr<ns3::NetDevice> radio = wireless_ ? wireless_->Device(id) : nullptr;
-  batteries_.Add(id, run_nodes_[id].energy, radio,
+  double sensors_w = 0;
+  for (const auto& [name, config] : run_nodes_[id].model.sensors) sensors_w += config.power_w;
+  batteries_.Add(id, run_nodes_[id].energy, radio, sensors_w,
                  {[this, id] { ns3::Simulator::ScheduleNow(&Assembly::Die, this, id); },
                   [this, id] { ns3::Simulator::ScheduleNow(&Assembly::Revive, this, id); }});
 }
@@ -185,6 +187,10 @@ void Assembly::Recharge(NodeId id, std::optional<double> joules) {
   if (batteries_.dead(id) && energy->depleted())
     Log(id, "recharged to " + Quantity("%.6g J", energy->remaining_j()) + ": below its revive level (" +
                 Quantity("%.6g", energy->spec().RevivesAbove() * 100) + " %), it stays dead");
+}
+
+void Assembly::Drove(NodeId id, const physics::DriveTally& tally, double dt) {
+  if (energy::NodeEnergy* energy = batteries_.Of(id)) energy->Drove(tally.motor_work_j, tally.weight_rolled_j, dt);
 }
 
 std::optional<BatteryReading> Assembly::Battery(NodeId node) const {
@@ -285,6 +291,11 @@ void Assembly::Metric(NodeId node, const std::string& name, double value) {
 
 void Assembly::ReadSensor(NodeId node, const std::string& instance, const std::string& kind,
                           const SensorReading& reading) {
+  if (energy::NodeEnergy* energy = batteries_.Of(node)) {
+    const auto& sensors = run_nodes_[node].model.sensors;
+    const auto it = sensors.find(instance);
+    if (it != sensors.end()) energy->SensorRead(it->second.energy_j);
+  }
   if (running_ && bus_.Heard<SensorRead>()) bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
 }
 

@@ -71,7 +71,10 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   // Energy into node `id`'s battery (`joules`, or to full); a dead node recharged above its
   // revive level comes back. Refused (a log line) for a node without energy.
   void Recharge(NodeId id, std::optional<double> joules);
+  // What robot `id`'s drive did up to the end of a step of `dt` seconds: its battery draws it.
+  void Drove(NodeId id, const physics::DriveTally& tally, double dt);
   const NodeBatteries& batteries() const { return batteries_; }
+  bool SwitchedOff(NodeId id) const { return off_for_good_.at(id); }  // by an event, for good
   // Adds a robot to the running world (its front end checked where it stands): its body, its own ns-3 node
   // with the scenario's radio and routing, a simulated node and a host without a controller.
   // Every other node can see it from now on. Returns its id, the next one.

@@ -59,6 +59,14 @@ struct NodeEvent {
   std::optional<double> energy_j;  // recharge: J added; unset: to full
 };
 
+// A charger in the world (docs/energy.md#chargers): a node with a battery whose reference point is
+// within `radius` of `position` receives `power_w`.
+struct Charger {
+  Vec2 position;
+  double radius = 0;   // m
+  double power_w = 0;  // W into the battery
+};
+
 struct RunSpec {
   std::string name = "run";
   std::uint64_t seed = 1;
@@ -71,6 +79,7 @@ struct RunSpec {
   int threads = 1;
   std::vector<Obstacle> obstacles;
   net::Material obstacle_material = net::Material::kNone;  // of obstacles that name none
+  std::vector<Charger> chargers;
   std::vector<NodeSpec> nodes;
   // The wireless network; without one, messages are delivered locally after message_latency.
   std::optional<net::NetworkSpec> network;

@@ -24,6 +24,7 @@ Stepper::Stepper(Assembly& world, Outputs& outputs) : world_(world), outputs_(ou
   world_.poses().SetCatchUp([this] { CatchUp(); });
   for (NodeId id = 0; id < world_.size(); ++id) (world_.model(id).mobile() ? vehicles_ : motes_).push_back(id);
   moving_.assign(world_.size(), 0);
+  for (NodeId id = 0; id < world_.size(); ++id) NoteDrive(id);
   if (bus_.Heard<StepEnded>()) world_.transport().Watch();
   if (bus_.Heard<net::FrameEvent>())
     world_.transport().ObserveFrames([&bus = bus_](const net::FrameEvent& f) { bus.Publish(f); });
@@ -124,6 +125,7 @@ void Stepper::ScheduleAll() {
   for (const NodeEvent& e : spec.events) ScheduleEvent(e);
   ns3::Simulator::ScheduleNow(&Stepper::Record, this);
   StartEnergySamples();
+  chargers_.Start();
   // A world without vehicles has nothing to integrate: motes rest until a vehicle pushes them.
   if (!vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
 }
@@ -199,6 +201,8 @@ void Stepper::PhysicsStep() {
   if (bus_.Heard<StepEnded>() && launched_ > 0) {
     CatchUp();
     Notify();
+  } else if (any_drive_battery_ && due_ > 1) {
+    PublishEnded(1);  // the drives' energy is drawn at most one step late, whoever reads positions
   }
   const double dt = world_.spec().physics_step;
   // No step ends past the run: [0, duration] (events at exactly `duration` still run).
@@ -229,20 +233,33 @@ void Stepper::Integrate(StepOutcome& outcome) {
       if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep();
   }
   outcome.poses = world_.RadioPoses(moved_);
+  for (NodeId id : moved_)
+    if (drives_battery_[id]) outcome.drives.emplace_back(id, world_.model(id).vehicle()->drive_tally());
   outcome.messages = world_.physics().TakeMessages();
   for (NodeId id : moved_) moving_[id] = 0;
   moved_.clear();
 }
 
-// The radios learn where the bodies were at the end of each step that has ended.
-void Stepper::CatchUp() {
-  world_.poses().CaughtUp();
-  for (; due_ > 0; --due_) {
-    world_.physics().SettleStep(steps_.front().number);
-    world_.poses().Publish(steps_.front().poses);
-    for (const physics::EngineMessage& m : steps_.front().messages) ReportEngineMessage(steps_.front().end, m);
+// The radios learn where the bodies were at the end of each step that has ended, and the robots'
+// batteries what their drives did in it.
+void Stepper::PublishEnded(std::size_t keep) {
+  if (keep == 0) world_.poses().CaughtUp();
+  for (; due_ > keep; --due_) {
+    const StepOutcome& step = steps_.front();
+    world_.physics().SettleStep(step.number);
+    world_.poses().Publish(step.poses);
+    for (const physics::EngineMessage& m : step.messages) ReportEngineMessage(step.end, m);
+    for (const auto& [id, tally] : step.drives) world_.Drove(id, tally, step.dt);
     steps_.pop_front();
   }
+}
+
+// Its vector is read on the physics thread; it grows only between steps (a spawn settles them).
+void Stepper::NoteDrive(NodeId id) {
+  drives_battery_.resize(world_.size(), 0);
+  const energy::NodeEnergy* energy = world_.batteries().Of(id);
+  drives_battery_[id] = world_.model(id).mobile() && energy && energy->spec().drive;
+  any_drive_battery_ = any_drive_battery_ || drives_battery_[id];
 }
 
 void Stepper::ReportEngineMessage(double t, const physics::EngineMessage& m) {
@@ -340,7 +357,9 @@ void Stepper::Spawned(const NodeSpawned& spawned) {
   const NodeId node = spawned.node;
   outputs_.FirstRow(spawned.t, node, spawned.pose);  // its first trajectory row, after the spawn itself
   moving_.resize(world_.size(), 0);
+  NoteDrive(node);
   StartEnergySamples();  // the first battery may come with a spawned robot
+  chargers_.Start();
   if (!world_.model(node).mobile()) return;
   if (vehicles_.empty()) ns3::Simulator::ScheduleNow(&Stepper::PhysicsStep, this);
   vehicles_.push_back(node);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "sim/assembly.h"
+#include "sim/chargers.h"
 #include "sim/outputs.h"
 #include "sim/route_watch.h"
 #include "sim/run_events.h"
@@ -67,14 +68,17 @@ class Stepper {
   void ControlRound(std::int64_t period_ns);
   void PhysicsStep();
   struct StepOutcome {
-    double dt = 0;                                 // s
-    std::uint64_t number = 0;                      // the physics world's
-    std::vector<RadioPose> poses;                  // of the bodies that moved, at its end
-    double end = 0;                                // s, simulated
-    std::vector<physics::EngineMessage> messages;  // the engine's, during it
+    double dt = 0;                                               // s
+    std::uint64_t number = 0;                                    // the physics world's
+    std::vector<RadioPose> poses;                                // of the bodies that moved, at its end
+    double end = 0;                                              // s, simulated
+    std::vector<physics::EngineMessage> messages;                // the engine's, during it
+    std::vector<std::pair<NodeId, physics::DriveTally>> drives;  // robots with batteries that moved: their tallies
   };
   void Integrate(StepOutcome& outcome);
-  void CatchUp();
+  void CatchUp() { PublishEnded(0); }
+  void PublishEnded(std::size_t keep);  // all steps that have ended but the last `keep`
+  void NoteDrive(NodeId id);            // whether its drive draws on a battery
   void Record();
   void StartEnergySamples();      // once some node has a battery
   void SampleEnergy(bool again);  // every battery, for energy.csv; `again`: and the next sample
@@ -99,6 +103,9 @@ class Stepper {
   std::uint64_t launched_ = 0;
   std::vector<NodeId> moved_;  // bodies awake before or after the step in flight (physics thread)
   std::vector<char> moving_;   // per node: listed in moved_
+  Chargers chargers_{world_};
+  std::vector<char> drives_battery_;  // per node: a robot with a battery
+  bool any_drive_battery_ = false;
   RouteWatch routes_;
   double last_energy_sample_ = -1;  // s
   bool sampling_energy_ = false;

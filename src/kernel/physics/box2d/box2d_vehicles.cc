@@ -60,12 +60,27 @@ void Box2dVehicle::DriveWheels(double dt) {
         body_->ApplyLinearImpulse(static_cast<float>(after - before) * directions[k], at, false);
       }
     }
+  TallyMotorWork();
+}
+
+// A wheel here is its contact point: its motor's work in the step is the impulse it gave along
+// the rolling direction times the speed the point then has there (force times velocity), where
+// that is positive. The impulses along the axle are friction's, which does no motor's work.
+void Box2dVehicle::TallyMotorWork() {
+  for (std::size_t i = 0; i < wheels_.size(); ++i) {
+    const Wheel& w = wheels_[i];
+    const b2Vec2 at = body_->GetWorldPoint(w.contact);
+    const double speed = b2Dot(body_->GetLinearVelocityFromWorldPoint(at), body_->GetWorldVector(w.rolling));
+    tally_.motor_work_j += std::max(0.0, impulses_[i][0] * speed);
+  }
 }
 
 void Box2dVehicle::RollWheels(double dt) {
   for (Wheel& w : wheels_) {
     const b2Vec2 v = body_->GetLinearVelocityFromLocalPoint(w.contact);
-    w.angle += b2Dot(v, body_->GetWorldVector(w.rolling)) / w.radius * dt;
+    const double rolled = b2Dot(v, body_->GetWorldVector(w.rolling)) * dt;
+    w.angle += rolled / w.radius;
+    tally_.weight_rolled_j += w.load * std::abs(rolled);
   }
 }
 

@@ -56,14 +56,17 @@ class Box2dVehicle : public Box2dBody, public Vehicle {
   std::size_t wheel_count() const override { return wheels_.size(); }
   void set_wheel_speed(std::size_t wheel, double rad_per_s) override;
   double wheel_angle(std::size_t wheel) const override { return wheels_.at(wheel).angle; }
+  DriveTally drive_tally() const override { return tally_; }
   // Before the world's step: drives the wheels' contact points towards their targets.
   void DriveWheels(double dt);
   // After it: turns the wheels as far as their contact points rolled.
   void RollWheels(double dt);
 
  private:
+  void TallyMotorWork();  // after DriveWheels
   std::vector<Wheel> wheels_;
   std::vector<std::array<double, 2>> impulses_;  // per wheel, accumulated in this step: rolling, axle
+  DriveTally tally_;
 };
 
 class Box2dWorld : public PhysicsWorld, private b2ContactListener {

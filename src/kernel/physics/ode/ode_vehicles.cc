@@ -56,7 +56,8 @@ Vehicle* OdeWorld::add_omni3(const Omni3Spec& spec, const Pose2D& pose) {
     dGeomID g = dCreateSphere(moving_, spec.wheel_radius);
     dGeomSetBody(g, wheel);
     dGeomSetData(g, make_info({Part::kOmniWheel, robot, hinge, spec.grip_friction, spec.slip_friction}));
-    robot->add_wheel(wheel, hinge, spec.max_wheel_torque);
+    const double weight = (spec.body_mass + 3 * spec.wheel_mass) * settings_.gravity / 3;
+    robot->add_wheel(wheel, hinge, spec.max_wheel_torque, spec.wheel_radius, weight);
   }
   return robot;
 }
@@ -95,7 +96,10 @@ Vehicle* OdeWorld::add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose) 
     dGeomID g = dCreateSphere(moving_, spec.wheel_radius);
     dGeomSetBody(g, wheel);
     dGeomSetData(g, make_info({Part::kDriveWheel, robot, nullptr, spec.wheel_friction, 0}));
-    robot->add_wheel(wheel, hinge, spec.max_wheel_torque);
+    // The caster carries the rest: the centre of mass is a quarter of its offset behind the axle.
+    const double on_axle = 1 - com_behind_axle / spec.caster_offset;
+    const double weight = (spec.body_mass + 2 * spec.wheel_mass) * settings_.gravity * on_axle / 2;
+    robot->add_wheel(wheel, hinge, spec.max_wheel_torque, spec.wheel_radius, weight);
   }
   return robot;
 }

@@ -76,17 +76,30 @@ void OdeVehicle::set_wheel_speed(std::size_t wheel, double rad_per_s) {
   dJointSetHingeParam(wheels_.at(wheel).hinge, dParamVel, rad_per_s);
 }
 
-void OdeVehicle::add_wheel(dBodyID body, dJointID hinge, double max_torque) {
+void OdeVehicle::add_wheel(dBodyID body, dJointID hinge, double max_torque, double radius, double weight_n) {
   dJointSetHingeParam(hinge, dParamFMax, max_torque);
   dJointSetHingeParam(hinge, dParamVel, 0);
-  wheels_.push_back({body, hinge, 0, dJointGetHingeAngle(hinge)});
+  Wheel& w = wheels_.emplace_back();
+  w.body = body, w.hinge = hinge, w.radius = radius, w.last_raw = dJointGetHingeAngle(hinge);
+  dJointSetFeedback(hinge, w.feedback.get());
+  weights_n_.push_back(weight_n);
 }
 
-void OdeVehicle::update_wheel_angles() {
-  for (auto& w : wheels_) {
+// The hinge's anchor is the wheel's centre and its other constraints act across the axis, so the
+// torque it applied to the wheel along the axis is the motor's alone.
+void OdeVehicle::update_wheels() {
+  for (std::size_t i = 0; i < wheels_.size(); ++i) {
+    Wheel& w = wheels_[i];
     const double raw = dJointGetHingeAngle(w.hinge);
-    w.angle += WrapAngle(raw - w.last_raw);
+    const double turn = WrapAngle(raw - w.last_raw);
+    w.angle += turn;
     w.last_raw = raw;
+    dVector3 axis;
+    dJointGetHingeAxis(w.hinge, axis);
+    const dReal* t = w.feedback->t1;  // on body 1, the wheel
+    const double torque = t[0] * axis[0] + t[1] * axis[1] + t[2] * axis[2];
+    tally_.motor_work_j += std::max(0.0, torque * turn);
+    tally_.weight_rolled_j += weights_n_[i] * std::abs(turn) * w.radius;
   }
 }
 
@@ -319,7 +332,7 @@ void OdeWorld::step(double dt) {
   else
     dWorldQuickStep(world_, dt);
   dJointGroupEmpty(contacts_);
-  for (auto& v : vehicles_) v->update_wheel_angles();
+  for (auto& v : vehicles_) v->update_wheels();
   // Motes that have come to rest again leave the awake list (in a stable order).
   std::size_t kept = 0;
   for (int index : awake_motes_) {

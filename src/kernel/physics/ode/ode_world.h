@@ -75,18 +75,26 @@ class OdeVehicle : public OdeBody, public Vehicle {
   struct Wheel {
     dBodyID body;
     dJointID hinge;
+    double radius = 0;
     double angle = 0;     // unwrapped
     double last_raw = 0;  // hinge angle at the previous step, in (-pi, pi]
+    // Where ODE writes the forces the hinge applied in a step (its address must not move).
+    std::unique_ptr<dJointFeedback> feedback = std::make_unique<dJointFeedback>();
   };
   OdeVehicle(dBodyID chassis, Vec3 reference_offset) : OdeBody(chassis, reference_offset) {}
   std::size_t wheel_count() const override { return wheels_.size(); }
   void set_wheel_speed(std::size_t wheel, double rad_per_s) override;
   double wheel_angle(std::size_t wheel) const override { return wheels_.at(wheel).angle; }
-  void add_wheel(dBodyID body, dJointID hinge, double max_torque);
-  void update_wheel_angles();
+  DriveTally drive_tally() const override { return tally_; }
+  // `weight_n`: the wheel's share of the robot's weight.
+  void add_wheel(dBodyID body, dJointID hinge, double max_torque, double radius, double weight_n);
+  // After each step: the wheels' angles, and what their motors did (DriveTally).
+  void update_wheels();
 
  private:
   std::vector<Wheel> wheels_;
+  std::vector<double> weights_n_;
+  DriveTally tally_;
 };
 
 class OdeWorld : public PhysicsWorld {

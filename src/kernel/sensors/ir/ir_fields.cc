@@ -41,7 +41,7 @@ class IrKeys : public SensorFields {
       field.Get("angles")->Fail("give either count (evenly spaced) or angles, not both");
     sensors::RangeFan ir = std::any_cast<sensors::RangeFan>(settings);
     IrSettings keys = SettingsOf(ir);
-    IrFields().Read(field, keys, {"kind"});
+    IrFields().Read(field, keys, kInstanceKeys);
     ir.angles = keys.angles;
     ir.max_range = keys.max_range;
     ir.mount_height = keys.height;

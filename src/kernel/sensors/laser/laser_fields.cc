@@ -80,7 +80,7 @@ class LaserKeys : public SensorFields {
                     base.mount_x,
                     base.noise,
                     base.direction};
-    LaserFields().Read(field, s, {"kind"});
+    LaserFields().Read(field, s, kInstanceKeys);
     sensors::RangeFan laser = sensors::RangeFan::Fan(s.fov, s.beams, s.mount_x, s.height, s.max_range);
     if (!s.angles.empty()) laser.angles = s.angles;
     laser.noise = s.noise;

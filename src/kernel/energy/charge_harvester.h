@@ -1,0 +1,24 @@
+// Power put into a node's battery from outside it, through ns-3's EnergyHarvester interface: a
+// charger in the world the robot stands in, or a robot's wireless charger near a mote
+// (docs/energy.md#chargers). ns-3's BasicEnergyHarvester draws its power from a random variable
+// on a fixed period; this one's power is set by whoever knows it (sim, each time a charger's
+// distance changes), and the source nets it against its models' draw (EnergySource's
+// CalculateTotalCurrent), never past full (energy/battery.h).
+#pragma once
+
+#include <ns3/energy-harvester.h>
+
+namespace sanet::energy {
+
+class ChargeHarvester : public ns3::EnergyHarvester {
+ public:
+  static ns3::TypeId GetTypeId();
+  // The source settles what was drawn and harvested at the old power before the new one applies.
+  void SetPower(double watts);
+
+ private:
+  double DoGetPower() const override { return watts_; }
+  double watts_ = 0;
+};
+
+}  // namespace sanet::energy

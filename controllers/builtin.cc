@@ -19,6 +19,8 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(LawnmowerInfo());
   registry.Add(DataMuleSensorInfo());
   registry.Add(DataMuleCollectorInfo());
+  registry.Add(ChargedMoteInfo());
+  registry.Add(ChargerRobotInfo());
 }
 
 }  // namespace sanet::controllers

@@ -19,5 +19,7 @@ ControllerInfo TourInfo();
 ControllerInfo LawnmowerInfo();
 ControllerInfo DataMuleSensorInfo();
 ControllerInfo DataMuleCollectorInfo();
+ControllerInfo ChargedMoteInfo();
+ControllerInfo ChargerRobotInfo();
 
 }  // namespace sanet::controllers

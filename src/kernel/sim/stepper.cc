@@ -242,8 +242,10 @@ void Stepper::Integrate(StepOutcome& outcome) {
 
 // The radios learn where the bodies were at the end of each step that has ended, and the robots'
 // batteries what their drives did in it.
+// Publishing re-indexes the radios, which read positions: the feed must not call back in here
+// while it runs, so it is caught up meanwhile and behind again for the steps kept.
 void Stepper::PublishEnded(std::size_t keep) {
-  if (keep == 0) world_.poses().CaughtUp();
+  world_.poses().CaughtUp();
   for (; due_ > keep; --due_) {
     const StepOutcome& step = steps_.front();
     world_.physics().SettleStep(step.number);
@@ -252,6 +254,7 @@ void Stepper::PublishEnded(std::size_t keep) {
     for (const auto& [id, tally] : step.drives) world_.Drove(id, tally, step.dt);
     steps_.pop_front();
   }
+  if (due_ > 0) world_.poses().Behind();
 }
 
 // Its vector is read on the physics thread; it grows only between steps (a spawn settles them).

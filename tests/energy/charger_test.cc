@@ -4,6 +4,7 @@
 // mote comes back when its charge passes the revive level.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <optional>
@@ -84,6 +85,19 @@ TEST(Chargers, ABatteryStopsChargingAtFull) {
   EXPECT_NEAR(a.remaining_j, 10000, 1e-6);
   EXPECT_NEAR(a.charged_j, 100 + kIdleW * 20, 1e-3);  // what it lacked, and what it drew meanwhile
   EXPECT_FALSE(a.charging);
+}
+
+TEST(Chargers, ALithiumIonPackChargesAsMuchAndStopsAtFullToo) {
+  for (const double start : {0.5, 0.995}) {
+    sim::NodeSpec robot = Parked({0, 0, 0}, start);
+    robot.energy->source = energy::Chemistry::kLiIon;
+    sim::RunSpec spec = Spec(20, {robot});
+    spec.chargers.push_back({{0, 0}, 1, 12});
+    const After a = RunAndRead(spec, 0);
+    const double expected = std::min(10000.0, 10000 * start + (12 - kIdleW) * 20);
+    EXPECT_NEAR(a.remaining_j, expected, 1e-3) << "from " << start;
+    EXPECT_NEAR(a.charged_j, expected - 10000 * start + kIdleW * 20, 1e-3) << "from " << start;
+  }
 }
 
 TEST(Chargers, AMoteAtDistanceDGainsWhatTheEfficiencyModelSays) {

@@ -84,6 +84,16 @@ TEST_P(MotionEnergy, SensorsDrawTheirPowerWhileTheNodeIsOn) {
   EXPECT_NEAR(s.used.at("sensors"), 8, 1e-6);
 }
 
+TEST_P(MotionEnergy, EachReadingOfACostlySensorCostsItsEnergy) {
+  sim::NodeSpec robot = Driving(0);
+  robot.controller = UseController("waypoint", {{"waypoints", Table({{100, 0}})}});  // reads its pose every step
+  robot.model.sensors.at("ground_truth").energy_j = 0.01;
+  const double seconds = 5, rate = robot.controller->rate;
+  const Spent s = Drive(robot, seconds);
+  // A reading at every control step, t = 0 to 5 s inclusive.
+  EXPECT_NEAR(s.used.at("sensors"), 0.01 * (seconds * rate + 1), 1e-9);
+}
+
 INSTANTIATE_TEST_SUITE_P(BothEngines, MotionEnergy, kEngines, EngineName);
 
 }  // namespace

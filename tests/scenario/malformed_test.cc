@@ -182,6 +182,23 @@ const Case kCases[] = {
      "nodes:\n  - {name: m, model: mote, pose: [0, 0, 0], energy: {battery_j: 5}}\nevents:\n"
      "  - {time: 1, node: m, action: switch_off, energy_j: 3}\n",
      5, "events[0].energy_j", "is the energy of a `recharge`"},
+    {"drive_costs_on_a_mote",
+     "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n"
+     "    energy: {battery_j: 5, motion_efficiency: 0.5}\n",
+     6, "nodes[0].energy.motion_efficiency", "a mote has no drive"},
+    {"wireless_charger_without_range",
+     "nodes:\n  - name: r\n    model: diffdrive\n    pose: [0, 0, 0]\n"
+     "    energy: {battery_j: 5, wireless_charger: {power_w: 3}}\n",
+     6, "nodes[0].energy.wireless_charger", "missing required key 'range_m'"},
+    {"zero_efficiency",
+     "nodes:\n  - name: r\n    model: diffdrive\n    pose: [0, 0, 0]\n"
+     "    energy: {battery_j: 5, motion_efficiency: 0}\n",
+     6, "nodes[0].energy.motion_efficiency", "must be"},
+    {"charger_without_radius", "world:\n  chargers:\n    - {position: [0, 0], power_w: 5}\nnodes: []\n", 4,
+     "world.chargers[0]", "missing required key 'radius'"},
+    {"negative_sensor_power",
+     "nodes:\n  - name: r\n    model: diffdrive\n    pose: [0, 0, 0]\n    sensors: {laser: {power_w: -1}}\n", 6,
+     "nodes[0].sensors.laser.power_w", "must be between 0 and"},
 };
 
 class Malformed : public ::testing::TestWithParam<Case> {};

@@ -29,7 +29,8 @@ class ChargedMote : public Controller {
     if (node.Now() < next_) return;
     const std::optional<BatteryReading> battery = node.SensorAs<BatteryReading>("battery");
     const std::optional<Pose2D> pose = node.GroundTruth();
-    if (!battery || !pose) throw std::runtime_error("charged_mote: the mote needs `energy` (its battery sensor)");
+    if (!battery || !pose)
+      throw std::runtime_error("charged_mote: the mote needs `energy` and its battery sensor (not `battery: false`)");
     node.Send(*robot_, charging::ReportMessage({battery->fraction, battery->charging, pose->position(), node.Now()}));
     node.Metric("reports", 1);
     next_ = node.Now() + (battery->charging ? charging_interval_ : interval_);

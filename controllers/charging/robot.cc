@@ -5,7 +5,7 @@
 // parks at `park_offset` from the mote and its wireless charger (energy.wireless_charger) powers
 // the mote until the mote reports `full`, or `max_charge_s` has passed. With nothing to do, or
 // its own battery below `self_low`, it goes back to `dock` (a charger in the world) and stays
-// until it is above `self_full`, or leaves earlier, once above `self_low`, for a mote expected
+// until it is above `self_full`, or leaves earlier, once 5 % above `self_low`, for a mote expected
 // below `urgent`. `visits: false` keeps it at the dock (the network without it).
 // Metrics: visits (1 per visit begun), charge_s (each visit's length), reports (1 per report
 // heard), docked (1 per return to the dock for its own battery).
@@ -54,7 +54,8 @@ class ChargerRobot : public Controller {
   void ControlStep(Node& node) override {
     const std::optional<Pose2D> pose = node.GroundTruth();
     const std::optional<BatteryReading> own = node.SensorAs<BatteryReading>("battery");
-    if (!pose || !own) throw std::runtime_error("charger_robot: the robot needs `energy` (its battery sensor)");
+    if (!pose || !own)
+      throw std::runtime_error("charger_robot: the robot needs `energy` and its battery sensor (not `battery: false`)");
     switch (state_) {
       case State::kDocked:
         return Docked(node, *own);

@@ -27,7 +27,7 @@ PINNED = {
     "ros2-robots": (60, "baec0cf232e6c9a6"),  # nobody drives them in sanet run: they stand
     "ros2-team-radio": (60, "1eb346755b3dc49b"),  # the robots stand (driven in launch only), the motes ping
     "scattered-field": (300, "a3035def5023f458"),  # 30 motes scattered from the seed, a touring mule (issue 49)
-    "charging-robot": (600, "1ca12fe806abc594"),  # a robot charges motes from their battery reports (issue 51)
+    "charging-robot": (600, "7b65c128f5c9a026"),  # a robot charges motes from their battery reports (issue 51)
     "data-mule": (300, "3378f8d98c992bcc"),  # motes keep readings until a touring robot collects them (issue 50)
     "duty-cycled-motes": (300, "c3ae6bddc2b56796"),  # radios awake 1 s of 10, phases drawn from the seed (issue 51)
     "sensor-network": (60, "ca79ea1813db313a"),

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "sim/assembly.h"
 #include "support/test_world.h"
@@ -92,6 +94,36 @@ TEST_P(MotionEnergy, EachReadingOfACostlySensorCostsItsEnergy) {
   const Spent s = Drive(robot, seconds);
   // A reading at every control step, t = 0 to 5 s inclusive.
   EXPECT_NEAR(s.used.at("sensors"), 0.01 * (seconds * rate + 1), 1e-9);
+}
+
+// When a drive's work is drawn depends on the physics steps alone: not on who watches the world
+// (an observer hears every step's end) nor on where a script cuts the run.
+TEST_P(MotionEnergy, WatchingOrCuttingTheRunChangesNoJoule) {
+  // The charge at every sample (each 0.0125 s, between physics steps' ends), watched or not.
+  const auto samples = [](int how) {
+    sim::RunSpec spec = On(MotionEnergy::GetParam(), Spec(3, {Driving(0.7)}));
+    spec.energy_interval = 0.0125;
+    sim::World world(std::move(spec), BuiltinRegistry());
+    auto charges = std::make_shared<std::vector<double>>();
+    Subscription keep = world.bus().On<sim::EnergySampled>(
+        sim::RunStage::kRecord,
+        [charges](const sim::EnergySampled& e) { charges->push_back(e.levels.at(0).battery.remaining_j); });
+    if (how == 1) world.Observe([](const sim::WorldSnapshot&) {});
+    if (how == 2) {
+      world.Start({});
+      for (double t = 0.0137; t < 3; t += 0.0137) world.RunUntil(t);
+      world.RunUntil(3);
+      world.Finish();
+    } else {
+      world.Run({});
+    }
+    return *charges;
+  };
+  const std::vector<double> alone = samples(0);
+  ASSERT_GT(alone.size(), 200u);
+  EXPECT_LT(alone.back(), alone.front() - 1);  // it drove
+  EXPECT_EQ(samples(1), alone);
+  EXPECT_EQ(samples(2), alone);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothEngines, MotionEnergy, kEngines, EngineName);

@@ -56,7 +56,7 @@ double Battery::Recharge(double joules) {
 
 double Battery::Take(double joules) {
   UpdateEnergySource();
-  if (!started_) return 0;
+  if (!started_ || depleted_) return 0;
   const double taken = std::clamp(joules, 0.0, remaining_j_);
   remaining_j_ -= taken;
   CheckThresholds();
@@ -64,11 +64,9 @@ double Battery::Take(double joules) {
   return taken;
 }
 
-void Battery::AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) {
+void Battery::AddHarvester(ns3::Ptr<ChargeHarvester> harvester) {
   UpdateEnergySource();
-  harvesters_.push_back(harvester);
-  ConnectEnergyHarvester(harvester);
-  harvester->SetEnergySource(this);
+  harvesters_.Add(*this, harvester);
   UpdateEnergySource();
 }
 
@@ -79,13 +77,7 @@ double Battery::harvested_j() {
   if (!started_ || seconds <= 0) return harvested_j_;
   const double after = remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds;
   const double lost = std::max(0.0, after - settings_.capacity_j);
-  return harvested_j_ + std::max(0.0, HarvestedWatts() * seconds - lost);
-}
-
-double Battery::HarvestedWatts() const {
-  double watts = 0;
-  for (const auto& h : harvesters_) watts += h->GetPower();
-  return watts;
+  return harvested_j_ + harvesters_.Gave(seconds, lost);
 }
 
 // The draw less the harvest, constant since the last update; what would go past full is lost.
@@ -97,7 +89,7 @@ void Battery::Drain() {
   const double after = remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds;
   const double lost = std::max(0.0, after - settings_.capacity_j);
   remaining_j_ = std::clamp(after, 0.0, settings_.capacity_j);
-  harvested_j_ += std::max(0.0, HarvestedWatts() * seconds - lost);
+  harvested_j_ += harvesters_.Gave(seconds, lost);
 }
 
 // The models hear it at once; the node dies (or comes back) in an event of its own, at this instant.

@@ -53,13 +53,12 @@ class Battery : public ns3::EnergySource, public Rechargeable {
 
   double Recharge(double joules) override;
   double Take(double joules) override;
-  void AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) override;
+  void AddHarvester(ns3::Ptr<ChargeHarvester> harvester) override;
   double harvested_j() override;
   bool depleted() const override { return depleted_; }
 
  private:
   void DoDispose() override;
-  double HarvestedWatts() const;
   void Drain();            // what the models drew, less what the harvesters gave, since the last update
   void CheckThresholds();  // depleted or recharged now: tell the models
   void ScheduleNextUpdate();
@@ -69,7 +68,7 @@ class Battery : public ns3::EnergySource, public Rechargeable {
   Settings settings_;
   double remaining_j_ = 0;
   double harvested_j_ = 0;
-  std::vector<ns3::Ptr<ns3::EnergyHarvester>> harvesters_;
+  Harvesters harvesters_;
   bool depleted_ = false;
   bool started_ = false;
   ns3::Time last_update_;

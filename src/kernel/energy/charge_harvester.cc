@@ -16,10 +16,9 @@ ns3::TypeId ChargeHarvester::GetTypeId() {
 
 void ChargeHarvester::SetPower(double watts) {
   if (watts == watts_) return;
-  ns3::Ptr<ns3::EnergySource> source = GetEnergySource();
-  if (source) source->UpdateEnergySource();
+  if (source_) source_->UpdateEnergySource();
   watts_ = watts;
-  if (source) source->UpdateEnergySource();
+  if (source_) source_->UpdateEnergySource();
 }
 
 }  // namespace sanet::energy

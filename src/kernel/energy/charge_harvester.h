@@ -13,12 +13,16 @@ namespace sanet::energy {
 class ChargeHarvester : public ns3::EnergyHarvester {
  public:
   static ns3::TypeId GetTypeId();
-  // The source settles what was drawn and harvested at the old power before the new one applies.
+  // The source it gives to, which settles what was drawn and harvested at the old power before
+  // the new one applies. Not ns-3's SetEnergySource: that Ptr, with the source's Ptr to its
+  // harvesters, would be a cycle that keeps both alive.
+  void Attach(ns3::EnergySource* source) { source_ = source; }
   void SetPower(double watts);
 
  private:
   double DoGetPower() const override { return watts_; }
   double watts_ = 0;
+  ns3::EnergySource* source_ = nullptr;
 };
 
 }  // namespace sanet::energy

@@ -57,9 +57,11 @@ void LiIonCell::Start() {
   CheckThresholds();
 }
 
+// Once the simulator has finished, ns-3's update does nothing (the time of the last stays): nor
+// does this one, so that nothing is counted twice.
 void LiIonCell::UpdateEnergySource() {
-  if (!started_) return;
-  const double harvested_w = HarvestedWatts();
+  if (!started_ || ns3::Simulator::IsFinished()) return;
+  const double harvested_w = harvesters_.Watts();
   const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
   ns3::LiIonEnergySource::UpdateEnergySource();
   KeepBelowFull(harvested_w, seconds);
@@ -75,12 +77,6 @@ void LiIonCell::KeepBelowFull(double harvested_w, double seconds) {
   harvested_j_ += std::max(0.0, harvested_w * seconds - lost);
 }
 
-double LiIonCell::HarvestedWatts() const {
-  double watts = 0;
-  for (const auto& h : harvesters_) watts += h->GetPower();
-  return watts;
-}
-
 double LiIonCell::GetRemainingEnergy() {
   const double remaining = this->*Get(net::LiIonRemainingJ());
   const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
@@ -90,6 +86,7 @@ double LiIonCell::GetRemainingEnergy() {
 
 double LiIonCell::Take(double joules) {
   UpdateEnergySource();
+  if (depleted_) return 0;
   const double taken = std::clamp(joules, 0.0, GetRemainingEnergy());
   DecreaseRemainingEnergy(taken);
   DrainedAh() += taken / (kNominalVoltage * 3600);
@@ -98,11 +95,9 @@ double LiIonCell::Take(double joules) {
   return taken;
 }
 
-void LiIonCell::AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) {
+void LiIonCell::AddHarvester(ns3::Ptr<ChargeHarvester> harvester) {
   UpdateEnergySource();
-  harvesters_.push_back(harvester);
-  ConnectEnergyHarvester(harvester);
-  harvester->SetEnergySource(this);
+  harvesters_.Add(*this, harvester);
 }
 
 // Up to now without an update, as GetRemainingEnergy.
@@ -110,7 +105,7 @@ double LiIonCell::harvested_j() {
   const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
   if (!started_ || seconds <= 0) return harvested_j_;
   const double after = this->*Get(net::LiIonRemainingJ()) - CalculateTotalCurrent() * GetSupplyVoltage() * seconds;
-  return harvested_j_ + std::max(0.0, HarvestedWatts() * seconds - std::max(0.0, after - capacity_j_));
+  return harvested_j_ + harvesters_.Gave(seconds, std::max(0.0, after - capacity_j_));
 }
 
 double LiIonCell::Recharge(double joules) {

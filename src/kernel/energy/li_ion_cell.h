@@ -38,7 +38,7 @@ class LiIonCell : public ns3::LiIonEnergySource, public Rechargeable {
   double GetRemainingEnergy() override;
   double Recharge(double joules) override;
   double Take(double joules) override;
-  void AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) override;
+  void AddHarvester(ns3::Ptr<ChargeHarvester> harvester) override;
   double harvested_j() override;
   bool depleted() const override { return depleted_; }
 
@@ -47,16 +47,14 @@ class LiIonCell : public ns3::LiIonEnergySource, public Rechargeable {
   // itself) revived.
   void CheckThresholds(bool recharged = false);
   double& DrainedAh();
-  double HarvestedWatts() const;
   // ns-3's update nets the harvest like a negative current: this keeps the charge at or below
   // full and counts what the harvesters put in.
   void KeepBelowFull(double harvested_w, double seconds);
 
   double capacity_j_ = 0, cutoff_ = 0, revives_above_ = 0.05;
-  double died_with_j_ = 0;
+  double died_with_j_ = 0;  // the charge it died with: a pack dead of its voltage needs more
   double harvested_j_ = 0;
-  std::vector<ns3::Ptr<ns3::EnergyHarvester>>
-      harvesters_;  // the charge it died with: a pack dead of its voltage needs more
+  Harvesters harvesters_;
   bool depleted_ = false, started_ = false;
 };
 

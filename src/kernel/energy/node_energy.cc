@@ -65,6 +65,7 @@ double NodeEnergy::MostWatts(double sensors_w) const {
 }
 
 void NodeEnergy::SetOn(bool on) {
+  on_ = on;
   electronics_->SetOn(on);
   if (drive_idle_) drive_idle_->SetOn(on);
   sensors_->SetOn(on);
@@ -84,13 +85,13 @@ void NodeEnergy::Drove(double motor_work_j, double weight_rolled_j, double dt) {
   const double work_j =
       (motor_work_j - drove_.motor_work_j) + d.rolling_resistance * (weight_rolled_j - drove_.weight_rolled_j);
   drove_ = {motor_work_j, weight_rolled_j};
-  const double electrical_j = depleted() ? 0 : work_j / d.efficiency;
+  const double electrical_j = on_ ? work_j / d.efficiency : 0;
   motion_w_ = dt > 0 ? electrical_j / dt : 0;
   if (electrical_j > 0) motion_j_ += rechargeable_->Take(electrical_j);
 }
 
 void NodeEnergy::SensorRead(double joules) {
-  if (joules > 0 && !depleted()) readings_j_ += rechargeable_->Take(joules);
+  if (joules > 0 && on_) readings_j_ += rechargeable_->Take(joules);
 }
 
 // Installed as ns-3's WifiRadioEnergyModelHelper installs its model (the PHY's listener, the
@@ -118,12 +119,14 @@ void NodeEnergy::InstallRadio(ns3::Ptr<ns3::NetDevice> radio) {
 }
 
 // Charging while chargers give it something and it is not full; the power is what it draws less
-// what they give.
+// what they give (a full battery takes no more than it draws: then none).
 BatteryReading NodeEnergy::Reading() const {
   const double remaining = source_->GetRemainingEnergy();
   const double fraction = remaining / spec_.battery_j;
   const bool charging = charging_w() > 0 && !full();
-  return {remaining, fraction, source_->GetSupplyVoltage(), charging, spec_.battery_j, power_w() - charging_w()};
+  const double net_w = power_w() - charging_w();
+  return {remaining, fraction,        source_->GetSupplyVoltage(),
+          charging,  spec_.battery_j, full() ? std::max(0.0, net_w) : net_w};
 }
 
 double NodeEnergy::power_w() const {

@@ -96,6 +96,7 @@ class NodeEnergy {
   ns3::Ptr<ChargeHarvester> harvester_;
   ns3::Ptr<ElectronicsModel> charger_;  // a robot's wireless charger; null without one
   bool radiating_ = false;
+  bool on_ = true;                      // alive and not switched off: what it does costs nothing otherwise
   double motion_j_ = 0, motion_w_ = 0;  // the wheels' electrical energy, and its power in the last step
   double readings_j_ = 0;
   DriveTallySoFar drove_;

@@ -4,10 +4,37 @@
 // energy/li_ion_cell.h).
 #pragma once
 
-#include <ns3/energy-harvester.h>
+#include <ns3/energy-source.h>
 #include <ns3/ptr.h>
 
+#include <algorithm>
+#include <vector>
+
+#include "energy/charge_harvester.h"
+
 namespace sanet::energy {
+
+// The harvesters of a source: ns-3's source nets their power against its models' draw
+// (CalculateTotalCurrent) but keeps its list private, so each of sanet's sources keeps this one
+// too, to count what they gave.
+class Harvesters {
+ public:
+  void Add(ns3::EnergySource& source, ns3::Ptr<ChargeHarvester> harvester) {
+    source.ConnectEnergyHarvester(harvester);
+    harvester->Attach(&source);
+    list_.push_back(ns3::PeekPointer(harvester));
+  }
+  double Watts() const {
+    double watts = 0;
+    for (const ChargeHarvester* h : list_) watts += h->GetPower();
+    return watts;
+  }
+  // What they put in over `seconds` at their power now, when `lost_j` would have gone past full.
+  double Gave(double seconds, double lost_j) const { return std::max(0.0, Watts() * seconds - lost_j); }
+
+ private:
+  std::vector<const ChargeHarvester*> list_;  // the source holds them
+};
 
 class Rechargeable {
  public:
@@ -21,7 +48,7 @@ class Rechargeable {
   virtual double Take(double joules) = 0;
   // A harvester whose power the source nets against its models' draw (ns-3's
   // ConnectEnergyHarvester), never charging past full.
-  virtual void AddHarvester(ns3::Ptr<ns3::EnergyHarvester> harvester) = 0;
+  virtual void AddHarvester(ns3::Ptr<ChargeHarvester> harvester) = 0;
   // What the harvesters put in up to now (less what a full battery could not take).
   virtual double harvested_j() = 0;
   virtual bool depleted() const = 0;

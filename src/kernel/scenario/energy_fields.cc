@@ -71,7 +71,7 @@ const Fields<energy::WirelessCharger>& WirelessChargerFields() {
              "what the charger radiates while the robot is on (drawn from the robot's battery)", true)
         .Required();
     f.Number("range_m", Member(&energy::WirelessCharger::range_m), "m", 0, 1e4,
-             "motes farther than this (antenna to antenna) receive nothing", true)
+             "motes farther than this (reference point to reference point, on the ground) receive nothing", true)
         .Required();
     f.Number("alpha", Member(&energy::WirelessCharger::alpha), "m^2", 0, 1e6,
              "the received share is alpha / (d + beta)^2, at most 1 (docs/energy.md#chargers)", true);

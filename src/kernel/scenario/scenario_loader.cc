@@ -149,6 +149,14 @@ void ReadEnergyAndSensors(const Field& f, NodeTemplate& t) {
   for (const auto& [name, config] : t.model.sensors)
     if (config.kind == "battery")
       f.Require("sensors").Require(name).Fail("a battery sensor reads the node's battery: give the node `energy`");
+  const auto sensors = f.Get("sensors");
+  if (!sensors) return;
+  for (const auto& entry : sensors->node()) {
+    const Field sensor = sensors->Require(entry.first.Scalar());
+    for (const char* key : {"power_w", "energy_j"})
+      if (const auto draw = sensor.IsMap() ? sensor.Get(key) : std::nullopt)
+        draw->Fail("draws on the node's battery: give the node `energy` (without it the supply is infinite)");
+  }
 }
 
 NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_network) {

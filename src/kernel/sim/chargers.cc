@@ -34,26 +34,43 @@ std::vector<double> Chargers::WorldChargersGive() const {
   return given;
 }
 
-// A robot charges only motes (nodes without a drive), and only while it is alive and on.
+// A robot charges only motes (nodes without a drive), and only while it is alive and on. The
+// motes' shares of its power never add up to more than all of it (an efficient charger's model
+// could give each of several close motes nearly all).
 void Chargers::WirelessChargersGive(std::vector<double>& given) {
   for (NodeId robot = 0; robot < world_.size(); ++robot) {
     energy::NodeEnergy* carrier = world_.batteries().Of(robot);
     if (!carrier || !carrier->spec().wireless_charger) continue;
-    const energy::WirelessCharger& charger = *carrier->spec().wireless_charger;
-    bool radiating = false;
-    if (Alive(robot)) {
-      const Vec2 from = world_.model(robot).body().pose().position();
-      for (NodeId mote = 0; mote < world_.size(); ++mote) {
-        energy::NodeEnergy* target = world_.batteries().Of(mote);
-        if (!target || target->spec().drive) continue;
-        const double share = charger.Efficiency(Norm(world_.model(mote).body().pose().position() - from));
-        if (share <= 0 || target->full()) continue;
-        given[mote] += charger.power_w * share;
-        radiating = true;
-      }
-    }
-    carrier->SetRadiating(radiating);
+    const std::vector<std::pair<NodeId, double>> shares = Alive(robot) ? SharesOf(robot) : decltype(shares){};
+    double total = 0;
+    for (const auto& [mote, share] : shares) total += share;
+    const double scale = total > 1 ? 1 / total : 1;
+    for (const auto& [mote, share] : shares) given[mote] += carrier->spec().wireless_charger->power_w * share * scale;
+    carrier->SetRadiating(!shares.empty());
   }
+}
+
+// The motes that robot's charger reaches and that need charge, with the share each receives.
+std::vector<std::pair<NodeId, double>> Chargers::SharesOf(NodeId robot) {
+  const energy::WirelessCharger& charger = *world_.batteries().Of(robot)->spec().wireless_charger;
+  const Vec2 from = world_.model(robot).body().pose().position();
+  std::vector<std::pair<NodeId, double>> shares;
+  for (NodeId mote = 0; mote < world_.size(); ++mote) {
+    const energy::NodeEnergy* target = world_.batteries().Of(mote);
+    if (!target || target->spec().drive || !NeedsCharge(mote, *target)) continue;
+    const double share = charger.Efficiency(Norm(world_.model(mote).body().pose().position() - from));
+    if (share > 0) shares.emplace_back(mote, share);
+  }
+  return shares;
+}
+
+// Once full, a mote waits until it is down to kTopUpBelow: a charger would otherwise switch on and
+// off for the trickle a full mote draws, radiating watts to give it milliwatts.
+bool Chargers::NeedsCharge(NodeId mote, const energy::NodeEnergy& energy) {
+  topping_up_.resize(world_.size(), 1);
+  if (energy.full()) return topping_up_[mote] = 0;
+  if (!topping_up_[mote] && energy.Reading().fraction >= kTopUpBelow) return false;
+  return topping_up_[mote] = 1;
 }
 
 bool Chargers::Alive(NodeId id) const { return !world_.batteries().dead(id) && !world_.SwitchedOff(id); }

@@ -5,6 +5,7 @@
 // harvester; the power is constant in between.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "sim/assembly.h"
@@ -13,7 +14,8 @@ namespace sanet::sim {
 
 class Chargers {
  public:
-  static constexpr double kInterval = 0.1;  // s
+  static constexpr double kInterval = 0.1;     // s
+  static constexpr double kTopUpBelow = 0.99;  // of a full mote's charge: a wireless charger's
   explicit Chargers(Assembly& world) : world_(world) {}
   // Starts the updates if the run has a charger (or a robot joined with one); again is harmless.
   void Start();
@@ -24,10 +26,13 @@ class Chargers {
   // What the wireless chargers give the motes (added to `given`); each robot radiates while a
   // mote it reaches is not full.
   void WirelessChargersGive(std::vector<double>& given);
+  std::vector<std::pair<NodeId, double>> SharesOf(NodeId robot);
+  bool NeedsCharge(NodeId mote, const energy::NodeEnergy& energy);
   bool Alive(NodeId id) const;
 
   Assembly& world_;
   bool started_ = false;
+  std::vector<char> topping_up_;  // per mote: charged since it last fell below kTopUpBelow, not full yet
 };
 
 }  // namespace sanet::sim

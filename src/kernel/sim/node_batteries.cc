@@ -48,21 +48,28 @@ nlohmann::ordered_json NodeBatteries::Summary(const RunNodes& nodes) const {
   return {{"nodes", per_node}, {"lifetime", Lifetime()}};
 }
 
-// The k-th first death (1-based) among the nodes with energy, if that many died.
+// The sensor network's: the motes with energy (a robot that charges them is not one of them), or
+// every node with energy where none is a mote. From first deaths: a revival does not undo one.
 nlohmann::ordered_json NodeBatteries::Lifetime() const {
+  bool any_mote = false;
+  for (const auto& e : energies_) any_mote = any_mote || (e && !e->spec().drive);
   std::vector<double> deaths;
-  for (NodeId id = 0; id < energies_.size(); ++id)
-    if (energies_[id] && first_died_[id]) deaths.push_back(*first_died_[id]);
+  std::size_t counted = 0, dead = 0;
+  for (NodeId id = 0; id < energies_.size(); ++id) {
+    if (!energies_[id] || (any_mote && energies_[id]->spec().drive)) continue;
+    ++counted;
+    if (first_died_[id]) deaths.push_back(*first_died_[id]);
+    if (died_[id]) ++dead;
+  }
   std::sort(deaths.begin(), deaths.end());
   const auto kth = [&](std::size_t k) -> std::optional<double> {
     return k >= 1 && k <= deaths.size() ? std::optional<double>(deaths[k - 1]) : std::nullopt;
   };
-  return {{"nodes", count_},
-          {"dead", static_cast<std::size_t>(
-                       std::count_if(died_.begin(), died_.end(), [](const auto& t) { return t.has_value(); }))},
+  return {{"nodes", counted},
+          {"dead", dead},
           {"first_death_s", TimeOrNull(kth(1))},
-          {"half_dead_s", TimeOrNull(kth((count_ + 1) / 2))},
-          {"last_alive_s", TimeOrNull(kth(count_))}};
+          {"half_dead_s", TimeOrNull(kth((counted + 1) / 2))},
+          {"last_alive_s", TimeOrNull(kth(counted))}};
 }
 
 }  // namespace sanet::sim

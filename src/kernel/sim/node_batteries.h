@@ -33,8 +33,8 @@ class NodeBatteries {
   bool dead(NodeId id) const { return died_.at(id).has_value(); }
 
   // summary.json's `energy`: per node what was used by component, charged and when it died; the
-  // network's lifetime from the nodes' first deaths (a revival does not undo one): the first,
-  // half of the nodes' and the last.
+  // network's lifetime from its motes' first deaths (a revival does not undo one; robots count
+  // only where there are no motes): the first, half of the nodes' and the last.
   nlohmann::ordered_json Summary(const RunNodes& nodes) const;
 
  private:

@@ -100,6 +100,7 @@ void Stepper::StopNow(const std::string& why) {
 }
 
 void Stepper::End() {
+  ApplyDrives(0);
   // Controllers finish while the run can still record what they log and measure.
   for (NodeId id = 0; id < world_.size(); ++id) world_.host(id).Finish();
   profile_.physics_wait = world_.physics().waited();
@@ -201,16 +202,17 @@ void Stepper::PhysicsStep() {
   if (bus_.Heard<StepEnded>() && launched_ > 0) {
     CatchUp();
     Notify();
-  } else if (any_drive_battery_ && due_ > 1) {
-    PublishEnded(1);  // the drives' energy is drawn at most one step late, whoever reads positions
   }
+  ApplyDrives(1);  // the step that ends now stays in flight
   const double dt = world_.spec().physics_step;
   // No step ends past the run: [0, duration] (events at exactly `duration` still run).
   if (Period(Now() + dt) > Period(world_.spec().duration)) return;
   StepOutcome& outcome = steps_.emplace_back();
   outcome.dt = dt;
   outcome.end = Now() + dt;
-  outcome.number = world_.physics().StepAsync([this, &outcome] { Integrate(outcome); });
+  DriveStep* drive = any_drive_battery_ ? &drive_steps_.emplace_back() : nullptr;
+  outcome.number = world_.physics().StepAsync([this, &outcome, drive] { Integrate(outcome, drive); });
+  if (drive) drive->number = outcome.number, drive->dt = dt;
   ++launched_;
   ns3::Simulator::Schedule(Period(dt), &Stepper::PhysicsStep, this);
 }
@@ -220,7 +222,7 @@ void Stepper::PhysicsStep() {
 // thread when there is one: it steps the engine, reads vehicles_, motes_ and the models, and
 // writes the bodies, their odometry, moved_, moving_, the physics and sensing times and
 // `outcome`; the network's thread touches none of these without waiting for it.
-void Stepper::Integrate(StepOutcome& outcome) {
+void Stepper::Integrate(StepOutcome& outcome, DriveStep* drive) {
   CollectMoving();  // awake before the step
   {
     WallTimer timer(profile_.physics);
@@ -233,28 +235,35 @@ void Stepper::Integrate(StepOutcome& outcome) {
       if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep();
   }
   outcome.poses = world_.RadioPoses(moved_);
-  for (NodeId id : moved_)
-    if (drives_battery_[id]) outcome.drives.emplace_back(id, world_.model(id).vehicle()->drive_tally());
+  if (drive)
+    for (NodeId id : moved_)
+      if (drives_battery_[id]) drive->tallies.emplace_back(id, world_.model(id).vehicle()->drive_tally());
   outcome.messages = world_.physics().TakeMessages();
   for (NodeId id : moved_) moving_[id] = 0;
   moved_.clear();
 }
 
-// The radios learn where the bodies were at the end of each step that has ended, and the robots'
-// batteries what their drives did in it.
-// Publishing re-indexes the radios, which read positions: the feed must not call back in here
-// while it runs, so it is caught up meanwhile and behind again for the steps kept.
-void Stepper::PublishEnded(std::size_t keep) {
+// The radios learn where the bodies were at the end of each step that has ended.
+void Stepper::CatchUp() {
   world_.poses().CaughtUp();
-  for (; due_ > keep; --due_) {
-    const StepOutcome& step = steps_.front();
-    world_.physics().SettleStep(step.number);
-    world_.poses().Publish(step.poses);
-    for (const physics::EngineMessage& m : step.messages) ReportEngineMessage(step.end, m);
-    for (const auto& [id, tally] : step.drives) world_.Drove(id, tally, step.dt);
+  for (; due_ > 0; --due_) {
+    world_.physics().SettleStep(steps_.front().number);
+    world_.poses().Publish(steps_.front().poses);
+    for (const physics::EngineMessage& m : steps_.front().messages) ReportEngineMessage(steps_.front().end, m);
     steps_.pop_front();
   }
-  if (due_ > 0) world_.poses().Behind();
+}
+
+// The batteries draw what the drives did, a step late: at each physics boundary, for the steps
+// before the one that ends there; at the run's end, for all. So when a drive's work is drawn
+// depends on the steps alone, not on who read positions, nor on where a script cut the run.
+void Stepper::ApplyDrives(std::size_t keep) {
+  while (drive_steps_.size() > keep) {
+    const DriveStep& step = drive_steps_.front();
+    world_.physics().SettleStep(step.number);
+    for (const auto& [id, tally] : step.tallies) world_.Drove(id, tally, step.dt);
+    drive_steps_.pop_front();
+  }
 }
 
 // Its vector is read on the physics thread; it grows only between steps (a spawn settles them).

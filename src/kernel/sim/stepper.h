@@ -68,17 +68,23 @@ class Stepper {
   void ControlRound(std::int64_t period_ns);
   void PhysicsStep();
   struct StepOutcome {
-    double dt = 0;                                               // s
-    std::uint64_t number = 0;                                    // the physics world's
-    std::vector<RadioPose> poses;                                // of the bodies that moved, at its end
-    double end = 0;                                              // s, simulated
-    std::vector<physics::EngineMessage> messages;                // the engine's, during it
-    std::vector<std::pair<NodeId, physics::DriveTally>> drives;  // robots with batteries that moved: their tallies
+    double dt = 0;                                 // s
+    std::uint64_t number = 0;                      // the physics world's
+    std::vector<RadioPose> poses;                  // of the bodies that moved, at its end
+    double end = 0;                                // s, simulated
+    std::vector<physics::EngineMessage> messages;  // the engine's, during it
   };
-  void Integrate(StepOutcome& outcome);
-  void CatchUp() { PublishEnded(0); }
-  void PublishEnded(std::size_t keep);  // all steps that have ended but the last `keep`
-  void NoteDrive(NodeId id);            // whether its drive draws on a battery
+  // What the drives of robots with batteries did in a step, by the end of it: drawn from their
+  // batteries at the next step's boundary (ApplyDrives), whoever reads positions in between.
+  struct DriveStep {
+    std::uint64_t number = 0;  // the physics world's
+    double dt = 0;
+    std::vector<std::pair<NodeId, physics::DriveTally>> tallies;  // the robots that moved
+  };
+  void Integrate(StepOutcome& outcome, DriveStep* drive);
+  void CatchUp();
+  void ApplyDrives(std::size_t keep);  // all steps' but the last `keep`
+  void NoteDrive(NodeId id);           // whether its drive draws on a battery
   void Record();
   void StartEnergySamples();      // once some node has a battery
   void SampleEnergy(bool again);  // every battery, for energy.csv; `again`: and the next sample
@@ -98,6 +104,7 @@ class Stepper {
   std::vector<Subscription> subscriptions_;
   std::vector<NodeId> vehicles_, motes_;
   std::map<std::int64_t, std::vector<NodeId>> control_rounds_;  // period (ns) -> nodes, in node order
+  std::deque<DriveStep> drive_steps_;                           // started, their drives not drawn yet
   std::deque<StepOutcome> steps_;                               // started, and not yet published to the radios
   std::size_t due_ = 0;                                         // the first due_ of them have ended
   std::uint64_t launched_ = 0;

@@ -270,7 +270,7 @@ nodes:
   - name: r
     model: omni3
     pose: [0, 0, 0]
-    energy: {battery_j: 8, voltage: 3, electronics_w: 0.2}
+    energy: {battery_j: 10, voltage: 3, electronics_w: 0.2}
     controller: {python: "probe:Gauge", rate: 10, params: {low: 0.5}}
 """
 
@@ -278,10 +278,10 @@ nodes:
 class Battery(unittest.TestCase):
     """A Python controller reads its battery in sanet run and, through the robot protocol's SEN
     line, as an agent under sanet launch: the same charge, falling at the radio's idle draw plus
-    the electronics'."""
+    the electronics' and the standing robot's drive idle (docs/energy.md#motion)."""
 
     def test_the_battery_drains_as_the_controller_reads_it_in_run_and_launch(self):
-        watts = 3 * 0.273 + 0.2
+        watts = 3 * 0.273 + 0.2 + 0.5
         with tempfile.TemporaryDirectory() as tmp:
             shutil.copy(os.path.join(HERE, "probe.py"), tmp)
             scenario = write(tmp, "battery.yaml", BATTERY)
@@ -294,13 +294,13 @@ class Battery(unittest.TestCase):
                 self.assertGreaterEqual(len(charge), 5, command)
                 for t, joules in charge:
                     # An agent reads the SEN line the server sent at or before its step.
-                    self.assertAlmostEqual(joules, 8 - watts * t, delta=watts * 0.25, msg=f"{command} at {t}")
+                    self.assertAlmostEqual(joules, 10 - watts * t, delta=watts * 0.25, msg=f"{command} at {t}")
                 power = [float(m["value"]) for m in metrics if m["name"] == "battery_w"]
                 self.assertTrue(all(abs(w - watts) < 0.05 for w in power), f"{command}: {power}")
                 low = [t for t in texts(out, "r") if t.startswith("low battery")]
                 self.assertEqual(low, ["low battery: " + low[0].split(": ")[1]], command)
-                self.assertIn("of 8 J at 3.0 V", low[0])
-                self.assertEqual(summary(out)["energy"]["nodes"]["r"]["battery_j"], 8)
+                self.assertIn("of 10 J at 3.0 V", low[0])
+                self.assertEqual(summary(out)["energy"]["nodes"]["r"]["battery_j"], 10)
 
 
 LASER_COURSE = """name: laser-course

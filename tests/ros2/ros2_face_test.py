@@ -97,13 +97,17 @@ class Face(unittest.TestCase):
         self.assertLess(seen["last_x"], 1.6)
         self.assertAlmostEqual(seen["last_y"], 0, delta=0.1)
         self.assertGreater(seen["clock"], 300, "/clock at 200 Hz")
-        # The battery drains at the electronics' 0.2 W and an idle radio's (no network: none).
+        # The battery drains at the electronics' 0.2 W, the drive's idle 0.5 W and the drive's work at
+        # 0.3 m/s (about 0.4 W: docs/energy.md#motion); no network, no radio.
         self.assertGreater(seen["battery"], 30)
         self.assertAlmostEqual(seen["battery_voltage"], 3, places=5)
-        self.assertAlmostEqual(seen["battery_current"], -0.2 / 3, places=5, msg="negative while discharging")
+        self.assertLess(seen["battery_current"], -0.7 / 3 + 1e-6, "negative while discharging")
+        self.assertGreater(seen["battery_current"], -1.7 / 3)
         self.assertAlmostEqual(seen["battery_capacity"], 360 / (3 * 3600), places=6, msg="Ah")
         self.assertEqual(seen["battery_status"], 2, "POWER_SUPPLY_STATUS_DISCHARGING")
-        self.assertAlmostEqual(seen["first_percentage"] - seen["last_percentage"], 0.2 * 5 / 360, delta=0.001)
+        drop = seen["first_percentage"] - seen["last_percentage"]
+        self.assertGreater(drop, 0.7 * 5 / 360 - 0.001)
+        self.assertLess(drop, 1.7 * 5 / 360 + 0.001)
         self.assertAlmostEqual(seen["last_clock"] - seen["first_clock"], 5, delta=1.0)
         r1 = summary["ros2"]["robots"]["r1"]
         self.assertGreater(r1["cmd_vel_taken"], 100)

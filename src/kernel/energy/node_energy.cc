@@ -65,6 +65,7 @@ double NodeEnergy::MostWatts(double sensors_w) const {
 }
 
 void NodeEnergy::SetOn(bool on) {
+  if (!on) SettleMotion();
   on_ = on;
   electronics_->SetOn(on);
   if (drive_idle_) drive_idle_->SetOn(on);
@@ -87,7 +88,14 @@ void NodeEnergy::Drove(double motor_work_j, double weight_rolled_j, double dt) {
   drove_ = {motor_work_j, weight_rolled_j};
   const double electrical_j = on_ ? work_j / d.efficiency : 0;
   motion_w_ = dt > 0 ? electrical_j / dt : 0;
-  if (electrical_j > 0) motion_j_ += rechargeable_->Take(electrical_j);
+  owed_j_ += electrical_j;
+  if (owed_j_ >= kOwedShare * spec_.battery_j) SettleMotion();
+}
+
+void NodeEnergy::SettleMotion() {
+  if (owed_j_ <= 0) return;
+  motion_j_ += rechargeable_->Take(owed_j_);
+  owed_j_ = 0;
 }
 
 void NodeEnergy::SensorRead(double joules) {

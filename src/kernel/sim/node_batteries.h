@@ -24,6 +24,11 @@ class NodeBatteries {
   bool any() const { return count_ > 0; }
   energy::NodeEnergy* Of(NodeId id) const { return id < energies_.size() ? energies_[id].get() : nullptr; }
   std::vector<EnergyLevel> Levels() const;
+  // Every robot's battery takes what its drive still owes (NodeEnergy::SettleMotion).
+  void SettleMotion() const {
+    for (const auto& e : energies_)
+      if (e) e->SettleMotion();
+  }
 
   void Died(NodeId id, double t) {
     died_.at(id) = t;

@@ -101,6 +101,7 @@ void Stepper::StopNow(const std::string& why) {
 
 void Stepper::End() {
   ApplyDrives(0);
+  world_.batteries().SettleMotion();
   // Controllers finish while the run can still record what they log and measure.
   for (NodeId id = 0; id < world_.size(); ++id) world_.host(id).Finish();
   profile_.physics_wait = world_.physics().waited();
@@ -332,6 +333,7 @@ void Stepper::StartEnergySamples() {
 }
 
 void Stepper::SampleEnergy(bool again) {
+  world_.batteries().SettleMotion();  // whether anyone hears the sample or not
   if (bus_.Heard<EnergySampled>()) {
     WallTimer timer(profile_.recording);
     const std::vector<EnergyLevel> levels = world_.batteries().Levels();

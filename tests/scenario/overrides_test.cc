@@ -77,17 +77,26 @@ TEST_P(BadOverride, IsRefusedNamingTheOption) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenario, BadOverride,
-                         ::testing::Values(Refused{"network.tx_power=loud", "network.tx_power", "must be a number"},
-                                           Refused{"network.txpower=3", "network.txpower", "unknown key"},
-                                           Refused{"nodes.r.controller.params.speed=-1",
-                                                   "nodes[0].controller.params.speed", "is -1"},
-                                           Refused{"nodes.q.model=mote", "nodes", "no item named 'q' (items: r)"},
-                                           Refused{"seed.low=1", "seed", "is a value, not a mapping"},
-                                           Refused{"network..port=1", "network", "empty key"},
-                                           Refused{"world.size=[1, 2", "world.size", "not valid YAML"},
-                                           Refused{"noequals", "", "expected PATH=VALUE"}),
-                         [](const auto& info) { return "case" + std::to_string(info.index); });
+INSTANTIATE_TEST_SUITE_P(
+    Scenario, BadOverride,
+    ::testing::Values(Refused{"network.tx_power=loud", "network.tx_power", "must be a number"},
+                      Refused{"network.txpower=3", "network.txpower", "unknown key"},
+                      Refused{"nodes.r.controller.params.speed=-1", "nodes[0].controller.params.speed", "is -1"},
+                      Refused{"nodes.q.model=mote", "nodes", "no item named 'q': did you mean r? (items: r)"},
+                      Refused{"seed.low=1", "seed", "is a value, not a mapping"},
+                      Refused{"network..port=1", "network", "empty key"},
+                      Refused{"world.size=[1, 2", "world.size", "not valid YAML"},
+                      Refused{"noequals", "", "expected PATH=VALUE"}),
+    [](const auto& info) { return "case" + std::to_string(info.index); });
+
+TEST(Overrides, AMisspeltItemSuggestsTheNameMeantEvenPastTheListShown) {
+  try {
+    scenario::LoadScenario(Shipped("charging-robot.yaml"), {"nodes.chargr.controller.params.visits=false"});
+    FAIL() << "accepted";
+  } catch (const scenario::ScenarioError& e) {
+    EXPECT_NE(e.message().find("did you mean charger?"), std::string::npos) << e.what();
+  }
+}
 
 TEST(Overrides, AnErrorElsewhereKeepsTheFilesLine) {
   const std::string path = ::testing::TempDir() + "/overrides-elsewhere.yaml";

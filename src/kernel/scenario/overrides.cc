@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "core/closest_names.h"
+
 namespace sanet::scenario {
 namespace {
 
@@ -49,6 +51,16 @@ std::string Names(const YAML::Node& list) {
   return list.size() > 12 ? names + ", ..." : names;
 }
 
+// Why `key` names no item of `list`: the names closest to it first (the list shows only the
+// first twelve, and the one meant may come later), then the list.
+std::string NoItemNamed(const YAML::Node& list, const std::string& key) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) names.push_back(ItemName(list[i]));
+  const std::vector<std::string> close = ClosestNames(key, names);
+  return "has no item named '" + key + "'" + (close.empty() ? "" : ": did you mean " + OrList(close) + "?") +
+         " (items: " + Names(list) + ")";
+}
+
 YAML::Node ParseValue(const Override& o) {
   try {
     return YAML::Load(o.value);
@@ -71,7 +83,7 @@ void Apply(YAML::Node node, Override& o) {
                node.size() == 0 ? "has no items"
                                 : "has " + std::to_string(node.size()) + " items, 0 to " +
                                       std::to_string(node.size() - 1) + ": no item " + key);
-      if (index < 0) Refuse(o, field, "has no item named '" + key + "' (items: " + Names(node) + ")");
+      if (index < 0) Refuse(o, field, NoItemNamed(node, key));
       field += "[" + std::to_string(index) + "]";
       if (last) {
         node[static_cast<std::size_t>(index)] = ParseValue(o);

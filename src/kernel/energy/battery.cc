@@ -34,7 +34,12 @@ void Battery::Start() {
 double Battery::GetRemainingEnergy() {
   const double seconds = (ns3::Simulator::Now() - last_update_).GetSeconds();
   if (!started_ || seconds <= 0) return remaining_j_;
-  return std::clamp(remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds, 0.0, settings_.capacity_j);
+  return std::clamp(ChargeAfter(seconds), 0.0, settings_.capacity_j);
+}
+
+// The charge `seconds` after the last update at the net draw since (neither floored nor capped).
+double Battery::ChargeAfter(double seconds) {
+  return remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds;
 }
 
 void Battery::UpdateEnergySource() {
@@ -75,9 +80,7 @@ void Battery::AddHarvester(ns3::Ptr<ChargeHarvester> harvester) {
 double Battery::harvested_j() {
   const double seconds = (ns3::Simulator::Now() - last_update_).GetSeconds();
   if (!started_ || seconds <= 0) return harvested_j_;
-  const double after = remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds;
-  const double lost = std::max(0.0, after - settings_.capacity_j);
-  return harvested_j_ + harvesters_.Gave(seconds, lost);
+  return harvested_j_ + harvesters_.Gave(seconds, std::max(0.0, ChargeAfter(seconds) - settings_.capacity_j));
 }
 
 // The draw less the harvest, constant since the last update; what would go past full is lost.
@@ -86,7 +89,7 @@ void Battery::Drain() {
   const double seconds = (now - last_update_).GetSeconds();
   last_update_ = now;
   if (seconds <= 0) return;
-  const double after = remaining_j_ - CalculateTotalCurrent() * settings_.voltage * seconds;
+  const double after = ChargeAfter(seconds);
   const double lost = std::max(0.0, after - settings_.capacity_j);
   remaining_j_ = std::clamp(after, 0.0, settings_.capacity_j);
   harvested_j_ += harvesters_.Gave(seconds, lost);

@@ -59,6 +59,7 @@ class Battery : public ns3::EnergySource, public Rechargeable {
 
  private:
   void DoDispose() override;
+  double ChargeAfter(double seconds);
   void Drain();            // what the models drew, less what the harvesters gave, since the last update
   void CheckThresholds();  // depleted or recharged now: tell the models
   void ScheduleNextUpdate();

@@ -81,7 +81,12 @@ double LiIonCell::GetRemainingEnergy() {
   const double remaining = this->*Get(net::LiIonRemainingJ());
   const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
   if (!started_ || seconds <= 0) return remaining;
-  return std::clamp(remaining - CalculateTotalCurrent() * GetSupplyVoltage() * seconds, 0.0, capacity_j_);
+  return std::clamp(ChargeAfter(seconds), 0.0, capacity_j_);
+}
+
+// The charge `seconds` after the last update at the net draw since (neither floored nor capped).
+double LiIonCell::ChargeAfter(double seconds) {
+  return this->*Get(net::LiIonRemainingJ()) - CalculateTotalCurrent() * GetSupplyVoltage() * seconds;
 }
 
 double LiIonCell::Take(double joules) {
@@ -104,8 +109,7 @@ void LiIonCell::AddHarvester(ns3::Ptr<ChargeHarvester> harvester) {
 double LiIonCell::harvested_j() {
   const double seconds = (ns3::Simulator::Now() - this->*Get(net::LiIonLastUpdate())).GetSeconds();
   if (!started_ || seconds <= 0) return harvested_j_;
-  const double after = this->*Get(net::LiIonRemainingJ()) - CalculateTotalCurrent() * GetSupplyVoltage() * seconds;
-  return harvested_j_ + harvesters_.Gave(seconds, std::max(0.0, after - capacity_j_));
+  return harvested_j_ + harvesters_.Gave(seconds, std::max(0.0, ChargeAfter(seconds) - capacity_j_));
 }
 
 double LiIonCell::Recharge(double joules) {

@@ -47,6 +47,7 @@ class LiIonCell : public ns3::LiIonEnergySource, public Rechargeable {
   // itself) revived.
   void CheckThresholds(bool recharged = false);
   double& DrainedAh();
+  double ChargeAfter(double seconds);
   // ns-3's update nets the harvest like a negative current: this keeps the charge at or below
   // full and counts what the harvesters put in.
   void KeepBelowFull(double harvested_w, double seconds);

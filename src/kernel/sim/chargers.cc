@@ -69,7 +69,7 @@ std::vector<std::pair<NodeId, double>> Chargers::SharesOf(NodeId robot) {
 bool Chargers::NeedsCharge(NodeId mote, const energy::NodeEnergy& energy) {
   topping_up_.resize(world_.size(), 1);
   if (energy.full()) return topping_up_[mote] = 0;
-  if (!topping_up_[mote] && energy.Reading().fraction >= kTopUpBelow) return false;
+  if (!topping_up_[mote] && energy.remaining_j() >= kTopUpBelow * energy.spec().battery_j) return false;
   return topping_up_[mote] = 1;
 }
 

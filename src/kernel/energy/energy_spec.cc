@@ -1,5 +1,7 @@
 #include "energy/energy_spec.h"
 
+#include <stdexcept>
+
 namespace sanet::energy {
 
 const std::vector<RadioPreset>& RadioPresets() {
@@ -11,6 +13,12 @@ const std::vector<RadioPreset>& RadioPresets() {
        RadioCurrents{0.0174, 0.0188, 0.000426, std::nullopt, 0.000426, 0.00002}},
   };
   return presets;
+}
+
+const RadioPreset& RadioPresetNamed(const std::string& name) {
+  for (const RadioPreset& p : RadioPresets())
+    if (p.name == name) return p;
+  throw std::logic_error("no radio preset named " + name);
 }
 
 }  // namespace sanet::energy

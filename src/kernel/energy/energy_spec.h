@@ -27,6 +27,7 @@ struct RadioPreset {
   RadioCurrents currents;
 };
 const std::vector<RadioPreset>& RadioPresets();
+const RadioPreset& RadioPresetNamed(const std::string& name);  // one of RadioPresets()
 
 enum class Chemistry {
   kConstantVoltage,  // sanet's Battery (energy/battery.h)
@@ -62,7 +63,14 @@ struct EnergySpec {
   std::optional<double> revive;  // a dead node comes back once recharged above this fraction
   double RevivesAbove() const { return revive.value_or(std::min(1.0, cutoff + 0.05)); }
   std::string radio_preset = "ns3_wifi";
-  RadioCurrents radio;
+  RadioCurrents radio;  // its 802.11 radio's (WifiRadioEnergyModel)
+  // Its 802.15.4 radio's tx, rx, idle and sleep currents (energy/lr_wpan_energy_model.h): set by
+  // the loader on nodes with such a radio, the CC2420's unless the scenario says.
+  struct NamedCurrents {
+    std::string preset;
+    RadioCurrents currents;
+  };
+  std::optional<NamedCurrents> lr_wpan_radio;
   std::optional<DriveCosts> drive;  // a robot's (set by the loader); a mote has none
   std::optional<WirelessCharger> wireless_charger;
 };

@@ -20,9 +20,10 @@ ns3::Ptr<ElectronicsModel> ConstantModel(ns3::Ptr<ns3::EnergySource> source, dou
 
 }  // namespace
 
-NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio,
-                       double sensors_w, Hooks hooks)
-    : spec_(spec), hooks_(std::move(hooks)), has_radio_(radio != nullptr) {
+NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, Radios radios, double sensors_w, Hooks hooks)
+    : spec_(spec), hooks_(std::move(hooks)), has_radio_(radios.wifi != nullptr) {
+  const ns3::Ptr<ns3::NetDevice> radio = radios.wifi;
+  if (radios.lr_wpan && !spec_.lr_wpan_radio) spec_.lr_wpan_radio = {"cc2420", RadioPresetNamed("cc2420").currents};
   MakeSource(node, sensors_w);
   electronics_ = ConstantModel(source_, spec.electronics_w);
   electronics_->SetCallbacks([this] { hooks_.depleted(); }, [this] { hooks_.revived(); });
@@ -33,6 +34,13 @@ NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Pt
   harvester_->SetNode(node);
   rechargeable_->AddHarvester(harvester_);
   if (radio) InstallRadio(radio);
+  if (radios.lr_wpan) {
+    lr_wpan_ = ns3::CreateObject<LrWpanEnergyModel>();
+    lr_wpan_->SetCurrents(spec_.lr_wpan_radio->currents);
+    lr_wpan_->SetEnergySource(source_);
+    source_->AppendDeviceEnergyModel(lr_wpan_);
+    lr_wpan_->Attach(radios.lr_wpan);
+  }
   // Last, with every model in place: a battery that starts at its cutoff is depleted at once.
   rechargeable_->Start();
 }
@@ -60,14 +68,17 @@ void NodeEnergy::MakeSource(ns3::Ptr<ns3::Node> node, double sensors_w) {
 double NodeEnergy::MostWatts(double sensors_w) const {
   const RadioCurrents& c = spec_.radio;
   const double radio_a = has_radio_ ? std::max({c.tx_a, c.rx_a, c.idle_a, c.cca_busy(), c.switching_a, c.sleep_a}) : 0;
-  return radio_a * spec_.voltage + spec_.electronics_w + (spec_.drive ? spec_.drive->idle_w : 0) + sensors_w +
-         (spec_.wireless_charger ? spec_.wireless_charger->power_w : 0);
+  const RadioCurrents* l = spec_.lr_wpan_radio ? &spec_.lr_wpan_radio->currents : nullptr;
+  const double lr_wpan_a = l ? std::max({l->tx_a, l->rx_a, l->idle_a, l->sleep_a}) : 0;
+  return (radio_a + lr_wpan_a) * spec_.voltage + spec_.electronics_w + (spec_.drive ? spec_.drive->idle_w : 0) +
+         sensors_w + (spec_.wireless_charger ? spec_.wireless_charger->power_w : 0);
 }
 
 void NodeEnergy::SetOn(bool on) {
   if (!on) SettleMotion();
   on_ = on;
   electronics_->SetOn(on);
+  if (lr_wpan_) lr_wpan_->SetOn(on);
   if (drive_idle_) drive_idle_->SetOn(on);
   sensors_->SetOn(on);
   if (charger_) charger_->SetOn(on);
@@ -142,6 +153,7 @@ double NodeEnergy::power_w() const {
   if (drive_idle_) amperes += drive_idle_->GetCurrentA();
   if (charger_) amperes += charger_->GetCurrentA();
   if (radio_) amperes += radio_->GetCurrentA();
+  if (lr_wpan_) amperes += lr_wpan_->GetCurrentA();
   return amperes * source_->GetSupplyVoltage() + motion_w_;
 }
 
@@ -163,6 +175,11 @@ EnergyUse NodeEnergy::Used() const {
     for (const auto& [name, state] : kRadioStates)
       use.emplace_back(std::string("radio_") + name, joules[static_cast<std::size_t>(state)]);
   }
+  if (lr_wpan_) {
+    const LrWpanEnergyModel::ByState joules = lr_wpan_->JoulesByState();
+    for (int s = LrWpanEnergyModel::kTx; s < LrWpanEnergyModel::kOff; ++s)
+      use.emplace_back(LrWpanPrefix() + LrWpanEnergyModel::kStateNames[s], joules[s]);
+  }
   use.emplace_back("electronics", electronics_->GetTotalEnergyConsumption());
   use.emplace_back("motion", (drive_idle_ ? drive_idle_->GetTotalEnergyConsumption() : 0) + motion_j_);
   use.emplace_back("sensors", sensors_->GetTotalEnergyConsumption() + readings_j_);
@@ -174,6 +191,12 @@ EnergyUse NodeEnergy::RadioSeconds() const {
   EnergyUse seconds;
   if (states_)
     for (const auto& [name, state] : kRadioStates) seconds.emplace_back(name, states_->SecondsIn(state));
+  if (lr_wpan_) {
+    const std::string prefix = radio_ ? "lr_wpan_" : "";
+    const LrWpanEnergyModel::ByState in_state = lr_wpan_->SecondsByState();
+    for (int s = LrWpanEnergyModel::kTx; s < LrWpanEnergyModel::kOff; ++s)
+      seconds.emplace_back(prefix + LrWpanEnergyModel::kStateNames[s], in_state[s]);
+  }
   return seconds;
 }
 

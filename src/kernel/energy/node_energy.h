@@ -24,6 +24,7 @@
 #include "energy/electronics_model.h"
 #include "energy/energy_spec.h"
 #include "energy/li_ion_cell.h"
+#include "energy/lr_wpan_energy_model.h"
 #include "energy/radio_energy_model.h"
 #include "energy/radio_states.h"
 #include "sanet/readings.h"
@@ -43,10 +44,13 @@ class NodeEnergy {
     std::function<void()> depleted;  // the charge fell to the cutoff
     std::function<void()> revived;   // a dead node's charge rose above RevivesAbove
   };
-  // `radio`: the node's Wi-Fi device, or null (a run without a network); `sensors_w`: what its
-  // sensors draw while it is on.
-  NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, ns3::Ptr<ns3::NetDevice> radio, double sensors_w,
-             Hooks hooks);
+  // The node's radios: its Wi-Fi device and its 802.15.4 device, either null where it has none.
+  struct Radios {
+    ns3::Ptr<ns3::NetDevice> wifi;
+    ns3::Ptr<ns3::LrWpanNetDevice> lr_wpan;
+  };
+  // `sensors_w`: what its sensors draw while it is on.
+  NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, Radios radios, double sensors_w, Hooks hooks);
   ~NodeEnergy();
   NodeEnergy(const NodeEnergy&) = delete;
   NodeEnergy& operator=(const NodeEnergy&) = delete;
@@ -57,7 +61,8 @@ class NodeEnergy {
   double power_w() const;  // drawn now
   EnergyUse Used() const;
   // Seconds the radio spent in each state by the PHY's own trace ("tx", "rx", "idle", "cca_busy",
-  // "sleep"); empty without a radio.
+  // "sleep"); an 802.15.4 radio's "tx", "rx", "idle", "sleep" (prefixed "lr_wpan_" beside an
+  // 802.11 radio); empty without a radio.
   EnergyUse RadioSeconds() const;
   // Put in by recharges and chargers.
   double charged_j() const { return charged_j_ + rechargeable_->harvested_j(); }
@@ -111,6 +116,8 @@ class NodeEnergy {
   RadioEnergyModel::ByState earlier_radios_{};  // what the models before it charged
   ns3::Ptr<ns3::WifiNetDevice> radio_device_;
   std::unique_ptr<RadioStates> states_;
+  ns3::Ptr<LrWpanEnergyModel> lr_wpan_;  // the 802.15.4 radio's, if the node has one
+  std::string LrWpanPrefix() const { return radio_ ? "lr_wpan_" : "radio_"; }
   double charged_j_ = 0;
   bool has_radio_ = false;
 };

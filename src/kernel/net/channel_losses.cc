@@ -15,9 +15,14 @@ double UntakenBelowDbm() { return WifiPhyDefault("RxSensitivity") - WifiPhyDefau
 }  // namespace
 
 ChannelLosses BuildChannelLosses(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> walls) {
+  return BuildChannelLosses(spec, walls, FrequencyHz(spec.standard), UntakenBelowDbm());
+}
+
+ChannelLosses BuildChannelLosses(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> walls, double frequency_hz,
+                                 double untaken_below_dbm) {
   ChannelLosses losses;
-  losses.mean = PathLoss(spec);
-  losses.range = PathLoss(spec);
+  losses.mean = PathLoss(spec, frequency_hz);
+  losses.range = PathLoss(spec, frequency_hz);
   if (walls) LastOf(losses.mean)->SetNext(walls);
   if (spec.shadowing.sigma_db > 0) {
     const ShadowingField field(spec.seed, spec.shadowing);
@@ -31,7 +36,7 @@ ChannelLosses BuildChannelLosses(const NetworkSpec& spec, ns3::Ptr<ObstacleLossM
   if (spec.fading.model != FadingModel::kNone) {
     const NakagamiFading fading(spec.seed, spec.fading);
     auto faded = ns3::CreateObject<FadingLossModel>();
-    faded->Set(losses.mean, fading, UntakenBelowDbm());
+    faded->Set(losses.mean, fading, untaken_below_dbm);
     losses.frames = faded;
     losses.range_margin_db += fading.MaxGainDb();
   }

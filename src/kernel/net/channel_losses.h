@@ -24,6 +24,11 @@ struct ChannelLosses {
   double range_margin_db = 0;
 };
 
+// For the 802.11 radios.
 ChannelLosses BuildChannelLosses(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> walls);
+// At `frequency_hz`, for radios that take no frame weaker than `untaken_below_dbm` (the 802.15.4
+// radios: their sensitivity).
+ChannelLosses BuildChannelLosses(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> walls, double frequency_hz,
+                                 double untaken_below_dbm);
 
 }  // namespace sanet::net

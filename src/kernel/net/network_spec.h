@@ -36,6 +36,31 @@ std::vector<double> DataRates(WifiStandard standard);
 // 802.11g, 5.18 GHz (channel 36) for 802.11a.
 inline double FrequencyHz(WifiStandard standard) { return standard == WifiStandard::k80211a ? 5.18e9 : 2.412e9; }
 
+// The radios a node carries: an 802.11 radio (the run's standard), an IEEE 802.15.4 radio, or
+// both (docs/network.md#ieee-802154).
+struct Radios {
+  bool wifi = true;
+  bool lr_wpan = false;
+  bool operator==(const Radios& o) const { return wifi == o.wifi && lr_wpan == o.lr_wpan; }
+  bool both() const { return wifi && lr_wpan; }
+};
+constexpr const char* kLrWpanName = "802.15.4";
+
+// IEEE 802.15.4 radios (ns-3's lr-wpan: 2.4 GHz O-QPSK at 250 kbit/s, unslotted CSMA-CA,
+// acknowledged unicast) carrying IPv6 through 6LoWPAN. The defaults are the CC2420's (a TelosB or
+// MICAz mote's transceiver) and the standard's MAC constants.
+struct LrWpanSpec {
+  double tx_power = 0;        // dBm: the CC2420's highest
+  double rx_threshold = -95;  // dBm: the CC2420's sensitivity; weaker frames never reach the radio
+  int min_be = 3;             // macMinBE: the first backoff exponent
+  int max_be = 5;             // macMaxBE
+  int max_csma_backoffs = 4;  // macMaxCSMABackoffs: busy channels before a frame is given up
+  int max_frame_retries = 3;  // macMaxFrameRetries: retransmissions of an unacknowledged unicast
+};
+constexpr int kLrWpanChannel = 11;              // the first 2.4 GHz channel
+constexpr double kLrWpanFrequencyHz = 2.405e9;  // its centre
+constexpr double kLrWpanRateMbps = 0.25;
+
 // Log-normal shadowing, spatially correlated (net/shadowing.h); sigma 0 is none.
 struct Shadowing {
   double sigma_db = 0;        // deviation of the shadowing (dB)
@@ -60,10 +85,11 @@ struct HardwareSpread {
 };
 
 struct NetworkSpec {
-  WifiStandard standard = WifiStandard::k80211b;
-  double data_rate = 1;       // Mbps, one of the standard's rates; broadcasts go at the lowest
-  double tx_power = 16;       // dBm, every node unless it overrides it
-  double rx_threshold = -82;  // dBm: frames received weaker than this are not detected
+  Radios radios;                                  // every node's, unless it names its own (`network.radio`)
+  WifiStandard standard = WifiStandard::k80211b;  // of every 802.11 radio: they share one channel
+  double data_rate = 1;                           // Mbps, one of the standard's rates; broadcasts go at the lowest
+  double tx_power = 16;                           // dBm, every node unless it overrides it
+  double rx_threshold = -82;                      // dBm: frames received weaker than this are not detected
 
   LossModel loss = LossModel::kLogDistance;
   double exponent = 3.0;            // log-distance path-loss exponent
@@ -97,6 +123,9 @@ struct NetworkSpec {
   bool pcap = false;          // a pcap file per node (802.11 frames)
   bool flow_monitor = false;  // ns-3 FlowMonitor statistics (XML)
   bool packet_log = true;     // a CSV of packet events per node
+  LrWpanSpec lr_wpan;         // the 802.15.4 radios', if any node has one
+  // Which kinds of radio the nodes (and spawn classes) carry: set by the loader.
+  bool wifi_in_use = true, lr_wpan_in_use = false;
 
   Ns3Attributes ns3;  // ns-3 attribute defaults (network.ns3), checked when read
 
@@ -107,9 +136,13 @@ struct NetworkSpec {
 
 // Radio settings a node may override.
 struct NodeRadio {
-  std::optional<double> tx_power;       // dBm
-  double antenna_height = 0;            // m above the node's position, for the walls between antennas only
-  std::optional<DutyCycle> duty_cycle;  // none: awake unless its controller puts it to sleep
+  std::optional<Radios> radios;            // unset: the network's
+  std::optional<double> tx_power;          // dBm, its 802.11 radio
+  std::optional<double> lr_wpan_tx_power;  // dBm, its 802.15.4 radio
+  double antenna_height = 0;               // m above the node's position, for the walls between antennas only
+  std::optional<DutyCycle> duty_cycle;     // none: awake unless its controller puts it to sleep (every radio it has)
+  WifiStandard wifi_standard = WifiStandard::k80211b;  // the run's, to print `standard` with
+  Radios RadiosIn(const NetworkSpec& network) const { return radios.value_or(network.radios); }
 };
 
 }  // namespace sanet::net

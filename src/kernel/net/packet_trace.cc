@@ -14,6 +14,8 @@
 namespace sanet::net {
 namespace {
 
+constexpr std::uint8_t kIcmpv6Protocol = 58;
+
 const char* EventName(int e) {
   static const char* names[] = {"sent", "received", "forwarded", "dropped"};
   return names[e];
@@ -98,6 +100,45 @@ void PacketTrace::Attach(NodeId node, ns3::Ptr<ns3::Node> n) {
   }
 }
 
+namespace {
+
+const char* Drop6Name(ns3::Ipv6L3Protocol::DropReason reason) {
+  switch (reason) {
+    case ns3::Ipv6L3Protocol::DROP_TTL_EXPIRED:
+      return "ttl_expired";
+    case ns3::Ipv6L3Protocol::DROP_NO_ROUTE:
+      return "no_route";
+    case ns3::Ipv6L3Protocol::DROP_INTERFACE_DOWN:
+      return "interface_down";
+    case ns3::Ipv6L3Protocol::DROP_FRAGMENT_TIMEOUT:
+      return "fragment_timeout";
+    default:
+      return "other";
+  }
+}
+
+}  // namespace
+
+// An 802.15.4 node's IPv6 layer, as Attach does its IPv4 one (no forwarding: no IPv6 routing).
+void PacketTrace::Attach6(NodeId node, ns3::Ptr<ns3::Node> n) {
+  using Sent = ns3::Callback<void, const ns3::Ipv6Header&, ns3::Ptr<const ns3::Packet>, uint32_t>;
+  auto ip = n->GetObject<ns3::Ipv6L3Protocol>();
+  ip->TraceConnectWithoutContext("SendOutgoing",
+                                 Sent([this, node](const ns3::Ipv6Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                                   Record6(node, Event::kSent, h, p);
+                                 }));
+  ip->TraceConnectWithoutContext("LocalDeliver",
+                                 Sent([this, node](const ns3::Ipv6Header& h, ns3::Ptr<const ns3::Packet> p, uint32_t) {
+                                   Record6(node, Event::kReceived, h, p);
+                                 }));
+  ip->TraceConnectWithoutContext(
+      "Drop",
+      ns3::Callback<void, const ns3::Ipv6Header&, ns3::Ptr<const ns3::Packet>, ns3::Ipv6L3Protocol::DropReason,
+                    ns3::Ptr<ns3::Ipv6>, uint32_t>(
+          [this, node](const ns3::Ipv6Header& h, ns3::Ptr<const ns3::Packet> p, ns3::Ipv6L3Protocol::DropReason reason,
+                       ns3::Ptr<ns3::Ipv6>, uint32_t) { Record6(node, Event::kDropped, h, p, Drop6Name(reason)); }));
+}
+
 std::string PacketTrace::Protocol(const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) const {
   if (ip.GetProtocol() != kUdpProtocol) return ip.GetProtocol() == 48 ? "dsr" : "ip";
   ns3::UdpHeader udp;
@@ -120,6 +161,56 @@ std::string PacketTrace::Peer(ns3::Ipv4Address address) const {
 
 void PacketTrace::Record(NodeId node, Event event, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet,
                          const char* why) {
+  Count(node, event);
+  if (logs_.empty()) return;
+  const ns3::Ipv4Address peer = event == Event::kReceived ? ip.GetSource() : ip.GetDestination();
+  Log(node, event, Protocol(ip, packet), packet->GetSize(), Peer(peer), why);
+}
+
+void PacketTrace::Record6(NodeId node, Event event, const ns3::Ipv6Header& ip, ns3::Ptr<const ns3::Packet> packet,
+                          const char* why) {
+  Count(node, event);
+  if (logs_.empty()) return;
+  const ns3::Ipv6Address peer = event == Event::kReceived ? ip.GetSource() : ip.GetDestination();
+  std::string protocol = "ipv6";
+  if (ip.GetNextHeader() == kIcmpv6Protocol) protocol = "icmpv6";
+  ns3::UdpHeader udp;
+  if (ip.GetNextHeader() == kUdpProtocol)
+    protocol = packet->PeekHeader(udp) && udp.GetDestinationPort() == spec_.port ? "sanet" : "udp";
+  std::string name;
+  if (auto id = book_.Find6(peer)) {
+    name = names_[*id];
+  } else if (peer.IsMulticast()) {
+    name = "*";
+  } else {
+    std::ostringstream s;
+    peer.Print(s);
+    name = s.str();
+  }
+  Log(node, event, protocol, packet->GetSize(), name, why);
+}
+
+void PacketTrace::MacDropped(NodeId node, std::uint32_t bytes) {
+  Count(node, Event::kDropped);
+  if (!logs_.empty()) Log(node, Event::kDropped, "mac", bytes, "", "refused_by_mac");
+}
+
+void PacketTrace::Unreachable(NodeId node, NodeId to, std::size_t bytes) {
+  Count(node, Event::kDropped);
+  if (!logs_.empty())
+    Log(node, Event::kDropped, "sanet", static_cast<std::uint32_t>(bytes), to < names_.size() ? names_[to] : "",
+        "no_shared_radio");
+}
+
+void PacketTrace::Log(NodeId node, Event event, const std::string& protocol, std::uint32_t bytes,
+                      const std::string& peer, const char* why) {
+  char time[32];
+  std::snprintf(time, sizeof time, "%.6f", ns3::Simulator::Now().GetSeconds());
+  logs_[node]->Row(std::string(time) + "," + EventName(static_cast<int>(event)) + "," + protocol + "," +
+                   std::to_string(bytes) + "," + peer + "," + why);
+}
+
+void PacketTrace::Count(NodeId node, Event event) {
   PacketCounts& c = counts_[node];
   switch (event) {
     case Event::kSent:
@@ -135,12 +226,6 @@ void PacketTrace::Record(NodeId node, Event event, const ns3::Ipv4Header& ip, ns
       ++c.dropped;
       break;
   }
-  if (logs_.empty()) return;
-  char time[32];
-  std::snprintf(time, sizeof time, "%.6f", ns3::Simulator::Now().GetSeconds());
-  const ns3::Ipv4Address peer = event == Event::kReceived ? ip.GetSource() : ip.GetDestination();
-  logs_[node]->Row(std::string(time) + "," + EventName(static_cast<int>(event)) + "," + Protocol(ip, packet) + "," +
-                   std::to_string(packet->GetSize()) + "," + Peer(peer) + "," + why);
 }
 
 void PacketTrace::RouteNeeded(NodeId node, NodeId destination, double now) {

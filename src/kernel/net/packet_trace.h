@@ -6,6 +6,8 @@
 
 #include <ns3/ipv4-header.h>
 #include <ns3/ipv4-l3-protocol.h>
+#include <ns3/ipv6-header.h>
+#include <ns3/ipv6-l3-protocol.h>
 #include <ns3/packet.h>
 
 #include <map>
@@ -27,6 +29,12 @@ class PacketTrace {
 
   // Connects to the node's IP layer and MAC (before the run).
   void Attach(NodeId node, ns3::Ptr<ns3::Node> ns3_node);
+  // Connects to the IPv6 layer of a node with an 802.15.4 radio.
+  void Attach6(NodeId node, ns3::Ptr<ns3::Node> ns3_node);
+  // An 802.15.4 MAC gave a frame up (no acknowledgement after its retries, or a busy channel).
+  void MacDropped(NodeId node, std::uint32_t bytes);
+  // A message from `node` to `to`, which shares no radio with it, goes nowhere.
+  void Unreachable(NodeId node, NodeId to, std::size_t bytes);
   // Opens the per-node packet logs (packets/<node>.csv) in the results folder.
   void Open(trace::ResultsFolder& folder);
   // A node joins while the run goes (a spawned robot): counts, and its log if logs are open.
@@ -48,6 +56,11 @@ class PacketTrace {
   enum class Event { kSent, kReceived, kForwarded, kDropped };
   void Record(NodeId node, Event event, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet,
               const char* why = "");
+  void Record6(NodeId node, Event event, const ns3::Ipv6Header& ip, ns3::Ptr<const ns3::Packet> packet,
+               const char* why = "");
+  void Count(NodeId node, Event event);
+  void Log(NodeId node, Event event, const std::string& protocol, std::uint32_t bytes, const std::string& peer,
+           const char* why);
   void CheckRouteReply(NodeId node, const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet);
   std::string Protocol(const ns3::Ipv4Header& ip, ns3::Ptr<const ns3::Packet> packet) const;
   std::string Peer(ns3::Ipv4Address address) const;

@@ -5,16 +5,16 @@
 namespace sanet::net {
 namespace {
 
-ns3::Ptr<ns3::PropagationLossModel> Model(const NetworkSpec& spec) {
+ns3::Ptr<ns3::PropagationLossModel> Model(const NetworkSpec& spec, double frequency_hz) {
   switch (spec.loss) {
     case LossModel::kFriis: {
       auto friis = ns3::CreateObject<ns3::FriisPropagationLossModel>();
-      friis->SetAttribute("Frequency", ns3::DoubleValue(FrequencyHz(spec.standard)));
+      friis->SetAttribute("Frequency", ns3::DoubleValue(frequency_hz));
       return friis;
     }
     case LossModel::kTwoRayGround: {
       auto two_ray = ns3::CreateObject<ns3::TwoRayGroundPropagationLossModel>();
-      two_ray->SetAttribute("Frequency", ns3::DoubleValue(FrequencyHz(spec.standard)));
+      two_ray->SetAttribute("Frequency", ns3::DoubleValue(frequency_hz));
       two_ray->SetAttribute("HeightAboveZ", ns3::DoubleValue(spec.antenna_height));
       return two_ray;
     }
@@ -31,7 +31,11 @@ ns3::Ptr<ns3::PropagationLossModel> Model(const NetworkSpec& spec) {
 }  // namespace
 
 ns3::Ptr<ns3::PropagationLossModel> PathLoss(const NetworkSpec& spec) {
-  ns3::Ptr<ns3::PropagationLossModel> chain = Model(spec);
+  return PathLoss(spec, FrequencyHz(spec.standard));
+}
+
+ns3::Ptr<ns3::PropagationLossModel> PathLoss(const NetworkSpec& spec, double frequency_hz) {
+  ns3::Ptr<ns3::PropagationLossModel> chain = Model(spec, frequency_hz);
   if (spec.max_range > 0) {
     auto range = ns3::CreateObject<ns3::RangePropagationLossModel>();
     range->SetAttribute("MaxRange", ns3::DoubleValue(spec.max_range));

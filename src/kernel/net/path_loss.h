@@ -10,7 +10,8 @@
 
 namespace sanet::net {
 
-ns3::Ptr<ns3::PropagationLossModel> PathLoss(const NetworkSpec& spec);
+ns3::Ptr<ns3::PropagationLossModel> PathLoss(const NetworkSpec& spec);  // at the 802.11 standard's frequency
+ns3::Ptr<ns3::PropagationLossModel> PathLoss(const NetworkSpec& spec, double frequency_hz);
 // The chain's last model, to chain another after it.
 ns3::Ptr<ns3::PropagationLossModel> LastOf(ns3::Ptr<ns3::PropagationLossModel> chain);
 

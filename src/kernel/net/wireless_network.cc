@@ -10,6 +10,7 @@
 #include <ns3/dsr-main-helper.h>
 #include <ns3/dsr-routing.h>
 #include <ns3/inet-socket-address.h>
+#include <ns3/inet6-socket-address.h>
 #include <ns3/internet-stack-helper.h>
 #include <ns3/ipv4-address-helper.h>
 #include <ns3/ipv4-static-routing-helper.h>
@@ -30,6 +31,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "core/statistics.h"
 #include "net/channel_losses.h"
@@ -65,7 +67,7 @@ std::string ModeName(WifiStandard standard, double mbps) {
 
 WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes,
                                  std::vector<std::string> names, const std::vector<NodeRadio>& radios,
-                                 std::vector<RadioObstacle> walls)
+                                 std::vector<RadioObstacle> walls, std::vector<RadioObstacle> lr_wpan_walls)
     : spec_(spec),
       ns3_defaults_(spec.ns3),
       nodes_(nodes),
@@ -74,21 +76,32 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
       trace_(spec_, book_, std::move(names)),
       next_sequence_(nodes.GetN(), 0),
       floods_seen_(nodes.GetN()),
+      broadcasts_seen_(nodes.GetN()),
       radios_(radios) {
   if (!walls.empty()) {
     walls_ = ns3::CreateObject<ObstacleLossModel>();
     walls_->SetObstacles(std::make_shared<const ObstacleCrossings>(std::move(walls)));
   }
+  if (!lr_wpan_walls.empty()) {
+    lr_wpan_walls_ = ns3::CreateObject<ObstacleLossModel>();
+    lr_wpan_walls_->SetObstacles(std::make_shared<const ObstacleCrossings>(std::move(lr_wpan_walls)));
+  }
   ConfigureRadios();
   // One node at a time: a node may transmit with its own power.
-  for (NodeId id = 0; id < nodes_.GetN(); ++id) devices_.Add(InstallRadio(id, radios.at(id)));
+  wifi_.resize(nodes_.GetN());
+  for (NodeId id = 0; id < nodes_.GetN(); ++id)
+    if (radios.at(id).RadiosIn(spec_).wifi) devices_.Add(InstallRadio(id, radios.at(id)));
   InstallInternet();
+  for (NodeId id = 0; id < nodes_.GetN(); ++id)
+    if (radios.at(id).RadiosIn(spec_).lr_wpan) InstallLrWpan(id);
   for (NodeId id = 0; id < nodes_.GetN(); ++id) OpenSocket(id);
   jitter_ = ns3::CreateObject<ns3::UniformRandomVariable>();
   jitter_->SetAttribute("Min", ns3::DoubleValue(0));
   jitter_->SetAttribute("Max", ns3::DoubleValue(0.01));
   AssignStreams();
   for (NodeId id = 0; id < nodes_.GetN(); ++id) trace_.Attach(id, nodes_.Get(id));
+  for (NodeId id = 0; id < nodes_.GetN(); ++id)
+    if (HasLrWpan(id)) trace_.Attach6(id, nodes_.Get(id));
   for (NodeId id = 0; id < nodes_.GetN(); ++id) StartDutyCycle(id);
   if (spec_.flow_monitor) {
     flow_helper_ = std::make_unique<ns3::FlowMonitorHelper>();
@@ -97,21 +110,24 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
 }
 
 WirelessNetwork::~WirelessNetwork() {
-  for (auto& socket : sockets_) socket->SetRecvCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>());
+  for (const auto* sockets : {&sockets_, &sockets6_})
+    for (auto& socket : *sockets)
+      if (socket) socket->SetRecvCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>());
 }
 
 // The helpers every node's radio is installed with: standard, rates, channel, PHY and MAC.
 void WirelessNetwork::ConfigureRadios() {
   nominal_noise_figure_ = WifiPhyDefault("RxNoiseFigure");
-  wifi_.SetStandard(spec_.standard == WifiStandard::k80211b   ? ns3::WIFI_STANDARD_80211b
-                    : spec_.standard == WifiStandard::k80211g ? ns3::WIFI_STANDARD_80211g
-                                                              : ns3::WIFI_STANDARD_80211a);
+  wifi_helper_.SetStandard(spec_.standard == WifiStandard::k80211b   ? ns3::WIFI_STANDARD_80211b
+                           : spec_.standard == WifiStandard::k80211g ? ns3::WIFI_STANDARD_80211g
+                                                                     : ns3::WIFI_STANDARD_80211a);
   const std::string data_mode = ModeName(spec_.standard, spec_.data_rate);
   const std::string control_mode = ModeName(spec_.standard, DataRates(spec_.standard).front());
   // Broadcasts (hence AODV's requests and floods) go at the standard's lowest rate, named here
   // because ns-3's own default for them is the first basic rate (1 Mbps DSSS even for 802.11g).
-  wifi_.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode), "ControlMode",
-                                ns3::StringValue(control_mode), "NonUnicastMode", ns3::StringValue(control_mode));
+  wifi_helper_.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode),
+                                       "ControlMode", ns3::StringValue(control_mode), "NonUnicastMode",
+                                       ns3::StringValue(control_mode));
 
   ns3::YansWifiChannelHelper channel;
   if (spec_.delay == DelayModel::kConstantSpeed) {
@@ -156,9 +172,22 @@ ns3::NetDeviceContainer WirelessNetwork::InstallRadio(NodeId id, const NodeRadio
   phy_.Set("TxPowerEnd", ns3::DoubleValue(power));
   if (spec_.spread.noise_figure_db > 0)
     phy_.Set("RxNoiseFigure", ns3::DoubleValue(std::max(0.0, nominal_noise_figure_ + NoiseFigureOffsetDb(spec_, id))));
-  ns3::NetDeviceContainer device = wifi_.Install(phy_, mac_, node);
-  CountFrames(ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0))->GetPhy());
+  ns3::NetDeviceContainer device = wifi_helper_.Install(phy_, mac_, node);
+  if (wifi_.size() <= id) wifi_.resize(id + 1);
+  wifi_[id] = ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0));
+  CountFrames(wifi_[id]->GetPhy());
   return device;
+}
+
+// After the IP stack: the radio, 6LoWPAN and the IPv6 interface, with the node's own power.
+void WirelessNetwork::InstallLrWpan(NodeId id) {
+  if (!lr_wpan_) {
+    lr_wpan_ = std::make_unique<LrWpanRadios>(spec_, lr_wpan_walls_);
+    lr_wpan_->CountFrames(&frame_counts_);
+    lr_wpan_->OnMacDrop([this](NodeId node, ns3::Ptr<const ns3::Packet> p) { trace_.MacDropped(node, p->GetSize()); });
+  }
+  const double power = radios_.at(id).lr_wpan_tx_power.value_or(spec_.lr_wpan.tx_power) + TxPowerOffsetDb(spec_, id);
+  lr_wpan_->Install(id, nodes_.Get(id), power);
 }
 
 // Frames sent and frames received whole, over all radios: how well the channel delivers,
@@ -176,13 +205,18 @@ void WirelessNetwork::CountFrames(ns3::Ptr<ns3::WifiPhy> phy) {
 // run in one process would draw other numbers: give every random consumer a fixed stream.
 void WirelessNetwork::AssignStreams() {
   std::int64_t stream = 0;
-  stream += ns3::WifiHelper().AssignStreams(devices_, stream);
-  stream += ns3::YansWifiChannelHelper().AssignStreams(
-      ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel()), stream);
+  if (devices_.GetN() > 0) {
+    stream += ns3::WifiHelper().AssignStreams(devices_, stream);
+    stream += ns3::YansWifiChannelHelper().AssignStreams(
+        ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel()), stream);
+  }
   stream += ns3::InternetStackHelper().AssignStreams(nodes_, stream);
   for (NodeId id = 0; id < nodes_.GetN(); ++id) stream += AssignRoutingStreams(nodes_.Get(id), stream);
   jitter_->SetStream(stream);
   next_stream_ = stream + 1;
+  // After every stream an 802.11 run had before 802.15.4 existed: those runs draw as they did.
+  for (NodeId id = 0; id < nodes_.GetN(); ++id)
+    if (HasLrWpan(id)) next_stream_ += lr_wpan_->AssignStreams(id, next_stream_);
 }
 
 std::int64_t WirelessNetwork::AssignRoutingStreams(ns3::Ptr<ns3::Node> node, std::int64_t stream) {
@@ -204,34 +238,44 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   trace_.AddNode(name);
   next_sequence_.push_back(0);
   floods_seen_.emplace_back();
+  broadcasts_seen_.emplace_back();
   radios_.push_back(radio);
-  const ns3::NetDeviceContainer device = InstallRadio(id, radio);
+  wifi_.resize(id + 1);
+  const Radios kinds = radio.RadiosIn(spec_);
+  ns3::NetDeviceContainer device;
+  if (kinds.wifi) device = InstallRadio(id, radio);
   devices_.Add(device);
   internet_.Install(node);
   if (spec_.routing == Routing::kDsr) {
     ns3::DsrHelper dsr;
     ns3::DsrMainHelper().Install(dsr, ns3::NodeContainer(node));
   }
-  auto ip = node->GetObject<ns3::Ipv4>();
-  const std::int32_t interface = ip->AddInterface(device.Get(0));
-  ip->AddAddress(interface, ns3::Ipv4InterfaceAddress(book_.Of(id), ns3::Ipv4Mask(AddressBook::kMask)));
-  ip->SetMetric(interface, 1);
-  ip->SetUp(interface);
+  if (kinds.wifi) {
+    auto ip = node->GetObject<ns3::Ipv4>();
+    const std::int32_t interface = ip->AddInterface(device.Get(0));
+    ip->AddAddress(interface, ns3::Ipv4InterfaceAddress(book_.Of(id), ns3::Ipv4Mask(AddressBook::kMask)));
+    ip->SetMetric(interface, 1);
+    ip->SetUp(interface);
+  }
+  if (kinds.lr_wpan) InstallLrWpan(id);
   OpenSocket(id);
-  next_stream_ += wifi_.AssignStreams(device, next_stream_);
+  if (kinds.wifi) next_stream_ += wifi_helper_.AssignStreams(device, next_stream_);
   next_stream_ += ns3::InternetStackHelper().AssignStreams(ns3::NodeContainer(node), next_stream_);
   next_stream_ += AssignRoutingStreams(node, next_stream_);
+  if (kinds.lr_wpan) next_stream_ += lr_wpan_->AssignStreams(id, next_stream_);
   trace_.Attach(id, node);
+  if (kinds.lr_wpan) trace_.Attach6(id, node);
   StartDutyCycle(id);
   if (flow_monitor_) flow_helper_->Install(node);
   if (!pcap_dir_.empty()) OpenPcap(id);
-  if (frames_) frames_->Attach(id, ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0)));
+  if (frames_ && kinds.wifi) frames_->Attach(id, wifi_[id]);
 }
 
 void WirelessNetwork::ObserveFrames(FrameObserver observer) {
+  if (lr_wpan_) lr_wpan_->ObserveFrames(observer);
   frames_ = std::make_unique<FrameTrace>(std::move(observer));
   for (NodeId id = 0; id < nodes_.GetN(); ++id)
-    frames_->Attach(id, ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(id)));
+    if (HasWifi(id)) frames_->Attach(id, wifi_[id]);
 }
 
 void WirelessNetwork::InstallInternet() {
@@ -262,24 +306,50 @@ void WirelessNetwork::InstallInternet() {
     ns3::DsrMainHelper dsr_main;
     dsr_main.Install(dsr, nodes_);
   }
-  ns3::Ipv4AddressHelper addresses;
-  addresses.SetBase(AddressBook::kNetwork, AddressBook::kMask);
-  addresses.Assign(devices_);
+  if (devices_.GetN() == nodes_.GetN()) {  // every node on 802.11: addresses in node order
+    ns3::Ipv4AddressHelper addresses;
+    addresses.SetBase(AddressBook::kNetwork, AddressBook::kMask);
+    addresses.Assign(devices_);
+    return;
+  }
+  for (NodeId id = 0; id < nodes_.GetN(); ++id)
+    if (HasWifi(id)) AssignAddress(id);
 }
 
+// The node's own address, whichever nodes before it have an 802.11 radio.
+void WirelessNetwork::AssignAddress(NodeId id) {
+  ns3::Ipv4AddressHelper addresses;
+  addresses.SetBase(AddressBook::kNetwork, AddressBook::kMask, ns3::Ipv4Address(static_cast<std::uint32_t>(id + 1)));
+  addresses.Assign(ns3::NetDeviceContainer(wifi_[id]));
+}
+
+// A UDP socket for controller messages on each IP the node speaks: IPv4 over its 802.11 radio,
+// IPv6 over its 802.15.4 radio (bound to that interface, where link-local multicast goes out).
 void WirelessNetwork::OpenSocket(NodeId id) {
-  auto socket = ns3::Socket::CreateSocket(nodes_.Get(id), ns3::UdpSocketFactory::GetTypeId());
-  socket->Bind(ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), spec_.port));
-  socket->SetAllowBroadcast(true);
-  socket->SetIpRecvTtl(true);
-  socket->SetRecvCallback(
-      ns3::Callback<void, ns3::Ptr<ns3::Socket>>([this, id](ns3::Ptr<ns3::Socket> s) { Receive(id, s); }));
+  const auto receive =
+      ns3::Callback<void, ns3::Ptr<ns3::Socket>>([this, id](ns3::Ptr<ns3::Socket> s) { Receive(id, s); });
+  ns3::Ptr<ns3::Socket> socket, socket6;
+  if (HasWifi(id)) {
+    socket = ns3::Socket::CreateSocket(nodes_.Get(id), ns3::UdpSocketFactory::GetTypeId());
+    socket->Bind(ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), spec_.port));
+    socket->SetAllowBroadcast(true);
+    socket->SetIpRecvTtl(true);
+    socket->SetRecvCallback(receive);
+  }
+  if (HasLrWpan(id)) {
+    socket6 = ns3::Socket::CreateSocket(nodes_.Get(id), ns3::UdpSocketFactory::GetTypeId());
+    socket6->Bind(ns3::Inet6SocketAddress(ns3::Ipv6Address::GetAny(), spec_.port));
+    socket6->BindToNetDevice(lr_wpan_->Interface(id));
+    socket6->SetIpv6RecvHopLimit(true);
+    socket6->SetRecvCallback(receive);
+  }
   sockets_.push_back(socket);
+  sockets6_.push_back(socket6);
   views_.push_back(std::make_unique<RoutingView>(spec_.routing, nodes_.Get(id), book_, [this, id](NodeId to) {
-    if (to >= nodes_.GetN() || to == id) return;
+    if (to >= nodes_.GetN() || to == id || !HasWifi(id) || !HasWifi(to)) return;
     if (spec_.routing == Routing::kAodv && !views_[id]->HasValidRoute(to))
       trace_.RouteNeeded(id, to, ns3::Simulator::Now().GetSeconds());
-    Transmit(id, book_.Of(to), NewHeader(id, MessageHeader::kRouteProbe, to), {});
+    Transmit(id, ns3::InetSocketAddress(book_.Of(to), spec_.port), NewHeader(id, MessageHeader::kRouteProbe, to), {});
   }));
 }
 
@@ -294,18 +364,36 @@ MessageHeader WirelessNetwork::NewHeader(NodeId from, MessageHeader::Kind kind, 
   return h;
 }
 
-void WirelessNetwork::Transmit(NodeId from, ns3::Ipv4Address to, const MessageHeader& header, const Bytes& payload) {
+void WirelessNetwork::Transmit(NodeId from, const ns3::Address& to, const MessageHeader& header, const Bytes& payload) {
   auto packet = ns3::Create<ns3::Packet>(payload.data(), payload.size());
   packet->AddHeader(header);
-  sockets_[from]->SendTo(packet, 0, ns3::InetSocketAddress(to, spec_.port));
+  (ns3::Inet6SocketAddress::IsMatchingType(to) ? sockets6_ : sockets_)[from]->SendTo(packet, 0, to);
 }
 
+void WirelessNetwork::TransmitToAll(NodeId from, const MessageHeader& header, const Bytes& payload) {
+  if (HasWifi(from))
+    Transmit(from, ns3::InetSocketAddress(ns3::Ipv4Address::GetBroadcast(), spec_.port), header, payload);
+  if (HasLrWpan(from))
+    Transmit(from, ns3::Inet6SocketAddress(ns3::Ipv6Address::GetAllNodesMulticast(), spec_.port), header, payload);
+}
+
+// Over 802.11 when both ends have it (routed by the routing protocol), else over 802.15.4 (one
+// hop), else nowhere (docs/network.md#two-radios).
 void WirelessNetwork::Send(NodeId from, NodeId to, const Bytes& payload) {
   if (to >= nodes_.GetN() || to == from) return;
   trace_.MessageSent(from);
-  if (spec_.routing == Routing::kAodv && !views_[from]->HasValidRoute(to))
-    trace_.RouteNeeded(from, to, ns3::Simulator::Now().GetSeconds());
-  Transmit(from, book_.Of(to), NewHeader(from, MessageHeader::kUnicast, to), payload);
+  if (HasWifi(from) && HasWifi(to)) {
+    if (spec_.routing == Routing::kAodv && !views_[from]->HasValidRoute(to))
+      trace_.RouteNeeded(from, to, ns3::Simulator::Now().GetSeconds());
+    return Transmit(from, ns3::InetSocketAddress(book_.Of(to), spec_.port),
+                    NewHeader(from, MessageHeader::kUnicast, to), payload);
+  }
+  if (HasLrWpan(from) && HasLrWpan(to)) {
+    lr_wpan_->KnowNeighbour(from, to);
+    return Transmit(from, ns3::Inet6SocketAddress(AddressBook::Of6(to), spec_.port),
+                    NewHeader(from, MessageHeader::kUnicast, to), payload);
+  }
+  trace_.Unreachable(from, to, payload.size());
 }
 
 // With `broadcast_jitter`, the datagram waits a random time first (from the stream that also
@@ -313,24 +401,26 @@ void WirelessNetwork::Send(NodeId from, NodeId to, const Bytes& payload) {
 void WirelessNetwork::Broadcast(NodeId from, const Bytes& payload) {
   trace_.MessageSent(from);
   const MessageHeader header = NewHeader(from, MessageHeader::kBroadcast, kBroadcast);
-  if (spec_.broadcast_jitter <= 0) return Transmit(from, ns3::Ipv4Address::GetBroadcast(), header, payload);
-  ns3::Simulator::Schedule(ns3::Seconds(jitter_->GetValue(0, spec_.broadcast_jitter)), [this, from, header, payload] {
-    Transmit(from, ns3::Ipv4Address::GetBroadcast(), header, payload);
-  });
+  if (spec_.broadcast_jitter <= 0) return TransmitToAll(from, header, payload);
+  ns3::Simulator::Schedule(ns3::Seconds(jitter_->GetValue(0, spec_.broadcast_jitter)),
+                           [this, from, header, payload] { TransmitToAll(from, header, payload); });
 }
 
 void WirelessNetwork::Flood(NodeId from, const Bytes& payload) {
   trace_.MessageSent(from);
   MessageHeader h = NewHeader(from, MessageHeader::kFlood, kBroadcast);
   floods_seen_[from].insert({h.origin, h.sequence});
-  Transmit(from, ns3::Ipv4Address::GetBroadcast(), h, payload);
+  TransmitToAll(from, h, payload);
 }
 
 void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
   ns3::Address from;
   while (ns3::Ptr<ns3::Packet> packet = socket->RecvFrom(from)) {
     ns3::SocketIpTtlTag ttl;
-    const bool has_ttl = packet->RemovePacketTag(ttl);
+    ns3::SocketIpv6HopLimitTag hop_limit;
+    std::optional<int> hops_left;
+    if (packet->RemovePacketTag(ttl)) hops_left = ttl.GetTtl();
+    if (packet->RemovePacketTag(hop_limit)) hops_left = hop_limit.GetHopLimit();
     MessageHeader h;
     if (packet->RemoveHeader(h) == 0 || h.origin >= nodes_.GetN()) continue;  // not ours
     if (h.kind == MessageHeader::kRouteProbe || h.origin == node) continue;
@@ -345,9 +435,10 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
         if (h.destination != node) continue;
         m.delivery = Delivery::kUnicast;
         m.to = node;
-        if (has_ttl) m.hops = kDefaultTtl - ttl.GetTtl() + 1;
+        if (hops_left) m.hops = kDefaultTtl - *hops_left + 1;
         break;
       case MessageHeader::kBroadcast:
+        if (SeenTwice(node, h)) continue;
         m.delivery = Delivery::kBroadcast;
         m.hops = 1;
         break;
@@ -360,9 +451,8 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
           MessageHeader relay = h;
           relay.hops = static_cast<std::uint8_t>(h.hops + 1);
           relay.ttl = static_cast<std::uint8_t>(h.ttl - 1);
-          ns3::Simulator::Schedule(ns3::Seconds(jitter_->GetValue()), [this, node, relay, payload = m.payload] {
-            Transmit(node, ns3::Ipv4Address::GetBroadcast(), relay, payload);
-          });
+          ns3::Simulator::Schedule(ns3::Seconds(jitter_->GetValue()),
+                                   [this, node, relay, payload = m.payload] { TransmitToAll(node, relay, payload); });
         }
         break;
       }
@@ -374,7 +464,15 @@ void WirelessNetwork::Receive(NodeId node, ns3::Ptr<ns3::Socket> socket) {
   }
 }
 
+// Only when both ends have two radios can one broadcast arrive twice.
+bool WirelessNetwork::SeenTwice(NodeId node, const MessageHeader& h) {
+  if (!HasWifi(h.origin) || !HasLrWpan(h.origin) || !HasWifi(node) || !HasLrWpan(node)) return false;
+  return !broadcasts_seen_[node].insert({h.origin, h.sequence}).second;
+}
+
 void WirelessNetwork::JoinTap(NodeId id, int fd, const std::string& tap_mac) {
+  if (!HasWifi(id))
+    throw std::invalid_argument("node " + names_.at(id) + " has no 802.11 radio: taps join 802.11 radios only");
   TapPort::Network network;
   network.kept_udp_ports = {spec_.port};
   if (spec_.routing == Routing::kAodv) network.kept_udp_ports.insert(kAodvPort);
@@ -397,6 +495,7 @@ double WirelessNetwork::TxPower(NodeId id, const NodeRadio& radio) const {
 }
 
 double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
+  if (!(HasWifi(from) && HasWifi(to)) && HasLrWpan(from) && HasLrWpan(to)) return lr_wpan_->ReceivedPower(from, to);
   return mean_loss_->CalcRxPower(TxPower(from, radios_.at(from)), nodes_.Get(from)->GetObject<ns3::MobilityModel>(),
                                  nodes_.Get(to)->GetObject<ns3::MobilityModel>());
 }
@@ -404,16 +503,23 @@ double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
 // ns-3 3.37 cannot switch a sleeping PHY off (WifiPhyStateHelper::SwitchToOff aborts the process
 // on any state but idle, busy, transmitting or receiving): it wakes first, in the same instant.
 void WirelessNetwork::SwitchOff(NodeId node) {
+  if (HasLrWpan(node)) lr_wpan_->SwitchOff(node);
+  if (!HasWifi(node)) return;
   ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
   if (phy->IsStateSleep()) phy->ResumeFromSleep();
   phy->SetOffMode();
 }
 
+bool WirelessNetwork::IsOff(NodeId node) const {
+  return HasWifi(node) ? Phy(node)->IsStateOff() : HasLrWpan(node) && lr_wpan_->IsOff(node);
+}
+
 // Awake: a radio put to sleep before it went off wakes with the node.
 void WirelessNetwork::SwitchOn(NodeId node) {
-  if (!Phy(node)->IsStateOff()) return;
+  if (!IsOff(node)) return;
   if (node < sleep_wanted_.size()) sleep_wanted_[node] = false;
-  Phy(node)->ResumeFromOff();
+  if (HasWifi(node)) Phy(node)->ResumeFromOff();
+  if (HasLrWpan(node)) lr_wpan_->SwitchOn(node, false);
   if (node < cycle_asleep_.size()) ApplySleep(node);  // back in its duty cycle
 }
 
@@ -421,7 +527,7 @@ void WirelessNetwork::SwitchOn(NodeId node) {
 // receiving: ns-3's own SetSleepMode would otherwise defer itself to the end of the frame and
 // could put to sleep a radio woken in the meantime (or one switched off).
 bool WirelessNetwork::SetSleep(NodeId node, bool asleep) {
-  if (Phy(node)->IsStateOff()) return false;
+  if (IsOff(node)) return false;
   if (sleep_wanted_.size() <= node) sleep_wanted_.resize(node + 1, false);
   sleep_wanted_[node] = asleep;
   ApplySleep(node);
@@ -452,13 +558,13 @@ void WirelessNetwork::CycleStep(NodeId node) {
   ns3::Simulator::Schedule(wait, &WirelessNetwork::CycleStep, this, node);
 }
 
-ns3::Ptr<ns3::WifiPhy> WirelessNetwork::Phy(NodeId node) const {
-  return ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(node))->GetPhy();
-}
+ns3::Ptr<ns3::WifiPhy> WirelessNetwork::Phy(NodeId node) const { return wifi_.at(node)->GetPhy(); }
 
 void WirelessNetwork::ApplySleep(NodeId node) {
-  ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
   const bool wanted = sleep_wanted_[node] || (node < cycle_asleep_.size() && cycle_asleep_[node]);
+  if (HasLrWpan(node)) lr_wpan_->SetAsleep(node, wanted);
+  if (!HasWifi(node)) return;
+  ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
   if (phy->IsStateOff() || wanted == phy->IsStateSleep()) return;
   if (!wanted) return phy->ResumeFromSleep();
   if (phy->IsStateTx() || phy->IsStateRx() || phy->IsStateSwitching()) {  // after this frame, if still wanted
@@ -481,29 +587,34 @@ void WirelessNetwork::Open(trace::ResultsFolder& folder) {
 // One file per node with every 802.11 frame its radio sent or received, in a temporary folder
 // that the results folder moves into place when the run ends.
 void WirelessNetwork::OpenPcap(NodeId id) {
+  if (HasLrWpan(id)) lr_wpan_->OpenPcap(id, pcap_dir_ + "/" + names_[id] + "-802.15.4.pcap");
+  if (pcap_.size() <= id) pcap_.resize(id + 1);
+  if (!HasWifi(id)) return;
   auto file = ns3::CreateObject<ns3::PcapFileWrapper>();
   file->Open(pcap_dir_ + "/" + names_[id] + ".pcap", std::ios::out | std::ios::binary);
   file->Init(kDltIeee80211);
-  pcap_.push_back(file);
-  auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(devices_.Get(id))->GetPhy();
+  pcap_[id] = file;
+  auto phy = Phy(id);
   phy->TraceConnectWithoutContext(
       "MonitorSnifferTx",
       ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t>(
           [this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, uint16_t) {
-            if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
+            if (id < pcap_.size() && pcap_[id]) pcap_[id]->Write(ns3::Simulator::Now(), p);
           }));
   phy->TraceConnectWithoutContext(
       "MonitorSnifferRx",
       ns3::Callback<void, ns3::Ptr<const ns3::Packet>, uint16_t, ns3::WifiTxVector, ns3::MpduInfo, ns3::SignalNoiseDbm,
                     uint16_t>([this, id](ns3::Ptr<const ns3::Packet> p, uint16_t, ns3::WifiTxVector, ns3::MpduInfo,
                                          ns3::SignalNoiseDbm, uint16_t) {
-        if (id < pcap_.size()) pcap_[id]->Write(ns3::Simulator::Now(), p);
+        if (id < pcap_.size() && pcap_[id]) pcap_[id]->Write(ns3::Simulator::Now(), p);
       }));
 }
 
 void WirelessNetwork::Close() {
-  for (auto& file : pcap_) file->Close();
+  for (auto& file : pcap_)
+    if (file) file->Close();
   pcap_.clear();
+  if (lr_wpan_) lr_wpan_->ClosePcaps();
   pcap_dir_.clear();
   if (flow_monitor_ && !flowmon_path_.empty()) {
     flow_monitor_->CheckForLostPackets();
@@ -518,10 +629,12 @@ void WirelessNetwork::Moved(const std::vector<NodeId>& nodes) {
 
 std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   NetworkTraces t;
-  t.radio = StandardName(spec_.standard);
+  t.radio = !spec_.wifi_in_use ? kLrWpanName
+            : lr_wpan_         ? std::string(StandardName(spec_.standard)) + "+" + kLrWpanName
+                               : StandardName(spec_.standard);
   t.routing = RoutingName(spec_.routing);
   t.data_rate_mbps = spec_.data_rate;
-  t.tx_power_dbm = spec_.tx_power;
+  t.tx_power_dbm = spec_.wifi_in_use ? spec_.tx_power : spec_.lr_wpan.tx_power;
   t.counts = trace_.counts();
   t.discoveries = trace_.discoveries();
   t.packet_logs = spec_.packet_log;

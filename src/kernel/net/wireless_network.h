@@ -23,6 +23,7 @@
 #include "net/frame_trace.h"
 #include "net/indexed_channel.h"
 #include "net/link_loss_models.h"
+#include "net/lr_wpan_radios.h"
 #include "net/message_header.h"
 #include "net/network_spec.h"
 #include "net/ns3_attributes.h"
@@ -38,8 +39,10 @@ class WirelessNetwork : public Transport {
  public:
   // `nodes` already carry their mobility models; `radios` holds per-node overrides; `walls`
   // are the obstacles that cost a frame crossing them (ObstacleLossModel), none by default.
+  // `lr_wpan_walls`: the same obstacles at 2.4 GHz, for the 802.15.4 radios, if any node has one.
   WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes, std::vector<std::string> names,
-                  const std::vector<NodeRadio>& radios, std::vector<RadioObstacle> walls = {});
+                  const std::vector<NodeRadio>& radios, std::vector<RadioObstacle> walls = {},
+                  std::vector<RadioObstacle> lr_wpan_walls = {});
   ~WirelessNetwork() override;
   // A node joins while the run goes (a robot a client spawned), with the next id: the same
   // radio, channel, routing and traces as the others. `node` already carries its mobility.
@@ -68,8 +71,10 @@ class WirelessNetwork : public Transport {
   void ObserveFrames(FrameObserver observer) override;
   void Moved(const std::vector<NodeId>& nodes) override;
   const AddressBook& addresses() const { return book_; }
-  // Node `id`'s Wi-Fi device (for the energy model that draws on its PHY's states).
-  ns3::Ptr<ns3::NetDevice> Device(NodeId id) const { return devices_.Get(id); }
+  // Node `id`'s Wi-Fi device (for the energy model that draws on its PHY's states); null without one.
+  ns3::Ptr<ns3::NetDevice> Device(NodeId id) const { return wifi_.at(id); }
+  // Node `id`'s 802.15.4 device; null without one.
+  ns3::Ptr<ns3::LrWpanNetDevice> LrWpanDevice(NodeId id) const { return lr_wpan_ ? lr_wpan_->Device(id) : nullptr; }
   const PacketTrace& packet_trace() const { return trace_; }
 
  private:
@@ -86,29 +91,41 @@ class WirelessNetwork : public Transport {
   std::int64_t AssignRoutingStreams(ns3::Ptr<ns3::Node> node, std::int64_t stream);
   void OpenSocket(NodeId id);
   void Receive(NodeId node, ns3::Ptr<ns3::Socket> socket);
-  void Transmit(NodeId from, ns3::Ipv4Address to, const MessageHeader& header, const Bytes& payload);
+  void InstallLrWpan(NodeId id);  // its 802.15.4 radio, after the IP stack
+  bool IsOff(NodeId node) const;
+  bool HasWifi(NodeId id) const { return wifi_.at(id) != nullptr; }
+  bool HasLrWpan(NodeId id) const { return lr_wpan_ && lr_wpan_->Has(id); }
+  void AssignAddress(NodeId id);
+  void Transmit(NodeId from, const ns3::Address& to, const MessageHeader& header, const Bytes& payload);
+  void TransmitToAll(NodeId from, const MessageHeader& header, const Bytes& payload);  // on every radio it has
+  bool SeenTwice(NodeId node, const MessageHeader& h);  // a broadcast from two radios, heard on both
   MessageHeader NewHeader(NodeId from, MessageHeader::Kind kind, NodeId destination);
   void OpenPcap(NodeId id);
 
   NetworkSpec spec_;
   Ns3Defaults ns3_defaults_;  // before every helper and object: network.ns3 in effect while they live
   // Kept for nodes that join later: they are installed exactly as the first ones.
-  ns3::WifiHelper wifi_;
+  ns3::WifiHelper wifi_helper_;
   RadioPhyHelper phy_;
   ns3::WifiMacHelper mac_;
   ns3::InternetStackHelper internet_;
   std::int64_t next_stream_ = 0;  // the first random stream nobody uses yet
   ns3::NodeContainer nodes_;
-  ns3::NetDeviceContainer devices_;
+  ns3::NetDeviceContainer devices_;                 // the 802.11 ones, in node order
+  std::vector<ns3::Ptr<ns3::WifiNetDevice>> wifi_;  // by node id; null without an 802.11 radio
+  std::unique_ptr<LrWpanRadios> lr_wpan_;           // when a node has an 802.15.4 radio
+  ns3::Ptr<ObstacleLossModel> lr_wpan_walls_;
   std::vector<bool> sleep_wanted_;  // per node: what SetSleep asked for last
   std::vector<bool> cycle_asleep_;  // per node: whether its duty cycle has it asleep now
   AddressBook book_;
   std::vector<std::string> names_;
   PacketTrace trace_;
-  std::vector<ns3::Ptr<ns3::Socket>> sockets_;
+  std::vector<ns3::Ptr<ns3::Socket>> sockets_;   // by node id: IPv4 over 802.11, or null
+  std::vector<ns3::Ptr<ns3::Socket>> sockets6_;  // by node id: IPv6 over 802.15.4, or null
   std::vector<std::unique_ptr<RoutingView>> views_;
   std::vector<std::uint32_t> next_sequence_;
-  std::vector<std::set<std::pair<std::uint32_t, std::uint32_t>>> floods_seen_;  // (origin, sequence)
+  std::vector<std::set<std::pair<std::uint32_t, std::uint32_t>>> floods_seen_;      // (origin, sequence)
+  std::vector<std::set<std::pair<std::uint32_t, std::uint32_t>>> broadcasts_seen_;  // from nodes with two radios
   ns3::Ptr<ns3::UniformRandomVariable> jitter_;
   Receiver receiver_;
   std::string flowmon_path_;  // temporary, in the results folder

@@ -6,6 +6,7 @@
 
 #include "scenario/energy_fields.h"
 #include "scenario/link_variation_fields.h"
+#include "scenario/lr_wpan_fields.h"
 #include "scenario/sensor_fields.h"
 
 namespace sanet::scenario {
@@ -227,6 +228,7 @@ void ReadChannel(const Field& c, net::NetworkSpec& n) {
 }
 
 YAML::Node PrintChannel(const net::NetworkSpec& n) {
+  if (!n.wifi_in_use) return YAML::Node();
   YAML::Node out = ChannelFields().Print(n);
   if (n.channel != net::ChannelModel::kIndexed) out.remove("floor");
   return out;
@@ -255,17 +257,6 @@ YAML::Node PrintNs3(const net::NetworkSpec& n) {
   return out;
 }
 
-void ReadRadio(const Field& radio, net::NetworkSpec& n) {
-  const std::string text = radio.Text();
-  if (text == "802.15.4" || text == "lr-wpan" || text == "lrwpan")
-    radio.Fail(
-        "802.15.4 is not available: ns-3 carries only IPv6 (6LoWPAN) over it, and its AODV, "
-        "OLSR, DSDV and DSR route IPv4 only");
-  for (auto s : {net::WifiStandard::k80211b, net::WifiStandard::k80211g, net::WifiStandard::k80211a})
-    if (text == net::StandardName(s)) return void(n.standard = s);
-  radio.Fail("unknown value '" + text + "' (expected one of: 802.11b, 802.11g, 802.11a)");
-}
-
 void ReadDataRate(const Field& rate, net::NetworkSpec& n) {
   const std::vector<double> rates = net::DataRates(n.standard);
   n.data_rate = rate.Number(0, 1000);
@@ -281,21 +272,39 @@ void ReadPort(const Field& port, net::NetworkSpec& n) {
     if (n.port == taken) port.Fail(std::string("is the port of ") + by + "'s own messages");
 }
 
+// What the network writes besides the run's own results.
+void TraceFlags(Fields<net::NetworkSpec>& f) {
+  using net::NetworkSpec;
+  f.Flag("pcap", Member(&NetworkSpec::pcap),
+         "write `pcap/<node>.pcap` (802.11 frames; `pcap/<node>-802.15.4.pcap` for an 802.15.4 radio)");
+  f.Flag("flow_monitor", Member(&NetworkSpec::flow_monitor), "write `flowmon.xml`");
+  f.Flag("packet_log", Member(&NetworkSpec::packet_log), "write `packets/<node>.csv`");
+}
+
+// A number of the 802.11 radios', printed only when some node has one.
+void WifiNumber(Fields<net::NetworkSpec>& f, const char* key, double net::NetworkSpec::*member, const char* unit,
+                double min, double max, const char* meaning) {
+  f.Custom(
+      {key, "number", unit, "", RangeText(min, max, false), meaning},
+      [=](const Field& v, net::NetworkSpec& n) { n.*member = v.Number(min, max); },
+      [=](const net::NetworkSpec& n) { return n.wifi_in_use ? NumberNode(n.*member) : YAML::Node(); });
+}
+
 }  // namespace
 
 const Fields<net::NetworkSpec>& NetworkFields() {
   using net::NetworkSpec;
   static const Fields<NetworkSpec> fields = [] {
     Fields<NetworkSpec> f;
-    f.Custom({"radio", "text", "", "`802.11b`", "`802.11b`, `802.11g`, `802.11a`", "the 802.11 standard"}, ReadRadio,
-             [](const NetworkSpec& n) { return YAML::Node(std::string(net::StandardName(n.standard))); });
+    f.Custom(NetworkRadioEntry(), ReadNetworkRadio, PrintNetworkRadio);
     f.Custom(
         {"data_rate", "number", "Mbps", "the standard's lowest: `1` (802.11b), `6` (802.11g, 802.11a)",
          "802.11b: 1, 2, 5.5, 11; 802.11g and 802.11a: 6, 9, 12, 18, 24, 36, 48, 54", "rate of unicast data frames"},
-        ReadDataRate, [](const NetworkSpec& n) { return NumberNode(n.data_rate); });
-    f.Number("tx_power", Member(&NetworkSpec::tx_power), "dBm", -50, 60, "every node's transmit power");
-    f.Number("rx_threshold", Member(&NetworkSpec::rx_threshold), "dBm", -150, 0,
-             "weakest signal at which a frame is detected");
+        ReadDataRate, [](const NetworkSpec& n) { return n.wifi_in_use ? NumberNode(n.data_rate) : YAML::Node(); });
+    WifiNumber(f, "tx_power", &NetworkSpec::tx_power, "dBm", -50, 60,
+               "every 802.11 radio's transmit power unless a node sets its own");
+    WifiNumber(f, "rx_threshold", &NetworkSpec::rx_threshold, "dBm", -150, 0,
+               "weakest signal at which an 802.11 radio detects a frame");
     f.Custom(
         {"propagation", "mapping", "", "log-distance, see below", "see [propagation](#propagation)", "path loss model"},
         ReadPropagation, PrintPropagation);
@@ -331,9 +340,9 @@ const Fields<net::NetworkSpec>& NetworkFields() {
     f.Custom({"port", "whole number", "", "", "[1, 65535], not 654, 698 or 269 (AODV, OLSR, DSDV)",
               "UDP port of controller messages"},
              ReadPort, [](const NetworkSpec& n) { return YAML::Node(static_cast<int>(n.port)); });
-    f.Flag("pcap", Member(&NetworkSpec::pcap), "write `pcap/<node>.pcap`");
-    f.Flag("flow_monitor", Member(&NetworkSpec::flow_monitor), "write `flowmon.xml`");
-    f.Flag("packet_log", Member(&NetworkSpec::packet_log), "write `packets/<node>.csv`");
+    f.Custom(LrWpanEntry(), ReadLrWpan,
+             [](const NetworkSpec& n) { return n.lr_wpan_in_use ? PrintLrWpan(n) : YAML::Node(); });
+    TraceFlags(f);
     f.Custom({"ns3", "mapping", "", "none", "ns-3 attribute names to values, see [ns-3 attributes](#ns-3-attributes)",
               "defaults of ns-3's own attributes (routing, MAC, PHY, channel)"},
              ReadNs3, PrintNs3);
@@ -719,10 +728,8 @@ YAML::Node PrintDutyCycle(const net::NodeRadio& r) {
 const Fields<net::NodeRadio>& RadioFields() {
   static const Fields<net::NodeRadio> fields = [] {
     Fields<net::NodeRadio> f;
-    f.Custom(
-        {"tx_power", "number", "dBm", "`network.tx_power`", "[−50, 60]", "this node's transmit power"},
-        [](const Field& v, net::NodeRadio& r) { r.tx_power = v.Number(-50, 60); },
-        [](const net::NodeRadio& r) { return r.tx_power ? NumberNode(*r.tx_power) : YAML::Node(); });
+    f.Custom(NodeStandardEntry(), ReadNodeStandard, PrintNodeStandard);
+    f.Custom(NodeTxPowerEntry(), ReadNodeTxPower, PrintNodeTxPower);
     f.Custom(
         {"antenna_height", "number", "m", "`0`", "[0, 1000]",
          "the antenna above the node's centre, for the walls between antennas only (path loss keeps its distances)"},
@@ -1125,6 +1132,7 @@ std::vector<SectionTable> SectionTables() {
       {"network.propagation.fading", FadingFields().Describe(net::NetworkSpec{})},
       {"network.hardware_spread", HardwareSpreadFields().Describe(net::NetworkSpec{})},
       {"network.channel", ChannelFields().Describe(net::NetworkSpec{})},
+      {"network.lr_wpan", LrWpanFields().Describe(net::LrWpanSpec{})},
       {"nodes.node", NodeFields().Describe(Keys{})},
       {"nodes.grid_item", GridItemFields().Describe(Keys{})},
       {"nodes.grid", GridFields().Describe(GridSettings{})},
@@ -1133,6 +1141,7 @@ std::vector<SectionTable> SectionTables() {
       {"radio", RadioFields().Describe(net::NodeRadio{})},
       {"energy", EnergyFields().Describe(energy::EnergySpec{})},
       {"energy.radio", RadioEnergyFields().Describe(energy::EnergySpec{})},
+      {"energy.lr_wpan_radio", LrWpanRadioEnergyFields().Describe(energy::EnergySpec{})},
       {"energy.wireless_charger", WirelessChargerFields().Describe(energy::WirelessCharger{})},
       {"world.chargers", ChargerFields().Describe(sim::Charger{})},
       {"controller", ControllerFields().Describe(sim::ControllerSpec{})},

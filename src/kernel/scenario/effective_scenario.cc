@@ -14,7 +14,8 @@ void PutRobot(YAML::Node& out, const robots::ModelSpec& model, const net::NodeRa
   out["model"] = robots::ModelName(model.kind);
   out["body"] = BodyFields(model.kind).Print(model);
   out["sensors"] = PrintSensors(model);
-  const bool own_radio = radio.tx_power || radio.antenna_height > 0 || radio.duty_cycle;
+  const bool own_radio =
+      radio.radios || radio.tx_power || radio.lr_wpan_tx_power || radio.antenna_height > 0 || radio.duty_cycle;
   if (has_network && own_radio) out["radio"] = RadioFields().Print(radio);
   if (energy) out["energy"] = EnergyFields().Print(*energy);
 }

@@ -16,21 +16,38 @@ std::string PresetNames(const std::string& quote) {
   return names;
 }
 
-void ReadPreset(const Field& f, EnergySpec& spec) {
+const energy::RadioPreset& PresetNamed(const Field& f) {
   const std::string name = f.Text();
   for (const energy::RadioPreset& p : energy::RadioPresets())
-    if (p.name == name) {
-      spec.radio_preset = name;
-      spec.radio = p.currents;
-      return;
-    }
+    if (p.name == name) return p;
   f.Fail("unknown radio preset '" + name + "' (expected one of: " + PresetNames("") + ")");
+}
+
+void ReadPreset(const Field& f, EnergySpec& spec) {
+  const energy::RadioPreset& p = PresetNamed(f);
+  spec.radio_preset = p.name;
+  spec.radio = p.currents;
+}
+
+void ReadLrWpanPreset(const Field& f, EnergySpec& spec) {
+  const energy::RadioPreset& p = PresetNamed(f);
+  spec.lr_wpan_radio = {p.name, p.currents};
 }
 
 // A current in A, printed back always (the preset's when the scenario gives none).
 void Current(Fields<EnergySpec>& f, const char* key, double RadioCurrents::*member, const char* meaning) {
   f.Number(
       key, [member](EnergySpec& s) -> double& { return s.radio.*member; }, "A", 0, 1000, meaning);
+}
+
+void LrWpanCurrent(Fields<EnergySpec>& f, const char* key, double RadioCurrents::*member, const char* meaning) {
+  f.Number(
+      key,
+      [member](EnergySpec& s) -> double& {
+        if (!s.lr_wpan_radio) s.lr_wpan_radio = {"cc2420", energy::RadioPresetNamed("cc2420").currents};
+        return s.lr_wpan_radio->currents.*member;
+      },
+      "A", 0, 1000, meaning);
 }
 
 // A key of the drive's costs: read into `drive` (which the loader keeps on robots only), printed
@@ -101,6 +118,22 @@ const Fields<EnergySpec>& RadioEnergyFields() {
   return fields;
 }
 
+const Fields<EnergySpec>& LrWpanRadioEnergyFields() {
+  static const Fields<EnergySpec> fields = [] {
+    Fields<EnergySpec> f;
+    f.Custom({"preset", "text", "", "`cc2420`", PresetNames("`"),
+              "the currents of a known radio (docs/energy.md lists their sources); the keys below change them"},
+             ReadLrWpanPreset, [](const EnergySpec& s) { return YAML::Node(s.lr_wpan_radio->preset); });
+    LrWpanCurrent(f, "tx_a", &RadioCurrents::tx_a, "while transmitting (the PHY's TX_ON and BUSY_TX)");
+    LrWpanCurrent(f, "rx_a", &RadioCurrents::rx_a, "while the receiver is on, listening or receiving");
+    LrWpanCurrent(f, "idle_a", &RadioCurrents::idle_a, "transceiver off while the radio is awake (CC2420: idle)");
+    LrWpanCurrent(f, "sleep_a", &RadioCurrents::sleep_a,
+                  "transceiver off while the radio is asleep (a duty cycle, SetRadioSleep; CC2420: power down)");
+    return f;
+  }();
+  return fields;
+}
+
 const Fields<EnergySpec>& EnergyFields() {
   static const Fields<EnergySpec> fields = [] {
     Fields<EnergySpec> f;
@@ -140,6 +173,15 @@ const Fields<EnergySpec>& EnergyFields() {
           ReadPreset(v, s);
         },
         [](const EnergySpec& s) { return RadioEnergyFields().Print(s); });
+    f.Custom(
+        {"lr_wpan_radio", "text or mapping", "", "`cc2420` on a node with an 802.15.4 radio",
+         "a preset's name, or a mapping (the table below); only on a node with an 802.15.4 radio",
+         "its 802.15.4 radio's current in each state (docs/energy.md#ieee-802154)"},
+        [](const Field& v, EnergySpec& s) {
+          if (v.IsMap()) return LrWpanRadioEnergyFields().Read(v, s);
+          ReadLrWpanPreset(v, s);
+        },
+        [](const EnergySpec& s) { return s.lr_wpan_radio ? LrWpanRadioEnergyFields().Print(s) : YAML::Node(); });
     DriveCosts(f);
     f.Custom(
         {"wireless_charger", "mapping", "", "none", "{power_w, range_m, alpha, beta} (the table below)",
@@ -153,9 +195,15 @@ const Fields<EnergySpec>& EnergyFields() {
   return fields;
 }
 
-energy::EnergySpec ReadEnergy(const Field& f, bool has_drive) {
+energy::EnergySpec ReadEnergy(const Field& f, bool has_drive, net::Radios radios) {
   EnergySpec spec;
   EnergyFields().Read(f, spec);
+  if (const auto radio = f.Get("radio"); radio && !radios.wifi)
+    radio->Fail("is an 802.11 radio's, and the node's only radio is 802.15.4: give its currents as lr_wpan_radio");
+  if (const auto radio = f.Get("lr_wpan_radio"); radio && !radios.lr_wpan)
+    radio->Fail("the node has no 802.15.4 radio");
+  if (radios.lr_wpan && !spec.lr_wpan_radio)
+    spec.lr_wpan_radio = {"cc2420", energy::RadioPresetNamed("cc2420").currents};
   if (!has_drive) {
     for (const char* key : {"motion_efficiency", "drive_idle_w", "rolling_resistance", "wireless_charger"})
       if (const auto v = f.Get(key)) v->Fail("is a robot's: a mote has no drive to carry it");

@@ -13,6 +13,7 @@
 #include "robots/node_model.h"
 #include "scenario/declarations.h"
 #include "scenario/energy_fields.h"
+#include "scenario/lr_wpan_fields.h"
 #include "scenario/placement.h"
 #include "scenario/sensor_fields.h"
 #include "sensors/sensor_registry.h"
@@ -126,6 +127,7 @@ net::NetworkSpec ReadNetwork(const Field& f) {
   net::NetworkSpec n;
   NetworkFields().Read(f, n);
   if (!f.Get("data_rate")) n.data_rate = net::DataRates(n.standard).front();
+  if (!n.radios.wifi && !f.Get("routing")) n.routing = net::Routing::kNone;  // 802.15.4: one hop
   return n;
 }
 
@@ -135,13 +137,14 @@ struct NodeTemplate {
   int controller_line = 0;
   net::NodeRadio radio;
   std::optional<energy::EnergySpec> energy;
+  net::Radios radio_set;  // the radios it carries (none without a network)
 };
 
 // A node with `energy` carries a battery sensor unless its `sensors` take it off; a battery
 // sensor on a node without one has nothing to read.
 void ReadEnergyAndSensors(const Field& f, NodeTemplate& t) {
   if (auto energy = f.Get("energy")) {
-    t.energy = ReadEnergy(*energy, robots::HasDrive(t.model));
+    t.energy = ReadEnergy(*energy, robots::HasDrive(t.model), t.radio_set);
     t.model.sensors["battery"] = {"battery", sensors::FindKind("battery")->DefaultSettings(t.model)};
   }
   if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
@@ -159,12 +162,23 @@ void ReadEnergyAndSensors(const Field& f, NodeTemplate& t) {
   }
 }
 
-NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, bool has_network) {
+// What reading the nodes' radios learns about the network: the run's 802.11 standard, when the
+// network's radio is 802.15.4 and a node with two radios names it.
+struct RadioContext {
+  net::NetworkSpec* network = nullptr;  // none: the scenario has no network
+  bool wifi_standard_named = false;
+};
+
+NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, RadioContext& radios) {
   NodeTemplate t;
   if (auto radio = f.Get("radio")) {
-    if (!has_network) radio->Fail("a node's radio needs a 'network' section in the scenario");
+    if (!radios.network) radio->Fail("a node's radio needs a 'network' section in the scenario");
     RadioFields().Read(*radio, t.radio);
+    ResolveNodeRadio(*radio, *radios.network, radios.wifi_standard_named, t.radio);
+  } else if (radios.network) {
+    t.radio.wifi_standard = radios.network->standard;
   }
+  t.radio_set = radios.network ? t.radio.RadiosIn(*radios.network) : net::Radios{false, false};
   t.model = sensors::DefaultModel(ReadModel(f.Require("model")));
   if (auto body = f.Get("body")) {
     ReadBody(*body, t.model);
@@ -226,7 +240,7 @@ void CheckPlace(const Field& where, Vec2 p) {
     where.Fail("lies more than 1e6 m from the origin, where the physics loses its precision");
 }
 
-void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& list) {
+void ReadGrid(const Field& n, const fs::path& dir, RadioContext& radios, NodeList& list) {
   n.ExpectKeys(GridItemFields().Keys());
   GridSettings g;
   GridFields().Read(n.Require("grid"), g);
@@ -239,7 +253,7 @@ void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& l
   CheckPlace(n.Require("grid"), origin);
   CheckPlace(n.Require("grid"), {origin.x + (cols - 1) * spacing.x, origin.y + (rows - 1) * spacing.y});
   const std::string& prefix = g.name;
-  const NodeTemplate t = ReadNodeTemplate(n, dir, has_network);
+  const NodeTemplate t = ReadNodeTemplate(n, dir, radios);
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c)
       list.Add(n.Require("grid").Require("name"), n.Require("grid"),
@@ -255,7 +269,7 @@ void ReadGrid(const Field& n, const fs::path& dir, bool has_network, NodeList& l
 // `scatter: {name, distribution, count | density | cluster keys, region, min_separation, seed}`:
 // nodes NAME0, NAME1, ... where the seed puts them (scenario/scatter.h), clear of the obstacles
 // and of the nodes listed before the item.
-void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, NodeList& list) {
+void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, RadioContext& radios, NodeList& list) {
   n.ExpectKeys(ScatterItemFields().Keys());
   const Field item = n.Require("scatter");
   const ScatterSettings s = ReadScatter(item);
@@ -264,7 +278,7 @@ void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, NodeList& 
                                  " nodes over the region; a scenario holds at most " + std::to_string(kMaxNodes));
   CheckPlace(item.Require("region"), s.region.min);
   CheckPlace(item.Require("region"), s.region.max);
-  const NodeTemplate t = ReadNodeTemplate(n, dir, sc.run.network.has_value());
+  const NodeTemplate t = ReadNodeTemplate(n, dir, radios);
   const double radius = robots::InscribedRadius(t.model);
   const StartingRoom room(sc.run);
   const Scattered drawn = Scatter(s, sc.run.seed, 2 * radius, [&](Vec2 p) { return room.Fits(p, radius); });
@@ -287,20 +301,20 @@ void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, NodeList& 
              t.controller_line);
 }
 
-std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc) {
+std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc, RadioContext& radios) {
   sim::RunSpec& run = sc.run;
   NodeList list(sc);
   for (const Field& n : nodes.Items()) {
     if (n.IsMap() && n.Get("grid")) {
-      ReadGrid(n, dir, run.network.has_value(), list);
+      ReadGrid(n, dir, radios, list);
       continue;
     }
     if (n.IsMap() && n.Get("scatter")) {
-      ReadScattered(n, dir, sc, list);
+      ReadScattered(n, dir, sc, radios, list);
       continue;
     }
     n.ExpectKeys(NodeFields().Keys());
-    const NodeTemplate t = ReadNodeTemplate(n, dir, run.network.has_value());
+    const NodeTemplate t = ReadNodeTemplate(n, dir, radios);
     const auto pose = n.Require("pose").Numbers(3);
     CheckPlace(n.Require("pose"), {pose[0], pose[1]});
     list.Add(n.Require("name"), n.Require("pose"),
@@ -469,12 +483,12 @@ void ReadEnd(const Field& end, sim::RunSpec& run) {
 
 void ReadOutputs(const Field& outputs, Scenario& sc) { OutputsFields().Read(outputs, sc); }
 
-sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, bool has_network) {
+sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, RadioContext& radios) {
   item.ExpectKeys(SpawnClassFields().Keys());
   sections::SpawnClass c;
   c.usarsim_class = item.Require("class").Text();
   if (c.usarsim_class.empty()) item.Require("class").Fail("a class needs a name");
-  const NodeTemplate t = ReadNodeTemplate(item, dir, has_network);
+  const NodeTemplate t = ReadNodeTemplate(item, dir, radios);
   if (t.model.kind == ModelKind::kMote) item.Require("model").Fail("a spawned robot is an omni3 or a diffdrive");
   c.model = t.model;
   c.radio = t.radio;
@@ -536,7 +550,7 @@ void ReadRos2(const Field& ros2, Scenario& sc) {
 }
 
 // After the nodes and the world: the default region is the field around them.
-void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc) {
+void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc, RadioContext& radios) {
   const sim::RunSpec& run = sc.run;
   sections::SpawnSpec s;
   s.region = sections::DefaultSpawnRegion(run);
@@ -544,7 +558,7 @@ void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc) {
   if (auto classes = spawn.Get("classes")) {
     std::map<std::string, int> lines;  // lower-case class -> line
     for (const Field& item : classes->Items()) {
-      s.classes.push_back(ReadSpawnClass(item, dir, run.network.has_value()));
+      s.classes.push_back(ReadSpawnClass(item, dir, radios));
       std::string key = s.classes.back().usarsim_class;
       for (char& ch : key) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
       if (auto [it, fresh] = lines.emplace(key, item.line()); !fresh)
@@ -557,6 +571,15 @@ void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc) {
   sc.spawn = s;
 }
 
+// The radios of every node and spawn class.
+std::vector<net::Radios> RadiosUsed(const Scenario& sc) {
+  std::vector<net::Radios> used;
+  for (const sim::NodeSpec& n : sc.run.nodes) used.push_back(n.radio.RadiosIn(*sc.run.network));
+  if (sc.spawn)
+    for (const sections::SpawnClass& c : sc.spawn->classes) used.push_back(c.radio.RadiosIn(*sc.run.network));
+  return used;
+}
+
 // The whole scenario from its (overridden) tree.
 void Read(const Field& root, Scenario& sc) {
   const std::string& path = sc.file;
@@ -566,7 +589,8 @@ void Read(const Field& root, Scenario& sc) {
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   if (auto world = root.Get("world")) ReadWorld(*world, run);
   CheckObstacleRadioNeedsANetwork(root, sc);
-  CheckWhereNodesStart(root, ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc), sc);
+  RadioContext radios{run.network ? &*run.network : nullptr};
+  CheckWhereNodesStart(root, ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc, radios), sc);
   ResolveNodePlaces(sc);
   if (auto messages = root.Get("messages")) ReadMessages(*messages, run);
   if (auto events = root.Get("events")) ReadEvents(*events, run);
@@ -576,7 +600,9 @@ void Read(const Field& root, Scenario& sc) {
   if (auto outputs = root.Get("outputs")) ReadOutputs(*outputs, sc);
   run.trace = sc.trace.value_or(run.nodes.size() <= kMaxTracedNodes);
   run.radio_contacts = sc.radio_contacts.value_or(run.nodes.size() <= kMaxTracedNodes);
-  if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), sc);
+  if (auto spawn = root.Get("spawn")) ReadSpawn(*spawn, fs::path(path).parent_path(), sc, radios);
+  if (auto network = root.Get("network"))
+    CheckRadiosInUse(*network, RadiosUsed(sc), radios.wifi_standard_named, *run.network);
   if (auto ros2 = root.Get("ros2")) ReadRos2(*ros2, sc);
   if (run.trajectory_interval < run.physics_step) {
     const auto outputs = root.Get("outputs");

@@ -101,7 +101,9 @@ void Assembly::BuildTransport() {
     for (const NodeSpec& n : run_nodes_) names.push_back(n.name), radios.push_back(n.radio);
     net::NetworkSpec network = *spec_.network;
     network.seed = spec_.seed;  // shadowing, fading and hardware spread draw from the run's seed
-    auto wireless = std::make_unique<net::WirelessNetwork>(network, nodes, names, radios, RadioWalls(spec_));
+    auto wireless = std::make_unique<net::WirelessNetwork>(
+        network, nodes, names, radios, RadioWalls(spec_),
+        network.lr_wpan_in_use ? RadioWalls(spec_, net::kLrWpanFrequencyHz) : std::vector<net::RadioObstacle>{});
     wireless_ = wireless.get();
     inner = std::move(wireless);
   } else {
@@ -148,7 +150,8 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
 // Depletion and revival are handled in an event of their own at the same instant: the battery
 // notices them inside ns-3's PHY and energy calls, which must not switch the radio meanwhile.
 void Assembly::AddBattery(NodeId id) {
-  ns3::Ptr<ns3::NetDevice> radio = wireless_ ? wireless_->Device(id) : nullptr;
+  energy::NodeEnergy::Radios radio;
+  if (wireless_) radio = {wireless_->Device(id), wireless_->LrWpanDevice(id)};
   double sensors_w = 0;
   for (const auto& [name, config] : run_nodes_[id].model.sensors) sensors_w += config.power_w;
   batteries_.Add(id, run_nodes_[id].energy, radio, sensors_w,

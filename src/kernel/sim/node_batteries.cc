@@ -11,14 +11,14 @@ nlohmann::ordered_json TimeOrNull(const std::optional<double>& t) { return t ? n
 
 }  // namespace
 
-void NodeBatteries::Add(NodeId id, const std::optional<energy::EnergySpec>& spec, ns3::Ptr<ns3::NetDevice> radio,
+void NodeBatteries::Add(NodeId id, const std::optional<energy::EnergySpec>& spec, energy::NodeEnergy::Radios radios,
                         double sensors_w, energy::NodeEnergy::Hooks hooks) {
   energies_.resize(id + 1);
   died_.resize(id + 1);
   first_died_.resize(id + 1);
   if (!spec) return;
   ns3::Ptr<ns3::Node> node = ns3::NodeList::GetNode(id);
-  energies_[id] = std::make_unique<energy::NodeEnergy>(*spec, node, radio, sensors_w, std::move(hooks));
+  energies_[id] = std::make_unique<energy::NodeEnergy>(*spec, node, radios, sensors_w, std::move(hooks));
   ++count_;
 }
 

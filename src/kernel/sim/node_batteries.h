@@ -19,8 +19,8 @@ class NodeBatteries {
  public:
   // Node `id` (the next one) with `spec`'s energy, or none; `radio` is its Wi-Fi device or null;
   // `sensors_w` what its sensors draw while it is on.
-  void Add(NodeId id, const std::optional<energy::EnergySpec>& spec, ns3::Ptr<ns3::NetDevice> radio, double sensors_w,
-           energy::NodeEnergy::Hooks hooks);
+  void Add(NodeId id, const std::optional<energy::EnergySpec>& spec, energy::NodeEnergy::Radios radios,
+           double sensors_w, energy::NodeEnergy::Hooks hooks);
   bool any() const { return count_ > 0; }
   energy::NodeEnergy* Of(NodeId id) const { return id < energies_.size() ? energies_[id].get() : nullptr; }
   std::vector<EnergyLevel> Levels() const;

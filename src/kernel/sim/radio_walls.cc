@@ -11,9 +11,12 @@ double RadioThickness(const Obstacle& obstacle) {
 }
 
 std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec) {
+  return spec.network ? RadioWalls(spec, net::FrequencyHz(spec.network->standard)) : std::vector<net::RadioObstacle>{};
+}
+
+std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec, double frequency) {
   std::vector<net::RadioObstacle> walls;
   if (!spec.network) return walls;
-  const double frequency = net::FrequencyHz(spec.network->standard);
   for (const Obstacle& o : spec.obstacles) {
     const double loss = o.radio_loss_db.value_or(
         net::SlabLossDb(o.material.value_or(spec.obstacle_material), RadioThickness(o), frequency));

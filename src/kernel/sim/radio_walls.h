@@ -12,6 +12,7 @@ namespace sanet::sim {
 
 // A wall's thickness is its width; a box's, the shorter of its sides seen from above.
 double RadioThickness(const Obstacle& obstacle);
-std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec);
+std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec);  // at the 802.11 standard's frequency
+std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec, double frequency_hz);  // at another band
 
 }  // namespace sanet::sim

@@ -19,6 +19,7 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(LawnmowerInfo());
   registry.Add(DataMuleSensorInfo());
   registry.Add(DataMuleCollectorInfo());
+  registry.Add(DataMuleSinkInfo());
   registry.Add(ChargedMoteInfo());
   registry.Add(ChargerRobotInfo());
 }

@@ -19,6 +19,7 @@ ControllerInfo TourInfo();
 ControllerInfo LawnmowerInfo();
 ControllerInfo DataMuleSensorInfo();
 ControllerInfo DataMuleCollectorInfo();
+ControllerInfo DataMuleSinkInfo();
 ControllerInfo ChargedMoteInfo();
 ControllerInfo ChargerRobotInfo();
 

@@ -137,6 +137,9 @@ const Case kCases[] = {
      "network: {radio: 802.11b}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0], radio: {standard: [802.11g, "
      "802.15.4]}}\n",
      4, "nodes[0].radio.standard[0]", "share one channel"},
+    {"tap_without_wifi",
+     "network: {radio: 802.15.4}\nloop: {network: simulated}\nnodes:\n  - {name: r, model: omni3, pose: [0, 0, 0]}\n", 3,
+     "loop.network", "no 802.11 radio"},
     {"wifi_currents_on_lr_wpan_mote",
      "network: {radio: 802.15.4}\nnodes:\n  - {name: a, model: mote, pose: [0, 0, 0], energy: {battery_j: 10, "
      "radio: cc2420}}\n",

@@ -479,7 +479,7 @@ TEST(LrWpan, TheEffectiveScenarioReadsBackToTheSameRun) {
 // `energy.radio` (the 802.11 currents), which the loader refuses on such a node: `sanet validate
 // --print` gives a scenario that does not load. Disabled until scenario/energy_fields.cc prints
 // `radio` only on nodes with an 802.11 radio.
-TEST(LrWpan, DISABLED_TheEffectiveScenarioOfALoneLrWpanMoteWithABatteryLoads) {
+TEST(LrWpan, TheEffectiveScenarioOfALoneLrWpanMoteWithABatteryLoads) {
   constexpr const char* text = R"(duration: 3
 network: {radio: 802.15.4}
 nodes:

@@ -172,7 +172,7 @@ const Fields<EnergySpec>& EnergyFields() {
           if (v.IsMap()) return RadioEnergyFields().Read(v, s);
           ReadPreset(v, s);
         },
-        [](const EnergySpec& s) { return RadioEnergyFields().Print(s); });
+        [](const EnergySpec& s) { return s.wifi_radio ? RadioEnergyFields().Print(s) : YAML::Node(); });
     f.Custom(
         {"lr_wpan_radio", "text or mapping", "", "`cc2420` on a node with an 802.15.4 radio",
          "a preset's name, or a mapping (the table below); only on a node with an 802.15.4 radio",
@@ -202,6 +202,7 @@ energy::EnergySpec ReadEnergy(const Field& f, bool has_drive, net::Radios radios
     radio->Fail("is an 802.11 radio's, and the node's only radio is 802.15.4: give its currents as lr_wpan_radio");
   if (const auto radio = f.Get("lr_wpan_radio"); radio && !radios.lr_wpan)
     radio->Fail("the node has no 802.15.4 radio");
+  spec.wifi_radio = radios.wifi || !radios.lr_wpan;
   if (radios.lr_wpan && !spec.lr_wpan_radio)
     spec.lr_wpan_radio = {"cc2420", energy::RadioPresetNamed("cc2420").currents};
   if (!has_drive) {

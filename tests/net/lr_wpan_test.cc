@@ -489,5 +489,42 @@ nodes:
   EXPECT_NO_THROW(scenario::LoadScenarioText(printed, "effective.yaml")) << printed;
 }
 
+// Writes down its network view's neighbours at the times given.
+class NeighbourWatch : public Controller {
+ public:
+  NeighbourWatch(std::vector<double> times, std::vector<std::vector<NodeId>>* seen)
+      : times_(std::move(times)), seen_(seen) {}
+  void ControlStep(Node& node) override {
+    if (next_ < times_.size() && node.Now() >= times_[next_] - 1e-9)
+      ++next_, seen_->push_back(node.Network().Neighbours());
+  }
+
+ private:
+  std::vector<double> times_;
+  std::vector<std::vector<NodeId>>* seen_;
+  std::size_t next_ = 0;
+};
+
+// Without a routing protocol, a node's 802.15.4 neighbours are the nodes it heard in the last
+// 10 s: a mote that beacons until 5 s is a neighbour at 6 s and gone at 16 s; one out of range
+// never is.
+TEST(LrWpan, NeighboursAreTheNodesHeardLately) {
+  Probes probes({{{1, kBroadcast}, {3, kBroadcast}, {5, kBroadcast}}, {}, {{2, kBroadcast}}});
+  std::vector<std::vector<NodeId>> seen;
+  probes.registry.Add({"watch", "", [&seen](const Params&) {
+                         return std::make_unique<NeighbourWatch>(std::vector<double>{0.5, 6, 16}, &seen);
+                       }});
+  RunScenario(
+      "duration: 17\nnetwork: {radio: 802.15.4}\nnodes:\n"
+      "  - {name: near, model: mote, pose: [10, 0, 0], controller: {name: p0}}\n"
+      "  - {name: watcher, model: mote, pose: [0, 0, 0], controller: {name: watch}}\n"
+      "  - {name: far, model: mote, pose: [-60, 0, 0], controller: {name: p2}}\n",
+      probes.registry, "neighbours");
+  ASSERT_EQ(seen.size(), 3u);
+  EXPECT_TRUE(seen[0].empty());
+  EXPECT_EQ(seen[1], std::vector<NodeId>{0});
+  EXPECT_TRUE(seen[2].empty());
+}
+
 }  // namespace
 }  // namespace sanet

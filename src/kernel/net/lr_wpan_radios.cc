@@ -202,7 +202,17 @@ void LrWpanRadios::Sent(NodeId id, ns3::Ptr<const ns3::Packet> frame) {
 void LrWpanRadios::Heard(NodeId id, ns3::Ptr<const ns3::Packet> frame) {
   if (counts_) ++counts_->frames_received;
   Write(id, frame);
-  if (observer_) observer_(Describe(id, false, frame));
+  const FrameEvent e = Describe(id, false, frame);
+  if (e.peer) radios_[id].heard[*e.peer] = e.t;
+  if (observer_) observer_(e);
+}
+
+std::vector<NodeId> LrWpanRadios::Neighbours(NodeId id) const {
+  std::vector<NodeId> out;
+  const double since = ns3::Simulator::Now().GetSeconds() - kNeighbourWindow;
+  for (const auto& [node, when] : radios_.at(id).heard)
+    if (when >= since) out.push_back(node);
+  return out;
 }
 
 // What a frame is (data, broadcast or ack) and whom it is for or from, by its short addresses.

@@ -70,6 +70,10 @@ class LrWpanRadios {
   void ClosePcaps();
   // Frames each radio sent and received, for the run's trace.
   void ObserveFrames(FrameObserver observer);
+  // The nodes whose frames radio `id` received whole in the last kNeighbourWindow seconds (acks
+  // name no sender), in id order: its neighbours, where no routing protocol keeps any.
+  static constexpr double kNeighbourWindow = 10;
+  std::vector<NodeId> Neighbours(NodeId id) const;
   // A unicast that the MAC gave up on (no acknowledgement after its retries, or a busy channel).
   void OnMacDrop(std::function<void(NodeId, ns3::Ptr<const ns3::Packet>)> dropped) { mac_drop_ = std::move(dropped); }
 
@@ -81,6 +85,7 @@ class LrWpanRadios {
     double tx_power_dbm = 0;
     bool off = false;
     ns3::Ptr<ns3::PcapFileWrapper> pcap;
+    std::map<NodeId, double> heard;  // sender -> when its last frame arrived whole, s
   };
   void Trace(NodeId id);
   void Sent(NodeId id, ns3::Ptr<const ns3::Packet> frame);

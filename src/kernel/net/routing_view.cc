@@ -75,6 +75,10 @@ std::vector<NodeId> RoutingView::Neighbours() const {
   std::vector<NodeId> out;
   for (const RouteEntry& e : RoutingTable())
     if (e.valid && e.hops == 1 && e.next_hop == e.destination) out.push_back(e.destination);
+  if (!heard_) return out;
+  for (NodeId n : heard_()) out.push_back(n);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

@@ -6,7 +6,8 @@
 //   olsr  routing table (next hop, hops; all valid, no expiry), neighbours, requests
 //   dsr   requests only: ns-3 keeps DSR's route cache inside the protocol with no reader
 //   none  nothing: one-hop delivery, no table
-// Neighbours are the destinations one hop away with a valid route.
+// Neighbours are the destinations one hop away with a valid route, and on a node with an 802.15.4
+// radio (which no routing protocol serves) the nodes it heard in the last 10 s.
 #pragma once
 
 #include <ns3/node.h>
@@ -23,8 +24,10 @@ namespace sanet::net {
 class RoutingView : public NetworkView {
  public:
   // `probe` sends a route probe from this node towards a destination.
-  RoutingView(Routing routing, ns3::Ptr<ns3::Node> node, const AddressBook& book, std::function<void(NodeId)> probe)
-      : routing_(routing), node_(node), book_(book), probe_(std::move(probe)) {}
+  // `heard`: the nodes its 802.15.4 radio heard lately (none without one), neighbours too.
+  RoutingView(Routing routing, ns3::Ptr<ns3::Node> node, const AddressBook& book, std::function<void(NodeId)> probe,
+              std::function<std::vector<NodeId>()> heard = {})
+      : routing_(routing), node_(node), book_(book), probe_(std::move(probe)), heard_(std::move(heard)) {}
 
   std::string Protocol() const override { return RoutingName(routing_); }
   std::vector<RouteEntry> RoutingTable() const override;
@@ -40,6 +43,7 @@ class RoutingView : public NetworkView {
   ns3::Ptr<ns3::Node> node_;
   const AddressBook& book_;
   std::function<void(NodeId)> probe_;
+  std::function<std::vector<NodeId>()> heard_;
 };
 
 }  // namespace sanet::net

@@ -345,12 +345,17 @@ void WirelessNetwork::OpenSocket(NodeId id) {
   }
   sockets_.push_back(socket);
   sockets6_.push_back(socket6);
-  views_.push_back(std::make_unique<RoutingView>(spec_.routing, nodes_.Get(id), book_, [this, id](NodeId to) {
-    if (to >= nodes_.GetN() || to == id || !HasWifi(id) || !HasWifi(to)) return;
-    if (spec_.routing == Routing::kAodv && !views_[id]->HasValidRoute(to))
-      trace_.RouteNeeded(id, to, ns3::Simulator::Now().GetSeconds());
-    Transmit(id, ns3::InetSocketAddress(book_.Of(to), spec_.port), NewHeader(id, MessageHeader::kRouteProbe, to), {});
-  }));
+  views_.push_back(std::make_unique<RoutingView>(
+      spec_.routing, nodes_.Get(id), book_,
+      [this, id](NodeId to) {
+        if (to >= nodes_.GetN() || to == id || !HasWifi(id) || !HasWifi(to)) return;
+        if (spec_.routing == Routing::kAodv && !views_[id]->HasValidRoute(to))
+          trace_.RouteNeeded(id, to, ns3::Simulator::Now().GetSeconds());
+        Transmit(id, ns3::InetSocketAddress(book_.Of(to), spec_.port), NewHeader(id, MessageHeader::kRouteProbe, to),
+                 {});
+      },
+      HasLrWpan(id) ? std::function<std::vector<NodeId>()>([this, id] { return lr_wpan_->Neighbours(id); })
+                    : std::function<std::vector<NodeId>()>()));
 }
 
 MessageHeader WirelessNetwork::NewHeader(NodeId from, MessageHeader::Kind kind, NodeId destination) {

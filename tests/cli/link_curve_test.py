@@ -48,9 +48,9 @@ class LinkCurve(unittest.TestCase):
     def tearDownClass(cls):
         cls.tmp.cleanup()
 
-    def curve(self, name, *args, check=True):
+    def curve(self, name, *args, check=True, scenario=None):
         out = os.path.join(self.tmp.name, name)
-        done = subprocess.run([SANET, "link-curve", self.scenario, "-o", out, "--force", *args],
+        done = subprocess.run([SANET, "link-curve", scenario or self.scenario, "-o", out, "--force", *args],
                               capture_output=True, text=True)
         if check:
             self.assertEqual(done.returncode, 0, done.stderr)
@@ -105,6 +105,22 @@ class LinkCurve(unittest.TestCase):
         texts = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}text")]
         for region in ("connected", "transitional", "disconnected"):
             self.assertIn(region, texts)
+
+    def test_an_802154_network_is_measured_on_its_own_radio(self):
+        """0 dBm against -95 dBm over the log-distance path loss: 10^((0 + 95 - 46.6777) / 30) = 40.8 m."""
+        scenario = os.path.join(self.tmp.name, "lr-wpan.yaml")
+        with open(scenario, "w") as f:
+            f.write("name: motes\nduration: 10\nnetwork: {radio: 802.15.4}\n"
+                    "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\n")
+        done, rows, summary, _ = self.curve("lr-wpan", "--links", "5", "--frames", "5", scenario=scenario)
+        self.assertEqual(summary["status"], "completed", done.stderr)
+        edge = 10 ** ((0 + 95 - 46.6777) / 30)
+        for r in rows:
+            self.assertEqual(r["prr"], 1.0 if r["distance_m"] < edge else 0.0, r)
+            if r["prr"] == 1.0:
+                self.assertAlmostEqual(r["rssi_median_dbm"], r["mean_dbm"], places=3)
+        self.assertGreater(rows[-1]["distance_m"], edge)
+        self.assertAlmostEqual(summary["p50_dbm"], -95, delta=0.7)
 
     def test_the_same_seed_gives_the_same_curve_and_another_another(self):
         args = ["--links", "30", "--frames", "5", "--set", "network.propagation.shadowing.sigma_db=6"]

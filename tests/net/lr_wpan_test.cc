@@ -4,6 +4,8 @@
 // passes a mote's message on to a robot of the team; the CC2420's draw in each state is its time
 // there times its current and the voltage; the effective scenario reads back to the same run.
 #include <gtest/gtest.h>
+#include <ns3/constant-position-mobility-model.h>
+#include <ns3/simulator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "net/wireless_network.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "support/test_world.h"
@@ -524,6 +527,55 @@ TEST(LrWpan, NeighboursAreTheNodesHeardLately) {
   EXPECT_TRUE(seen[0].empty());
   EXPECT_EQ(seen[1], std::vector<NodeId>{0});
   EXPECT_TRUE(seen[2].empty());
+}
+
+// Two motes 10 m apart on 802.15.4, driven through the network itself: what node 1 receives.
+struct TwoMotes {
+  ns3::NodeContainer nodes;
+  std::vector<double> received_at;
+  std::unique_ptr<net::WirelessNetwork> network;
+  TwoMotes() {
+    nodes.Create(2);
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      auto at = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
+      at->SetPosition(ns3::Vector(10.0 * i, 0, 0.05));
+      nodes.Get(i)->AggregateObject(at);
+    }
+    net::NetworkSpec spec;
+    spec.radios = {false, true};
+    spec.wifi_in_use = false, spec.lr_wpan_in_use = true;
+    spec.routing = net::Routing::kNone;
+    spec.packet_log = false;
+    network = std::make_unique<net::WirelessNetwork>(spec, nodes, std::vector<std::string>{"a", "b"},
+                                                     std::vector<net::NodeRadio>(2));
+    network->SetReceiver([this](NodeId to, const Message&) {
+      if (to == 1) received_at.push_back(ns3::Simulator::Now().GetSeconds());
+    });
+  }
+  void SendAt(double t) {
+    ns3::Simulator::Schedule(ns3::Seconds(t), [this] { network->Send(0, 1, Bytes(20, 7)); });
+  }
+};
+
+// A radio switched off hears nothing and, back on, is reached at its own address again (ns-3's
+// IPv6 would have dropped it had the interface gone down).
+TEST(LrWpan, ASwitchedOffRadioIsSilentAndReachableOnceBack) {
+  {
+    TwoMotes motes;
+    motes.SendAt(1);
+    ns3::Simulator::Schedule(ns3::Seconds(2), [&] { motes.network->SwitchOff(1); });
+    motes.SendAt(3);
+    ns3::Simulator::Schedule(ns3::Seconds(4), [&] { motes.network->SwitchOn(1); });
+    motes.SendAt(5);
+    motes.SendAt(6);
+    ns3::Simulator::Stop(ns3::Seconds(7));
+    ns3::Simulator::Run();
+    ASSERT_EQ(motes.received_at.size(), 3u);
+    EXPECT_LT(motes.received_at[0], 2);
+    EXPECT_GT(motes.received_at[1], 5);
+    EXPECT_GT(motes.received_at[2], 6);
+  }
+  ns3::Simulator::Destroy();
 }
 
 }  // namespace

@@ -307,6 +307,26 @@ class ViewerTest(unittest.TestCase):
         finally:
             indoor.close()
 
+    def test_802154_motes_and_802_11_robots_each_have_their_range(self):
+        results = os.path.join(self.tmp.name, "mule-802154")
+        subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "data-mule-802154.yaml"), "--duration", "20",
+                        "-q", "-o", results], check=True, capture_output=True)
+        motes = nominal_range(os.path.join(results, "scenario.yaml"), os.path.join(self.tmp.name, "mote-curve"))
+        self.assertAlmostEqual(motes, 10 ** ((0 + 95 - 46.6777) / 30), delta=0.5, msg="the CC2420's range")
+        view = Viewer(results, os.path.join(self.tmp.name, "mule-802154-view"), "?ranges=all")
+        try:
+            view.call("window.sanet.ranges()")
+            ranges = view.state()["ranges"]
+            self.assertEqual(ranges["error"], None)
+            radios = sorted(ranges["radios"], key=lambda r: len(r["nodes"]))
+            self.assertEqual([len(r["nodes"]) for r in radios], [2, 30], "the robot and the base; the motes")
+            self.assertAlmostEqual(radios[1]["radius"], motes, delta=0.01)
+            self.assertAlmostEqual(radios[0]["radius"], 10 ** ((16 + 82 - 46.6777) / 30), delta=1,
+                                   msg="802.11b at 16 dBm against -82 dBm")
+            self.assertEqual(view.errors(), [])
+        finally:
+            view.close()
+
     def test_a_metric_of_events_is_drawn_as_a_running_total(self):
         results = os.path.join(self.tmp.name, "mule")
         subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "data-mule.yaml"), "--duration", "200", "-q",

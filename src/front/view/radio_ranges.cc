@@ -65,22 +65,35 @@ void MeasureRange(const sim::RunSpec& spec, RadioRange& range, const Stop& stop)
   range.power_dbm = sim::MeanPower(*spec.network, *range.radius_m);
 }
 
-// The nodes grouped by their radio's transmit power, in order of first appearance.
+// The nodes grouped by their radio and its transmit power, in order of first appearance: a node
+// with two radios by its 802.11 one (its team's).
 std::vector<RadioRange> Radios(const sim::RunSpec& spec) {
   std::vector<RadioRange> radios;
   for (std::size_t id = 0; id < spec.nodes.size(); ++id) {
-    const double power = spec.nodes[id].radio.tx_power.value_or(spec.network->tx_power);
-    auto same =
-        std::find_if(radios.begin(), radios.end(), [&](const RadioRange& r) { return r.tx_power_dbm == power; });
-    if (same == radios.end()) same = radios.insert(radios.end(), RadioRange{power});
+    const net::NodeRadio& radio = spec.nodes[id].radio;
+    const bool lr_wpan = !radio.RadiosIn(*spec.network).wifi;
+    const double power = lr_wpan ? radio.lr_wpan_tx_power.value_or(spec.network->lr_wpan.tx_power)
+                                 : radio.tx_power.value_or(spec.network->tx_power);
+    auto same = std::find_if(radios.begin(), radios.end(),
+                             [&](const RadioRange& r) { return r.tx_power_dbm == power && r.lr_wpan == lr_wpan; });
+    if (same == radios.end()) same = radios.insert(radios.end(), RadioRange{power, lr_wpan});
     same->nodes.push_back(static_cast<int>(id));
   }
   return radios;
 }
 
+// The network as a link curve measures `range`'s radio: that kind as the network's own, at its power.
+net::NetworkSpec RangeNetwork(const net::NetworkSpec& network, const RadioRange& range) {
+  net::NetworkSpec out = network;
+  out.radios = {!range.lr_wpan, range.lr_wpan};
+  net::SetDefaultTxPower(out, range.tx_power_dbm);
+  return out;
+}
+
 nlohmann::json RangeJson(const RadioRange& r) {
   nlohmann::json radius = r.radius_m ? nlohmann::json(*r.radius_m) : nlohmann::json(nullptr);
   return {{"tx_power_dbm", r.tx_power_dbm},
+          {"standard", r.lr_wpan ? net::kLrWpanName : "802.11"},
           {"radius_m", radius},
           {"precision_m", r.precision_m},
           {"power_dbm", r.power_dbm},
@@ -118,7 +131,7 @@ void RadioRanges::Measure() {
   for (RadioRange& range : radios_) {
     if (stop()) return;
     sim::RunSpec spec = *spec_;
-    spec.network->tx_power = range.tx_power_dbm;
+    spec.network = RangeNetwork(*spec_->network, range);
     MeasureRange(spec, range, stop);
   }
   const auto walls = sim::RadioWalls(*spec_);
@@ -144,8 +157,7 @@ nlohmann::json RadioRanges::Shape(std::size_t radio, double x, double y) {
     throw std::invalid_argument("no radio " + std::to_string(radio) + " with a range");
   const RadioRange& range = radios_[radio];
   const std::lock_guard<std::mutex> lock(ns3_);
-  net::NetworkSpec network = *spec_->network;
-  network.tx_power = range.tx_power_dbm;
+  const net::NetworkSpec network = RangeNetwork(*spec_->network, range);
   nlohmann::json points = nlohmann::json::array();
   const physics::Vec3 from{x, y, kAntennaHeight};
   for (int k = 0; k < kRangeBearings; ++k) {

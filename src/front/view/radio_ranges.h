@@ -28,6 +28,7 @@ constexpr int kRangeBearings = 180;      // of a shape through walls
 
 struct RadioRange {
   double tx_power_dbm = 0;
+  bool lr_wpan = false;              // an 802.15.4 radio's range, else an 802.11 one's
   std::vector<int> nodes;            // ids of the nodes with this radio
   std::optional<double> radius_m;    // unset: the curve never crosses 0.5 in its distances
   double precision_m = 0;            // half the fine step, plus the links' spread over the slope

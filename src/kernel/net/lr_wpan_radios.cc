@@ -37,9 +37,10 @@ class SensitivityCut : public ns3::PropagationLossModel {
   }
   static constexpr double kUnheardDb = 2000;  // past the channel's MaxLossDb: no reception scheduled
   void Set(ns3::Ptr<ns3::PropagationLossModel> losses, const std::vector<double>* tx_power_dbm,
-           const NetworkSpec* spec) {
+           const std::vector<bool>* off, const NetworkSpec* spec) {
     losses_ = std::move(losses);
     tx_power_dbm_ = tx_power_dbm;
+    off_ = off;
     spec_ = spec;
   }
 
@@ -48,6 +49,8 @@ class SensitivityCut : public ns3::PropagationLossModel {
                        ns3::Ptr<ns3::MobilityModel> b) const override {
     const ns3::Ptr<ns3::Node> from = a->GetObject<ns3::Node>(), to = b->GetObject<ns3::Node>();
     if (!from || !to || from->GetId() >= tx_power_dbm_->size()) return tx_power_dbm;
+    if ((*off_)[from->GetId()] || (to->GetId() < off_->size() && (*off_)[to->GetId()]))
+      return tx_power_dbm - kUnheardDb;  // a radio switched off neither sends nor receives
     const double sent = (*tx_power_dbm_)[from->GetId()];
     const double arrives = losses_->CalcRxPower(sent, a, b);
     const double sensitivity = spec_->lr_wpan.rx_threshold + NoiseFigureOffsetDb(*spec_, to->GetId());
@@ -58,6 +61,7 @@ class SensitivityCut : public ns3::PropagationLossModel {
 
   ns3::Ptr<ns3::PropagationLossModel> losses_;
   const std::vector<double>* tx_power_dbm_ = nullptr;
+  const std::vector<bool>* off_ = nullptr;
   const NetworkSpec* spec_ = nullptr;
 };
 
@@ -79,7 +83,7 @@ LrWpanRadios::LrWpanRadios(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> 
   const ChannelLosses losses = BuildChannelLosses(spec_, walls, kLrWpanFrequencyHz, spec_.lr_wpan.rx_threshold);
   mean_ = losses.mean;
   auto cut = ns3::CreateObject<SensitivityCut>();
-  cut->Set(losses.frames, &tx_power_dbm_, &spec_);
+  cut->Set(losses.frames, &tx_power_dbm_, &off_, &spec_);
   auto channel = ns3::CreateObject<ns3::SingleModelSpectrumChannel>();
   channel->SetAttribute("MaxLossDb", ns3::DoubleValue(SensitivityCut::kUnheardDb / 2));
   channel->AddPropagationLossModel(cut);
@@ -98,7 +102,7 @@ LrWpanRadios::LrWpanRadios(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> 
 LrWpanRadios::~LrWpanRadios() { ClosePcaps(); }
 
 void LrWpanRadios::Install(NodeId id, ns3::Ptr<ns3::Node> node, double tx_power_dbm) {
-  if (radios_.size() <= id) radios_.resize(id + 1), tx_power_dbm_.resize(id + 1, 0);
+  if (radios_.size() <= id) radios_.resize(id + 1), tx_power_dbm_.resize(id + 1, 0), off_.resize(id + 1, false);
   Radio& r = radios_[id];
   r.tx_power_dbm = tx_power_dbm;
   tx_power_dbm_[id] = tx_power_dbm;
@@ -157,19 +161,20 @@ void LrWpanRadios::SetAsleep(NodeId id, bool asleep) {
   if (!r.off && r.device->GetMac()->GetRxOnWhenIdle() == asleep) r.device->GetMac()->SetRxOnWhenIdle(!asleep);
 }
 
+// ns-3's lr-wpan MAC has no off state, and taking the IPv6 interface down would drop its address
+// for good: a radio switched off is cut from the channel instead, so that nothing it still sends
+// (its MAC's queue, retries) reaches anyone and nothing reaches it; its receiver is off.
 void LrWpanRadios::SwitchOff(NodeId id) {
   Radio& r = radios_.at(id);
   if (r.off) return;
-  r.off = true;
+  r.off = off_[id] = true;
   r.device->GetMac()->SetRxOnWhenIdle(false);
-  r.device->GetNode()->GetObject<ns3::Ipv6>()->SetDown(r.interface);
 }
 
 void LrWpanRadios::SwitchOn(NodeId id, bool asleep) {
   Radio& r = radios_.at(id);
   if (!r.off) return;
-  r.off = false;
-  r.device->GetNode()->GetObject<ns3::Ipv6>()->SetUp(r.interface);
+  r.off = off_[id] = false;
   r.device->GetMac()->SetRxOnWhenIdle(!asleep);
 }
 

@@ -13,7 +13,8 @@
 //   (`KnowNeighbour`) and turns duplicate address detection off.
 // - Asleep (a duty cycle or the controller), a radio keeps its receiver off while idle
 //   (macRxOnWhenIdle false): it still wakes to send and to hear the acknowledgement, as a mote's
-//   radio stack does. Switched off, its IPv6 interface is down and its receiver off.
+//   radio stack does. Switched off, its receiver is off and the channel carries nothing from or
+//   to it (ns-3's MAC has no off state).
 #pragma once
 
 #include <ns3/ipv6-address.h>
@@ -98,6 +99,7 @@ class LrWpanRadios {
   ns3::Ptr<ns3::PropagationLossModel> mean_;  // without fading, for ReceivedPower
   std::vector<Radio> radios_;                 // by node id; empty where a node has none
   std::vector<double> tx_power_dbm_;          // by node id, for the channel's losses
+  std::vector<bool> off_;                     // by node id: switched off, cut from the channel
   ChannelCounts* counts_ = nullptr;
   FrameObserver observer_;
   std::function<void(NodeId, ns3::Ptr<const ns3::Packet>)> mac_drop_;

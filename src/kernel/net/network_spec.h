@@ -134,6 +134,16 @@ struct NetworkSpec {
   std::uint64_t seed = 0;
 };
 
+// The network's own radio (`network.radio`: what a node that names none carries, and what a link
+// curve measures): its transmit power, threshold and carrier frequency. `SetDefaultTxPower` sets
+// that radio's power.
+inline double DefaultTxPower(const NetworkSpec& n) { return n.radios.wifi ? n.tx_power : n.lr_wpan.tx_power; }
+inline double DefaultThreshold(const NetworkSpec& n) { return n.radios.wifi ? n.rx_threshold : n.lr_wpan.rx_threshold; }
+inline double DefaultFrequencyHz(const NetworkSpec& n) {
+  return n.radios.wifi ? FrequencyHz(n.standard) : kLrWpanFrequencyHz;
+}
+inline void SetDefaultTxPower(NetworkSpec& n, double dbm) { (n.radios.wifi ? n.tx_power : n.lr_wpan.tx_power) = dbm; }
+
 // Radio settings a node may override.
 struct NodeRadio {
   std::optional<Radios> radios;            // unset: the network's

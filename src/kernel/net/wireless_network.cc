@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -185,7 +186,9 @@ void WirelessNetwork::InstallLrWpan(NodeId id) {
     lr_wpan_ = std::make_unique<LrWpanRadios>(spec_, lr_wpan_walls_);
     lr_wpan_->CountFrames(&frame_counts_);
     lr_wpan_->OnMacDrop([this](NodeId node, ns3::Ptr<const ns3::Packet> p) { trace_.MacDropped(node, p->GetSize()); });
+    if (frame_observer_) lr_wpan_->ObserveFrames(frame_observer_);  // a spawned robot's radio is the first
   }
+  if (lr_wpan_walls_) lr_wpan_walls_->SetAntennaHeight(nodes_.Get(id)->GetId(), radios_.at(id).antenna_height);
   const double power = radios_.at(id).lr_wpan_tx_power.value_or(spec_.lr_wpan.tx_power) + TxPowerOffsetDb(spec_, id);
   lr_wpan_->Install(id, nodes_.Get(id), power);
 }
@@ -272,6 +275,7 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
 }
 
 void WirelessNetwork::ObserveFrames(FrameObserver observer) {
+  frame_observer_ = observer;
   if (lr_wpan_) lr_wpan_->ObserveFrames(observer);
   frames_ = std::make_unique<FrameTrace>(std::move(observer));
   for (NodeId id = 0; id < nodes_.GetN(); ++id)
@@ -500,7 +504,9 @@ double WirelessNetwork::TxPower(NodeId id, const NodeRadio& radio) const {
 }
 
 double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
-  if (!(HasWifi(from) && HasWifi(to)) && HasLrWpan(from) && HasLrWpan(to)) return lr_wpan_->ReceivedPower(from, to);
+  if (!SharesWifi(from, to))
+    return HasLrWpan(from) && HasLrWpan(to) ? lr_wpan_->ReceivedPower(from, to)
+                                            : -std::numeric_limits<double>::infinity();
   return mean_loss_->CalcRxPower(TxPower(from, radios_.at(from)), nodes_.Get(from)->GetObject<ns3::MobilityModel>(),
                                  nodes_.Get(to)->GetObject<ns3::MobilityModel>());
 }
@@ -638,7 +644,7 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
             : lr_wpan_         ? std::string(StandardName(spec_.standard)) + "+" + kLrWpanName
                                : StandardName(spec_.standard);
   t.routing = RoutingName(spec_.routing);
-  t.data_rate_mbps = spec_.data_rate;
+  t.data_rate_mbps = spec_.wifi_in_use ? spec_.data_rate : kLrWpanRateMbps;
   t.tx_power_dbm = spec_.wifi_in_use ? spec_.tx_power : spec_.lr_wpan.tx_power;
   t.counts = trace_.counts();
   t.discoveries = trace_.discoveries();

@@ -50,12 +50,15 @@ class WirelessNetwork : public Transport {
   // Joins a real IP stack to node `id` through the tap `fd` (net/tap_port.h): the stack uses the
   // node's address (AddressBook), and its tap interface has the address `tap_mac`.
   void JoinTap(NodeId id, int fd, const std::string& tap_mac);
-  // The mean power (dBm) at which `to` receives `from`'s transmissions now: the channel's own
-  // propagation loss models at the nodes' positions (path loss, walls, shadowing: what ns-3
-  // itself computes for each frame, before the frame's fading).
+  // The mean power (dBm) at which `to` receives `from`'s transmissions now, on the radio they
+  // share (802.11 if both have one, else 802.15.4; -inf if none): the channel's own propagation
+  // loss models at the nodes' positions (path loss, walls, shadowing: what ns-3 itself computes
+  // for each frame, before the frame's fading).
   double ReceivedPower(NodeId from, NodeId to) const;
-  // Frames received weaker than this (dBm) are not detected.
-  double DetectionThreshold() const { return spec_.rx_threshold; }
+  // Frames that radio receives weaker than this (dBm) are not detected.
+  double DetectionThreshold(NodeId from, NodeId to) const {
+    return SharesWifi(from, to) || !HasLrWpan(from) || !HasLrWpan(to) ? spec_.rx_threshold : spec_.lr_wpan.rx_threshold;
+  }
 
   void SetReceiver(Receiver receiver) override { receiver_ = std::move(receiver); }
   void Send(NodeId from, NodeId to, const Bytes& payload) override;
@@ -94,6 +97,7 @@ class WirelessNetwork : public Transport {
   void InstallLrWpan(NodeId id);  // its 802.15.4 radio, after the IP stack
   bool IsOff(NodeId node) const;
   bool HasWifi(NodeId id) const { return wifi_.at(id) != nullptr; }
+  bool SharesWifi(NodeId a, NodeId b) const { return HasWifi(a) && HasWifi(b); }
   bool HasLrWpan(NodeId id) const { return lr_wpan_ && lr_wpan_->Has(id); }
   void AssignAddress(NodeId id);
   void Transmit(NodeId from, const ns3::Address& to, const MessageHeader& header, const Bytes& payload);
@@ -136,6 +140,7 @@ class WirelessNetwork : public Transport {
   std::vector<NodeRadio> radios_;  // per node
   std::vector<std::unique_ptr<TapPort>> taps_;
   std::unique_ptr<FrameTrace> frames_;  // while someone traces the frames
+  FrameObserver frame_observer_;        // the same, for an 802.15.4 radio made later
   TapLedger tap_ledger_;
   ns3::Ptr<IndexedWifiChannel> indexed_;           // with `channel: indexed`
   ns3::Ptr<ObstacleLossModel> walls_;              // in the channel's loss chain, if any obstacle costs

@@ -260,6 +260,7 @@ YAML::Node PrintNs3(const net::NetworkSpec& n) {
 void ReadDataRate(const Field& rate, net::NetworkSpec& n) {
   const std::vector<double> rates = net::DataRates(n.standard);
   n.data_rate = rate.Number(0, 1000);
+  if (!n.radios.wifi) return;  // the 802.11 standard is the one a node names: checked once it has
   if (std::find(rates.begin(), rates.end(), n.data_rate) != rates.end()) return;
   std::string list;
   for (double r : rates) list += (list.empty() ? "" : ", ") + ShortNumber(r);

@@ -474,7 +474,7 @@ void ReadLoop(const Field& loop, Scenario& sc) {
         .Fail("the agents' UDP port " + std::to_string(port) +
               " is network.port, which the simulated network serves itself");
   for (const sim::NodeSpec& n : run.nodes)
-    if (robots::HasDrive(n.model) && !n.radio.RadiosIn(*run.network).wifi)
+    if (sim::RunsAsAgent(n) && !n.radio.RadiosIn(*run.network).wifi)
       network.Fail("robot '" + n.name +
                    "' has no 802.11 radio: an agent's tap joins its robot's 802.11 radio (802.15.4 carries "
                    "IPv6 through 6LoWPAN, which taps do not); give it one (radio.standard) or use loop.network: host");

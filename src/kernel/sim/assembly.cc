@@ -269,7 +269,9 @@ void Assembly::SwitchOff(NodeId id) {
 
 std::optional<Signal> Assembly::SignalBetween(NodeId from, NodeId to) const {
   if (!wireless_) return std::nullopt;
-  return Signal{wireless_->ReceivedPower(from, to), wireless_->DetectionThreshold()};
+  const double power = wireless_->ReceivedPower(from, to);
+  if (std::isinf(power)) return std::nullopt;  // the two share no radio
+  return Signal{power, wireless_->DetectionThreshold(from, to)};
 }
 
 void Assembly::JoinTap(NodeId id, int fd, const std::string& tap_mac) {

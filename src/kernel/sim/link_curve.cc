@@ -66,6 +66,7 @@ net::NetworkSpec SetNetwork(const RunSpec& spec, int set) {
   network.routing = net::Routing::kNone;
   network.broadcast_jitter = 0;
   network.packet_log = network.pcap = network.flow_monitor = false;
+  network.wifi_in_use = network.radios.wifi, network.lr_wpan_in_use = network.radios.lr_wpan;
   network.seed = CounterRandom(spec.seed, {kSetKey, static_cast<std::uint64_t>(set)})();
   return network;
 }
@@ -73,13 +74,25 @@ net::NetworkSpec SetNetwork(const RunSpec& spec, int set) {
 // Frames the sender put on the air: a sender asked for frames faster than they take to send
 // drops some from its queue, and those were never sent.
 void CountSent(net::WirelessNetwork& wireless, SetHeard& heard) {
+  if (!wireless.Device(0)) return;  // an 802.15.4 radio: counted by CountLrWpanFrames
   ns3::DynamicCast<ns3::WifiNetDevice>(wireless.Device(0))
       ->GetPhy()
       ->TraceConnectWithoutContext("PhyTxBegin", ns3::Callback<void, ns3::Ptr<const ns3::Packet>, double>(
                                                      [&heard](ns3::Ptr<const ns3::Packet>, double) { ++heard.sent; }));
 }
 
+// 802.15.4: ns-3's lr-wpan PHY reports no frame's signal strength, so a frame received whole
+// counts with the mean power the channel computes for the pair (without its fading).
+void CountLrWpanFrames(net::WirelessNetwork& wireless, SetHeard& heard) {
+  wireless.ObserveFrames([&wireless, &heard](const net::FrameEvent& e) {
+    if (e.node == 0 && e.sent) ++heard.sent;
+    if (e.node > 0 && !e.sent && e.peer == NodeId{0})
+      heard.rssi_dbm[e.node - 1].push_back(wireless.ReceivedPower(0, e.node));
+  });
+}
+
 void ListenToStrengths(net::WirelessNetwork& wireless, std::size_t receivers, SetHeard& heard) {
+  if (!wireless.Device(0)) return CountLrWpanFrames(wireless, heard);
   for (std::size_t i = 0; i < receivers; ++i) {
     auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(wireless.Device(i + 1))->GetPhy();
     phy->TraceConnectWithoutContext(
@@ -99,8 +112,10 @@ SetHeard MeasureSet(const RunSpec& spec, const LinkCurveOptions& o, const std::v
   for (std::size_t i = 0; i < distances.size(); ++i) names.push_back("receiver" + std::to_string(i));
   SetHeard heard(distances.size());
   {
-    net::WirelessNetwork wireless(network, nodes, names, std::vector<net::NodeRadio>(nodes.GetN()),
-                                  o.along ? RadioWalls(spec) : std::vector<net::RadioObstacle>{});
+    const double frequency = net::DefaultFrequencyHz(network);
+    const std::vector<net::RadioObstacle> walls =
+        o.along ? RadioWalls(spec, frequency) : std::vector<net::RadioObstacle>{};
+    net::WirelessNetwork wireless(network, nodes, names, std::vector<net::NodeRadio>(nodes.GetN()), walls, walls);
     wireless.SetReceiver([&heard](NodeId to, const Message& m) {
       if (to == 0) return;
       ++heard.received[to - 1];
@@ -176,7 +191,7 @@ double MeanPower(const net::NetworkSpec& network, double distance) {
   auto to = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
   from->SetPosition({0, 0, kHeight});
   to->SetPosition({distance, 0, kHeight});
-  return net::PathLoss(network)->CalcRxPower(network.tx_power, from, to);
+  return net::PathLoss(network, net::DefaultFrequencyHz(network))->CalcRxPower(net::DefaultTxPower(network), from, to);
 }
 
 void DefaultDistances(const net::NetworkSpec& network, LinkCurveOptions& o) {
@@ -185,7 +200,7 @@ void DefaultDistances(const net::NetworkSpec& network, LinkCurveOptions& o) {
                       (network.fading.model == net::FadingModel::kNone
                            ? 0
                            : net::NakagamiFading(0, network.fading).GainQuantileDb(kFadingShare));
-  const double target = network.rx_threshold - lift - 3;
+  const double target = net::DefaultThreshold(network) - lift - 3;
   double far = 1;
   while (MeanPower(network, far) >= target && far < 1e6) far *= 2;
   for (double near = far / 2, i = 0; i < 50; ++i) {

@@ -25,7 +25,7 @@ std::string QuartileCells(const Quartiles& q) {
 // What the figure's title says of the radio (the y axis says it is a link curve): power,
 // shadowing, fading, spread.
 std::string RadioText(const net::NetworkSpec& n) {
-  std::string text = Number(n.tx_power) + " dBm";
+  std::string text = (n.radios.wifi ? "" : "802.15.4, ") + Number(net::DefaultTxPower(n)) + " dBm";
   if (n.shadowing.sigma_db > 0)
     text += ", shadowing " + Number(n.shadowing.sigma_db) + " dB/" + Number(n.shadowing.correlation_m) + " m";
   if (n.fading.model != net::FadingModel::kNone) text += ", Nakagami " + Number(n.fading.m);

@@ -578,5 +578,28 @@ TEST(LrWpan, ASwitchedOffRadioIsSilentAndReachableOnceBack) {
   ns3::Simulator::Destroy();
 }
 
+// In a network whose radio is 802.15.4, the 802.11 standard is the one a node names: its data
+// rates are accepted, and the effective scenario (which prints the rate) loads again.
+TEST(LrWpan, TheDataRateOfTheStandardANodeNamesReadsBack) {
+  const std::string text = R"(duration: 5
+network: {radio: 802.15.4, data_rate: 12}
+nodes:
+  - {name: r, model: omni3, pose: [0, 0, 0], radio: {standard: [802.11g, 802.15.4]}}
+  - {name: m, model: mote, pose: [5, 0, 0]}
+)";
+  const scenario::Scenario sc = scenario::LoadScenarioText(text, "rate.yaml");
+  EXPECT_EQ(sc.run.network->standard, net::WifiStandard::k80211g);
+  EXPECT_EQ(sc.run.network->data_rate, 12);
+  const std::string printed = scenario::Effective(sc).yaml;
+  const scenario::Scenario again = scenario::LoadScenarioText(printed, "effective.yaml");
+  const auto body = [](const std::string& yaml) { return yaml.substr(yaml.find('\n')); };  // past the file's name
+  EXPECT_EQ(body(scenario::Effective(again).yaml), body(printed));
+  EXPECT_THROW(scenario::LoadScenarioText(
+                   "duration: 5\nnetwork: {radio: 802.15.4, data_rate: 11}\nnodes:\n"
+                   "  - {name: r, model: omni3, pose: [0, 0, 0], radio: {standard: [802.11g, 802.15.4]}}\n",
+                   "eleven.yaml"),
+               scenario::ScenarioError);
+}
+
 }  // namespace
 }  // namespace sanet

@@ -138,7 +138,8 @@ const Case kCases[] = {
      "802.15.4]}}\n",
      4, "nodes[0].radio.standard[0]", "share one channel"},
     {"tap_without_wifi",
-     "network: {radio: 802.15.4}\nloop: {network: simulated}\nnodes:\n  - {name: r, model: omni3, pose: [0, 0, 0]}\n",
+     "network: {radio: 802.15.4}\nloop: {network: simulated}\nnodes:\n  - {name: r, model: omni3, pose: [0, 0, 0], "
+     "controller: {name: pinger}}\n",
      3, "loop.network", "no 802.11 radio"},
     {"wifi_currents_on_lr_wpan_mote",
      "network: {radio: 802.15.4}\nnodes:\n  - {name: a, model: mote, pose: [0, 0, 0], energy: {battery_j: 10, "

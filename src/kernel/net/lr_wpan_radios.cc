@@ -88,14 +88,14 @@ LrWpanRadios::LrWpanRadios(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> 
   channel->SetAttribute("MaxLossDb", ns3::DoubleValue(SensitivityCut::kUnheardDb / 2));
   channel->AddPropagationLossModel(cut);
   if (spec_.delay == DelayModel::kConstantSpeed) {
-    channel->SetPropagationDelayModel(ns3::CreateObject<ns3::ConstantSpeedPropagationDelayModel>());
+    delay_ = ns3::CreateObject<ns3::ConstantSpeedPropagationDelayModel>();
   } else {
-    auto delay = ns3::CreateObject<ns3::RandomPropagationDelayModel>();
-    delay->SetAttribute(
+    delay_ = ns3::CreateObject<ns3::RandomPropagationDelayModel>();
+    delay_->SetAttribute(
         "Variable",
         ns3::StringValue("ns3::UniformRandomVariable[Min=0.0|Max=" + std::to_string(spec_.random_delay_max) + "]"));
-    channel->SetPropagationDelayModel(delay);
   }
+  channel->SetPropagationDelayModel(delay_);
   channel_ = channel;
 }
 

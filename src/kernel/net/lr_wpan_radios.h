@@ -50,8 +50,9 @@ class LrWpanRadios {
   ns3::Ptr<ns3::LrWpanNetDevice> Device(NodeId id) const { return Has(id) ? radios_[id].device : nullptr; }
   // The device IPv6 sends through (sockets bind to it).
   ns3::Ptr<ns3::NetDevice> Interface(NodeId id) const { return radios_.at(id).sixlowpan; }
-  // Random streams from `stream` on: returns how many it took.
+  // Random streams from `stream` on: returns how many it took (a radio's; the channel's delays).
   std::int64_t AssignStreams(NodeId id, std::int64_t stream);
+  std::int64_t AssignChannelStreams(std::int64_t stream) { return delay_->AssignStreams(stream); }
 
   // Before `from` sends a unicast to `to`: the neighbour entry that maps `to`'s address to its
   // short address.
@@ -96,6 +97,7 @@ class LrWpanRadios {
 
   NetworkSpec spec_;
   ns3::Ptr<ns3::SpectrumChannel> channel_;
+  ns3::Ptr<ns3::PropagationDelayModel> delay_;
   ns3::Ptr<ns3::PropagationLossModel> mean_;  // without fading, for ReceivedPower
   std::vector<Radio> radios_;                 // by node id; empty where a node has none
   std::vector<double> tx_power_dbm_;          // by node id, for the channel's losses

@@ -220,6 +220,7 @@ void WirelessNetwork::AssignStreams() {
   // After every stream an 802.11 run had before 802.15.4 existed: those runs draw as they did.
   for (NodeId id = 0; id < nodes_.GetN(); ++id)
     if (HasLrWpan(id)) next_stream_ += lr_wpan_->AssignStreams(id, next_stream_);
+  if (lr_wpan_) next_stream_ += lr_wpan_->AssignChannelStreams(next_stream_);
 }
 
 std::int64_t WirelessNetwork::AssignRoutingStreams(ns3::Ptr<ns3::Node> node, std::int64_t stream) {

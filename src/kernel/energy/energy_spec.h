@@ -63,7 +63,7 @@ struct EnergySpec {
   std::optional<double> revive;  // a dead node comes back once recharged above this fraction
   double RevivesAbove() const { return revive.value_or(std::min(1.0, cutoff + 0.05)); }
   std::string radio_preset = "ns3_wifi";
-  RadioCurrents radio;  // its 802.11 radio's (WifiRadioEnergyModel)
+  RadioCurrents radio;     // its 802.11 radio's (WifiRadioEnergyModel)
   bool wifi_radio = true;  // false where the node's only radio is 802.15.4 (set by the loader): no `radio` then
   // Its 802.15.4 radio's tx, rx, idle and sleep currents (energy/lr_wpan_energy_model.h): set by
   // the loader on nodes with such a radio, the CC2420's unless the scenario says.

@@ -736,13 +736,14 @@ const Fields<net::NodeRadio>& RadioFields() {
          "the antenna above the node's centre, for the walls between antennas only (path loss keeps its distances)"},
         [](const Field& v, net::NodeRadio& r) { r.antenna_height = v.Number(0, 1000); },
         [](const net::NodeRadio& r) { return r.antenna_height > 0 ? NumberNode(r.antenna_height) : YAML::Node(); });
-    f.Custom({"duty_cycle", "mapping `{period_s, awake_s, phase_s}`", "s", "none: always awake; phase_s `0`",
-              "period_s in (0, 1e6], awake_s in (0, period_s], phase_s in [0, period_s) or `random`",
-              "the radio is awake `awake_s` of every `period_s`, from `phase_s` on (`random`: each node's drawn "
-              "from the seed), and asleep (802.11 sleep, `energy.radio.sleep_a`; an 802.15.4 radio's receiver off, "
-              "`energy.lr_wpan_radio.sleep_a`) the rest; frames an 802.11 radio is given while asleep "
-              "wait in the MAC's queue, an 802.15.4 radio sends them at once (see [duty cycles](energy.md#duty-cycles))"},
-             ReadDutyCycle, PrintDutyCycle);
+    f.Custom(
+        {"duty_cycle", "mapping `{period_s, awake_s, phase_s}`", "s", "none: always awake; phase_s `0`",
+         "period_s in (0, 1e6], awake_s in (0, period_s], phase_s in [0, period_s) or `random`",
+         "the radio is awake `awake_s` of every `period_s`, from `phase_s` on (`random`: each node's drawn "
+         "from the seed), and asleep (802.11 sleep, `energy.radio.sleep_a`; an 802.15.4 radio's receiver off, "
+         "`energy.lr_wpan_radio.sleep_a`) the rest; frames an 802.11 radio is given while asleep "
+         "wait in the MAC's queue, an 802.15.4 radio sends them at once (see [duty cycles](energy.md#duty-cycles))"},
+        ReadDutyCycle, PrintDutyCycle);
     return f;
   }();
   return fields;

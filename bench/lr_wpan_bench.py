@@ -14,13 +14,13 @@ loss cut-off). Every 802.15.4 unicast is acknowledged: it has about twice the fr
 
     bench/lr_wpan_bench.py [--sanet build/sanet] [--seconds 60] [--repeat 3]"""
 import argparse
-import json
 import os
-import statistics
-import subprocess
+import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from grey_zone_bench import measure  # noqa: E402  (median wall time of `repeat` runs, the last summary)
 RADIOS = {"802.11b": "{radio: 802.11b, tx_power: 5, routing: none, packet_log: false}",
           "802.15.4": "{radio: 802.15.4, routing: none, packet_log: false}"}
 
@@ -42,16 +42,6 @@ def field(radio):
     return "\n".join(lines) + "\n"
 
 
-def measure(sanet, scenario, out, seconds, repeat):
-    walls, summary = [], None
-    for _ in range(repeat):
-        subprocess.run([sanet, "run", scenario, "-q", "-o", out, "--duration", str(seconds)], check=True)
-        with open(os.path.join(out, "summary.json")) as f:
-            summary = json.load(f)
-        walls.append(summary["wall_time_s"])
-    return statistics.median(walls), summary
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--sanet", default=os.path.join(ROOT, "build", "sanet"))
@@ -66,7 +56,7 @@ def main():
             scenario = os.path.join(tmp, f"{radio}.yaml")
             with open(scenario, "w") as f:
                 f.write(field(radio))
-            wall, s = measure(a.sanet, scenario, os.path.join(tmp, radio), a.seconds, a.repeat)
+            wall, s = measure(a.sanet, scenario, os.path.join(tmp, radio), a.seconds, [], a.repeat)
             base = base or wall
             channel, packets = s["network"]["channel"], s["network"]["packets"]
             print(f"{radio:>9} {wall:>8.2f} {wall / base:>6.3f} {a.seconds / wall:>7.1f} {s['events']:>10} "

@@ -42,9 +42,7 @@ class DataMuleCollector : public Controller {
     tour_->ControlStep(node);
     if (node.Now() < next_beacon_) return;
     next_beacon_ = node.Now() + beacon_interval_;
-    Bytes beacon = Writer().U8(data_mule::kBeacon).bytes();
-    beacon.resize(beacon_size_, 0);
-    node.Broadcast(beacon);
+    node.Broadcast(data_mule::BeaconMessage(beacon_size_));
   }
 
   void OnMessage(Node& node, const Message& m) override {

@@ -21,6 +21,12 @@ struct Reading {
   double created = 0;  // s, simulated
 };
 
+inline Bytes BeaconMessage(int size) {
+  Bytes b = Writer().U8(kBeacon).bytes();
+  b.resize(size, 0);
+  return b;
+}
+
 inline Bytes ReadingMessage(const Reading& r, int size) {
   Bytes b = Writer().U8(kReading).U32(r.number).F64(r.created).bytes();
   if (static_cast<int>(b.size()) < size) b.resize(size, 0);

@@ -29,7 +29,7 @@ PINNED = {
     "scattered-field": (300, "a3035def5023f458"),  # 30 motes scattered from the seed, a touring mule (issue 49)
     "charging-robot": (600, "7b65c128f5c9a026"),  # a robot charges motes from their battery reports (issue 51)
     "data-mule": (300, "3378f8d98c992bcc"),  # motes keep readings until a touring robot collects them (issue 50)
-    "data-mule-802154": (600, "6bf1c9dbc23e2f73"),  # 802.15.4 motes, a two-radio robot, a base on 802.11 (issue 52)
+    "data-mule-802154": (600, "628e5c4eb6d59025"),  # 802.15.4 motes, a two-radio robot, a base on 802.11 (issue 52)
     "duty-cycled-motes": (300, "c3ae6bddc2b56796"),  # radios awake 1 s of 10, phases drawn from the seed (issue 51)
     "sensor-network": (60, "ca79ea1813db313a"),
     "sensor-network-energy": (600, "59b947a8e462943e"),  # on batteries: 24 of 26 motes die (issue 47)

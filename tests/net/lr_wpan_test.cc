@@ -20,6 +20,7 @@
 #include "net/wireless_network.h"
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
+#include "sim/assembly.h"
 #include "support/test_world.h"
 
 namespace sanet {
@@ -290,7 +291,7 @@ TEST(LrWpan, UnicastIsAcknowledgedAndRetried) {
     for (const MacFrame& f : tries) EXPECT_EQ(f.sequence, tries[0].sequence) << name << ": the same frame again";
     EXPECT_EQ(AcksOf(sent, tries[0].sequence), 0) << name;
     EXPECT_EQ(PacketRows(dir, name, ",dropped,mac,"), 1) << name;
-    EXPECT_EQ(PacketRows(dir, name, "refused_by_mac"), 1) << name;
+    EXPECT_EQ(PacketRows(dir, name, "mac_gave_up"), 1) << name;
   }
   EXPECT_TRUE(MacFrames(dir + "/pcap/off-802.15.4.pcap").empty()) << "a radio switched off hears nothing";
   EXPECT_TRUE(MacFrames(dir + "/pcap/far-802.15.4.pcap").empty()) << "nor one out of range";
@@ -599,6 +600,40 @@ nodes:
                    "  - {name: r, model: omni3, pose: [0, 0, 0], radio: {standard: [802.11g, 802.15.4]}}\n",
                    "eleven.yaml"),
                scenario::ScenarioError);
+}
+
+// The WSS's signal between two robots is that of the radio they share, against that radio's
+// threshold: 802.15.4 for two motes, 802.11 where both have it, none for a mote and a robot with
+// 802.11 only. An 802.15.4 antenna's height counts for the walls as an 802.11 one's does.
+TEST(LrWpan, SignalsAreThoseOfTheRadioTwoNodesShare) {
+  const std::string text = R"(duration: 1
+world:
+  obstacles:
+    - wall: {from: [5, -3], to: [5, 3], height: 1, radio_loss_db: 10}
+network: {radio: 802.15.4}
+nodes:
+  - {name: a, model: mote, pose: [0, 0, 0]}
+  - {name: b, model: mote, pose: [10, 0, 0]}
+  - {name: high, model: mote, pose: [0, 1, 0], radio: {antenna_height: 2}}
+  - {name: r1, model: omni3, pose: [0, -20, 0], radio: {standard: [802.11b, 802.15.4]}}
+  - {name: r2, model: omni3, pose: [10, -20, 0], radio: {standard: 802.11b}}
+)";
+  hosting::Registry registry;
+  sim::World world(scenario::LoadScenarioText(text, "signals.yaml").run, registry);
+  const auto& parts = world.parts();
+  const auto motes = parts.SignalBetween(0, 1);
+  ASSERT_TRUE(motes);
+  EXPECT_EQ(motes->threshold_dbm, -95);
+  EXPECT_NEAR(motes->received_dbm, 0 - kReferenceLoss - 30 - 10, 1e-6) << "10 m and the wall's 10 dB";
+  const auto over = parts.SignalBetween(2, 1);
+  ASSERT_TRUE(over);
+  EXPECT_NEAR(over->received_dbm, -kReferenceLoss - 10 * 3 * std::log10(std::hypot(10, 1)), 1e-6)
+      << "the high antenna's line clears the 1 m wall";
+  const auto robots = parts.SignalBetween(3, 4);
+  ASSERT_TRUE(robots);
+  EXPECT_EQ(robots->threshold_dbm, -82);
+  EXPECT_NEAR(robots->received_dbm, 16 - kReferenceLoss - 30, 1e-6) << "802.11b at its 16 dBm";
+  EXPECT_FALSE(parts.SignalBetween(0, 4)) << "a mote and an 802.11-only robot share no radio";
 }
 
 }  // namespace

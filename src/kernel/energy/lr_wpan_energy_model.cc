@@ -16,10 +16,10 @@ ns3::TypeId LrWpanEnergyModel::GetTypeId() {
   return tid;
 }
 
-void LrWpanEnergyModel::Attach(ns3::Ptr<ns3::LrWpanNetDevice> device) {
-  mac_ = device->GetMac();
+void LrWpanEnergyModel::Attach(ns3::Ptr<ns3::LrWpanNetDevice> device, std::function<bool()> sleeping) {
+  sleeping_ = std::move(sleeping);
   since_ = ns3::Simulator::Now();
-  state_ = mac_->GetRxOnWhenIdle() ? kRx : kSleep;
+  state_ = StateOf(phy_state_);
   device->GetPhy()->TraceConnectWithoutContext(
       "TrxState",
       ns3::Callback<void, ns3::Time, ns3::LrWpanPhyEnumeration, ns3::LrWpanPhyEnumeration>(
@@ -31,12 +31,13 @@ LrWpanEnergyModel::State LrWpanEnergyModel::StateOf(ns3::LrWpanPhyEnumeration ph
     case ns3::IEEE_802_15_4_PHY_BUSY_TX:
     case ns3::IEEE_802_15_4_PHY_TX_ON:
       return kTx;
-    case ns3::IEEE_802_15_4_PHY_RX_ON:
     case ns3::IEEE_802_15_4_PHY_BUSY_RX:
       return kRx;
-    default:  // TRX_OFF and FORCE_TRX_OFF
-      return mac_ && mac_->GetRxOnWhenIdle() ? kIdle : kSleep;
+    default:
+      break;
   }
+  if (sleeping_ && sleeping_()) return kSleep;
+  return phy == ns3::IEEE_802_15_4_PHY_RX_ON ? kRx : kIdle;
 }
 
 void LrWpanEnergyModel::PhyChanged(ns3::LrWpanPhyEnumeration state) {

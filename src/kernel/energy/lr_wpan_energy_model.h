@@ -1,15 +1,15 @@
 // An IEEE 802.15.4 transceiver's draw on ns-3's energy framework (ns-3 3.37 has no device energy
 // model for lr-wpan): the current of the state its PHY is in, from the PHY's TrxState trace.
 //
-//   PHY state (ns-3's LrWpanPhy)                 sanet state   CC2420 mode (datasheet)
-//   BUSY_TX, TX_ON                               tx            transmit
-//   RX_ON, BUSY_RX                               rx            receive (listening costs as much)
-//   TRX_OFF while the radio is awake             idle          idle: oscillator on
-//   TRX_OFF while it is asleep (receiver off)    sleep         power down
-//   the node switched off or dead                off           nothing
+//   PHY state (ns-3's LrWpanPhy)                       sanet state   CC2420 mode (datasheet)
+//   BUSY_TX, TX_ON                                     tx            transmit
+//   BUSY_RX; RX_ON unless asleep                       rx            receive (listening costs as much)
+//   asleep with its MAC idle (net::LrWpanRadios)       sleep         power down
+//   TRX_OFF                                            idle          idle: oscillator on
+//   the node switched off or dead                      off           nothing
 //
-// A radio is asleep while its MAC keeps the receiver off when idle (macRxOnWhenIdle false: a duty
-// cycle or the controller's SetRadioSleep); it still wakes to send and to hear the acknowledgement.
+// A radio is asleep by its duty cycle or its controller's SetRadioSleep; it still wakes to send and
+// to hear the acknowledgement, while its MAC is busy (net/lr_wpan_radios.h).
 // It keeps what it charged in each state, so the energy by state adds up to what the source lost.
 #pragma once
 
@@ -19,6 +19,7 @@
 #include <ns3/nstime.h>
 
 #include <array>
+#include <functional>
 
 #include "energy/energy_spec.h"
 
@@ -33,8 +34,10 @@ class LrWpanEnergyModel : public ns3::DeviceEnergyModel {
 
   void SetEnergySource(ns3::Ptr<ns3::EnergySource> source) override { source_ = ns3::PeekPointer(source); }
   void SetCurrents(const RadioCurrents& currents) { currents_ = currents; }
-  // Follows `device`'s PHY from now on.
-  void Attach(ns3::Ptr<ns3::LrWpanNetDevice> device);
+  // Follows `device`'s PHY from now on, and whether it sleeps (`sleeping`, asked again at each
+  // call of SleepChanged).
+  void Attach(ns3::Ptr<ns3::LrWpanNetDevice> device, std::function<bool()> sleeping);
+  void SleepChanged() { PhyChanged(phy_state_); }
   // The node is on (alive, not switched off) or not: off, the transceiver draws nothing.
   void SetOn(bool on);
 
@@ -56,7 +59,7 @@ class LrWpanEnergyModel : public ns3::DeviceEnergyModel {
   void Enter(State state);
 
   ns3::EnergySource* source_ = nullptr;  // the source holds this model: a Ptr would be a cycle
-  ns3::Ptr<ns3::LrWpanMac> mac_;
+  std::function<bool()> sleeping_;
   RadioCurrents currents_;
   State state_ = kRx;  // a fresh PHY listens (macRxOnWhenIdle)
   ns3::LrWpanPhyEnumeration phy_state_ = ns3::IEEE_802_15_4_PHY_RX_ON;

@@ -39,7 +39,10 @@ NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, Radios 
     lr_wpan_->SetCurrents(spec_.lr_wpan_radio->currents);
     lr_wpan_->SetEnergySource(source_);
     source_->AppendDeviceEnergyModel(lr_wpan_);
-    lr_wpan_->Attach(radios.lr_wpan);
+    net::LrWpanRadios* lr = radios.lr_wpan_radios;
+    const NodeId id = radios.id;
+    lr_wpan_->Attach(radios.lr_wpan, [lr, id] { return lr && lr->Sleeping(id); });
+    if (lr) lr->OnSleepChange(id, [model = ns3::PeekPointer(lr_wpan_)] { model->SleepChanged(); });
   }
   // Last, with every model in place: a battery that starts at its cutoff is depleted at once.
   rechargeable_->Start();

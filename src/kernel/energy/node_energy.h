@@ -27,6 +27,7 @@
 #include "energy/lr_wpan_energy_model.h"
 #include "energy/radio_energy_model.h"
 #include "energy/radio_states.h"
+#include "net/lr_wpan_radios.h"
 #include "sanet/readings.h"
 
 namespace sanet::energy {
@@ -48,6 +49,8 @@ class NodeEnergy {
   struct Radios {
     ns3::Ptr<ns3::NetDevice> wifi;
     ns3::Ptr<ns3::LrWpanNetDevice> lr_wpan;
+    net::LrWpanRadios* lr_wpan_radios = nullptr;  // which says when the 802.15.4 radio sleeps
+    NodeId id = 0;
   };
   // `sensors_w`: what its sensors draw while it is on.
   NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, Radios radios, double sensors_w, Hooks hooks);

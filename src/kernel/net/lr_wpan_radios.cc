@@ -36,11 +36,13 @@ class SensitivityCut : public ns3::PropagationLossModel {
     return tid;
   }
   static constexpr double kUnheardDb = 2000;  // past the channel's MaxLossDb: no reception scheduled
+  // `off`: senders cut from the channel; `deaf`: receivers.
   void Set(ns3::Ptr<ns3::PropagationLossModel> losses, const std::vector<double>* tx_power_dbm,
-           const std::vector<bool>* off, const NetworkSpec* spec) {
+           const std::vector<bool>* off, const std::vector<bool>* deaf, const NetworkSpec* spec) {
     losses_ = std::move(losses);
     tx_power_dbm_ = tx_power_dbm;
     off_ = off;
+    deaf_ = deaf;
     spec_ = spec;
   }
 
@@ -49,8 +51,8 @@ class SensitivityCut : public ns3::PropagationLossModel {
                        ns3::Ptr<ns3::MobilityModel> b) const override {
     const ns3::Ptr<ns3::Node> from = a->GetObject<ns3::Node>(), to = b->GetObject<ns3::Node>();
     if (!from || !to || from->GetId() >= tx_power_dbm_->size()) return tx_power_dbm;
-    if ((*off_)[from->GetId()] || (to->GetId() < off_->size() && (*off_)[to->GetId()]))
-      return tx_power_dbm - kUnheardDb;  // a radio switched off neither sends nor receives
+    if ((*off_)[from->GetId()] || (to->GetId() < deaf_->size() && (*deaf_)[to->GetId()]))
+      return tx_power_dbm - kUnheardDb;  // a radio switched off sends nothing; one off or asleep hears nothing
     const double sent = (*tx_power_dbm_)[from->GetId()];
     const double arrives = losses_->CalcRxPower(sent, a, b);
     const double sensitivity = spec_->lr_wpan.rx_threshold + NoiseFigureOffsetDb(*spec_, to->GetId());
@@ -62,6 +64,7 @@ class SensitivityCut : public ns3::PropagationLossModel {
   ns3::Ptr<ns3::PropagationLossModel> losses_;
   const std::vector<double>* tx_power_dbm_ = nullptr;
   const std::vector<bool>* off_ = nullptr;
+  const std::vector<bool>* deaf_ = nullptr;
   const NetworkSpec* spec_ = nullptr;
 };
 
@@ -83,7 +86,7 @@ LrWpanRadios::LrWpanRadios(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> 
   const ChannelLosses losses = BuildChannelLosses(spec_, walls, kLrWpanFrequencyHz, spec_.lr_wpan.rx_threshold);
   mean_ = losses.mean;
   auto cut = ns3::CreateObject<SensitivityCut>();
-  cut->Set(losses.frames, &tx_power_dbm_, &off_, &spec_);
+  cut->Set(losses.frames, &tx_power_dbm_, &off_, &deaf_, &spec_);
   auto channel = ns3::CreateObject<ns3::SingleModelSpectrumChannel>();
   channel->SetAttribute("MaxLossDb", ns3::DoubleValue(SensitivityCut::kUnheardDb / 2));
   channel->AddPropagationLossModel(cut);
@@ -102,7 +105,8 @@ LrWpanRadios::LrWpanRadios(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> 
 LrWpanRadios::~LrWpanRadios() { ClosePcaps(); }
 
 void LrWpanRadios::Install(NodeId id, ns3::Ptr<ns3::Node> node, double tx_power_dbm) {
-  if (radios_.size() <= id) radios_.resize(id + 1), tx_power_dbm_.resize(id + 1, 0), off_.resize(id + 1, false);
+  if (radios_.size() <= id)
+    radios_.resize(id + 1), tx_power_dbm_.resize(id + 1, 0), off_.resize(id + 1, false), deaf_.resize(id + 1, false);
   Radio& r = radios_[id];
   r.tx_power_dbm = tx_power_dbm;
   tx_power_dbm_[id] = tx_power_dbm;
@@ -157,25 +161,29 @@ void LrWpanRadios::KnowNeighbour(NodeId from, NodeId to) {
 }
 
 void LrWpanRadios::SetAsleep(NodeId id, bool asleep) {
-  Radio& r = radios_.at(id);
-  if (!r.off && r.device->GetMac()->GetRxOnWhenIdle() == asleep) r.device->GetMac()->SetRxOnWhenIdle(!asleep);
+  radios_.at(id).asleep = asleep;
+  Changed(id);
 }
 
 // ns-3's lr-wpan MAC has no off state, and taking the IPv6 interface down would drop its address
 // for good: a radio switched off is cut from the channel instead, so that nothing it still sends
-// (its MAC's queue, retries) reaches anyone and nothing reaches it; its receiver is off.
+// (its MAC's queue, retries) reaches anyone and nothing reaches it.
 void LrWpanRadios::SwitchOff(NodeId id) {
-  Radio& r = radios_.at(id);
-  if (r.off) return;
-  r.off = off_[id] = true;
-  r.device->GetMac()->SetRxOnWhenIdle(false);
+  radios_.at(id).off = off_[id] = true;
+  Changed(id);
 }
 
 void LrWpanRadios::SwitchOn(NodeId id, bool asleep) {
   Radio& r = radios_.at(id);
-  if (!r.off) return;
   r.off = off_[id] = false;
-  r.device->GetMac()->SetRxOnWhenIdle(!asleep);
+  r.asleep = asleep;
+  Changed(id);
+}
+
+void LrWpanRadios::Changed(NodeId id) {
+  const Radio& r = radios_[id];
+  deaf_[id] = r.off || (r.asleep && r.mac_idle);
+  if (r.sleep_changed) r.sleep_changed();
 }
 
 double LrWpanRadios::ReceivedPower(NodeId from, NodeId to) const {
@@ -188,6 +196,11 @@ double LrWpanRadios::ReceivedPower(NodeId from, NodeId to) const {
 // up.
 void LrWpanRadios::Trace(NodeId id) {
   const ns3::Ptr<ns3::LrWpanMac> mac = radios_[id].device->GetMac();
+  mac->TraceConnectWithoutContext("MacStateValue", ns3::Callback<void, ns3::LrWpanMacState, ns3::LrWpanMacState>(
+                                                       [this, id](ns3::LrWpanMacState, ns3::LrWpanMacState now) {
+                                                         radios_[id].mac_idle = now == ns3::MAC_IDLE;
+                                                         Changed(id);
+                                                       }));
   mac->TraceConnectWithoutContext("Sniffer", ns3::Callback<void, ns3::Ptr<const ns3::Packet>>(
                                                  [this, id](ns3::Ptr<const ns3::Packet> p) { Sent(id, p); }));
   mac->TraceConnectWithoutContext("MacPromiscRx", ns3::Callback<void, ns3::Ptr<const ns3::Packet>>(

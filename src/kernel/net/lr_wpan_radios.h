@@ -11,10 +11,12 @@
 //   resolution, since a short address is in its IPv6 address; ns-3 3.37 has only IPv6's own
 //   neighbour discovery, so sanet writes the neighbour entry a unicast needs before sending it
 //   (`KnowNeighbour`) and turns duplicate address detection off.
-// - Asleep (a duty cycle or the controller), a radio keeps its receiver off while idle
-//   (macRxOnWhenIdle false): it still wakes to send and to hear the acknowledgement, as a mote's
-//   radio stack does. Switched off, its receiver is off and the channel carries nothing from or
-//   to it (ns-3's MAC has no off state).
+// - Asleep (a duty cycle or the controller), a radio hears nothing while its MAC is idle: the
+//   channel hands it no frame. It still wakes to send, hearing the channel for CCA and the
+//   acknowledgement while its MAC is busy, as a mote's radio stack does. (ns-3 3.37's own way,
+//   macRxOnWhenIdle false, aborts the process when the MAC turns the receiver off during a
+//   damaged frame's reception.) Switched off, the channel carries nothing from or to it (ns-3's
+//   MAC has no off state).
 #pragma once
 
 #include <ns3/ipv6-address.h>
@@ -26,6 +28,7 @@
 #include <ns3/sixlowpan-net-device.h>
 #include <ns3/spectrum-channel.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -58,6 +61,13 @@ class LrWpanRadios {
   // short address.
   void KnowNeighbour(NodeId from, NodeId to);
   void SetAsleep(NodeId id, bool asleep);
+  // Asleep with its MAC idle and not switched off: deaf, drawing its sleep current.
+  bool Sleeping(NodeId id) const {
+    const Radio& r = radios_.at(id);
+    return r.asleep && r.mac_idle && !r.off;
+  }
+  // `changed` is called whenever Sleeping(id) may have changed (the radio's energy model).
+  void OnSleepChange(NodeId id, std::function<void()> changed) { radios_.at(id).sleep_changed = std::move(changed); }
   void SwitchOff(NodeId id);
   void SwitchOn(NodeId id, bool asleep);
   bool IsOff(NodeId id) const { return radios_.at(id).off; }
@@ -86,10 +96,13 @@ class LrWpanRadios {
     std::uint32_t interface = 0;  // IPv6's
     double tx_power_dbm = 0;
     bool off = false;
+    bool asleep = false, mac_idle = true;
+    std::function<void()> sleep_changed;
     ns3::Ptr<ns3::PcapFileWrapper> pcap;
     std::map<NodeId, double> heard;  // sender -> when its last frame arrived whole, s
   };
   void Trace(NodeId id);
+  void Changed(NodeId id);  // off, asleep or the MAC's idleness: what the channel hands it
   void Sent(NodeId id, ns3::Ptr<const ns3::Packet> frame);
   void Heard(NodeId id, ns3::Ptr<const ns3::Packet> frame);
   void Write(NodeId id, ns3::Ptr<const ns3::Packet> frame);
@@ -102,6 +115,7 @@ class LrWpanRadios {
   std::vector<Radio> radios_;                 // by node id; empty where a node has none
   std::vector<double> tx_power_dbm_;          // by node id, for the channel's losses
   std::vector<bool> off_;                     // by node id: switched off, cut from the channel
+  std::vector<bool> deaf_;                    // by node id: off, or asleep with its MAC idle
   ChannelCounts* counts_ = nullptr;
   FrameObserver observer_;
   std::function<void(NodeId, ns3::Ptr<const ns3::Packet>)> mac_drop_;

@@ -190,9 +190,9 @@ void PacketTrace::Record6(NodeId node, Event event, const ns3::Ipv6Header& ip, n
   Log(node, event, protocol, packet->GetSize(), name, why);
 }
 
-void PacketTrace::MacDropped(NodeId node, std::uint32_t bytes) {
+void PacketTrace::MacGaveUp(NodeId node, std::uint32_t bytes) {
   Count(node, Event::kDropped);
-  if (!logs_.empty()) Log(node, Event::kDropped, "mac", bytes, "", "refused_by_mac");
+  if (!logs_.empty()) Log(node, Event::kDropped, "mac", bytes, "", "mac_gave_up");
 }
 
 void PacketTrace::Unreachable(NodeId node, NodeId to, std::size_t bytes) {

@@ -31,8 +31,9 @@ class PacketTrace {
   void Attach(NodeId node, ns3::Ptr<ns3::Node> ns3_node);
   // Connects to the IPv6 layer of a node with an 802.15.4 radio.
   void Attach6(NodeId node, ns3::Ptr<ns3::Node> ns3_node);
-  // An 802.15.4 MAC gave a frame up (no acknowledgement after its retries, or a busy channel).
-  void MacDropped(NodeId node, std::uint32_t bytes);
+  // An 802.15.4 MAC gave a frame up (no acknowledgement after its retries, or a busy channel):
+  // `bytes` is the frame's, MAC header included.
+  void MacGaveUp(NodeId node, std::uint32_t bytes);
   // A message from `node` to `to`, which shares no radio with it, goes nowhere.
   void Unreachable(NodeId node, NodeId to, std::size_t bytes);
   // Opens the per-node packet logs (packets/<node>.csv) in the results folder.

@@ -185,7 +185,7 @@ void WirelessNetwork::InstallLrWpan(NodeId id) {
   if (!lr_wpan_) {
     lr_wpan_ = std::make_unique<LrWpanRadios>(spec_, lr_wpan_walls_);
     lr_wpan_->CountFrames(&frame_counts_);
-    lr_wpan_->OnMacDrop([this](NodeId node, ns3::Ptr<const ns3::Packet> p) { trace_.MacDropped(node, p->GetSize()); });
+    lr_wpan_->OnMacDrop([this](NodeId node, ns3::Ptr<const ns3::Packet> p) { trace_.MacGaveUp(node, p->GetSize()); });
     if (frame_observer_) lr_wpan_->ObserveFrames(frame_observer_);  // a spawned robot's radio is the first
   }
   if (lr_wpan_walls_) lr_wpan_walls_->SetAntennaHeight(nodes_.Get(id)->GetId(), radios_.at(id).antenna_height);
@@ -652,7 +652,7 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   t.packet_logs = spec_.packet_log;
   t.taps = tap_ledger_;
   t.channel = frame_counts_;
-  t.channel.model = ChannelName(spec_.channel);
+  t.channel.model = spec_.wifi_in_use ? ChannelName(spec_.channel) : "spectrum";
   if (walls_) {
     t.channel.walls = walls_->walls();
     t.channel.wall_losses = walls_->counters().asked;
@@ -663,7 +663,7 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
     t.channel.shadowing_asked = shadowing_->counters().asked;
     t.channel.shadowing_computed = shadowing_->counters().computed;
   }
-  if (indexed_) {
+  if (indexed_ && spec_.wifi_in_use) {
     t.channel.floor_dbm = spec_.ChannelFloor();
     t.channel.candidates = indexed_->counters().candidates;
     t.channel.handed = indexed_->counters().handed;

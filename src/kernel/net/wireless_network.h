@@ -78,6 +78,7 @@ class WirelessNetwork : public Transport {
   ns3::Ptr<ns3::NetDevice> Device(NodeId id) const { return wifi_.at(id); }
   // Node `id`'s 802.15.4 device; null without one.
   ns3::Ptr<ns3::LrWpanNetDevice> LrWpanDevice(NodeId id) const { return lr_wpan_ ? lr_wpan_->Device(id) : nullptr; }
+  LrWpanRadios* LrWpan() { return lr_wpan_.get(); }  // null while no node has an 802.15.4 radio
   const PacketTrace& packet_trace() const { return trace_; }
 
  private:

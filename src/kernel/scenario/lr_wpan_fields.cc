@@ -10,7 +10,7 @@ using net::NetworkSpec;
 const Fields<LrWpanSpec>& LrWpanFields() {
   static const Fields<LrWpanSpec> fields = [] {
     Fields<LrWpanSpec> f;
-    f.Number("tx_power", Member(&LrWpanSpec::tx_power), "dBm", -50, 30,
+    f.Number("tx_power", Member(&LrWpanSpec::tx_power), "dBm", -50, 60,
              "every 802.15.4 radio's transmit power unless a node sets its own (`0`: the CC2420's highest)");
     f.Number("rx_threshold", Member(&LrWpanSpec::rx_threshold), "dBm", -150, 0,
              "receiver sensitivity: frames arriving weaker never reach the radio, not even as interference "
@@ -151,11 +151,12 @@ void ReadNodeTxPower(const Field& f, net::NodeRadio& r) {
   }
 }
 
+// A node with two radios gets a mapping (a plain number is refused there), even of one power.
 YAML::Node PrintNodeTxPower(const net::NodeRadio& r) {
-  if (r.tx_power && r.lr_wpan_tx_power) {
+  if ((r.tx_power && r.lr_wpan_tx_power) || (r.radios && r.radios->both() && (r.tx_power || r.lr_wpan_tx_power))) {
     YAML::Node out(YAML::NodeType::Map);
-    out[std::string(net::StandardName(r.wifi_standard))] = NumberNode(*r.tx_power);
-    out[std::string(net::kLrWpanName)] = NumberNode(*r.lr_wpan_tx_power);
+    if (r.tx_power) out[std::string(net::StandardName(r.wifi_standard))] = NumberNode(*r.tx_power);
+    if (r.lr_wpan_tx_power) out[std::string(net::kLrWpanName)] = NumberNode(*r.lr_wpan_tx_power);
     out.SetStyle(YAML::EmitterStyle::Flow);
     return out;
   }

@@ -151,7 +151,7 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
 // notices them inside ns-3's PHY and energy calls, which must not switch the radio meanwhile.
 void Assembly::AddBattery(NodeId id) {
   energy::NodeEnergy::Radios radio;
-  if (wireless_) radio = {wireless_->Device(id), wireless_->LrWpanDevice(id)};
+  if (wireless_) radio = {wireless_->Device(id), wireless_->LrWpanDevice(id), wireless_->LrWpan(), id};
   double sensors_w = 0;
   for (const auto& [name, config] : run_nodes_[id].model.sensors) sensors_w += config.power_w;
   batteries_.Add(id, run_nodes_[id].energy, radio, sensors_w,

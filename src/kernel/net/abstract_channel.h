@@ -1,0 +1,88 @@
+// The abstract radio, a cheaper stand-in for 802.11 in large swarms: ns-3's SimpleNetDevices on a channel of
+// sanet's that delivers a frame to each receiver with the probability the full 802.11 model's
+// link curve gives at that link's mean received power, after the access delay it measured. IP,
+// ARP, the routing protocols and sockets above the devices are ns-3's, unchanged; the PHY and the
+// MAC below are replaced by the calibration.
+//
+// - A link's mean power is the scenario's mean loss chain (path loss, walls, shadowing: fading is
+//   in the calibration, which was measured with it). PRR and delay are interpolated linearly in
+//   the calibration's table; nothing is delivered under its lowest power with a non-zero PRR.
+// - Each frame's fate at each receiver is a counter-based draw keyed by (seed, sender, receiver,
+//   the sender's frame number), so that it depends on nothing else that happens.
+// - A unicast frame is considered only at its addressee (an 802.11 MAC's filtering would drop it
+//   everywhere else); broadcasts at every radio the spatial grid places within range.
+// - The sender's device serializes its frames at the radio's data rate (its airtime), and the
+//   channel adds the calibration's access delay. Frames do not collide: contention, hidden
+//   terminals and retransmissions are in the calibration's averages only.
+#pragma once
+
+#include <ns3/mac48-address.h>
+#include <ns3/propagation-loss-model.h>
+#include <ns3/simple-channel.h>
+#include <ns3/simple-net-device.h>
+
+#include <functional>
+#include <map>
+#include <vector>
+
+#include "net/spatial_grid.h"
+
+namespace sanet::net {
+
+// What the full model delivers against a link's mean received power: rows in ascending power.
+struct LinkCalibration {
+  struct Row {
+    double mean_dbm = 0;
+    double prr = 0;             // share of frames received
+    double access_delay_s = 0;  // from the frame's end at the sender to its arrival, beyond airtime
+  };
+  std::vector<Row> rows;
+  double Prr(double dbm) const;
+  double AccessDelay(double dbm) const;
+  // Under this power no frame arrives: the weakest row with a non-zero PRR, or the one below it
+  // where the PRR falls to zero between them.
+  double LowestHeardDbm() const;
+};
+
+class AbstractChannel : public ns3::SimpleChannel {
+ public:
+  static ns3::TypeId GetTypeId();
+  struct Settings {
+    LinkCalibration calibration;
+    ns3::Ptr<ns3::PropagationLossModel> mean_loss;  // the links' mean power
+    std::function<double(std::uint32_t node)> tx_power_dbm;
+    std::uint64_t seed = 0;
+    double range_m = 0;  // no receiver farther than this is asked (where the loss puts LowestHeardDbm)
+  };
+  AbstractChannel() : grid_(50) {}
+  void Configure(Settings settings);
+
+  // Devices join in node order: a device's index is its node's id.
+  void Add(ns3::Ptr<ns3::SimpleNetDevice> device) override;
+  void Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac48Address to, ns3::Mac48Address from,
+            ns3::Ptr<ns3::SimpleNetDevice> sender) override;
+  std::size_t GetNDevices() const override { return devices_.size(); }
+  ns3::Ptr<ns3::NetDevice> GetDevice(std::size_t i) const override { return devices_.at(i); }
+  // Node `index` moved: its grid cell follows (before its next frame).
+  void Moved(std::uint32_t index);
+
+  struct Counters {
+    std::uint64_t frames = 0, asked = 0, delivered = 0;
+  };
+  const Counters& counters() const { return counters_; }
+
+ private:
+  void Offer(std::uint32_t from, std::uint32_t to, std::uint64_t frame, ns3::Ptr<ns3::Packet> p, uint16_t protocol,
+             ns3::Mac48Address dst, ns3::Mac48Address src);
+
+  Settings settings_;
+  double lowest_dbm_ = 0;
+  SpatialGrid grid_;
+  std::vector<ns3::Ptr<ns3::SimpleNetDevice>> devices_;  // by node id
+  std::map<ns3::Mac48Address, std::uint32_t> by_address_;
+  std::vector<std::uint64_t> sent_;  // frames each node sent
+  std::vector<std::uint32_t> near_;  // scratch
+  Counters counters_;
+};
+
+}  // namespace sanet::net

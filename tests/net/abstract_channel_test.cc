@@ -1,0 +1,132 @@
+// The abstract radio's channel against its calibration: shares of frames delivered at each
+// receiver's mean power, nothing under the weakest power heard, unicasts only at their addressee,
+// the access delay, and the same draws whatever else happens.
+#include "net/abstract_channel.h"
+
+#include <gtest/gtest.h>
+#include <ns3/constant-position-mobility-model.h>
+#include <ns3/node-container.h>
+#include <ns3/propagation-loss-model.h>
+#include <ns3/simple-net-device.h>
+#include <ns3/simulator.h>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+namespace sanet::net {
+namespace {
+
+constexpr double kTxPower = 10;  // dBm
+constexpr int kFrames = 2000;
+
+// PRR 1 at -70 dBm and above, falling linearly to 0 at -90 dBm; 2 ms of access delay at -70,
+// 4 ms at -90.
+LinkCalibration Calibration() {
+  LinkCalibration c;
+  c.rows = {{-100, 0, 0.004}, {-90, 0, 0.004}, {-80, 0.5, 0.003}, {-70, 1, 0.002}, {-40, 1, 0.002}};
+  return c;
+}
+
+// The mean power at `d` m from the sender, by ns-3's log-distance default (46.6777 dB at 1 m, n 3).
+double MeanPower(double d) { return kTxPower - 46.6777 - 30 * std::log10(d); }
+
+struct Field {
+  ns3::NodeContainer nodes;
+  ns3::Ptr<AbstractChannel> channel = ns3::CreateObject<AbstractChannel>();
+  std::vector<ns3::Ptr<ns3::SimpleNetDevice>> devices;
+  std::vector<std::vector<double>> arrivals;  // per node, when frames arrived
+
+  Field(const std::vector<double>& distances, std::uint64_t seed) : arrivals(distances.size() + 1) {
+    nodes.Create(distances.size() + 1);
+    AbstractChannel::Settings s;
+    s.calibration = Calibration();
+    s.mean_loss = ns3::CreateObject<ns3::LogDistancePropagationLossModel>();
+    s.tx_power_dbm = [](std::uint32_t) { return kTxPower; };
+    s.seed = seed;
+    s.range_m = 200;
+    channel->Configure(s);
+    for (std::uint32_t i = 0; i < nodes.GetN(); ++i) {
+      auto at = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
+      at->SetPosition(ns3::Vector(i == 0 ? 0 : distances[i - 1], 0, 0));
+      nodes.Get(i)->AggregateObject(at);
+      auto device = ns3::CreateObject<ns3::SimpleNetDevice>();
+      device->SetAddress(ns3::Mac48Address::Allocate());
+      nodes.Get(i)->AddDevice(device);
+      device->SetChannel(channel);
+      device->SetReceiveCallback(
+          [this, i](ns3::Ptr<ns3::NetDevice>, ns3::Ptr<const ns3::Packet>, uint16_t, const ns3::Address&) {
+            arrivals[i].push_back(ns3::Simulator::Now().GetSeconds());
+            return true;
+          });
+      devices.push_back(device);
+    }
+  }
+  // Frame k leaves node 0 at k ms, to `to` (broadcast unless given).
+  void SendAll(std::optional<std::uint32_t> to = std::nullopt) {
+    const ns3::Address dst = to ? devices[*to]->GetAddress() : devices[0]->GetBroadcast();
+    for (int k = 0; k < kFrames; ++k)
+      ns3::Simulator::Schedule(ns3::MilliSeconds(k),
+                               [this, dst] { devices[0]->Send(ns3::Create<ns3::Packet>(20), dst, 0x800); });
+    ns3::Simulator::Stop(ns3::Seconds(kFrames * 0.001 + 1));
+    ns3::Simulator::Run();
+  }
+};
+
+TEST(AbstractChannel, DeliversTheCalibrationsShareAtEachLinksMeanPower) {
+  // Mean powers from -60 dBm (all) through -80 (half) to under -90 (none).
+  const std::vector<double> distances = {12.5, 26.9, 36.0, 46.4, 58.0, 80.0, 120.0};
+  std::vector<std::size_t> heard;
+  {
+    Field field(distances, 7);
+    field.SendAll();
+    for (std::size_t i = 1; i < field.arrivals.size(); ++i) heard.push_back(field.arrivals[i].size());
+    EXPECT_EQ(field.channel->counters().frames, static_cast<std::uint64_t>(kFrames));
+  }
+  ns3::Simulator::Destroy();
+  const LinkCalibration c = Calibration();
+  for (std::size_t i = 0; i < distances.size(); ++i) {
+    const double p = c.Prr(MeanPower(distances[i]));
+    const double sigma = std::sqrt(p * (1 - p) / kFrames);
+    EXPECT_NEAR(static_cast<double>(heard[i]) / kFrames, p, 4 * sigma + 1e-9)
+        << "at " << distances[i] << " m, " << MeanPower(distances[i]) << " dBm";
+  }
+  EXPECT_EQ(heard.back(), 0u) << "under the weakest power heard, nothing";
+}
+
+TEST(AbstractChannel, AUnicastReachesOnlyItsAddresseeAfterTheAccessDelay) {
+  {
+    Field field({5, 10}, 3);  // -68 and -77 dBm: node 1 would hear every frame, node 2 most
+    field.SendAll(2);
+    EXPECT_TRUE(field.arrivals[1].empty()) << "not the addressee";
+    const double p = Calibration().Prr(MeanPower(10));
+    EXPECT_NEAR(static_cast<double>(field.arrivals[2].size()) / kFrames, p, 4 * std::sqrt(p * (1 - p) / kFrames));
+    const double delay = Calibration().AccessDelay(MeanPower(10));
+    for (double t : field.arrivals[2]) {  // frame k left at k ms (no data rate set: no airtime)
+      const double sent = std::round((t - delay) * 1000) / 1000;
+      EXPECT_NEAR(t - sent, delay, 1e-9);
+    }
+  }
+  ns3::Simulator::Destroy();
+}
+
+TEST(AbstractChannel, TheSameSeedGivesTheSameFramesAndAnotherOthers) {
+  const auto run = [](std::uint64_t seed) {
+    std::vector<double> got;
+    {
+      Field field({50}, seed);
+      field.SendAll();
+      got = field.arrivals[1];
+    }
+    ns3::Simulator::Destroy();
+    return got;
+  };
+  const auto a = run(11), b = run(11), c = run(12);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  EXPECT_GT(a.size(), 0u);
+  EXPECT_LT(a.size(), static_cast<std::size_t>(kFrames));
+}
+
+}  // namespace
+}  // namespace sanet::net

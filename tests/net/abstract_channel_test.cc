@@ -14,6 +14,8 @@
 #include <optional>
 #include <vector>
 
+#include "net/wireless_network.h"
+
 namespace sanet::net {
 namespace {
 
@@ -126,6 +128,46 @@ TEST(AbstractChannel, TheSameSeedGivesTheSameFramesAndAnotherOthers) {
   EXPECT_NE(a, c);
   EXPECT_GT(a.size(), 0u);
   EXPECT_LT(a.size(), static_cast<std::size_t>(kFrames));
+}
+
+// Five radios 40 m apart on the abstract radio, each reaching only its neighbours: AODV finds the
+// route from one end to the other, and the message arrives over its four hops.
+TEST(AbstractRadio, AodvFindsRoutesAndMessagesArrive) {
+  std::vector<Message> got;
+  {
+    ns3::NodeContainer nodes;
+    nodes.Create(5);
+    for (std::uint32_t i = 0; i < 5; ++i) {
+      auto at = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
+      at->SetPosition(ns3::Vector(40.0 * i, 0, 0.05));
+      nodes.Get(i)->AggregateObject(at);
+    }
+    NetworkSpec spec;
+    spec.radio_model = RadioModel::kAbstract;
+    spec.packet_log = false;
+    LinkCalibration c;  // 40 m at 16 dBm: -78.7 dBm, every frame; 80 m: -87.8 dBm, none
+    c.rows = {{-90, 0, 0.002}, {-85, 0, 0.002}, {-80, 1, 0.001}, {-30, 1, 0.001}};
+    spec.calibration = c;
+    WirelessNetwork network(spec, nodes, {"a", "b", "c", "d", "e"}, std::vector<NodeRadio>(5));
+    network.SetReceiver([&got](NodeId to, const Message& m) {
+      if (to == 4) got.push_back(m);
+    });
+    for (int k = 0; k < 3; ++k)
+      ns3::Simulator::Schedule(ns3::Seconds(1 + k), [&network] { network.Send(0, 4, Bytes(32, 1)); });
+    ns3::Simulator::Stop(ns3::Seconds(6));
+    ns3::Simulator::Run();
+    EXPECT_GE(network.View(0).RoutingTable().size(), 1u) << "a route to e, through b";
+    const auto traces = network.Traces();
+    ASSERT_TRUE(traces);
+    EXPECT_EQ(traces->channel.model, "abstract");
+    EXPECT_GT(traces->channel.frames_received, 0u);
+  }
+  ns3::Simulator::Destroy();
+  ASSERT_EQ(got.size(), 3u);
+  for (const Message& m : got) {
+    EXPECT_EQ(m.from, 0u);
+    EXPECT_EQ(m.hops, 4);
+  }
 }
 
 }  // namespace

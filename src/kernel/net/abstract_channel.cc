@@ -13,39 +13,11 @@ namespace {
 
 constexpr std::uint64_t kDeliveryKey = 0x41425354ull;  // "ABST"
 
-// Linear interpolation of `field` at `dbm` between the rows around it, the end rows' beyond them.
-template <typename Field>
-double Interpolate(const std::vector<LinkCalibration::Row>& rows, double dbm, Field field) {
-  if (rows.empty()) return 0;
-  if (dbm <= rows.front().mean_dbm) return field(rows.front());
-  if (dbm >= rows.back().mean_dbm) return field(rows.back());
-  const auto above = std::upper_bound(rows.begin(), rows.end(), dbm,
-                                      [](double v, const LinkCalibration::Row& r) { return v < r.mean_dbm; });
-  const auto below = above - 1;
-  const double share = (dbm - below->mean_dbm) / (above->mean_dbm - below->mean_dbm);
-  return field(*below) + share * (field(*above) - field(*below));
-}
-
 ns3::Ptr<ns3::MobilityModel> MobilityOf(const ns3::Ptr<ns3::SimpleNetDevice>& device) {
   return device->GetNode()->GetObject<ns3::MobilityModel>();
 }
 
 }  // namespace
-
-double LinkCalibration::Prr(double dbm) const {
-  if (dbm < LowestHeardDbm()) return 0;
-  return std::clamp(Interpolate(rows, dbm, [](const Row& r) { return r.prr; }), 0.0, 1.0);
-}
-
-double LinkCalibration::AccessDelay(double dbm) const {
-  return std::max(0.0, Interpolate(rows, dbm, [](const Row& r) { return r.access_delay_s; }));
-}
-
-double LinkCalibration::LowestHeardDbm() const {
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    if (rows[i].prr > 0) return i == 0 ? rows[0].mean_dbm : rows[i - 1].mean_dbm;
-  return rows.empty() ? 0 : rows.back().mean_dbm + 1;  // never heard
-}
 
 ns3::TypeId AbstractChannel::GetTypeId() {
   static ns3::TypeId tid = ns3::TypeId("sanet::net::AbstractChannel")
@@ -63,7 +35,7 @@ void AbstractChannel::Configure(Settings settings) {
 
 void AbstractChannel::Add(ns3::Ptr<ns3::SimpleNetDevice> device) {
   const std::uint32_t index = device->GetNode()->GetId();
-  if (devices_.size() <= index) devices_.resize(index + 1), sent_.resize(index + 1, 0);
+  if (devices_.size() <= index) devices_.resize(index + 1), sent_.resize(index + 1, 0), off_.resize(index + 1, false);
   devices_[index] = device;
   by_address_[ns3::Mac48Address::ConvertFrom(device->GetAddress())] = index;
   Moved(index);
@@ -79,6 +51,7 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
                            ns3::Ptr<ns3::SimpleNetDevice> sender) {
   const std::uint32_t origin = sender->GetNode()->GetId();
   const std::uint64_t frame = sent_[origin]++;
+  if (off_[origin]) return;
   ++counters_.frames;
   if (!to.IsBroadcast() && !to.IsGroup()) {
     const auto addressee = by_address_.find(to);
@@ -95,6 +68,7 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
 // The receiver gets the frame with the calibration's probability at the link's mean power.
 void AbstractChannel::Offer(std::uint32_t from, std::uint32_t to, std::uint64_t frame, ns3::Ptr<ns3::Packet> p,
                             uint16_t protocol, ns3::Mac48Address dst, ns3::Mac48Address src) {
+  if (off_[to]) return;
   ++counters_.asked;
   const ns3::Ptr<ns3::SimpleNetDevice>& receiver = devices_[to];
   const double dbm =

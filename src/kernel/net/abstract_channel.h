@@ -25,24 +25,10 @@
 #include <map>
 #include <vector>
 
+#include "net/link_calibration.h"
 #include "net/spatial_grid.h"
 
 namespace sanet::net {
-
-// What the full model delivers against a link's mean received power: rows in ascending power.
-struct LinkCalibration {
-  struct Row {
-    double mean_dbm = 0;
-    double prr = 0;             // share of frames received
-    double access_delay_s = 0;  // from the frame's end at the sender to its arrival, beyond airtime
-  };
-  std::vector<Row> rows;
-  double Prr(double dbm) const;
-  double AccessDelay(double dbm) const;
-  // Under this power no frame arrives: the weakest row with a non-zero PRR, or the one below it
-  // where the PRR falls to zero between them.
-  double LowestHeardDbm() const;
-};
 
 class AbstractChannel : public ns3::SimpleChannel {
  public:
@@ -63,6 +49,9 @@ class AbstractChannel : public ns3::SimpleChannel {
             ns3::Ptr<ns3::SimpleNetDevice> sender) override;
   std::size_t GetNDevices() const override { return devices_.size(); }
   ns3::Ptr<ns3::NetDevice> GetDevice(std::size_t i) const override { return devices_.at(i); }
+  // A radio switched off neither sends nor receives (SimpleNetDevice has no off state).
+  void SetOff(std::uint32_t index, bool off) { off_.at(index) = off; }
+  bool IsOff(std::uint32_t index) const { return off_.at(index); }
   // Node `index` moved: its grid cell follows (before its next frame).
   void Moved(std::uint32_t index);
 
@@ -81,6 +70,7 @@ class AbstractChannel : public ns3::SimpleChannel {
   std::vector<ns3::Ptr<ns3::SimpleNetDevice>> devices_;  // by node id
   std::map<ns3::Mac48Address, std::uint32_t> by_address_;
   std::vector<std::uint64_t> sent_;  // frames each node sent
+  std::vector<bool> off_;            // by node id
   std::vector<std::uint32_t> near_;  // scratch
   Counters counters_;
 };

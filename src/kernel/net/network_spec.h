@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "net/duty_cycle.h"
+#include "net/link_calibration.h"
 #include "net/ns3_attributes.h"
 
 namespace sanet::net {
@@ -84,8 +85,15 @@ struct HardwareSpread {
   static constexpr double kClipSigmas = 3;
 };
 
+// How 802.11 radios are simulated: ns-3's whole 802.11 model, or a calibrated abstraction of it
+// (net/abstract_channel.h) for swarms.
+enum class RadioModel { kFull, kAbstract };
+
 struct NetworkSpec {
-  Radios radios;                                  // every node's, unless it names its own (`network.radio`)
+  Radios radios;
+  RadioModel radio_model = RadioModel::kFull;
+  // With the abstract model: what the full model delivers against a link's mean power.
+  std::optional<LinkCalibration> calibration;     // every node's, unless it names its own (`network.radio`)
   WifiStandard standard = WifiStandard::k80211b;  // of every 802.11 radio: they share one channel
   double data_rate = 1;                           // Mbps, one of the standard's rates; broadcasts go at the lowest
   double tx_power = 16;                           // dBm, every node unless it overrides it

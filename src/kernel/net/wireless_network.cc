@@ -3,6 +3,8 @@
 #include <ns3/aodv-helper.h>
 #include <ns3/aodv-routing-protocol.h>
 #include <ns3/boolean.h>
+#include <ns3/constant-position-mobility-model.h>
+#include <ns3/data-rate.h>
 #include <ns3/double.h>
 #include <ns3/dsdv-helper.h>
 #include <ns3/dsdv-routing-protocol.h>
@@ -19,6 +21,7 @@
 #include <ns3/olsr-routing-protocol.h>
 #include <ns3/pointer.h>
 #include <ns3/propagation-loss-model.h>
+#include <ns3/simple-net-device.h>
 #include <ns3/simulator.h>
 #include <ns3/string.h>
 #include <ns3/udp-socket-factory.h>
@@ -90,8 +93,10 @@ WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContain
   ConfigureRadios();
   // One node at a time: a node may transmit with its own power.
   wifi_.resize(nodes_.GetN());
+  ip4_.resize(nodes_.GetN());
   for (NodeId id = 0; id < nodes_.GetN(); ++id)
-    if (radios.at(id).RadiosIn(spec_).wifi) devices_.Add(InstallRadio(id, radios.at(id)));
+    if (radios.at(id).RadiosIn(spec_).wifi)
+      devices_.Add(abstract_ ? InstallAbstract(id) : InstallRadio(id, radios.at(id)));
   InstallInternet();
   for (NodeId id = 0; id < nodes_.GetN(); ++id)
     if (radios.at(id).RadiosIn(spec_).lr_wpan) InstallLrWpan(id);
@@ -145,6 +150,7 @@ void WirelessNetwork::ConfigureRadios() {
   mean_loss_ = losses.mean;
   shadowing_ = losses.shadowing;
   yans->SetPropagationLossModel(losses.frames);
+  if (spec_.radio_model == RadioModel::kAbstract) ConfigureAbstract(losses);
   if (spec_.channel == ChannelModel::kIndexed) {
     indexed_ = ns3::CreateObject<IndexedWifiChannel>();
     ns3::PointerValue delay;
@@ -174,10 +180,59 @@ ns3::NetDeviceContainer WirelessNetwork::InstallRadio(NodeId id, const NodeRadio
   if (spec_.spread.noise_figure_db > 0)
     phy_.Set("RxNoiseFigure", ns3::DoubleValue(std::max(0.0, nominal_noise_figure_ + NoiseFigureOffsetDb(spec_, id))));
   ns3::NetDeviceContainer device = wifi_helper_.Install(phy_, mac_, node);
-  if (wifi_.size() <= id) wifi_.resize(id + 1);
+  if (wifi_.size() <= id) wifi_.resize(id + 1), ip4_.resize(id + 1);
   wifi_[id] = ns3::DynamicCast<ns3::WifiNetDevice>(device.Get(0));
+  ip4_[id] = wifi_[id];
   CountFrames(wifi_[id]->GetPhy());
   return device;
+}
+
+// The abstract radio's device: ns-3's SimpleNetDevice, its frames serialized at the data rate,
+// with an address made from the node's id (ns-3's Allocate counts across the process's runs).
+ns3::NetDeviceContainer WirelessNetwork::InstallAbstract(NodeId id) {
+  auto device = ns3::CreateObject<ns3::SimpleNetDevice>();
+  const std::uint32_t n = id + 1;
+  const std::uint8_t mac[6] = {0x02,
+                               0x5a,
+                               0,
+                               static_cast<std::uint8_t>(n >> 16),
+                               static_cast<std::uint8_t>(n >> 8),
+                               static_cast<std::uint8_t>(n)};
+  ns3::Mac48Address address;
+  address.CopyFrom(mac);
+  device->SetAddress(address);
+  device->SetAttribute("DataRate",
+                       ns3::DataRateValue(ns3::DataRate(static_cast<std::uint64_t>(spec_.data_rate * 1e6))));
+  nodes_.Get(id)->AddDevice(device);
+  device->SetChannel(abstract_);
+  if (ip4_.size() <= id) wifi_.resize(id + 1), ip4_.resize(id + 1);
+  ip4_[id] = device;
+  return ns3::NetDeviceContainer(device);
+}
+
+// The abstract channel draws from the calibration at the links' mean power (walls, shadowing),
+// asking only the radios within the distance where the path loss, lifted by shadowing's most,
+// falls to the weakest power the calibration delivers at.
+void WirelessNetwork::ConfigureAbstract(const ChannelLosses& losses) {
+  if (!spec_.calibration) throw std::invalid_argument("the abstract radio needs a calibration");
+  AbstractChannel::Settings s;
+  s.calibration = *spec_.calibration;
+  s.mean_loss = losses.mean;
+  s.tx_power_dbm = [this](std::uint32_t node) { return TxPower(node, radios_.at(node)); };
+  s.seed = spec_.seed;
+  const double lowest = s.calibration.LowestHeardDbm() - losses.range_margin_db;
+  double strongest = spec_.tx_power;
+  for (NodeId id = 0; id < radios_.size(); ++id) strongest = std::max(strongest, TxPower(id, radios_[id]));
+  auto here = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
+  auto there = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
+  double far = 1;
+  for (; far < 1e6; far *= 2) {
+    there->SetPosition({far, 0, 0});
+    if (losses.range->CalcRxPower(strongest, here, there) < lowest) break;
+  }
+  s.range_m = far;
+  abstract_ = ns3::CreateObject<AbstractChannel>();
+  abstract_->Configure(std::move(s));
 }
 
 // After the IP stack: the radio, 6LoWPAN and the IPv6 interface, with the node's own power.
@@ -209,9 +264,11 @@ void WirelessNetwork::CountFrames(ns3::Ptr<ns3::WifiPhy> phy) {
 void WirelessNetwork::AssignStreams() {
   std::int64_t stream = 0;
   if (devices_.GetN() > 0) {
-    stream += ns3::WifiHelper().AssignStreams(devices_, stream);
-    stream += ns3::YansWifiChannelHelper().AssignStreams(
-        ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel()), stream);
+    if (!abstract_) {
+      stream += ns3::WifiHelper().AssignStreams(devices_, stream);
+      stream += ns3::YansWifiChannelHelper().AssignStreams(
+          ns3::DynamicCast<ns3::YansWifiChannel>(devices_.Get(0)->GetChannel()), stream);
+    }
   }
   stream += ns3::InternetStackHelper().AssignStreams(nodes_, stream);
   for (NodeId id = 0; id < nodes_.GetN(); ++id) stream += AssignRoutingStreams(nodes_.Get(id), stream);
@@ -245,9 +302,10 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   broadcasts_seen_.emplace_back();
   radios_.push_back(radio);
   wifi_.resize(id + 1);
+  ip4_.resize(id + 1);
   const Radios kinds = radio.RadiosIn(spec_);
   ns3::NetDeviceContainer device;
-  if (kinds.wifi) device = InstallRadio(id, radio);
+  if (kinds.wifi) device = abstract_ ? InstallAbstract(id) : InstallRadio(id, radio);
   devices_.Add(device);
   internet_.Install(node);
   if (spec_.routing == Routing::kDsr) {
@@ -263,7 +321,7 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   }
   if (kinds.lr_wpan) InstallLrWpan(id);
   OpenSocket(id);
-  if (kinds.wifi) next_stream_ += wifi_helper_.AssignStreams(device, next_stream_);
+  if (kinds.wifi && !abstract_) next_stream_ += wifi_helper_.AssignStreams(device, next_stream_);
   next_stream_ += ns3::InternetStackHelper().AssignStreams(ns3::NodeContainer(node), next_stream_);
   next_stream_ += AssignRoutingStreams(node, next_stream_);
   if (kinds.lr_wpan) next_stream_ += lr_wpan_->AssignStreams(id, next_stream_);
@@ -272,7 +330,7 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
   StartDutyCycle(id);
   if (flow_monitor_) flow_helper_->Install(node);
   if (!pcap_dir_.empty()) OpenPcap(id);
-  if (frames_ && kinds.wifi) frames_->Attach(id, wifi_[id]);
+  if (frames_ && HasWifiPhy(id)) frames_->Attach(id, wifi_[id]);
 }
 
 void WirelessNetwork::ObserveFrames(FrameObserver observer) {
@@ -280,7 +338,7 @@ void WirelessNetwork::ObserveFrames(FrameObserver observer) {
   if (lr_wpan_) lr_wpan_->ObserveFrames(observer);
   frames_ = std::make_unique<FrameTrace>(std::move(observer));
   for (NodeId id = 0; id < nodes_.GetN(); ++id)
-    if (HasWifi(id)) frames_->Attach(id, wifi_[id]);
+    if (HasWifiPhy(id)) frames_->Attach(id, wifi_[id]);
 }
 
 void WirelessNetwork::InstallInternet() {
@@ -325,7 +383,7 @@ void WirelessNetwork::InstallInternet() {
 void WirelessNetwork::AssignAddress(NodeId id) {
   ns3::Ipv4AddressHelper addresses;
   addresses.SetBase(AddressBook::kNetwork, AddressBook::kMask, ns3::Ipv4Address(static_cast<std::uint32_t>(id + 1)));
-  addresses.Assign(ns3::NetDeviceContainer(wifi_[id]));
+  addresses.Assign(ns3::NetDeviceContainer(ip4_[id]));
 }
 
 // A UDP socket for controller messages on each IP the node speaks: IPv4 over its 802.11 radio,
@@ -516,21 +574,25 @@ double WirelessNetwork::ReceivedPower(NodeId from, NodeId to) const {
 // on any state but idle, busy, transmitting or receiving): it wakes first, in the same instant.
 void WirelessNetwork::SwitchOff(NodeId node) {
   if (HasLrWpan(node)) lr_wpan_->SwitchOff(node);
-  if (!HasWifi(node)) return;
+  if (abstract_ && HasWifi(node)) abstract_->SetOff(node, true);
+  if (!HasWifiPhy(node)) return;
   ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
   if (phy->IsStateSleep()) phy->ResumeFromSleep();
   phy->SetOffMode();
 }
 
 bool WirelessNetwork::IsOff(NodeId node) const {
-  return HasWifi(node) ? Phy(node)->IsStateOff() : HasLrWpan(node) && lr_wpan_->IsOff(node);
+  if (HasWifiPhy(node)) return Phy(node)->IsStateOff();
+  if (abstract_ && HasWifi(node)) return abstract_->IsOff(node);
+  return HasLrWpan(node) && lr_wpan_->IsOff(node);
 }
 
 // Awake: a radio put to sleep before it went off wakes with the node.
 void WirelessNetwork::SwitchOn(NodeId node) {
   if (!IsOff(node)) return;
   if (node < sleep_wanted_.size()) sleep_wanted_[node] = false;
-  if (HasWifi(node)) Phy(node)->ResumeFromOff();
+  if (HasWifiPhy(node)) Phy(node)->ResumeFromOff();
+  if (abstract_ && HasWifi(node)) abstract_->SetOff(node, false);
   if (HasLrWpan(node)) lr_wpan_->SwitchOn(node, false);
   if (node < cycle_asleep_.size()) ApplySleep(node);  // back in its duty cycle
 }
@@ -539,7 +601,7 @@ void WirelessNetwork::SwitchOn(NodeId node) {
 // receiving: ns-3's own SetSleepMode would otherwise defer itself to the end of the frame and
 // could put to sleep a radio woken in the meantime (or one switched off).
 bool WirelessNetwork::SetSleep(NodeId node, bool asleep) {
-  if (IsOff(node)) return false;
+  if (IsOff(node) || (!HasWifiPhy(node) && !HasLrWpan(node))) return false;
   if (sleep_wanted_.size() <= node) sleep_wanted_.resize(node + 1, false);
   sleep_wanted_[node] = asleep;
   ApplySleep(node);
@@ -575,7 +637,7 @@ ns3::Ptr<ns3::WifiPhy> WirelessNetwork::Phy(NodeId node) const { return wifi_.at
 void WirelessNetwork::ApplySleep(NodeId node) {
   const bool wanted = sleep_wanted_[node] || (node < cycle_asleep_.size() && cycle_asleep_[node]);
   if (HasLrWpan(node)) lr_wpan_->SetAsleep(node, wanted);
-  if (!HasWifi(node)) return;
+  if (!HasWifiPhy(node)) return;  // the abstract radio does not sleep
   ns3::Ptr<ns3::WifiPhy> phy = Phy(node);
   if (phy->IsStateOff() || wanted == phy->IsStateSleep()) return;
   if (!wanted) return phy->ResumeFromSleep();
@@ -601,7 +663,7 @@ void WirelessNetwork::Open(trace::ResultsFolder& folder) {
 void WirelessNetwork::OpenPcap(NodeId id) {
   if (HasLrWpan(id)) lr_wpan_->OpenPcap(id, pcap_dir_ + "/" + names_[id] + "-802.15.4.pcap");
   if (pcap_.size() <= id) pcap_.resize(id + 1);
-  if (!HasWifi(id)) return;
+  if (!HasWifiPhy(id)) return;
   auto file = ns3::CreateObject<ns3::PcapFileWrapper>();
   file->Open(pcap_dir_ + "/" + names_[id] + ".pcap", std::ios::out | std::ios::binary);
   file->Init(kDltIeee80211);
@@ -637,6 +699,9 @@ void WirelessNetwork::Close() {
 void WirelessNetwork::Moved(const std::vector<NodeId>& nodes) {
   if (indexed_)
     for (NodeId id : nodes) indexed_->Moved(id);
+  if (abstract_)
+    for (NodeId id : nodes)
+      if (HasWifi(id)) abstract_->Moved(id);
 }
 
 std::optional<NetworkTraces> WirelessNetwork::Traces() const {
@@ -652,7 +717,11 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   t.packet_logs = spec_.packet_log;
   t.taps = tap_ledger_;
   t.channel = frame_counts_;
-  t.channel.model = spec_.wifi_in_use ? ChannelName(spec_.channel) : "spectrum";
+  t.channel.model = abstract_ ? "abstract" : spec_.wifi_in_use ? ChannelName(spec_.channel) : "spectrum";
+  if (abstract_) {
+    t.channel.frames_sent += abstract_->counters().frames;
+    t.channel.frames_received += abstract_->counters().delivered;
+  }
   if (walls_) {
     t.channel.walls = walls_->walls();
     t.channel.wall_losses = walls_->counters().asked;
@@ -663,7 +732,7 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
     t.channel.shadowing_asked = shadowing_->counters().asked;
     t.channel.shadowing_computed = shadowing_->counters().computed;
   }
-  if (indexed_ && spec_.wifi_in_use) {
+  if (indexed_ && spec_.wifi_in_use && !abstract_) {
     t.channel.floor_dbm = spec_.ChannelFloor();
     t.channel.candidates = indexed_->counters().candidates;
     t.channel.handed = indexed_->counters().handed;

@@ -19,7 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "net/abstract_channel.h"
 #include "net/address_book.h"
+#include "net/channel_losses.h"
 #include "net/frame_trace.h"
 #include "net/indexed_channel.h"
 #include "net/link_loss_models.h"
@@ -97,7 +99,11 @@ class WirelessNetwork : public Transport {
   void Receive(NodeId node, ns3::Ptr<ns3::Socket> socket);
   void InstallLrWpan(NodeId id);  // its 802.15.4 radio, after the IP stack
   bool IsOff(NodeId node) const;
-  bool HasWifi(NodeId id) const { return wifi_.at(id) != nullptr; }
+  // An 802.11 radio, ns-3's whole model or the abstract one; and one of the whole model (a PHY).
+  bool HasWifi(NodeId id) const { return ip4_.at(id) != nullptr; }
+  bool HasWifiPhy(NodeId id) const { return wifi_.at(id) != nullptr; }
+  ns3::NetDeviceContainer InstallAbstract(NodeId id);
+  void ConfigureAbstract(const ChannelLosses& losses);
   bool SharesWifi(NodeId a, NodeId b) const { return HasWifi(a) && HasWifi(b); }
   bool HasLrWpan(NodeId id) const { return lr_wpan_ && lr_wpan_->Has(id); }
   void AssignAddress(NodeId id);
@@ -117,7 +123,9 @@ class WirelessNetwork : public Transport {
   std::int64_t next_stream_ = 0;  // the first random stream nobody uses yet
   ns3::NodeContainer nodes_;
   ns3::NetDeviceContainer devices_;                 // the 802.11 ones, in node order
-  std::vector<ns3::Ptr<ns3::WifiNetDevice>> wifi_;  // by node id; null without an 802.11 radio
+  std::vector<ns3::Ptr<ns3::WifiNetDevice>> wifi_;  // by node id; null without an 802.11 PHY
+  std::vector<ns3::Ptr<ns3::NetDevice>> ip4_;       // by node id: the device IPv4 uses (802.11, whole or abstract)
+  ns3::Ptr<AbstractChannel> abstract_;              // with radio_model: abstract
   std::unique_ptr<LrWpanRadios> lr_wpan_;           // when a node has an 802.15.4 radio
   ns3::Ptr<ObstacleLossModel> lr_wpan_walls_;
   std::vector<bool> sleep_wanted_;  // per node: what SetSleep asked for last

@@ -11,10 +11,17 @@
 #include <ns3/simulator.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <vector>
 
 #include "net/wireless_network.h"
+#include "scenario/scenario_loader.h"
+#include "sim/world.h"
+#include "support/test_world.h"
 
 namespace sanet::net {
 namespace {
@@ -168,6 +175,37 @@ TEST(AbstractRadio, AodvFindsRoutesAndMessagesArrive) {
     EXPECT_EQ(m.from, 0u);
     EXPECT_EQ(m.hops, 4);
   }
+}
+
+// A scenario on the abstract radio: the calibration is measured once and then read from the
+// cache, and the same seed gives the same run whichever, with one physics thread or two.
+TEST(AbstractRadio, AScenarioRunsTheSameFromAMeasuredOrACachedCalibration) {
+  const std::string cache = ::testing::TempDir() + "/sanet-calibration-cache";
+  std::filesystem::remove_all(cache);
+  setenv("SANET_CACHE", cache.c_str(), 1);
+  const auto run = [](int threads, const std::string& tag) {
+    const std::string yaml = "duration: 8\nworld: {threads: " + std::to_string(threads) +
+                             "}\nnetwork: {radio_model: abstract, routing: aodv}\nnodes:\n"
+                             "  - grid: {name: m, rows: 1, cols: 4, origin: [0, 0], spacing: 40}\n"
+                             "    model: mote\n"
+                             "  - {name: s, model: mote, pose: [0, 5, 0], controller: {name: pinger, params: {to: m3, "
+                             "interval: 1}}}\n";
+    sim::World world(scenario::LoadScenarioText(yaml, tag + ".yaml").run, testing::BuiltinRegistry());
+    const std::string dir = ::testing::TempDir() + "/sanet-abstract-" + tag;
+    std::filesystem::remove_all(dir);
+    const sim::RunResult result = world.Run({dir, ""});
+    std::ifstream in(dir + "/summary.json");
+    return std::pair{result.fingerprint, nlohmann::json::parse(in)["network"]};
+  };
+  const auto [first, measured] = run(1, "measured");
+  const auto [second, cached] = run(1, "cached");
+  const auto [threaded, ignored] = run(2, "threads");
+  unsetenv("SANET_CACHE");
+  EXPECT_EQ(measured["channel"]["calibration"], "measured");
+  EXPECT_EQ(cached["channel"]["calibration"], "cached");
+  EXPECT_EQ(first, second);
+  EXPECT_EQ(first, threaded);
+  EXPECT_GE(measured["packets"]["messages_received"].get<int>(), 5) << "over three hops of AODV";
 }
 
 }  // namespace

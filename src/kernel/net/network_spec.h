@@ -93,7 +93,9 @@ struct NetworkSpec {
   Radios radios;
   RadioModel radio_model = RadioModel::kFull;
   // With the abstract model: what the full model delivers against a link's mean power.
-  std::optional<LinkCalibration> calibration;     // every node's, unless it names its own (`network.radio`)
+  std::optional<LinkCalibration> calibration;
+  std::string calibration_source;  // "measured" or "cached", for the summary     // every node's, unless it names its
+                                   // own (`network.radio`)
   WifiStandard standard = WifiStandard::k80211b;  // of every 802.11 radio: they share one channel
   double data_rate = 1;                           // Mbps, one of the standard's rates; broadcasts go at the lowest
   double tx_power = 16;                           // dBm, every node unless it overrides it

@@ -49,6 +49,7 @@ using FrameObserver = std::function<void(const FrameEvent&)>;
 // What the channel did: how many radios each frame was handed to.
 struct ChannelCounts {
   std::string model;                                          // as in the scenario
+  std::string calibration;                                    // the abstract radio's: measured or cached
   std::optional<double> floor_dbm;                            // indexed only, as are the counts
   std::uint64_t frames_sent = 0, frames_received = 0;         // by the PHYs; received: whole and decoded
   std::uint64_t candidates = 0, handed = 0;                   // radios the grid offered, receptions scheduled

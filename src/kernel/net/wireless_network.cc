@@ -719,6 +719,7 @@ std::optional<NetworkTraces> WirelessNetwork::Traces() const {
   t.channel = frame_counts_;
   t.channel.model = abstract_ ? "abstract" : spec_.wifi_in_use ? ChannelName(spec_.channel) : "spectrum";
   if (abstract_) {
+    t.channel.calibration = spec_.calibration_source;
     t.channel.frames_sent += abstract_->counters().frames;
     t.channel.frames_received += abstract_->counters().delivered;
   }

@@ -273,6 +273,25 @@ void ReadPort(const Field& port, net::NetworkSpec& n) {
     if (n.port == taken) port.Fail(std::string("is the port of ") + by + "'s own messages");
 }
 
+void ReadRadioModel(const Field& f, net::NetworkSpec& n) {
+  const std::string text = f.Text();
+  if (text != "full" && text != "abstract") f.Fail("unknown value '" + text + "' (expected one of: full, abstract)");
+  n.radio_model = text == "abstract" ? net::RadioModel::kAbstract : net::RadioModel::kFull;
+}
+
+// How 802.11 radios are simulated, and the 802.15.4 radios' section.
+void RadioKinds(Fields<net::NetworkSpec>& f) {
+  using net::NetworkSpec;
+  f.Custom({"radio_model", "text", "", "`full`", "`full`, `abstract`",
+            "how 802.11 radios are simulated: ns-3's whole 802.11 model, or an abstraction calibrated against it, "
+            "for swarms (see [swarms.md](swarms.md#the-abstract-radio))"},
+           ReadRadioModel, [](const NetworkSpec& n) {
+             return n.radio_model == net::RadioModel::kAbstract ? YAML::Node("abstract") : YAML::Node();
+           });
+  f.Custom(LrWpanEntry(), ReadLrWpan,
+           [](const NetworkSpec& n) { return n.lr_wpan_in_use ? PrintLrWpan(n) : YAML::Node(); });
+}
+
 // What the network writes besides the run's own results.
 void TraceFlags(Fields<net::NetworkSpec>& f) {
   using net::NetworkSpec;
@@ -341,8 +360,7 @@ const Fields<net::NetworkSpec>& NetworkFields() {
     f.Custom({"port", "whole number", "", "", "[1, 65535], not 654, 698 or 269 (AODV, OLSR, DSDV)",
               "UDP port of controller messages"},
              ReadPort, [](const NetworkSpec& n) { return YAML::Node(static_cast<int>(n.port)); });
-    f.Custom(LrWpanEntry(), ReadLrWpan,
-             [](const NetworkSpec& n) { return n.lr_wpan_in_use ? PrintLrWpan(n) : YAML::Node(); });
+    RadioKinds(f);
     TraceFlags(f);
     f.Custom({"ns3", "mapping", "", "none", "ns-3 attribute names to values, see [ns-3 attributes](#ns-3-attributes)",
               "defaults of ns-3's own attributes (routing, MAC, PHY, channel)"},

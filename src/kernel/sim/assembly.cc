@@ -10,6 +10,7 @@
 #include "net/body_mobility_model.h"
 #include "net/local_transport.h"
 #include "net/wireless_network.h"
+#include "sim/radio_calibration.h"
 #include "sim/radio_walls.h"
 
 namespace sanet::sim {
@@ -54,6 +55,8 @@ Assembly::Assembly(const RunSpec& spec, hosting::Registry& registry, RobotDriver
   try {
     clock_ = std::make_unique<SimulationClock>();
     poses_ = std::make_unique<PosePipeline>([this](const std::vector<NodeId>& moved) { transport_->Moved(moved); });
+    // Before any ns-3 object of the run: measuring runs simulations of its own.
+    if (spec.network && spec.network->radio_model == net::RadioModel::kAbstract) calibration_ = CalibrationFor(spec);
     ns3::RngSeedManager::SetSeed(net::Ns3Seed(spec.seed));
     BuildBodies();
     BuildTransport();
@@ -101,6 +104,7 @@ void Assembly::BuildTransport() {
     for (const NodeSpec& n : run_nodes_) names.push_back(n.name), radios.push_back(n.radio);
     net::NetworkSpec network = *spec_.network;
     network.seed = spec_.seed;  // shadowing, fading and hardware spread draw from the run's seed
+    if (calibration_) network.calibration = calibration_->table, network.calibration_source = calibration_->source;
     auto wireless = std::make_unique<net::WirelessNetwork>(
         network, nodes, names, radios, RadioWalls(spec_),
         network.lr_wpan_in_use ? RadioWalls(spec_, net::kLrWpanFrequencyHz) : std::vector<net::RadioObstacle>{});

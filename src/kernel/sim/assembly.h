@@ -17,6 +17,7 @@
 #include "sim/message_ledger.h"
 #include "sim/node_batteries.h"
 #include "sim/pose_pipeline.h"
+#include "sim/radio_calibration.h"
 #include "sim/remote_inbox.h"
 #include "sim/run_events.h"
 #include "sim/run_nodes.h"
@@ -128,6 +129,7 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   void FollowBody(NodeId id, net::BodyMobilityModel* mobility);  // its radio, from its body's pose now
 
   const RunSpec spec_;
+  std::optional<Calibration> calibration_;  // the abstract radio's, measured or cached
   RunNodes run_nodes_;
   const RobotDrivers drivers_;
   std::unique_ptr<physics::PipelinedWorld> physics_;

@@ -42,6 +42,7 @@ nlohmann::ordered_json ChannelSummary(const net::ChannelCounts& c) {
   if (c.walls > 0)
     out["walls"] = {{"obstacles", c.walls}, {"losses_asked", c.wall_losses}, {"losses_computed", c.wall_walks}};
   if (c.shadowing) out["shadowing"] = {{"asked", c.shadowing_asked}, {"computed", c.shadowing_computed}};
+  if (!c.calibration.empty()) out["calibration"] = c.calibration;
   if (!c.floor_dbm) return out;
   const double frames = c.frames_sent ? static_cast<double>(c.frames_sent) : 1.0;
   out["floor_dbm"] = *c.floor_dbm;

@@ -8,6 +8,8 @@ second each) run as `sanet run` runs them, for a few simulated seconds each:
   ... without radio          the same robots, controllers and physics, with no network and
                              no beacons: the baseline, measured in the same run, that tells
                              the radio's share of the cost
+  ..., abstract radio        network.radio_model: abstract (docs/swarms.md#the-abstract-radio), its
+                             calibration measured before the case if not cached
   swarm-1k, yans channel     the radio on ns-3's YansWifiChannel (every frame to every radio)
   ..., 2 threads             the indexed-channel case again with the physics on its own thread
 
@@ -44,6 +46,10 @@ def without_radio(text):
     return text.replace("params: {", "params: {beacon: 1.0e9, ", 1)
 
 
+def with_abstract(text):
+    return text.replace("network:\n", "network:\n  radio_model: abstract\n", 1)
+
+
 def with_yans(text):
     text = re.sub(r"^  channel: .*\n", "", text, flags=re.M)  # the scenario's own, if any
     return text.replace("network:\n", "network:\n  channel: {model: yans}\n", 1)
@@ -73,7 +79,8 @@ def main():
                                              ("swarm-10k", args.seconds_10k, 10000, False)):
             path = os.path.join(ROOT, "scenarios", name + ".yaml")
             cases = [("without radio", variant(path, tmp, name + "-local", without_radio), 1),
-                     ("indexed channel", path, 1), ("indexed, 2 threads", path, 2)]
+                     ("indexed channel", path, 1), ("indexed, 2 threads", path, 2),
+                     ("abstract radio", variant(path, tmp, name + "-abstract", with_abstract), 1)]
             if extra:
                 cases.append(("yans channel", variant(path, tmp, name + "-yans", with_yans), 1))
             base = None

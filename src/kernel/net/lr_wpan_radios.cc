@@ -36,36 +36,28 @@ class SensitivityCut : public ns3::PropagationLossModel {
     return tid;
   }
   static constexpr double kUnheardDb = 2000;  // past the channel's MaxLossDb: no reception scheduled
-  // `off`: senders cut from the channel; `deaf`: receivers.
-  void Set(ns3::Ptr<ns3::PropagationLossModel> losses, const std::vector<double>* tx_power_dbm,
-           const std::vector<bool>* off, const std::vector<bool>* deaf, const NetworkSpec* spec) {
+  void Set(ns3::Ptr<ns3::PropagationLossModel> losses, const LrWpanRadios::Links* links) {
     losses_ = std::move(losses);
-    tx_power_dbm_ = tx_power_dbm;
-    off_ = off;
-    deaf_ = deaf;
-    spec_ = spec;
+    links_ = links;
   }
 
  private:
   double DoCalcRxPower(double tx_power_dbm, ns3::Ptr<ns3::MobilityModel> a,
                        ns3::Ptr<ns3::MobilityModel> b) const override {
     const ns3::Ptr<ns3::Node> from = a->GetObject<ns3::Node>(), to = b->GetObject<ns3::Node>();
-    if (!from || !to || from->GetId() >= tx_power_dbm_->size()) return tx_power_dbm;
-    if ((*off_)[from->GetId()] || (to->GetId() < deaf_->size() && (*deaf_)[to->GetId()]))
+    const LrWpanRadios::Links& l = *links_;
+    if (!from || !to || from->GetId() >= l.tx_power_dbm.size()) return tx_power_dbm;
+    if (l.off[from->GetId()] || to->GetId() >= l.deaf.size() || l.deaf[to->GetId()])
       return tx_power_dbm - kUnheardDb;  // a radio switched off sends nothing; one off or asleep hears nothing
-    const double sent = (*tx_power_dbm_)[from->GetId()];
+    const double sent = l.tx_power_dbm[from->GetId()];
     const double arrives = losses_->CalcRxPower(sent, a, b);
-    const double sensitivity = spec_->lr_wpan.rx_threshold + NoiseFigureOffsetDb(*spec_, to->GetId());
-    if (arrives < sensitivity) return tx_power_dbm - kUnheardDb;
+    if (arrives < l.sensitivity_dbm[to->GetId()]) return tx_power_dbm - kUnheardDb;
     return tx_power_dbm + arrives - sent;
   }
   int64_t DoAssignStreams(int64_t) override { return 0; }
 
   ns3::Ptr<ns3::PropagationLossModel> losses_;
-  const std::vector<double>* tx_power_dbm_ = nullptr;
-  const std::vector<bool>* off_ = nullptr;
-  const std::vector<bool>* deaf_ = nullptr;
-  const NetworkSpec* spec_ = nullptr;
+  const LrWpanRadios::Links* links_ = nullptr;
 };
 
 namespace {
@@ -86,7 +78,7 @@ LrWpanRadios::LrWpanRadios(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> 
   const ChannelLosses losses = BuildChannelLosses(spec_, walls, kLrWpanFrequencyHz, spec_.lr_wpan.rx_threshold);
   mean_ = losses.mean;
   auto cut = ns3::CreateObject<SensitivityCut>();
-  cut->Set(losses.frames, &tx_power_dbm_, &off_, &deaf_, &spec_);
+  cut->Set(losses.frames, &links_);
   auto channel = ns3::CreateObject<ns3::SingleModelSpectrumChannel>();
   channel->SetAttribute("MaxLossDb", ns3::DoubleValue(SensitivityCut::kUnheardDb / 2));
   channel->AddPropagationLossModel(cut);
@@ -105,11 +97,11 @@ LrWpanRadios::LrWpanRadios(const NetworkSpec& spec, ns3::Ptr<ObstacleLossModel> 
 LrWpanRadios::~LrWpanRadios() { ClosePcaps(); }
 
 void LrWpanRadios::Install(NodeId id, ns3::Ptr<ns3::Node> node, double tx_power_dbm) {
-  if (radios_.size() <= id)
-    radios_.resize(id + 1), tx_power_dbm_.resize(id + 1, 0), off_.resize(id + 1, false), deaf_.resize(id + 1, false);
+  if (radios_.size() <= id) radios_.resize(id + 1), links_.Resize(id + 1);
   Radio& r = radios_[id];
   r.tx_power_dbm = tx_power_dbm;
-  tx_power_dbm_[id] = tx_power_dbm;
+  links_.tx_power_dbm[id] = tx_power_dbm;
+  links_.sensitivity_dbm[id] = spec_.lr_wpan.rx_threshold + NoiseFigureOffsetDb(spec_, id);  // once, not per frame
   r.device = ns3::CreateObject<ns3::LrWpanNetDevice>();
   r.device->SetChannel(channel_);
   node->AddDevice(r.device);
@@ -169,25 +161,26 @@ void LrWpanRadios::SetAsleep(NodeId id, bool asleep) {
 // for good: a radio switched off is cut from the channel instead, so that nothing it still sends
 // (its MAC's queue, retries) reaches anyone and nothing reaches it.
 void LrWpanRadios::SwitchOff(NodeId id) {
-  radios_.at(id).off = off_[id] = true;
+  radios_.at(id).off = links_.off[id] = true;
   Changed(id);
 }
 
 void LrWpanRadios::SwitchOn(NodeId id, bool asleep) {
   Radio& r = radios_.at(id);
-  r.off = off_[id] = false;
+  r.off = links_.off[id] = false;
   r.asleep = asleep;
   Changed(id);
 }
 
 void LrWpanRadios::Changed(NodeId id) {
   const Radio& r = radios_[id];
-  deaf_[id] = r.off || (r.asleep && r.mac_idle);
+  links_.deaf[id] = r.off || (r.asleep && r.mac_idle);
   if (r.sleep_changed) r.sleep_changed();
 }
 
 double LrWpanRadios::ReceivedPower(NodeId from, NodeId to) const {
-  return mean_->CalcRxPower(tx_power_dbm_.at(from), radios_.at(from).device->GetNode()->GetObject<ns3::MobilityModel>(),
+  return mean_->CalcRxPower(links_.tx_power_dbm.at(from),
+                            radios_.at(from).device->GetNode()->GetObject<ns3::MobilityModel>(),
                             radios_.at(to).device->GetNode()->GetObject<ns3::MobilityModel>());
 }
 

@@ -89,6 +89,16 @@ class LrWpanRadios {
   // A unicast that the MAC gave up on (no acknowledgement after its retries, or a busy channel).
   void OnMacDrop(std::function<void(NodeId, ns3::Ptr<const ns3::Packet>)> dropped) { mac_drop_ = std::move(dropped); }
 
+  // What the channel's sensitivity cut asks of each radio, by node id.
+  struct Links {
+    std::vector<double> tx_power_dbm, sensitivity_dbm;  // with the node's hardware spread
+    std::vector<bool> off;                              // switched off: sends nothing
+    std::vector<bool> deaf;                             // off, or asleep with its MAC idle: hears nothing
+    void Resize(std::size_t n) {
+      tx_power_dbm.resize(n, 0), sensitivity_dbm.resize(n, 0), off.resize(n, false), deaf.resize(n, false);
+    }
+  };
+
  private:
   struct Radio {
     ns3::Ptr<ns3::LrWpanNetDevice> device;
@@ -113,9 +123,7 @@ class LrWpanRadios {
   ns3::Ptr<ns3::PropagationDelayModel> delay_;
   ns3::Ptr<ns3::PropagationLossModel> mean_;  // without fading, for ReceivedPower
   std::vector<Radio> radios_;                 // by node id; empty where a node has none
-  std::vector<double> tx_power_dbm_;          // by node id, for the channel's losses
-  std::vector<bool> off_;                     // by node id: switched off, cut from the channel
-  std::vector<bool> deaf_;                    // by node id: off, or asleep with its MAC idle
+  Links links_;
   ChannelCounts* counts_ = nullptr;
   FrameObserver observer_;
   std::function<void(NodeId, ns3::Ptr<const ns3::Packet>)> mac_drop_;

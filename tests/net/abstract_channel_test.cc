@@ -28,6 +28,15 @@ namespace {
 
 constexpr double kTxPower = 10;  // dBm
 constexpr int kFrames = 2000;
+constexpr int kBytes = 20;  // each frame's packet
+// The devices set no data rate (no serialization): the channel adds the whole frame's airtime
+// beyond it, the preamble and the MAC's bytes, and for a broadcast its bytes at the lower rate.
+constexpr double kPreamble = 192e-6, kDataRate = 2e6, kBroadcastRate = 1e6;
+double UnicastAirtime() { return kPreamble + AbstractChannel::kMacOverhead * 8 / kDataRate; }
+double BroadcastAirtime() {
+  return kPreamble + AbstractChannel::kMacOverhead * 8 / kBroadcastRate +
+         kBytes * 8 * (1 / kBroadcastRate - 1 / kDataRate);
+}
 
 // PRR 1 at -70 dBm and above, falling linearly to 0 at -90 dBm; 2 ms of access delay at -70,
 // 4 ms at -90.
@@ -54,6 +63,7 @@ struct Field {
     s.tx_power_dbm = [](std::uint32_t) { return kTxPower; };
     s.seed = seed;
     s.range_m = 200;
+    s.preamble_s = kPreamble, s.data_rate_bps = kDataRate, s.broadcast_rate_bps = kBroadcastRate;
     channel->Configure(s);
     for (std::uint32_t i = 0; i < nodes.GetN(); ++i) {
       auto at = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
@@ -76,7 +86,7 @@ struct Field {
     const ns3::Address dst = to ? devices[*to]->GetAddress() : devices[0]->GetBroadcast();
     for (int k = 0; k < kFrames; ++k)
       ns3::Simulator::Schedule(ns3::MilliSeconds(k),
-                               [this, dst] { devices[0]->Send(ns3::Create<ns3::Packet>(20), dst, 0x800); });
+                               [this, dst] { devices[0]->Send(ns3::Create<ns3::Packet>(kBytes), dst, 0x800); });
     ns3::Simulator::Stop(ns3::Seconds(kFrames * 0.001 + 1));
     ns3::Simulator::Run();
   }
@@ -103,18 +113,32 @@ TEST(AbstractChannel, DeliversTheCalibrationsShareAtEachLinksMeanPower) {
   EXPECT_EQ(heard.back(), 0u) << "under the weakest power heard, nothing";
 }
 
-TEST(AbstractChannel, AUnicastReachesOnlyItsAddresseeAfterTheAccessDelay) {
+// Frame k left at k ms: each arrival is that much later than a whole millisecond.
+void ExpectDelays(const std::vector<double>& arrivals, double delay) {
+  for (double t : arrivals) {
+    const double sent = std::round((t - delay) * 1000) / 1000;
+    EXPECT_NEAR(t - sent, delay, 1e-9);
+  }
+}
+
+TEST(AbstractChannel, AUnicastReachesOnlyItsAddresseeAfterItsAirtimeAndTheAccessDelay) {
   {
     Field field({5, 10}, 3);  // -68 and -77 dBm: node 1 would hear every frame, node 2 most
     field.SendAll(2);
     EXPECT_TRUE(field.arrivals[1].empty()) << "not the addressee";
     const double p = Calibration().Prr(MeanPower(10));
     EXPECT_NEAR(static_cast<double>(field.arrivals[2].size()) / kFrames, p, 4 * std::sqrt(p * (1 - p) / kFrames));
-    const double delay = Calibration().AccessDelay(MeanPower(10));
-    for (double t : field.arrivals[2]) {  // frame k left at k ms (no data rate set: no airtime)
-      const double sent = std::round((t - delay) * 1000) / 1000;
-      EXPECT_NEAR(t - sent, delay, 1e-9);
-    }
+    ExpectDelays(field.arrivals[2], UnicastAirtime() + Calibration().AccessDelay(MeanPower(10)));
+  }
+  ns3::Simulator::Destroy();
+}
+
+TEST(AbstractChannel, ABroadcastGoesAtTheLowerRate) {
+  {
+    Field field({5}, 3);
+    field.SendAll();
+    EXPECT_EQ(field.arrivals[1].size(), static_cast<std::size_t>(kFrames));
+    ExpectDelays(field.arrivals[1], BroadcastAirtime() + Calibration().AccessDelay(MeanPower(5)));
   }
   ns3::Simulator::Destroy();
 }

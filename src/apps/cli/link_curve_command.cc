@@ -9,6 +9,7 @@
 #include "interruption.h"
 #include "run_common.h"
 #include "sim/link_curve.h"
+#include "sim/radio_calibration.h"
 
 namespace sanet::cli {
 namespace {
@@ -40,7 +41,7 @@ void ClaimCurveFolder(const std::string& dir, bool force) {
                                dir + " holds an earlier link curve: --force replaces it, or give another folder");
 }
 
-void PrintCurve(const sim::LinkCurve& curve, const std::string& dir) {
+void PrintCurve(const sim::LinkCurve& curve, const std::string& dir, bool calibrates) {
   std::printf("  %-10s %-9s %-6s %-8s %-8s\n", "distance", "mean dBm", "PRR", ">=0.9", ">0.1");
   for (const sim::LinkCurveRow& r : curve.rows)
     std::printf("  %7.1f m %9.1f %6.3f %8.2f %8.2f\n", r.distance, r.mean_dbm, r.Prr(), r.share_90, r.share_10);
@@ -50,7 +51,17 @@ void PrintCurve(const sim::LinkCurve& curve, const std::string& dir) {
   std::printf("  connected up to %s, disconnected from %s (95 %% of links)", bound(curve.connected_to).c_str(),
               bound(curve.disconnected_from).c_str());
   if (curve.p50_dbm) std::printf("; half the frames arrive at a mean of %.1f dBm", *curve.p50_dbm);
-  std::printf("\n  results in %s/\n", dir.c_str());
+  std::printf("\n");
+  if (calibrates) std::printf("  calibration.csv: this curve as the abstract radio's network.calibration\n");
+  std::printf("  results in %s/\n", dir.c_str());
+}
+
+// The abstract radio is measured with the table it draws from (its own, the cached or a new one).
+void Calibrate(net::NetworkSpec& network, const sim::RunSpec& spec, bool quiet) {
+  if (network.radio_model != net::RadioModel::kAbstract) return;
+  if (!quiet) std::printf("sanet: the abstract radio's calibration: %s\n", sim::DescribeCalibration(network).c_str());
+  const sim::Calibration c = sim::CalibrationFor(spec);
+  network.calibration = c.table, network.calibration_source = c.source;
 }
 
 int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
@@ -66,6 +77,7 @@ int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
       throw CLI::ValidationError("--along", "its two points are the same: no direction to lay the line in");
     a.options.along = {a.along[0], a.along[1], a.along[2], a.along[3]};
   }
+  Calibrate(*sc.run.network, sc.run, a.quiet);
   const bool from_given = a.options.from > 0;
   sim::DefaultDistances(*sc.run.network, a.options);
   if (a.options.from > a.options.to)
@@ -99,7 +111,7 @@ int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
                  InterruptReason().c_str(), curve.sets_done, a.options.sets, dir.c_str());
     return 128 + InterruptSignal();
   }
-  if (!a.quiet) PrintCurve(curve, dir);
+  if (!a.quiet) PrintCurve(curve, dir, sim::CurveCalibrates(sc.run, a.options));
   return 0;
 }
 

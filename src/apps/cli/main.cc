@@ -38,6 +38,7 @@
 #include "scenario/effective_scenario.h"
 #include "scenario/scenario_loader.h"
 #include "serve_command.h"
+#include "sim/radio_calibration.h"
 #include "sim/world.h"
 #include "study_commands.h"
 #include "terminal_progress.h"
@@ -129,8 +130,12 @@ int Run(const RunArgs& args, hosting::Registry& registry) {
 
 int Validate(const std::string& file, const std::vector<std::string>& sets, bool print, hosting::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(file, sets, registry);
+  const net::NetworkSpec* network = sc.run.network ? &*sc.run.network : nullptr;
+  const bool abstract = network && network->radio_model == net::RadioModel::kAbstract;
   if (print) {
     std::fputs(scenario::EffectiveScenarioYaml(sc).c_str(), stdout);
+    // A comment, so that the printed scenario still loads: where the abstract radio's table comes from.
+    if (abstract) std::printf("# network.calibration: %s\n", sim::DescribeCalibration(*network).c_str());
     return 0;
   }
   std::size_t robots = 0, controlled = 0;
@@ -142,6 +147,7 @@ int Validate(const std::string& file, const std::vector<std::string>& sets, bool
               Count(sc.run.nodes.size(), "node").c_str(), Count(robots, "robot").c_str(), controlled,
               Count(sc.run.obstacles.size(), "obstacle").c_str(), sc.run.duration,
               static_cast<unsigned long long>(sc.run.seed));
+  if (abstract) std::printf("  the abstract radio's calibration: %s\n", sim::DescribeCalibration(*network).c_str());
   return 0;
 }
 

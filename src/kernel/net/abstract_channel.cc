@@ -1,21 +1,17 @@
 #include "net/abstract_channel.h"
 
-#include <ns3/mobility-model.h>
 #include <ns3/node.h>
 #include <ns3/simulator.h>
 
 #include <algorithm>
 
 #include "core/counter_random.h"
+#include "net/frame_trace.h"
 
 namespace sanet::net {
 namespace {
 
 constexpr std::uint64_t kDeliveryKey = 0x41425354ull;  // "ABST"
-
-ns3::Ptr<ns3::MobilityModel> MobilityOf(const ns3::Ptr<ns3::SimpleNetDevice>& device) {
-  return device->GetNode()->GetObject<ns3::MobilityModel>();
-}
 
 }  // namespace
 
@@ -35,15 +31,19 @@ void AbstractChannel::Configure(Settings settings) {
 
 void AbstractChannel::Add(ns3::Ptr<ns3::SimpleNetDevice> device) {
   const std::uint32_t index = device->GetNode()->GetId();
-  if (devices_.size() <= index) devices_.resize(index + 1), sent_.resize(index + 1, 0), off_.resize(index + 1, false);
+  if (devices_.size() <= index) {
+    devices_.resize(index + 1), mobility_.resize(index + 1);
+    sent_.resize(index + 1, 0), off_.resize(index + 1, false);
+  }
   devices_[index] = device;
+  mobility_[index] = device->GetNode()->GetObject<ns3::MobilityModel>();
   by_address_[ns3::Mac48Address::ConvertFrom(device->GetAddress())] = index;
   Moved(index);
 }
 
 void AbstractChannel::Moved(std::uint32_t index) {
   if (index >= devices_.size() || !devices_[index]) return;
-  const ns3::Vector at = MobilityOf(devices_[index])->GetPosition();
+  const ns3::Vector at = mobility_[index]->GetPosition();
   grid_.Place(index, at.x, at.y);
 }
 
@@ -55,10 +55,14 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
   ++counters_.frames;
   if (!to.IsBroadcast() && !to.IsGroup()) {
     const auto addressee = by_address_.find(to);
-    if (addressee != by_address_.end()) Offer(origin, addressee->second, frame, p, protocol, to, from);
+    const std::optional<std::uint32_t> peer =
+        addressee == by_address_.end() ? std::nullopt : std::optional(addressee->second);
+    if (observer_) Observe(origin, true, peer, p, protocol, false);
+    if (peer) Offer(origin, *peer, frame, p, protocol, to, from);
     return;
   }
-  const ns3::Vector at = MobilityOf(sender)->GetPosition();
+  if (observer_) Observe(origin, true, std::nullopt, p, protocol, true);
+  const ns3::Vector at = mobility_[origin]->GetPosition();
   near_.clear();
   grid_.Near(at.x, at.y, settings_.range_m, near_);
   for (std::uint32_t receiver : near_)
@@ -70,15 +74,42 @@ void AbstractChannel::Offer(std::uint32_t from, std::uint32_t to, std::uint64_t 
                             uint16_t protocol, ns3::Mac48Address dst, ns3::Mac48Address src) {
   if (off_[to]) return;
   ++counters_.asked;
-  const ns3::Ptr<ns3::SimpleNetDevice>& receiver = devices_[to];
-  const double dbm =
-      settings_.mean_loss->CalcRxPower(settings_.tx_power_dbm(from), MobilityOf(devices_[from]), MobilityOf(receiver));
+  const double dbm = settings_.mean_loss->CalcRxPower(settings_.tx_power_dbm(from), mobility_[from], mobility_[to]);
   if (dbm < lowest_dbm_) return;
   CounterRandom draw(settings_.seed, {kDeliveryKey, from, to, frame});
   if (draw.Uniform() >= settings_.calibration.Prr(dbm)) return;
   ++counters_.delivered;
-  ns3::Simulator::ScheduleWithContext(to, ns3::Seconds(settings_.calibration.AccessDelay(dbm)),
-                                      &ns3::SimpleNetDevice::Receive, receiver, p->Copy(), protocol, dst, src);
+  const ns3::Time delay = ns3::Seconds(AirtimeBeyondSerialization(p->GetSize(), dst.IsBroadcast() || dst.IsGroup()) +
+                                       settings_.calibration.AccessDelay(dbm));
+  if (observer_)
+    ns3::Simulator::ScheduleWithContext(to, delay, &AbstractChannel::Arrive, this, from, to, p->Copy(), protocol, dst,
+                                        src);
+  else
+    ns3::Simulator::ScheduleWithContext(to, delay, &ns3::SimpleNetDevice::Receive, devices_[to], p->Copy(), protocol,
+                                        dst, src);
+}
+
+double AbstractChannel::AirtimeBeyondSerialization(std::uint32_t bytes, bool broadcast) const {
+  const double rate = broadcast ? settings_.broadcast_rate_bps : settings_.data_rate_bps;
+  return settings_.preamble_s + kMacOverhead * 8 / rate + bytes * 8 * (1 / rate - 1 / settings_.data_rate_bps);
+}
+
+void AbstractChannel::Arrive(std::uint32_t from, std::uint32_t to, ns3::Ptr<ns3::Packet> p, uint16_t protocol,
+                             ns3::Mac48Address dst, ns3::Mac48Address src) {
+  Observe(to, false, from, p, protocol, dst.IsBroadcast() || dst.IsGroup());
+  devices_[to]->Receive(p, protocol, dst, src);
+}
+
+void AbstractChannel::Observe(std::uint32_t node, bool sent, std::optional<std::uint32_t> peer,
+                              ns3::Ptr<const ns3::Packet> p, uint16_t protocol, bool broadcast) const {
+  FrameEvent e;
+  e.t = ns3::Simulator::Now().GetSeconds();
+  e.node = node;
+  e.sent = sent;
+  if (peer) e.peer = NodeId{*peer};
+  e.bytes = p->GetSize() + kMacOverhead;
+  e.kind = PayloadKind(protocol, p->Copy(), broadcast);
+  observer_(e);
 }
 
 }  // namespace sanet::net

@@ -11,21 +11,25 @@
 //   the sender's frame number), so that it depends on nothing else that happens.
 // - A unicast frame is considered only at its addressee (an 802.11 MAC's filtering would drop it
 //   everywhere else); broadcasts at every radio the spatial grid places within range.
-// - The sender's device serializes its frames at the radio's data rate (its airtime), and the
-//   channel adds the calibration's access delay. Frames do not collide: contention, hidden
+// - The sender's device serializes its frames (IP packets) at the radio's data rate, and the
+//   channel adds the rest of the frame's airtime (preamble, MAC bytes; broadcasts at the lowest
+//   rate) and the calibration's access delay. Frames do not collide: contention, hidden
 //   terminals and retransmissions are in the calibration's averages only.
 #pragma once
 
 #include <ns3/mac48-address.h>
+#include <ns3/mobility-model.h>
 #include <ns3/propagation-loss-model.h>
 #include <ns3/simple-channel.h>
 #include <ns3/simple-net-device.h>
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "net/link_calibration.h"
+#include "net/network_traces.h"
 #include "net/spatial_grid.h"
 
 namespace sanet::net {
@@ -39,6 +43,11 @@ class AbstractChannel : public ns3::SimpleChannel {
     std::function<double(std::uint32_t node)> tx_power_dbm;
     std::uint64_t seed = 0;
     double range_m = 0;  // no receiver farther than this is asked (where the loss puts LowestHeardDbm)
+    // What a frame's time on the air adds to the sending device's serialization (its IP packet at
+    // the data rate): the PHY preamble, the MAC's bytes, and for a broadcast the difference of
+    // the lowest rate (802.11 sends broadcasts at a basic rate) to the data rate.
+    double preamble_s = 0;
+    double data_rate_bps = 1e6, broadcast_rate_bps = 1e6;
   };
   AbstractChannel() : grid_(50) {}
   void Configure(Settings settings);
@@ -55,12 +64,22 @@ class AbstractChannel : public ns3::SimpleChannel {
   // Node `index` moved: its grid cell follows (before its next frame).
   void Moved(std::uint32_t index);
 
+  // Frames as the run's trace sees them: sent when the channel takes one, received when it arrives.
+  void ObserveFrames(FrameObserver observer) { observer_ = std::move(observer); }
+  // The bytes an 802.11 frame adds to the IP packet: MAC header, LLC/SNAP and FCS.
+  static constexpr std::uint32_t kMacOverhead = 24 + 8 + 4;
+
   struct Counters {
     std::uint64_t frames = 0, asked = 0, delivered = 0;
   };
   const Counters& counters() const { return counters_; }
 
  private:
+  double AirtimeBeyondSerialization(std::uint32_t bytes, bool broadcast) const;
+  void Observe(std::uint32_t node, bool sent, std::optional<std::uint32_t> peer, ns3::Ptr<const ns3::Packet> p,
+               uint16_t protocol, bool broadcast) const;
+  void Arrive(std::uint32_t from, std::uint32_t to, ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac48Address dst,
+              ns3::Mac48Address src);
   void Offer(std::uint32_t from, std::uint32_t to, std::uint64_t frame, ns3::Ptr<ns3::Packet> p, uint16_t protocol,
              ns3::Mac48Address dst, ns3::Mac48Address src);
 
@@ -68,11 +87,13 @@ class AbstractChannel : public ns3::SimpleChannel {
   double lowest_dbm_ = 0;
   SpatialGrid grid_;
   std::vector<ns3::Ptr<ns3::SimpleNetDevice>> devices_;  // by node id
+  std::vector<ns3::Ptr<ns3::MobilityModel>> mobility_;   // by node id: asked for every link of every frame
   std::map<ns3::Mac48Address, std::uint32_t> by_address_;
   std::vector<std::uint64_t> sent_;  // frames each node sent
   std::vector<bool> off_;            // by node id
   std::vector<std::uint32_t> near_;  // scratch
   Counters counters_;
+  FrameObserver observer_;
 };
 
 }  // namespace sanet::net

@@ -18,19 +18,23 @@ constexpr std::uint16_t kArp = 0x0806, kIpv4 = 0x0800;
 const char* DataKind(const ns3::WifiMacHeader& mac, ns3::Ptr<ns3::Packet> body) {
   ns3::LlcSnapHeader llc;
   if (body->RemoveHeader(llc) == 0) return "data";
-  if (llc.GetType() == kArp) return "arp";
+  return PayloadKind(llc.GetType(), body, mac.GetAddr1().IsBroadcast());
+}
+
+}  // namespace
+
+const char* PayloadKind(std::uint16_t ethertype, ns3::Ptr<ns3::Packet> body, bool broadcast) {
+  if (ethertype == kArp) return "arp";
   ns3::Ipv4Header ip;
-  if (llc.GetType() == kIpv4 && body->RemoveHeader(ip) != 0 && ip.GetProtocol() == kUdpProtocol) {
+  if (ethertype == kIpv4 && body->RemoveHeader(ip) != 0 && ip.GetProtocol() == kUdpProtocol) {
     ns3::UdpHeader udp;
     if (body->PeekHeader(udp) != 0) {
       const std::uint16_t port = udp.GetDestinationPort();
       if (port == kAodvPort || port == kOlsrPort || port == kDsdvPort) return "routing";
     }
   }
-  return mac.GetAddr1().IsBroadcast() ? "broadcast" : "data";
+  return broadcast ? "broadcast" : "data";
 }
-
-}  // namespace
 
 void FrameTrace::Attach(NodeId node, ns3::Ptr<ns3::WifiNetDevice> device) {
   nodes_[ns3::Mac48Address::ConvertFrom(device->GetAddress())] = node;

@@ -13,6 +13,10 @@
 
 namespace sanet::net {
 
+// What a frame's payload of `ethertype` carries: arp, routing (AODV/OLSR/DSDV over UDP), else
+// broadcast or data. Reads (and removes) the IP header from `body`, a copy.
+const char* PayloadKind(std::uint16_t ethertype, ns3::Ptr<ns3::Packet> body, bool broadcast);
+
 class FrameTrace {
  public:
   explicit FrameTrace(FrameObserver observer) : observer_(std::move(observer)) {}

@@ -33,6 +33,8 @@ const char* ChannelName(ChannelModel model);
 const char* StandardName(WifiStandard standard);
 // The data rates (Mbps) a standard offers.
 std::vector<double> DataRates(WifiStandard standard);
+// A frame's PHY preamble and header: 192 us for 802.11b's long DSSS preamble, 20 us for OFDM.
+inline double PreambleSeconds(WifiStandard standard) { return standard == WifiStandard::k80211b ? 192e-6 : 20e-6; }
 // The carrier frequency (Hz) of the channel sanet uses: 2.412 GHz (channel 1) for 802.11b and
 // 802.11g, 5.18 GHz (channel 36) for 802.11a.
 inline double FrequencyHz(WifiStandard standard) { return standard == WifiStandard::k80211a ? 5.18e9 : 2.412e9; }
@@ -94,8 +96,8 @@ struct NetworkSpec {
   RadioModel radio_model = RadioModel::kFull;
   // With the abstract model: what the full model delivers against a link's mean power.
   std::optional<LinkCalibration> calibration;
-  std::string calibration_source;  // "measured" or "cached", for the summary     // every node's, unless it names its
-                                   // own (`network.radio`)
+  std::string calibration_file;                   // the scenario's `network.calibration` file, where it named one
+  std::string calibration_source;                 // "measured", "cached" or "file", for the summary
   WifiStandard standard = WifiStandard::k80211b;  // of every 802.11 radio: they share one channel
   double data_rate = 1;                           // Mbps, one of the standard's rates; broadcasts go at the lowest
   double tx_power = 16;                           // dBm, every node unless it overrides it

@@ -220,6 +220,8 @@ void WirelessNetwork::ConfigureAbstract(const ChannelLosses& losses) {
   s.mean_loss = losses.mean;
   s.tx_power_dbm = [this](std::uint32_t node) { return TxPower(node, radios_.at(node)); };
   s.seed = spec_.seed;
+  s.preamble_s = PreambleSeconds(spec_.standard);
+  s.data_rate_bps = spec_.data_rate * 1e6, s.broadcast_rate_bps = DataRates(spec_.standard).front() * 1e6;
   const double lowest = s.calibration.LowestHeardDbm() - losses.range_margin_db;
   double strongest = spec_.tx_power;
   for (NodeId id = 0; id < radios_.size(); ++id) strongest = std::max(strongest, TxPower(id, radios_[id]));
@@ -336,6 +338,7 @@ void WirelessNetwork::AddNode(ns3::Ptr<ns3::Node> node, const std::string& name,
 void WirelessNetwork::ObserveFrames(FrameObserver observer) {
   frame_observer_ = observer;
   if (lr_wpan_) lr_wpan_->ObserveFrames(observer);
+  if (abstract_) abstract_->ObserveFrames(observer);
   frames_ = std::make_unique<FrameTrace>(std::move(observer));
   for (NodeId id = 0; id < nodes_.GetN(); ++id)
     if (HasWifiPhy(id)) frames_->Attach(id, wifi_[id]);

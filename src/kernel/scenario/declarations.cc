@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "scenario/calibration_field.h"
 #include "scenario/energy_fields.h"
 #include "scenario/link_variation_fields.h"
 #include "scenario/lr_wpan_fields.h"
@@ -288,6 +289,7 @@ void RadioKinds(Fields<net::NetworkSpec>& f) {
            ReadRadioModel, [](const NetworkSpec& n) {
              return n.radio_model == net::RadioModel::kAbstract ? YAML::Node("abstract") : YAML::Node();
            });
+  f.Custom(CalibrationEntry(), ReadCalibration, PrintCalibration);
   f.Custom(LrWpanEntry(), ReadLrWpan,
            [](const NetworkSpec& n) { return n.lr_wpan_in_use ? PrintLrWpan(n) : YAML::Node(); });
 }

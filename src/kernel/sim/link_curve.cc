@@ -74,16 +74,17 @@ net::NetworkSpec SetNetwork(const RunSpec& spec, int set) {
 // Frames the sender put on the air: a sender asked for frames faster than they take to send
 // drops some from its queue, and those were never sent.
 void CountSent(net::WirelessNetwork& wireless, SetHeard& heard) {
-  if (!wireless.Device(0)) return;  // an 802.15.4 radio: counted by CountLrWpanFrames
+  if (!wireless.Device(0)) return;  // no 802.11 PHY: counted by CountFrameEvents
   ns3::DynamicCast<ns3::WifiNetDevice>(wireless.Device(0))
       ->GetPhy()
       ->TraceConnectWithoutContext("PhyTxBegin", ns3::Callback<void, ns3::Ptr<const ns3::Packet>, double>(
                                                      [&heard](ns3::Ptr<const ns3::Packet>, double) { ++heard.sent; }));
 }
 
-// 802.15.4: ns-3's lr-wpan PHY reports no frame's signal strength, so a frame received whole
-// counts with the mean power the channel computes for the pair (without its fading).
-void CountLrWpanFrames(net::WirelessNetwork& wireless, SetHeard& heard) {
+// 802.15.4 and the abstract radio: neither reports a frame's signal strength (ns-3's lr-wpan PHY
+// does not; the abstract radio has none), so a frame received whole counts with the mean power
+// the channel computes for the pair (without its fading).
+void CountFrameEvents(net::WirelessNetwork& wireless, SetHeard& heard) {
   wireless.ObserveFrames([&wireless, &heard](const net::FrameEvent& e) {
     if (e.node == 0 && e.sent) ++heard.sent;
     if (e.node > 0 && !e.sent && e.peer == NodeId{0})
@@ -92,7 +93,7 @@ void CountLrWpanFrames(net::WirelessNetwork& wireless, SetHeard& heard) {
 }
 
 void ListenToStrengths(net::WirelessNetwork& wireless, std::size_t receivers, SetHeard& heard) {
-  if (!wireless.Device(0)) return CountLrWpanFrames(wireless, heard);
+  if (!wireless.Device(0)) return CountFrameEvents(wireless, heard);
   for (std::size_t i = 0; i < receivers; ++i) {
     auto phy = ns3::DynamicCast<ns3::WifiNetDevice>(wireless.Device(i + 1))->GetPhy();
     phy->TraceConnectWithoutContext(

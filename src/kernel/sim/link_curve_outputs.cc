@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.h"
 #include "sim/link_curve.h"
+#include "sim/radio_calibration.h"
 #include "trace/figures.h"
 
 namespace sanet::sim {
@@ -97,6 +98,18 @@ void WriteLinkCurve(const LinkCurve& curve, const RunSpec& spec, const LinkCurve
   WriteFileAtomically(folder + "/link_curve_links.csv", LinksCsv(curve));
   WriteFileAtomically(folder + "/link_curve.svg", CurveSvg(curve, spec.name + ": " + RadioText(*spec.network)));
   WriteFileAtomically(folder + "/link_curve.json", Summary(curve, spec, options).dump(2) + "\n");
+  if (CurveCalibrates(spec, options))
+    WriteFileAtomically(
+        folder + "/calibration.csv",
+        CalibrationCsv(CalibrationFromCurve(curve, *spec.network, options.size),
+                       "sanet link-curve of " + spec.name + ", " + std::to_string(curve.sets_done) + " links x " +
+                           std::to_string(options.frames) + " frames of " + std::to_string(options.size) + " B"));
+}
+
+bool CurveCalibrates(const RunSpec& spec, const LinkCurveOptions& options) {
+  const net::NetworkSpec& n = *spec.network;
+  return n.radio_model == net::RadioModel::kFull && n.radios.wifi && !n.radios.lr_wpan && n.shadowing.sigma_db == 0 &&
+         !options.along;
 }
 
 }  // namespace sanet::sim

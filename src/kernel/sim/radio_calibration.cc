@@ -9,6 +9,7 @@
 #include "core/atomic_file.h"
 #include "core/fingerprint.h"
 #include "core/version.h"
+#include "net/abstract_channel.h"
 #include "net/message_header.h"
 #include "sim/link_curve.h"
 
@@ -18,6 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kLinks = 20, kFrames = 50, kBytes = 64;
+constexpr int kTransitionSteps = 40;  // the fall from full to no delivery is measured again in as many steps
 constexpr std::uint64_t kSeed = 1;
 
 std::string CacheFolder() {
@@ -29,20 +31,20 @@ std::string CacheFolder() {
 
 // A broadcast frame's time on the air at the lowest rate (the link curve's frames): PLCP preamble
 // and header, then the MAC frame (header and FCS, LLC/SNAP, IP, UDP, sanet's header, the payload).
-double BroadcastAirtime(const net::NetworkSpec& n) {
+double BroadcastAirtime(const net::NetworkSpec& n, int size) {
   const double rate = net::DataRates(n.standard).front() * 1e6;
-  const double preamble = n.standard == net::WifiStandard::k80211b ? 192e-6 : 20e-6;
-  const int bytes = kBytes + static_cast<int>(net::MessageHeader().GetSerializedSize()) + 8 + 20 + 8 + 28;
-  return preamble + bytes * 8 / rate;
+  const int bytes = size + static_cast<int>(net::MessageHeader().GetSerializedSize()) + 8 + 20 +
+                    static_cast<int>(net::AbstractChannel::kMacOverhead);
+  return net::PreambleSeconds(n.standard) + bytes * 8 / rate;
 }
 
-// The curve's rows in ascending power; a row where nothing arrived takes the access delay of the
-// nearest row where something did.
-net::LinkCalibration FromCurve(const LinkCurve& curve, const net::NetworkSpec& n) {
+}  // namespace
+
+net::LinkCalibration CalibrationFromCurve(const LinkCurve& curve, const net::NetworkSpec& n, int size) {
   net::LinkCalibration c;
   for (auto row = curve.rows.rbegin(); row != curve.rows.rend(); ++row)
     c.rows.push_back({row->mean_dbm, row->Prr(),
-                      row->delay_ms.any ? std::max(0.0, row->delay_ms.median / 1e3 - BroadcastAirtime(n)) : -1});
+                      row->delay_ms.any ? std::max(0.0, row->delay_ms.median / 1e3 - BroadcastAirtime(n, size)) : -1});
   // Rows without a delay are the weak ones, first: each takes the first measured delay above it.
   double above = 0;
   for (auto it = c.rows.rbegin(); it != c.rows.rend(); ++it) {
@@ -52,6 +54,23 @@ net::LinkCalibration FromCurve(const LinkCurve& curve, const net::NetworkSpec& n
       above = it->access_delay_s;
   }
   return c;
+}
+
+namespace {
+
+// Where the PRR falls from (nearly) every frame to none: from the farthest distance still at 0.99
+// or more before the fall to the first distance beyond the last that delivered anything. The
+// table interpolates between rows, so a radio whose PRR falls within one step of the default
+// distances (a threshold without fading) would be half wrong there without rows of its own.
+std::optional<std::pair<double, double>> Transition(const LinkCurve& curve) {
+  const auto& rows = curve.rows;
+  std::size_t last_heard = rows.size(), last_full = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].Prr() > 0) last_heard = i;
+  if (last_heard == rows.size() || last_heard + 1 == rows.size()) return std::nullopt;
+  for (std::size_t i = 0; i <= last_heard; ++i)
+    if (rows[i].Prr() >= 0.99) last_full = i;
+  return std::pair(rows[last_full].distance, rows[last_heard + 1].distance);
 }
 
 Calibration Measure(const RunSpec& spec) {
@@ -64,16 +83,17 @@ Calibration Measure(const RunSpec& spec) {
   LinkCurveOptions o;
   o.sets = kLinks, o.frames = kFrames, o.size = kBytes;
   DefaultDistances(n, o);
-  const LinkCurve curve = MeasureLinkCurve(measured, o, nullptr, [] { return false; });
-  return {FromCurve(curve, n), "measured", ""};
-}
-
-std::string Text(const net::LinkCalibration& c, const std::string& key) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "# " << key << "\nmean_dbm,prr,access_delay_s\n";
-  for (const auto& r : c.rows) out << r.mean_dbm << ',' << r.prr << ',' << r.access_delay_s << '\n';
-  return out.str();
+  LinkCurve curve = MeasureLinkCurve(measured, o, nullptr, [] { return false; });
+  if (const auto fall = Transition(curve)) {
+    o.from = fall->first, o.to = fall->second, o.step = (o.to - o.from) / kTransitionSteps;
+    const LinkCurve detail = MeasureLinkCurve(measured, o, nullptr, [] { return false; });
+    curve.rows.insert(curve.rows.end(), detail.rows.begin(), detail.rows.end());
+    std::sort(curve.rows.begin(), curve.rows.end(), [](auto& a, auto& b) { return a.distance < b.distance; });
+    curve.rows.erase(
+        std::unique(curve.rows.begin(), curve.rows.end(), [](auto& a, auto& b) { return a.distance == b.distance; }),
+        curve.rows.end());
+  }
+  return {CalibrationFromCurve(curve, n, kBytes), "measured", ""};
 }
 
 // The cached table, if the file exists and holds the same key.
@@ -91,6 +111,14 @@ std::optional<net::LinkCalibration> Read(const std::string& path, const std::str
 
 }  // namespace
 
+std::string CalibrationCsv(const net::LinkCalibration& c, const std::string& comment) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "# " << comment << "\nmean_dbm,prr,access_delay_s\n";
+  for (const auto& r : c.rows) out << r.mean_dbm << ',' << r.prr << ',' << r.access_delay_s << '\n';
+  return out.str();
+}
+
 std::string CalibrationKey(const net::NetworkSpec& n) {
   std::ostringstream text;
   text.precision(17);
@@ -99,16 +127,35 @@ std::string CalibrationKey(const net::NetworkSpec& n) {
        << static_cast<int>(n.fading.model) << " " << n.fading.m << ", spread " << n.spread.tx_power_db << "/"
        << n.spread.noise_figure_db << ", delay " << static_cast<int>(n.delay) << " " << n.random_delay_max;
   for (const auto& [name, value] : n.ns3) text << ", " << name << "=" << value;
-  text << "; " << kLinks << " links x " << kFrames << " frames of " << kBytes << " B";
+  text << "; " << kLinks << " links x " << kFrames << " frames of " << kBytes << " B, the fall again in "
+       << kTransitionSteps << " steps";
   return text.str();
 }
 
-Calibration CalibrationFor(const RunSpec& spec) {
-  const std::string key = CalibrationKey(*spec.network);
+namespace {
+
+// Where the calibration of `n` is cached: the key's hash in the cache folder.
+std::string CachePath(const net::NetworkSpec& n) {
   Fingerprint hash;
-  hash.Add(key);
+  hash.Add(CalibrationKey(n));
   const std::string folder = CacheFolder();
-  const std::string path = folder.empty() ? "" : folder + "/calibrations/" + hash.Hex() + ".csv";
+  return folder.empty() ? "" : folder + "/calibrations/" + hash.Hex() + ".csv";
+}
+
+}  // namespace
+
+std::string DescribeCalibration(const net::NetworkSpec& n) {
+  if (n.calibration) return "from " + (n.calibration_file.empty() ? "the scenario's rows" : n.calibration_file);
+  const std::string path = CachePath(n);
+  if (!path.empty() && Read(path, CalibrationKey(n))) return "measured earlier, cached in " + path;
+  return "not measured yet: the first run measures the full model's link curve (" + std::to_string(kLinks) +
+         " links x " + std::to_string(kFrames) + " frames), then caches it" + (path.empty() ? "" : " in " + path);
+}
+
+Calibration CalibrationFor(const RunSpec& spec) {
+  if (spec.network->calibration) return {*spec.network->calibration, "file", spec.network->calibration_file};
+  const std::string key = CalibrationKey(*spec.network);
+  const std::string path = CachePath(*spec.network);
   if (!path.empty())
     if (auto cached = Read(path, key)) return {*cached, "cached", path};
   Calibration c = Measure(spec);
@@ -116,7 +163,7 @@ Calibration CalibrationFor(const RunSpec& spec) {
   try {
     fs::create_directories(fs::path(path).parent_path());
     AtomicFile file(path);
-    file.Write(Text(c.table, key));
+    file.Write(CalibrationCsv(c.table, key));
     file.Commit();
     c.path = path;
   } catch (const std::exception&) {  // a cache that cannot be written: measured again next time

@@ -14,20 +14,28 @@
 #include <string>
 
 #include "net/link_calibration.h"
+#include "sim/link_curve.h"
 #include "sim/run_spec.h"
 
 namespace sanet::sim {
 
 struct Calibration {
   net::LinkCalibration table;
-  std::string source;  // "measured" or "cached" (from `path`)
-  std::string path;    // the cache file, or empty where none could be written
+  std::string source;  // "measured", "cached" (from `path`) or "file" (the scenario's)
+  std::string path;    // the cache file or the scenario's; empty where none was written or named
 };
 
-// Measures or reads the calibration of `spec`'s network. Call it before the run touches ns-3:
-// measuring runs simulations of its own.
+// The scenario's own table (network.calibration), else the cached one, else measured and cached.
+// Call it before the run touches ns-3: measuring runs simulations of its own.
 Calibration CalibrationFor(const RunSpec& spec);
+// Which of those a run of `network` would use, in words, without measuring.
+std::string DescribeCalibration(const net::NetworkSpec& network);
 // The cache key: the radio's settings that decide PRR against mean power.
 std::string CalibrationKey(const net::NetworkSpec& network);
+// A link curve's rows as a calibration: median delay less the airtime of a broadcast of `size`
+// bytes at the lowest rate; rows where nothing arrived take the nearest measured delay above.
+net::LinkCalibration CalibrationFromCurve(const LinkCurve& curve, const net::NetworkSpec& network, int size);
+// The table as the CSV that `network.calibration` reads, after a `# comment` line.
+std::string CalibrationCsv(const net::LinkCalibration& table, const std::string& comment);
 
 }  // namespace sanet::sim

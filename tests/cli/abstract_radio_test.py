@@ -1,0 +1,198 @@
+#!/usr/bin/env python3
+"""The abstract radio (network.radio_model: abstract) as a user meets it from the command line.
+
+- Its delivery against distance matches the table it was calibrated with: the full 802.11 model's
+  link curve (Nakagami fading, no shadowing) is written as calibration.csv by `sanet link-curve`,
+  given to a scenario as network.calibration, and the abstract radio's own link curve delivers
+  at each distance the table's PRR at that distance's mean power, within four binomial standard
+  deviations; beyond the full curve's last distance with anything delivered, nothing arrives.
+- With shadowing, both models' curves agree within 0.05 at every distance.
+- `validate` and `validate --print` say where the calibration comes from; a file's rows travel in
+  the effective scenario, which runs to the same fingerprint; bad files are refused with the file,
+  line and column."""
+import bisect
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SANET = sys.argv.pop(1)
+RADIO = """name: grey
+duration: 20
+network:
+  tx_power: 10
+  propagation:
+    fading: {model: nakagami, m: 1.5}
+nodes:
+  - {name: a, model: mote, pose: [0, 0, 0]}
+"""
+LINKS = ["--links", "60", "--frames", "50"]
+
+
+def read_curve(folder):
+    with open(os.path.join(folder, "link_curve.csv")) as f:
+        return [{k: float(v) if v else None for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def read_table(path):
+    with open(path) as f:
+        rows = [line for line in f if not line.startswith("#")]
+    return [(float(r["mean_dbm"]), float(r["prr"])) for r in csv.DictReader(rows)]
+
+
+def table_prr(table, dbm):
+    """The table's PRR at `dbm`, interpolated as the abstract channel does."""
+    powers = [p for p, _ in table]
+    heard = next(i for i, (_, prr) in enumerate(table) if prr > 0)
+    if dbm < powers[max(0, heard - 1)]:
+        return 0.0
+    if dbm <= powers[0]:
+        return table[0][1]
+    if dbm >= powers[-1]:
+        return table[-1][1]
+    i = bisect.bisect_right(powers, dbm)
+    (p0, r0), (p1, r1) = table[i - 1], table[i]
+    return r0 + (dbm - p0) / (p1 - p0) * (r1 - r0)
+
+
+class AbstractRadio(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.env = dict(os.environ, SANET_CACHE=os.path.join(cls.tmp.name, "cache"))
+        cls.scenario = cls.write("grey.yaml", RADIO)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    @classmethod
+    def write(cls, name, text):
+        path = os.path.join(cls.tmp.name, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def sanet(self, *args, check=True):
+        done = subprocess.run([SANET, *args], capture_output=True, text=True, env=self.env)
+        if check:
+            self.assertEqual(done.returncode, 0, done.stderr)
+        return done
+
+    def curve(self, name, *args, scenario=None):
+        out = os.path.join(self.tmp.name, name)
+        self.sanet("link-curve", scenario or self.scenario, "-o", out, "--force", "-q", *args)
+        return out
+
+    def test_delivery_against_distance_follows_the_calibrating_curve(self):
+        full = self.curve("full", *LINKS)
+        table_file = os.path.join(full, "calibration.csv")
+        self.assertTrue(os.path.exists(table_file), "a curve without shadowing calibrates")
+        table = read_table(table_file)
+        scenario = self.write("given.yaml", RADIO.replace("network:\n", "network:\n  radio_model: abstract\n"
+                                                          "  calibration: %s\n" % table_file))
+        abstract = read_curve(self.curve("abstract", "--links", "200", "--frames", "50", scenario=scenario))
+        measured = read_curve(full)
+        last_heard = max(r["distance_m"] for r in measured if r["prr"] > 0)
+        checked = 0
+        for row in abstract:
+            frames = row["frames_sent"]
+            self.assertEqual(frames, 200 * 50)
+            expected = table_prr(table, row["mean_dbm"])
+            sigma = math.sqrt(expected * (1 - expected) / frames)
+            self.assertLessEqual(abs(row["prr"] - expected), 4 * sigma + 1e-9,
+                                 "at %g m (%.2f dBm)" % (row["distance_m"], row["mean_dbm"]))
+            if row["distance_m"] > last_heard:
+                self.assertEqual(row["frames_received"], 0, "beyond the curve's last distance heard")
+                checked += 1
+            if 0.05 < expected < 0.95:
+                checked += 1
+        self.assertGreaterEqual(checked, 6, "the curve crosses its grey zone and goes beyond it")
+
+    def test_with_shadowing_both_models_agree_within_five_points(self):
+        text = RADIO.replace("    fading:", "    shadowing: {sigma_db: 6}\n    fading:")
+        scenario = self.write("shadowed.yaml", text)
+        full = read_curve(self.curve("shadowed-full", "--links", "150", scenario=scenario))
+        self.assertFalse(os.path.exists(os.path.join(self.tmp.name, "shadowed-full", "calibration.csv")),
+                         "a curve with shadowing does not calibrate: the abstract radio adds its own")
+        abstract = read_curve(self.curve("shadowed-abstract", "--links", "150", "--set",
+                                         "network.radio_model=abstract", scenario=scenario))
+        self.assertEqual([r["distance_m"] for r in full], [r["distance_m"] for r in abstract])
+        grey = 0
+        for f, a in zip(full, abstract):
+            self.assertLessEqual(abs(f["prr"] - a["prr"]), 0.05, "at %g m" % f["distance_m"])
+            grey += 0.1 < f["prr"] < 0.9
+        self.assertGreaterEqual(grey, 4)
+
+    def test_validate_says_where_the_calibration_comes_from(self):
+        abstract = ["--set", "network.radio_model=abstract"]
+        before = self.sanet("validate", self.scenario, *abstract).stdout
+        self.assertIn("not measured yet: the first run measures", before)
+        printed = self.sanet("validate", self.scenario, *abstract, "--print").stdout
+        self.assertIn("  calibration: measure\n", printed)
+        self.assertIn("# network.calibration: not measured yet", printed)
+        self.sanet("run", self.scenario, *abstract, "-q", "-o", os.path.join(self.tmp.name, "run"), "--force",
+                   "--duration", "1")
+        after = self.sanet("validate", self.scenario, *abstract).stdout
+        self.assertIn("measured earlier, cached in " + self.env["SANET_CACHE"], after)
+        with open(os.path.join(self.tmp.name, "run", "summary.json")) as f:
+            self.assertEqual(json.load(f)["network"]["channel"]["calibration"], "measured")
+
+    def test_a_calibration_file_travels_in_the_effective_scenario(self):
+        table = self.write("table.csv", "# mine\nmean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,0.5,0.001\n"
+                                        "-70,1,0.0005\n")
+        text = RADIO.replace("network:\n", "network:\n  radio_model: abstract\n  calibration: table.csv\n")
+        text += "  - {name: b, model: mote, pose: [30, 0, 0], controller: {name: pinger, params: {to: a}}}\n"
+        scenario = self.write("file.yaml", text)
+        self.assertIn("from table.csv", self.sanet("validate", scenario).stdout)
+        printed = self.sanet("validate", scenario, "--print").stdout
+        self.assertIn("    file: table.csv\n", printed)
+        self.assertIn("[-80, 0.5, 0.001]", printed)
+        effective = self.write("effective.yaml", printed)
+        os.remove(table)  # the effective scenario needs no file
+        runs = []
+        for name, path in (("file", scenario), ("effective", effective)):
+            if name == "file":
+                self.write("table.csv", "mean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,0.5,0.001\n-70,1,0.0005\n")
+            out = os.path.join(self.tmp.name, "run-" + name)
+            self.sanet("run", path, "-q", "-o", out, "--force")
+            with open(os.path.join(out, "summary.json")) as f:
+                runs.append(json.load(f))
+        self.assertEqual(runs[0]["scenario_fingerprint"], runs[1]["scenario_fingerprint"])
+        self.assertEqual(runs[0]["fingerprint"], runs[1]["fingerprint"])
+        self.assertEqual(runs[0]["network"]["channel"]["calibration"], "file")
+        self.assertGreater(runs[0]["network"]["packets"]["messages_received"], 0)
+
+    def test_bad_calibrations_are_refused_with_file_line_and_column(self):
+        cases = [
+            ("mean_dbm,prr\n-90,0\n", "1", "header"),
+            ("mean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,x,0.001\n", "3", "prr"),
+            ("mean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,1.5,0.001\n", "3", "prr"),
+            ("mean_dbm,prr,access_delay_s\n-80,0,0.001\n-90,1,0.001\n", "3", "mean_dbm"),
+            ("mean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,0,0.001\n", "3", "prr"),
+            ("mean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,1,-1\n", "3", "access_delay_s"),
+        ]
+        for i, (csv_text, line, column) in enumerate(cases):
+            table = self.write("bad%d.csv" % i, csv_text)
+            scenario = self.write("bad%d.yaml" % i, RADIO.replace(
+                "network:\n", "network:\n  radio_model: abstract\n  calibration: bad%d.csv\n" % i))
+            done = self.sanet("validate", scenario, check=False)
+            self.assertEqual(done.returncode, 2, done.stderr)
+            self.assertIn("%s:%s" % (table, line), done.stderr)
+            self.assertIn(column, done.stderr)
+        missing = self.write("missing.yaml", RADIO.replace(
+            "network:\n", "network:\n  radio_model: abstract\n  calibration: nowhere.csv\n"))
+        done = self.sanet("validate", missing, check=False)
+        self.assertIn("missing.yaml:5", done.stderr)
+        self.assertIn("nowhere.csv", done.stderr)
+        full = self.write("full.yaml", RADIO.replace("network:\n", "network:\n  calibration: measure\n"))
+        done = self.sanet("validate", full, check=False)
+        self.assertIn("needs radio_model: abstract", done.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -10,7 +10,10 @@ the events ns-3 processed and the frames sent and received whole.
 802.11 runs on sanet's indexed channel, which hands a frame only to the radios in range;
 802.15.4 runs on ns-3's spectrum channel, which asks the loss of every pair for every frame but
 schedules a reception only where the frame arrives at the sensitivity or stronger (its maximum-
-loss cut-off). Every 802.15.4 unicast is acknowledged: it has about twice the frames.
+loss cut-off). Every 802.15.4 unicast is acknowledged: it has about twice the frames. The third
+row is the same 802.11b field on the abstract radio (docs/swarms.md#the-abstract-radio), whose
+frames are the channel's (no ACKs, no retries on the air); its calibration is measured before
+the first run if not cached.
 
     bench/lr_wpan_bench.py [--sanet build/sanet] [--seconds 60] [--repeat 3]"""
 import argparse
@@ -22,7 +25,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from grey_zone_bench import measure  # noqa: E402  (median wall time of `repeat` runs, the last summary)
 RADIOS = {"802.11b": "{radio: 802.11b, tx_power: 5, routing: none, packet_log: false}",
-          "802.15.4": "{radio: 802.15.4, routing: none, packet_log: false}"}
+          "802.15.4": "{radio: 802.15.4, routing: none, packet_log: false}",
+          "abstract": "{radio: 802.11b, tx_power: 5, routing: none, packet_log: false, radio_model: abstract}"}
 
 
 def field(radio):

@@ -4,14 +4,14 @@
 The shipped swarms (flocking diffdrive robots on the 2D engine, a one-hop 802.11 beacon a
 second each) run as `sanet run` runs them, for a few simulated seconds each:
 
-  swarm-1k, swarm-10k        with the radio (sanet's indexed channel)
   ... without radio          the same robots, controllers and physics, with no network and
                              no beacons: the baseline, measured in the same run, that tells
                              the radio's share of the cost
   ..., abstract radio        network.radio_model: abstract (docs/swarms.md#the-abstract-radio), its
                              calibration measured before the case if not cached
-  swarm-1k, yans channel     the radio on ns-3's YansWifiChannel (every frame to every radio)
-  ..., 2 threads             the indexed-channel case again with the physics on its own thread
+  ..., full, indexed channel ns-3's whole 802.11 model on sanet's indexed channel
+  swarm-1k, full, yans       the full model on ns-3's YansWifiChannel (every frame to every radio)
+  ..., 2 threads             the case before with the physics on its own thread
 
 It prints wall time, real-time factor, the profile's stages ("physics" is physics plus sensing,
 "control" the controllers, "other" the rest: the network), the ratio of each case to its
@@ -46,8 +46,11 @@ def without_radio(text):
     return text.replace("params: {", "params: {beacon: 1.0e9, ", 1)
 
 
-def with_abstract(text):
-    return text.replace("network:\n", "network:\n  radio_model: abstract\n", 1)
+def with_model(model):
+    def edit(text):
+        text = re.sub(r"^  radio_model: .*\n", "", text, flags=re.M)  # the scenario's own, if any
+        return text.replace("network:\n", "network:\n  radio_model: %s\n" % model, 1)
+    return edit
 
 
 def with_yans(text):
@@ -78,11 +81,13 @@ def main():
         for name, seconds, robots, extra in (("swarm-1k", args.seconds, 1000, True),
                                              ("swarm-10k", args.seconds_10k, 10000, False)):
             path = os.path.join(ROOT, "scenarios", name + ".yaml")
+            full = variant(path, tmp, name + "-full", with_model("full"))
+            abstract = variant(path, tmp, name + "-abstract", with_model("abstract"))
             cases = [("without radio", variant(path, tmp, name + "-local", without_radio), 1),
-                     ("indexed channel", path, 1), ("indexed, 2 threads", path, 2),
-                     ("abstract radio", variant(path, tmp, name + "-abstract", with_abstract), 1)]
+                     ("abstract radio", abstract, 1), ("abstract, 2 threads", abstract, 2),
+                     ("full, indexed channel", full, 1), ("full, indexed, 2 threads", full, 2)]
             if extra:
-                cases.append(("yans channel", variant(path, tmp, name + "-yans", with_yans), 1))
+                cases.append(("full, yans channel", variant(full, tmp, name + "-yans", with_yans), 1))
             base = None
             for label, scenario, threads in cases:
                 s = run(args.sanet, scenario, seconds, os.path.join(tmp, name + label.replace(" ", "-")), threads)

@@ -146,7 +146,7 @@ class AbstractRadio(unittest.TestCase):
         table = self.write("table.csv", "# mine\nmean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,0.5,0.001\n"
                                         "-70,1,0.0005\n")
         text = RADIO.replace("network:\n", "network:\n  radio_model: abstract\n  calibration: table.csv\n")
-        text += "  - {name: b, model: mote, pose: [30, 0, 0], controller: {name: pinger, params: {to: a}}}\n"
+        text += "  - {name: b, model: mote, pose: [20, 0, 0], controller: {name: pinger, params: {to: a}}}\n"
         scenario = self.write("file.yaml", text)
         self.assertIn("from table.csv", self.sanet("validate", scenario).stdout)
         printed = self.sanet("validate", scenario, "--print").stdout
@@ -166,6 +166,37 @@ class AbstractRadio(unittest.TestCase):
         self.assertEqual(runs[0]["fingerprint"], runs[1]["fingerprint"])
         self.assertEqual(runs[0]["network"]["channel"]["calibration"], "file")
         self.assertGreater(runs[0]["network"]["packets"]["messages_received"], 0)
+
+    def test_radio_energy_follows_airtime_and_the_motes_die_when_they_do_on_the_full_model(self):
+        scenario = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios",
+                                "sensor-network-energy.yaml")
+        runs = {}
+        for model in ("full", "abstract"):
+            out = os.path.join(self.tmp.name, "energy-" + model)
+            self.sanet("run", scenario, "-q", "-o", out, "--force", "--set", "network.radio_model=" + model)
+            with open(os.path.join(out, "summary.json")) as f:
+                runs[model] = json.load(f)["energy"]
+        full, abstract = runs["full"], runs["abstract"]
+        self.assertEqual(abstract["lifetime"]["dead"], full["lifetime"]["dead"])
+        self.assertGreater(full["lifetime"]["dead"], 0)
+        for key in ("first_death_s", "half_dead_s"):
+            self.assertAlmostEqual(abstract["lifetime"][key], full["lifetime"][key], delta=0.01 * full["lifetime"][key])
+        for name, node in abstract["nodes"].items():
+            seconds, reference = node["radio_s"], full["nodes"][name]["radio_s"]
+            self.assertEqual(sorted(seconds), ["idle", "rx", "tx"], "no sleep, no CCA-busy on the abstract radio")
+            for state in ("tx", "rx"):
+                self.assertAlmostEqual(seconds[state], reference[state], delta=0.2 * reference[state] + 0.01,
+                                       msg="%s %s" % (name, state))
+            used = node["used_j"]
+            self.assertAlmostEqual(used["radio_tx"] + used["radio_rx"] + used["radio_idle"] + used["electronics"]
+                                   + used["motion"] + used["sensors"], used["total"], places=6)
+
+    def test_a_duty_cycle_is_refused_on_the_abstract_radio(self):
+        scenario = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios",
+                                "duty-cycled-motes.yaml")
+        done = self.sanet("validate", scenario, "--set", "network.radio_model=abstract", check=False)
+        self.assertEqual(done.returncode, 2)
+        self.assertIn("radio.duty_cycle': the abstract radio does not sleep", done.stderr)
 
     def test_bad_calibrations_are_refused_with_file_line_and_column(self):
         cases = [

@@ -21,7 +21,7 @@ ns3::Ptr<ElectronicsModel> ConstantModel(ns3::Ptr<ns3::EnergySource> source, dou
 }  // namespace
 
 NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, Radios radios, double sensors_w, Hooks hooks)
-    : spec_(spec), hooks_(std::move(hooks)), has_radio_(radios.wifi != nullptr) {
+    : spec_(spec), hooks_(std::move(hooks)), has_radio_(radios.wifi != nullptr || radios.abstract_wifi) {
   const ns3::Ptr<ns3::NetDevice> radio = radios.wifi;
   if (radios.lr_wpan && !spec_.lr_wpan_radio) spec_.lr_wpan_radio = {"cc2420", RadioPresetNamed("cc2420").currents};
   MakeSource(node, sensors_w);
@@ -34,6 +34,7 @@ NodeEnergy::NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, Radios 
   harvester_->SetNode(node);
   rechargeable_->AddHarvester(harvester_);
   if (radio) InstallRadio(radio);
+  if (radios.abstract_wifi) InstallAbstractRadio();
   if (radios.lr_wpan) {
     lr_wpan_ = ns3::CreateObject<LrWpanEnergyModel>();
     lr_wpan_->SetCurrents(spec_.lr_wpan_radio->currents);
@@ -82,6 +83,7 @@ void NodeEnergy::SetOn(bool on) {
   on_ = on;
   electronics_->SetOn(on);
   if (lr_wpan_) lr_wpan_->SetOn(on);
+  if (airtime_) airtime_->SetOn(on);
   if (drive_idle_) drive_idle_->SetOn(on);
   sensors_->SetOn(on);
   if (charger_) charger_->SetOn(on);
@@ -140,6 +142,13 @@ void NodeEnergy::InstallRadio(ns3::Ptr<ns3::NetDevice> radio) {
   if (!states_) states_ = std::make_unique<RadioStates>(phy);
 }
 
+void NodeEnergy::InstallAbstractRadio() {
+  airtime_ = ns3::CreateObject<AirtimeEnergyModel>();
+  airtime_->SetCurrents(spec_.radio);
+  airtime_->SetEnergySource(source_);
+  source_->AppendDeviceEnergyModel(airtime_);
+}
+
 // Charging while chargers give it something and it is not full; the power is what it draws less
 // what they give (a full battery takes no more than it draws: then none).
 BatteryReading NodeEnergy::Reading() const {
@@ -156,6 +165,7 @@ double NodeEnergy::power_w() const {
   if (drive_idle_) amperes += drive_idle_->GetCurrentA();
   if (charger_) amperes += charger_->GetCurrentA();
   if (radio_) amperes += radio_->GetCurrentA();
+  if (airtime_) amperes += airtime_->GetCurrentA();
   if (lr_wpan_) amperes += lr_wpan_->GetCurrentA();
   return amperes * source_->GetSupplyVoltage() + motion_w_;
 }
@@ -178,6 +188,11 @@ EnergyUse NodeEnergy::Used() const {
     for (const auto& [name, state] : kRadioStates)
       use.emplace_back(std::string("radio_") + name, joules[static_cast<std::size_t>(state)]);
   }
+  if (airtime_) {
+    const AirtimeEnergyModel::ByState joules = airtime_->JoulesByState();
+    for (int s = AirtimeEnergyModel::kTx; s < AirtimeEnergyModel::kOff; ++s)
+      use.emplace_back(std::string("radio_") + AirtimeEnergyModel::kStateNames[s], joules[s]);
+  }
   if (lr_wpan_) {
     const LrWpanEnergyModel::ByState joules = lr_wpan_->JoulesByState();
     for (int s = LrWpanEnergyModel::kTx; s < LrWpanEnergyModel::kOff; ++s)
@@ -194,8 +209,13 @@ EnergyUse NodeEnergy::RadioSeconds() const {
   EnergyUse seconds;
   if (states_)
     for (const auto& [name, state] : kRadioStates) seconds.emplace_back(name, states_->SecondsIn(state));
+  if (airtime_) {
+    const AirtimeEnergyModel::ByState in_state = airtime_->SecondsByState();
+    for (int s = AirtimeEnergyModel::kTx; s < AirtimeEnergyModel::kOff; ++s)
+      seconds.emplace_back(AirtimeEnergyModel::kStateNames[s], in_state[s]);
+  }
   if (lr_wpan_) {
-    const std::string prefix = radio_ ? "lr_wpan_" : "";
+    const std::string prefix = radio_ || airtime_ ? "lr_wpan_" : "";
     const LrWpanEnergyModel::ByState in_state = lr_wpan_->SecondsByState();
     for (int s = LrWpanEnergyModel::kTx; s < LrWpanEnergyModel::kOff; ++s)
       seconds.emplace_back(prefix + LrWpanEnergyModel::kStateNames[s], in_state[s]);

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "energy/airtime_energy_model.h"
 #include "energy/battery.h"
 #include "energy/charge_harvester.h"
 #include "energy/electronics_model.h"
@@ -51,6 +52,7 @@ class NodeEnergy {
     ns3::Ptr<ns3::LrWpanNetDevice> lr_wpan;
     net::LrWpanRadios* lr_wpan_radios = nullptr;  // which says when the 802.15.4 radio sleeps
     NodeId id = 0;
+    bool abstract_wifi = false;  // an 802.11 radio on the abstract channel: its draw by airtime
   };
   // `sensors_w`: what its sensors draw while it is on.
   NodeEnergy(const EnergySpec& spec, ns3::Ptr<ns3::Node> node, Radios radios, double sensors_w, Hooks hooks);
@@ -67,6 +69,10 @@ class NodeEnergy {
   // "sleep"); an 802.15.4 radio's "tx", "rx", "idle", "sleep" (prefixed "lr_wpan_" beside an
   // 802.11 radio); empty without a radio.
   EnergyUse RadioSeconds() const;
+  // A frame of the abstract radio on the air from now for `seconds` (sent or received).
+  void AbstractRadioOnAir(bool sent, double seconds) {
+    if (airtime_) airtime_->OnAir(sent, seconds);
+  }
   // Put in by recharges and chargers.
   double charged_j() const { return charged_j_ + rechargeable_->harvested_j(); }
   // The drive's tally so far (physics::DriveTally's two sums, J): what it did since the last call
@@ -93,6 +99,7 @@ class NodeEnergy {
 
  private:
   void InstallRadio(ns3::Ptr<ns3::NetDevice> radio);
+  void InstallAbstractRadio();
 
   EnergySpec spec_;
   Hooks hooks_;
@@ -116,11 +123,12 @@ class NodeEnergy {
   double readings_j_ = 0;
   DriveTallySoFar drove_;
   ns3::Ptr<RadioEnergyModel> radio_;            // the radio's model since it was last switched on
+  ns3::Ptr<AirtimeEnergyModel> airtime_;        // the abstract radio's, instead
   RadioEnergyModel::ByState earlier_radios_{};  // what the models before it charged
   ns3::Ptr<ns3::WifiNetDevice> radio_device_;
   std::unique_ptr<RadioStates> states_;
   ns3::Ptr<LrWpanEnergyModel> lr_wpan_;  // the 802.15.4 radio's, if the node has one
-  std::string LrWpanPrefix() const { return radio_ ? "lr_wpan_" : "radio_"; }
+  std::string LrWpanPrefix() const { return radio_ || airtime_ ? "lr_wpan_" : "radio_"; }
   double charged_j_ = 0;
   bool has_radio_ = false;
 };

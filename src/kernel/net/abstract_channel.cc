@@ -58,10 +58,12 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
     const std::optional<std::uint32_t> peer =
         addressee == by_address_.end() ? std::nullopt : std::optional(addressee->second);
     if (observer_) Observe(origin, true, peer, p, protocol, false);
+    if (on_air_) on_air_(origin, true, Airtime(p->GetSize(), false));
     if (peer) Offer(origin, *peer, frame, p, protocol, to, from);
     return;
   }
   if (observer_) Observe(origin, true, std::nullopt, p, protocol, true);
+  if (on_air_) on_air_(origin, true, Airtime(p->GetSize(), true));
   const ns3::Vector at = mobility_[origin]->GetPosition();
   near_.clear();
   grid_.Near(at.x, at.y, settings_.range_m, near_);
@@ -69,24 +71,55 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
     if (receiver != origin) Offer(origin, receiver, frame, p, protocol, to, from);
 }
 
-// The receiver gets the frame with the calibration's probability at the link's mean power.
+// The receiver gets the frame with the calibration's probability at the link's mean power; a
+// unicast has the MAC's attempts.
 void AbstractChannel::Offer(std::uint32_t from, std::uint32_t to, std::uint64_t frame, ns3::Ptr<ns3::Packet> p,
                             uint16_t protocol, ns3::Mac48Address dst, ns3::Mac48Address src) {
   if (off_[to]) return;
   ++counters_.asked;
   const double dbm = settings_.mean_loss->CalcRxPower(settings_.tx_power_dbm(from), mobility_[from], mobility_[to]);
   if (dbm < lowest_dbm_) return;
-  CounterRandom draw(settings_.seed, {kDeliveryKey, from, to, frame});
-  if (draw.Uniform() >= settings_.calibration.Prr(dbm)) return;
+  const bool broadcast = dst.IsBroadcast() || dst.IsGroup();
+  const double prr = settings_.calibration.Prr(dbm), beyond = AirtimeBeyondSerialization(p->GetSize(), broadcast);
+  double retrying = 0;
+  if (broadcast) {
+    if (CounterRandom(settings_.seed, {kDeliveryKey, from, to, frame, 0}).Uniform() >= prr) return;
+  } else {
+    const auto spent = UnicastRetries(from, to, frame, prr, beyond + p->GetSize() * 8 / settings_.data_rate_bps);
+    if (!spent) return;
+    retrying = *spent;
+  }
   ++counters_.delivered;
-  const ns3::Time delay = ns3::Seconds(AirtimeBeyondSerialization(p->GetSize(), dst.IsBroadcast() || dst.IsGroup()) +
-                                       settings_.calibration.AccessDelay(dbm));
-  if (observer_)
+  const ns3::Time delay = ns3::Seconds(beyond + settings_.calibration.AccessDelay(dbm) + retrying);
+  if (observer_ || on_air_)
     ns3::Simulator::ScheduleWithContext(to, delay, &AbstractChannel::Arrive, this, from, to, p->Copy(), protocol, dst,
                                         src);
   else
     ns3::Simulator::ScheduleWithContext(to, delay, &ns3::SimpleNetDevice::Receive, devices_[to], p->Copy(), protocol,
                                         dst, src);
+}
+
+// The time from the first attempt's start to the start of the first that reached the addressee;
+// none if no attempt did.
+std::optional<double> AbstractChannel::UnicastRetries(std::uint32_t from, std::uint32_t to, std::uint64_t frame,
+                                                      double prr, double airtime) const {
+  const Settings::Retries& r = settings_.unicast;
+  double spent = 0;
+  std::optional<double> arrived;
+  for (int k = 0; k < r.attempts; ++k) {
+    CounterRandom draw(settings_.seed, {kDeliveryKey, from, to, frame, static_cast<std::uint64_t>(k)});
+    const bool reached = draw.Uniform() < prr;
+    if (reached && !arrived) arrived = spent;
+    if (reached && draw.Uniform() < prr) break;  // acknowledged
+    const int window = std::min(((r.cw_min + 1) << std::min(k + 1, 16)) - 1, r.cw_max);
+    const double ack_timeout = r.sifs_s + r.slot_s + r.ack_s, difs = r.sifs_s + 2 * r.slot_s;
+    spent += airtime + ack_timeout + difs + std::floor(draw.Uniform() * (window + 1)) * r.slot_s;
+  }
+  return arrived;
+}
+
+double AbstractChannel::Airtime(std::uint32_t bytes, bool broadcast) const {
+  return bytes * 8 / settings_.data_rate_bps + AirtimeBeyondSerialization(bytes, broadcast);
 }
 
 double AbstractChannel::AirtimeBeyondSerialization(std::uint32_t bytes, bool broadcast) const {
@@ -96,7 +129,9 @@ double AbstractChannel::AirtimeBeyondSerialization(std::uint32_t bytes, bool bro
 
 void AbstractChannel::Arrive(std::uint32_t from, std::uint32_t to, ns3::Ptr<ns3::Packet> p, uint16_t protocol,
                              ns3::Mac48Address dst, ns3::Mac48Address src) {
-  Observe(to, false, from, p, protocol, dst.IsBroadcast() || dst.IsGroup());
+  const bool broadcast = dst.IsBroadcast() || dst.IsGroup();
+  if (observer_) Observe(to, false, from, p, protocol, broadcast);
+  if (on_air_) on_air_(to, false, Airtime(p->GetSize(), broadcast));
   devices_[to]->Receive(p, protocol, dst, src);
 }
 

@@ -11,6 +11,10 @@
 //   the sender's frame number), so that it depends on nothing else that happens.
 // - A unicast frame is considered only at its addressee (an 802.11 MAC's filtering would drop it
 //   everywhere else); broadcasts at every radio the spatial grid places within range.
+// - A unicast frame is retried, as the 802.11 MAC does, until an attempt and its acknowledgement
+//   both arrive (each with the link's PRR, drawn apart) or the attempts run out; each failed
+//   attempt costs the frame's airtime, the ACK timeout, a DIFS and a backoff drawn in a contention
+//   window that doubles. The addressee has the frame from the first attempt that reached it.
 // - The sender's device serializes its frames (IP packets) at the radio's data rate, and the
 //   channel adds the rest of the frame's airtime (preamble, MAC bytes; broadcasts at the lowest
 //   rate) and the calibration's access delay. Frames do not collide: contention, hidden
@@ -48,6 +52,12 @@ class AbstractChannel : public ns3::SimpleChannel {
     // the lowest rate (802.11 sends broadcasts at a basic rate) to the data rate.
     double preamble_s = 0;
     double data_rate_bps = 1e6, broadcast_rate_bps = 1e6;
+    // A unicast frame is retried as the 802.11 MAC retries it (docs/swarms.md#the-abstract-radio).
+    struct Retries {
+      int attempts = 1;                          // ns-3's MaxSsrc, 7
+      double slot_s = 0, sifs_s = 0, ack_s = 0;  // the PHY's slot, SIFS and an ACK's airtime
+      int cw_min = 0, cw_max = 0;                // contention window, in slots
+    } unicast;
   };
   AbstractChannel() : grid_(50) {}
   void Configure(Settings settings);
@@ -66,6 +76,10 @@ class AbstractChannel : public ns3::SimpleChannel {
 
   // Frames as the run's trace sees them: sent when the channel takes one, received when it arrives.
   void ObserveFrames(FrameObserver observer) { observer_ = std::move(observer); }
+  // Each frame's time on the air at its sender (when the channel takes it) and at each radio it
+  // reaches (when it arrives): what the abstract radio draws energy for.
+  using OnAirObserver = std::function<void(std::uint32_t node, bool sent, double seconds)>;
+  void ObserveAirtime(OnAirObserver observer) { on_air_ = std::move(observer); }
   // The bytes an 802.11 frame adds to the IP packet: MAC header, LLC/SNAP and FCS.
   static constexpr std::uint32_t kMacOverhead = 24 + 8 + 4;
 
@@ -76,10 +90,13 @@ class AbstractChannel : public ns3::SimpleChannel {
 
  private:
   double AirtimeBeyondSerialization(std::uint32_t bytes, bool broadcast) const;
+  std::optional<double> UnicastRetries(std::uint32_t from, std::uint32_t to, std::uint64_t frame, double prr,
+                                       double airtime) const;
   void Observe(std::uint32_t node, bool sent, std::optional<std::uint32_t> peer, ns3::Ptr<const ns3::Packet> p,
                uint16_t protocol, bool broadcast) const;
   void Arrive(std::uint32_t from, std::uint32_t to, ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac48Address dst,
               ns3::Mac48Address src);
+  double Airtime(std::uint32_t bytes, bool broadcast) const;
   void Offer(std::uint32_t from, std::uint32_t to, std::uint64_t frame, ns3::Ptr<ns3::Packet> p, uint16_t protocol,
              ns3::Mac48Address dst, ns3::Mac48Address src);
 
@@ -94,6 +111,7 @@ class AbstractChannel : public ns3::SimpleChannel {
   std::vector<std::uint32_t> near_;  // scratch
   Counters counters_;
   FrameObserver observer_;
+  OnAirObserver on_air_;
 };
 
 }  // namespace sanet::net

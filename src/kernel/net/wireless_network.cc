@@ -67,6 +67,19 @@ std::string ModeName(WifiStandard standard, double mbps) {
   return "";
 }
 
+// How ns-3 3.37's 802.11 MAC retries a unicast frame: 7 attempts (MaxSsrc), the PHY's slot and
+// SIFS, an ACK at the basic rate, a contention window from 31 slots (DSSS) or 15 (OFDM) to 1023.
+AbstractChannel::Settings::Retries UnicastRetries(WifiStandard standard) {
+  AbstractChannel::Settings::Retries r;
+  r.attempts = 7, r.cw_max = 1023;
+  if (standard == WifiStandard::k80211a)
+    r.slot_s = 9e-6, r.sifs_s = 16e-6, r.ack_s = 44e-6, r.cw_min = 15;
+  else  // 802.11b, and 802.11g with its long slot beside 802.11b stations, as ns-3 sets it
+    r.slot_s = 20e-6, r.sifs_s = 10e-6, r.ack_s = standard == WifiStandard::k80211b ? 304e-6 : 50e-6,
+    r.cw_min = standard == WifiStandard::k80211b ? 31 : 15;
+  return r;
+}
+
 }  // namespace
 
 WirelessNetwork::WirelessNetwork(const NetworkSpec& spec, const ns3::NodeContainer& nodes,
@@ -222,6 +235,7 @@ void WirelessNetwork::ConfigureAbstract(const ChannelLosses& losses) {
   s.seed = spec_.seed;
   s.preamble_s = PreambleSeconds(spec_.standard);
   s.data_rate_bps = spec_.data_rate * 1e6, s.broadcast_rate_bps = DataRates(spec_.standard).front() * 1e6;
+  s.unicast = UnicastRetries(spec_.standard);
   const double lowest = s.calibration.LowestHeardDbm() - losses.range_margin_db;
   double strongest = spec_.tx_power;
   for (NodeId id = 0; id < radios_.size(); ++id) strongest = std::max(strongest, TxPower(id, radios_[id]));

@@ -74,6 +74,12 @@ class WirelessNetwork : public Transport {
   void Close() override;
   std::optional<NetworkTraces> Traces() const override;
   void ObserveFrames(FrameObserver observer) override;
+  // With radio_model abstract: each frame's airtime at its sender and at each radio it reaches.
+  void ObserveAbstractAirtime(AbstractChannel::OnAirObserver observer) {
+    if (abstract_) abstract_->ObserveAirtime(std::move(observer));
+  }
+  // Whether `id`'s 802.11 radio is on the abstract channel.
+  bool HasAbstractRadio(NodeId id) const { return abstract_ && id < ip4_.size() && ip4_[id] && !wifi_.at(id); }
   void Moved(const std::vector<NodeId>& nodes) override;
   const AddressBook& addresses() const { return book_; }
   // Node `id`'s Wi-Fi device (for the energy model that draws on its PHY's states); null without one.

@@ -175,6 +175,10 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, RadioContext&
     if (!radios.network) radio->Fail("a node's radio needs a 'network' section in the scenario");
     RadioFields().Read(*radio, t.radio);
     ResolveNodeRadio(*radio, *radios.network, radios.wifi_standard_named, t.radio);
+    if (t.radio.duty_cycle && radios.network->radio_model == net::RadioModel::kAbstract &&
+        t.radio.RadiosIn(*radios.network).wifi)
+      radio->Require("duty_cycle")
+          .Fail("the abstract radio does not sleep: a duty cycle needs network.radio_model: full");
   } else if (radios.network) {
     t.radio.wifi_standard = radios.network->standard;
   }

@@ -109,6 +109,9 @@ void Assembly::BuildTransport() {
         network, nodes, names, radios, RadioWalls(spec_),
         network.lr_wpan_in_use ? RadioWalls(spec_, net::kLrWpanFrequencyHz) : std::vector<net::RadioObstacle>{});
     wireless_ = wireless.get();
+    wireless_->ObserveAbstractAirtime([this](std::uint32_t node, bool sent, double seconds) {
+      if (energy::NodeEnergy* energy = batteries_.Of(node)) energy->AbstractRadioOnAir(sent, seconds);
+    });
     inner = std::move(wireless);
   } else {
     auto local = std::make_unique<net::LocalTransport>(run_nodes_.size(), spec_.message_latency);
@@ -155,7 +158,9 @@ void Assembly::AddNode(NodeId id, std::unique_ptr<Controller> controller) {
 // notices them inside ns-3's PHY and energy calls, which must not switch the radio meanwhile.
 void Assembly::AddBattery(NodeId id) {
   energy::NodeEnergy::Radios radio;
-  if (wireless_) radio = {wireless_->Device(id), wireless_->LrWpanDevice(id), wireless_->LrWpan(), id};
+  if (wireless_)
+    radio = {wireless_->Device(id), wireless_->LrWpanDevice(id), wireless_->LrWpan(), id,
+             wireless_->HasAbstractRadio(id)};
   double sensors_w = 0;
   for (const auto& [name, config] : run_nodes_[id].model.sensors) sensors_w += config.power_w;
   batteries_.Add(id, run_nodes_[id].energy, radio, sensors_w,

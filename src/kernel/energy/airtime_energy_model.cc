@@ -49,13 +49,9 @@ void AirtimeEnergyModel::Update() {
 
 // The source drains what was drawn in the old state before the new one's current applies.
 void AirtimeEnergyModel::Enter(State state) {
-  const ns3::Time now = ns3::Simulator::Now();
-  if (state == state_ && now == since_) return;
+  if (state == state_ && ns3::Simulator::Now() == tally_.since()) return;
   if (source_) source_->UpdateEnergySource();
-  const double dt = (now - since_).GetSeconds();
-  seconds_[state_] += dt;
-  joules_[state_] += dt * CurrentOf(state_) * (source_ ? source_->GetSupplyVoltage() : 0);
-  since_ = now;
+  tally_.Leave(state_, CurrentOf(state_), Volts());
   state_ = state;
   if (source_) source_->UpdateEnergySource();
 }
@@ -74,17 +70,10 @@ double AirtimeEnergyModel::CurrentOf(State state) const {
 }
 
 AirtimeEnergyModel::ByState AirtimeEnergyModel::JoulesByState() const {
-  ByState joules = joules_;
-  const double dt = (ns3::Simulator::Now() - since_).GetSeconds();
-  joules[state_] += dt * CurrentOf(state_) * (source_ ? source_->GetSupplyVoltage() : 0);
-  return joules;
+  return tally_.Joules(state_, CurrentOf(state_), Volts());
 }
 
-AirtimeEnergyModel::ByState AirtimeEnergyModel::SecondsByState() const {
-  ByState seconds = seconds_;
-  seconds[state_] += (ns3::Simulator::Now() - since_).GetSeconds();
-  return seconds;
-}
+AirtimeEnergyModel::ByState AirtimeEnergyModel::SecondsByState() const { return tally_.Seconds(state_); }
 
 double AirtimeEnergyModel::GetTotalEnergyConsumption() const {
   double total = 0;

@@ -15,6 +15,7 @@
 #include <array>
 
 #include "energy/energy_spec.h"
+#include "energy/state_tally.h"
 
 namespace sanet::energy {
 
@@ -22,7 +23,7 @@ class AirtimeEnergyModel : public ns3::DeviceEnergyModel {
  public:
   enum State { kTx, kRx, kIdle, kOff, kStates };
   static constexpr const char* kStateNames[kStates] = {"tx", "rx", "idle", "off"};
-  using ByState = std::array<double, kStates>;
+  using ByState = StateTally<kStates>::ByState;
   static ns3::TypeId GetTypeId();
 
   void SetEnergySource(ns3::Ptr<ns3::EnergySource> source) override { source_ = ns3::PeekPointer(source); }
@@ -46,6 +47,7 @@ class AirtimeEnergyModel : public ns3::DeviceEnergyModel {
  private:
   double DoGetCurrentA() const override { return CurrentOf(state_); }
   double CurrentOf(State state) const;
+  double Volts() const { return source_ ? source_->GetSupplyVoltage() : 0; }
   State Due() const;  // what the radio does now, by the frames on the air
   void Update();      // enters Due(), and comes back when it changes
   void Enter(State state);
@@ -54,9 +56,9 @@ class AirtimeEnergyModel : public ns3::DeviceEnergyModel {
   RadioCurrents currents_;
   State state_ = kIdle;
   bool on_ = true;
-  ns3::Time tx_until_, rx_until_, since_;
+  ns3::Time tx_until_, rx_until_;
   ns3::EventId next_;
-  ByState joules_{}, seconds_{};
+  StateTally<kStates> tally_;
 };
 
 }  // namespace sanet::energy

@@ -18,7 +18,7 @@ ns3::TypeId LrWpanEnergyModel::GetTypeId() {
 
 void LrWpanEnergyModel::Attach(ns3::Ptr<ns3::LrWpanNetDevice> device, std::function<bool()> sleeping) {
   sleeping_ = std::move(sleeping);
-  since_ = ns3::Simulator::Now();
+  tally_.Start();
   state_ = StateOf(phy_state_);
   device->GetPhy()->TraceConnectWithoutContext(
       "TrxState",
@@ -53,12 +53,8 @@ void LrWpanEnergyModel::SetOn(bool on) {
 // The source drains what was drawn in the old state before the new one's current applies, then
 // sees the new one (sanet's battery schedules its checks for it).
 void LrWpanEnergyModel::Enter(State state) {
-  const ns3::Time now = ns3::Simulator::Now();
   if (source_) source_->UpdateEnergySource();
-  const double dt = (now - since_).GetSeconds();
-  seconds_[state_] += dt;
-  joules_[state_] += dt * CurrentOf(state_) * (source_ ? source_->GetSupplyVoltage() : 0);
-  since_ = now;
+  tally_.Leave(state_, CurrentOf(state_), Volts());
   state_ = state;
   if (source_) source_->UpdateEnergySource();
 }
@@ -79,17 +75,10 @@ double LrWpanEnergyModel::CurrentOf(State state) const {
 }
 
 LrWpanEnergyModel::ByState LrWpanEnergyModel::JoulesByState() const {
-  ByState joules = joules_;
-  const double dt = (ns3::Simulator::Now() - since_).GetSeconds();
-  joules[state_] += dt * CurrentOf(state_) * (source_ ? source_->GetSupplyVoltage() : 0);
-  return joules;
+  return tally_.Joules(state_, CurrentOf(state_), Volts());
 }
 
-LrWpanEnergyModel::ByState LrWpanEnergyModel::SecondsByState() const {
-  ByState seconds = seconds_;
-  seconds[state_] += (ns3::Simulator::Now() - since_).GetSeconds();
-  return seconds;
-}
+LrWpanEnergyModel::ByState LrWpanEnergyModel::SecondsByState() const { return tally_.Seconds(state_); }
 
 double LrWpanEnergyModel::GetTotalEnergyConsumption() const {
   double total = 0;

@@ -22,6 +22,7 @@
 #include <functional>
 
 #include "energy/energy_spec.h"
+#include "energy/state_tally.h"
 
 namespace sanet::energy {
 
@@ -29,7 +30,7 @@ class LrWpanEnergyModel : public ns3::DeviceEnergyModel {
  public:
   enum State { kTx, kRx, kIdle, kSleep, kOff, kStates };
   static constexpr const char* kStateNames[kStates] = {"tx", "rx", "idle", "sleep", "off"};
-  using ByState = std::array<double, kStates>;
+  using ByState = StateTally<kStates>::ByState;
   static ns3::TypeId GetTypeId();
 
   void SetEnergySource(ns3::Ptr<ns3::EnergySource> source) override { source_ = ns3::PeekPointer(source); }
@@ -54,6 +55,7 @@ class LrWpanEnergyModel : public ns3::DeviceEnergyModel {
  private:
   double DoGetCurrentA() const override { return CurrentOf(state_); }
   double CurrentOf(State state) const;
+  double Volts() const { return source_ ? source_->GetSupplyVoltage() : 0; }
   void PhyChanged(ns3::LrWpanPhyEnumeration state);
   State StateOf(ns3::LrWpanPhyEnumeration phy) const;
   void Enter(State state);
@@ -64,8 +66,7 @@ class LrWpanEnergyModel : public ns3::DeviceEnergyModel {
   State state_ = kRx;  // a fresh PHY listens (macRxOnWhenIdle)
   ns3::LrWpanPhyEnumeration phy_state_ = ns3::IEEE_802_15_4_PHY_RX_ON;
   bool on_ = true;
-  ByState joules_{}, seconds_{};
-  ns3::Time since_;
+  StateTally<kStates> tally_;
 };
 
 }  // namespace sanet::energy

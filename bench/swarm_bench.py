@@ -2,7 +2,8 @@
 """Swarm scale: wall time, real-time factor and memory of the shipped swarms, with and without their radio.
 
 The shipped swarms (flocking diffdrive robots on the 2D engine, a one-hop 802.11 beacon a
-second each) run as `sanet run` runs them, for a few simulated seconds each:
+second each) run as `sanet run` runs them, for a few simulated seconds each, swarm-1k and
+swarm-10k in these cases:
 
   ... without radio          the same robots, controllers and physics, with no network and
                              no beacons: the baseline, measured in the same run, that tells
@@ -11,7 +12,8 @@ second each) run as `sanet run` runs them, for a few simulated seconds each:
                              calibration measured before the case if not cached
   ..., full, indexed channel ns-3's whole 802.11 model on sanet's indexed channel
   swarm-1k, full, yans       the full model on ns-3's YansWifiChannel (every frame to every radio)
-  ..., 2 threads             the case before with the physics on its own thread
+  ..., 2 threads             the case before with the physics on its own thread; its ratio is to
+                             the run without radio on two threads
 
 It prints wall time, real-time factor, the profile's stages ("physics" is physics plus sensing,
 "control" the controllers, "other" the rest: the network), the ratio of each case to its
@@ -83,12 +85,13 @@ def main():
             path = os.path.join(ROOT, "scenarios", name + ".yaml")
             full = variant(path, tmp, name + "-full", with_model("full"))
             abstract = variant(path, tmp, name + "-abstract", with_model("abstract"))
-            cases = [("without radio", variant(path, tmp, name + "-local", without_radio), 1),
+            local = variant(path, tmp, name + "-local", without_radio)
+            cases = [("without radio", local, 1), ("without radio, 2 threads", local, 2),
                      ("abstract radio", abstract, 1), ("abstract, 2 threads", abstract, 2),
                      ("full, indexed channel", full, 1), ("full, indexed, 2 threads", full, 2)]
             if extra:
                 cases.append(("full, yans channel", variant(full, tmp, name + "-yans", with_yans), 1))
-            base = None
+            base = {}  # by threads: the run without radio
             for label, scenario, threads in cases:
                 s = run(args.sanet, scenario, seconds, os.path.join(tmp, name + label.replace(" ", "-")), threads)
                 wall = s["wall_time_s"]
@@ -96,10 +99,10 @@ def main():
                 # With two threads the physics overlaps the rest: only its waits count on the clock.
                 physics = p["physics"] + p["sensing"] if threads == 1 else p["physics_wait"]
                 other = wall - physics - p["controllers"] - p["recording"]
-                base = base or wall
+                base.setdefault(threads, wall)
                 print("%-28s %8.2f %7.2f %9.2f %9.2f %9.2f %12.1f %8.2fx %10.3f %8.2fs" % (
                     name + ", " + label, wall, s["real_time_factor"], p["physics"] + p["sensing"],
-                    p["controllers"], other, wall / (robots * seconds) * 1e6, wall / base,
+                    p["controllers"], other, wall / (robots * seconds) * 1e6, wall / base[threads],
                     s["peak_memory_mb"] / robots, s["outside_run_s"]), flush=True)
 
 

@@ -129,6 +129,7 @@ class AbstractRadio(unittest.TestCase):
         self.assertGreaterEqual(grey, 4)
 
     def test_validate_says_where_the_calibration_comes_from(self):
+        self.env = dict(self.env, SANET_CACHE=os.path.join(self.tmp.name, "cache-of-validate"))
         abstract = ["--set", "network.radio_model=abstract"]
         before = self.sanet("validate", self.scenario, *abstract).stdout
         self.assertIn("not measured yet: the first run measures", before)
@@ -142,8 +143,30 @@ class AbstractRadio(unittest.TestCase):
         with open(os.path.join(self.tmp.name, "run", "summary.json")) as f:
             self.assertEqual(json.load(f)["network"]["channel"]["calibration"], "measured")
 
+    def test_unicasts_at_a_higher_rate_are_calibrated_at_that_rate(self):
+        self.env = dict(self.env, SANET_CACHE=os.path.join(self.tmp.name, "cache-of-rates"))
+        fast = ["--set", "network.radio_model=abstract", "--set", "network.data_rate=11",
+                "--set", "network.rx_threshold=-95"]  # where the rate, not the threshold, limits reception
+        self.sanet("run", self.scenario, *fast, "-q", "-o", os.path.join(self.tmp.name, "fast"), "--force",
+                   "--duration", "1")
+        folder = os.path.join(self.env["SANET_CACHE"], "calibrations")
+        (name,) = os.listdir(folder)
+        with open(os.path.join(folder, name)) as f:
+            rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+        def p50(column):  # the mean power where the column first reaches 0.5, interpolated
+            below = None
+            for r in rows:
+                power, value = float(r["mean_dbm"]), float(r[column])
+                if value >= 0.5:
+                    return power if below is None else below[0] + (0.5 - below[1]) / (value - below[1]) * (
+                        power - below[0])
+                below = (power, value)
+        # Measured here: 1 Mbps DSSS -89.1 dBm, 11 Mbps CCK -87.8 dBm (Nakagami fading blurs both).
+        self.assertGreater(p50("unicast_prr"), p50("prr") + 0.7, "11 Mbps needs a stronger signal than 1 Mbps")
+        self.assertLess(p50("unicast_prr"), p50("prr") + 6)
+
     def test_a_calibration_file_travels_in_the_effective_scenario(self):
-        table = self.write("table.csv", "# mine\nmean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,0.5,0.001\n"
+        table = self.write("table.csv", "# mine\nmean_dbm, prr, access_delay_s\n-90,0,0.001\n-80,0.5,0.001\n"
                                         "-70,1,0.0005\n")
         text = RADIO.replace("network:\n", "network:\n  radio_model: abstract\n  calibration: table.csv\n")
         text += "  - {name: b, model: mote, pose: [20, 0, 0], controller: {name: pinger, params: {to: a}}}\n"
@@ -151,7 +174,7 @@ class AbstractRadio(unittest.TestCase):
         self.assertIn("from table.csv", self.sanet("validate", scenario).stdout)
         printed = self.sanet("validate", scenario, "--print").stdout
         self.assertIn("    file: table.csv\n", printed)
-        self.assertIn("[-80, 0.5, 0.001]", printed)
+        self.assertIn("[-80, 0.5, 0.001, 0.5]", printed)
         effective = self.write("effective.yaml", printed)
         os.remove(table)  # the effective scenario needs no file
         runs = []
@@ -206,6 +229,8 @@ class AbstractRadio(unittest.TestCase):
             ("mean_dbm,prr,access_delay_s\n-80,0,0.001\n-90,1,0.001\n", "3", "mean_dbm"),
             ("mean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,0,0.001\n", "3", "prr"),
             ("mean_dbm,prr,access_delay_s\n-90,0,0.001\n-80,1,-1\n", "3", "access_delay_s"),
+            ("mean_dbm,prr,access_delay_s\n-90,0,0.001,\n-80,1,0.001\n", "2", "row"),
+            ("mean_dbm,prr,access_delay_s,unicast_prr\n-90,0,0.001,0\n-80,1,0.001,2\n", "3", "unicast_prr"),
         ]
         for i, (csv_text, line, column) in enumerate(cases):
             table = self.write("bad%d.csv" % i, csv_text)
@@ -220,9 +245,11 @@ class AbstractRadio(unittest.TestCase):
         done = self.sanet("validate", missing, check=False)
         self.assertIn("missing.yaml:5", done.stderr)
         self.assertIn("nowhere.csv", done.stderr)
-        full = self.write("full.yaml", RADIO.replace("network:\n", "network:\n  calibration: measure\n"))
+        full = self.write("full.yaml", RADIO.replace("network:\n", "network:\n  calibration: bad0.csv\n"))
         done = self.sanet("validate", full, check=False)
         self.assertIn("needs radio_model: abstract", done.stderr)
+        measure = self.write("measure.yaml", RADIO.replace("network:\n", "network:\n  calibration: measure\n"))
+        self.sanet("validate", measure)  # a printed abstract scenario switched back to the full model
 
 
 if __name__ == "__main__":

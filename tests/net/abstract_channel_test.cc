@@ -39,10 +39,11 @@ double BroadcastAirtime() {
 }
 
 // PRR 1 at -70 dBm and above, falling linearly to 0 at -90 dBm; 2 ms of access delay at -70,
-// 4 ms at -90.
+// 4 ms at -90. Unicasts (at a higher rate) need 5 dB more.
 LinkCalibration Calibration() {
   LinkCalibration c;
-  c.rows = {{-100, 0, 0.004}, {-90, 0, 0.004}, {-80, 0.5, 0.003}, {-70, 1, 0.002}, {-40, 1, 0.002}};
+  c.rows = {{-100, 0, 0.004, 0},   {-90, 0, 0.004, 0}, {-85, 0.25, 0.0035, 0}, {-80, 0.5, 0.003, 0.25},
+            {-70, 1, 0.002, 0.75}, {-65, 1, 0.002, 1}, {-40, 1, 0.002, 1}};
   return c;
 }
 
@@ -55,7 +56,8 @@ struct Field {
   std::vector<ns3::Ptr<ns3::SimpleNetDevice>> devices;
   std::vector<std::vector<double>> arrivals;  // per node, when frames arrived
 
-  Field(const std::vector<double>& distances, std::uint64_t seed) : arrivals(distances.size() + 1) {
+  Field(const std::vector<double>& distances, std::uint64_t seed, AbstractChannel::Settings::Retries retries = {})
+      : arrivals(distances.size() + 1) {
     nodes.Create(distances.size() + 1);
     AbstractChannel::Settings s;
     s.calibration = Calibration();
@@ -64,6 +66,7 @@ struct Field {
     s.seed = seed;
     s.range_m = 200;
     s.preamble_s = kPreamble, s.data_rate_bps = kDataRate, s.broadcast_rate_bps = kBroadcastRate;
+    s.unicast = retries;
     channel->Configure(s);
     for (std::uint32_t i = 0; i < nodes.GetN(); ++i) {
       auto at = ns3::CreateObject<ns3::ConstantPositionMobilityModel>();
@@ -81,13 +84,13 @@ struct Field {
       devices.push_back(device);
     }
   }
-  // Frame k leaves node 0 at k ms, to `to` (broadcast unless given).
-  void SendAll(std::optional<std::uint32_t> to = std::nullopt) {
+  // Frame k leaves node 0 at k times `every_ms` ms, to `to` (broadcast unless given).
+  void SendAll(std::optional<std::uint32_t> to = std::nullopt, int every_ms = 1) {
     const ns3::Address dst = to ? devices[*to]->GetAddress() : devices[0]->GetBroadcast();
     for (int k = 0; k < kFrames; ++k)
-      ns3::Simulator::Schedule(ns3::MilliSeconds(k),
+      ns3::Simulator::Schedule(ns3::MilliSeconds(k * every_ms),
                                [this, dst] { devices[0]->Send(ns3::Create<ns3::Packet>(kBytes), dst, 0x800); });
-    ns3::Simulator::Stop(ns3::Seconds(kFrames * 0.001 + 1));
+    ns3::Simulator::Stop(ns3::Seconds(kFrames * every_ms * 0.001 + 1));
     ns3::Simulator::Run();
   }
 };
@@ -126,11 +129,48 @@ TEST(AbstractChannel, AUnicastReachesOnlyItsAddresseeAfterItsAirtimeAndTheAccess
     Field field({5, 10}, 3);  // -68 and -77 dBm: node 1 would hear every frame, node 2 most
     field.SendAll(2);
     EXPECT_TRUE(field.arrivals[1].empty()) << "not the addressee";
-    const double p = Calibration().Prr(MeanPower(10));
+    const double p = Calibration().UnicastPrr(MeanPower(10));
     EXPECT_NEAR(static_cast<double>(field.arrivals[2].size()) / kFrames, p, 4 * std::sqrt(p * (1 - p) / kFrames));
     ExpectDelays(field.arrivals[2], UnicastAirtime() + Calibration().AccessDelay(MeanPower(10)));
   }
   ns3::Simulator::Destroy();
+}
+
+// 802.11b's retries: a unicast reaches its addressee unless all seven attempts fail; one that
+// needed more than one is late by at least a failed attempt's cost (the frame's airtime, the ACK
+// timeout, a DIFS) and at most that and the largest backoffs for each.
+TEST(AbstractChannel, AUnicastIsRetriedAsTheMacRetriesIt) {
+  AbstractChannel::Settings::Retries r;
+  r.attempts = 7, r.slot_s = 20e-6, r.sifs_s = 10e-6, r.ack_s = 192e-6, r.cw_min = 31, r.cw_max = 1023;
+  constexpr int kEveryMs = 100;  // far more than seven attempts take
+  std::vector<double> arrivals;
+  {
+    Field field({5, 20}, 3, r);  // -75.7 dBm: about half the attempts
+    field.SendAll(2, kEveryMs);
+    arrivals = field.arrivals[2];
+  }
+  ns3::Simulator::Destroy();
+  const double p = Calibration().UnicastPrr(MeanPower(20)), all = 1 - std::pow(1 - p, 7);
+  ASSERT_LT(p, 0.7);
+  EXPECT_NEAR(static_cast<double>(arrivals.size()) / kFrames, all, 4 * std::sqrt(all * (1 - all) / kFrames));
+  const double first = UnicastAirtime() + Calibration().AccessDelay(MeanPower(20));
+  const double airtime = kPreamble + (kBytes + AbstractChannel::kMacOverhead) * 8 / kDataRate;
+  const double failed = airtime + r.sifs_s + r.slot_s + r.ack_s + r.sifs_s + 2 * r.slot_s;
+  double most = 0;
+  for (int k = 1; k < r.attempts; ++k) most += failed + std::min((r.cw_min + 1 << k) - 1, r.cw_max) * r.slot_s;
+  int at_first = 0, retried = 0;
+  for (double t : arrivals) {
+    const double late = std::fmod(t - first + 1e-12, kEveryMs * 1e-3) - 1e-12;
+    if (std::fabs(late) < 1e-9) {
+      ++at_first;
+      continue;
+    }
+    ++retried;
+    EXPECT_GE(late, failed - 1e-9);
+    EXPECT_LE(late, most + 1e-9);
+  }
+  EXPECT_NEAR(static_cast<double>(at_first) / kFrames, p, 4 * std::sqrt(p * (1 - p) / kFrames));
+  EXPECT_GT(retried, kFrames / 10);
 }
 
 TEST(AbstractChannel, ABroadcastGoesAtTheLowerRate) {
@@ -177,7 +217,7 @@ TEST(AbstractRadio, AodvFindsRoutesAndMessagesArrive) {
     spec.radio_model = RadioModel::kAbstract;
     spec.packet_log = false;
     LinkCalibration c;  // 40 m at 16 dBm: -78.7 dBm, every frame; 80 m: -87.8 dBm, none
-    c.rows = {{-90, 0, 0.002}, {-85, 0, 0.002}, {-80, 1, 0.001}, {-30, 1, 0.001}};
+    c.rows = {{-90, 0, 0.002, 0}, {-85, 0, 0.002, 0}, {-80, 1, 0.001, 1}, {-30, 1, 0.001, 1}};
     spec.calibration = c;
     WirelessNetwork network(spec, nodes, {"a", "b", "c", "d", "e"}, std::vector<NodeRadio>(5));
     network.SetReceiver([&got](NodeId to, const Message& m) {

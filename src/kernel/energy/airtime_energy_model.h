@@ -26,7 +26,11 @@ class AirtimeEnergyModel : public ns3::DeviceEnergyModel {
   using ByState = StateTally<kStates>::ByState;
   static ns3::TypeId GetTypeId();
 
-  void SetEnergySource(ns3::Ptr<ns3::EnergySource> source) override { source_ = ns3::PeekPointer(source); }
+  // Draws from `source` from now on (a robot spawned mid-run has drawn nothing before).
+  void SetEnergySource(ns3::Ptr<ns3::EnergySource> source) override {
+    source_ = ns3::PeekPointer(source);
+    tally_.Start();
+  }
   void SetCurrents(const RadioCurrents& currents) { currents_ = currents; }
   // A frame on the air from now for `seconds`: sent by this radio, or received.
   void OnAir(bool sent, double seconds);

@@ -58,8 +58,9 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
     const std::optional<std::uint32_t> peer =
         addressee == by_address_.end() ? std::nullopt : std::optional(addressee->second);
     if (observer_) Observe(origin, true, peer, p, protocol, false);
-    if (on_air_) on_air_(origin, true, Airtime(p->GetSize(), false));
     if (peer) Offer(origin, *peer, frame, p, protocol, to, from);
+    // The sender is on the air for every attempt: all of them where nobody acknowledges.
+    if (on_air_) on_air_(origin, true, Airtime(p->GetSize(), false) * (peer ? attempts_ : settings_.unicast.attempts));
     return;
   }
   if (observer_) Observe(origin, true, std::nullopt, p, protocol, true);
@@ -75,17 +76,20 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
 // unicast has the MAC's attempts.
 void AbstractChannel::Offer(std::uint32_t from, std::uint32_t to, std::uint64_t frame, ns3::Ptr<ns3::Packet> p,
                             uint16_t protocol, ns3::Mac48Address dst, ns3::Mac48Address src) {
+  attempts_ = settings_.unicast.attempts;
   if (off_[to]) return;
   ++counters_.asked;
   const double dbm = settings_.mean_loss->CalcRxPower(settings_.tx_power_dbm(from), mobility_[from], mobility_[to]);
   if (dbm < lowest_dbm_) return;
   const bool broadcast = dst.IsBroadcast() || dst.IsGroup();
-  const double prr = settings_.calibration.Prr(dbm), beyond = AirtimeBeyondSerialization(p->GetSize(), broadcast);
+  const double beyond = AirtimeBeyondSerialization(p->GetSize(), broadcast);
   double retrying = 0;
   if (broadcast) {
+    const double prr = settings_.calibration.Prr(dbm);
     if (CounterRandom(settings_.seed, {kDeliveryKey, from, to, frame, 0}).Uniform() >= prr) return;
   } else {
-    const auto spent = UnicastRetries(from, to, frame, prr, beyond + p->GetSize() * 8 / settings_.data_rate_bps);
+    const auto spent = UnicastRetries(from, to, frame, settings_.calibration.UnicastPrr(dbm),
+                                      beyond + p->GetSize() * 8 / settings_.data_rate_bps);
     if (!spent) return;
     retrying = *spent;
   }
@@ -102,7 +106,7 @@ void AbstractChannel::Offer(std::uint32_t from, std::uint32_t to, std::uint64_t 
 // The time from the first attempt's start to the start of the first that reached the addressee;
 // none if no attempt did.
 std::optional<double> AbstractChannel::UnicastRetries(std::uint32_t from, std::uint32_t to, std::uint64_t frame,
-                                                      double prr, double airtime) const {
+                                                      double prr, double airtime) {
   const Settings::Retries& r = settings_.unicast;
   double spent = 0;
   std::optional<double> arrived;
@@ -110,7 +114,10 @@ std::optional<double> AbstractChannel::UnicastRetries(std::uint32_t from, std::u
     CounterRandom draw(settings_.seed, {kDeliveryKey, from, to, frame, static_cast<std::uint64_t>(k)});
     const bool reached = draw.Uniform() < prr;
     if (reached && !arrived) arrived = spent;
-    if (reached && draw.Uniform() < prr) break;  // acknowledged
+    if (reached && draw.Uniform() < prr) {  // acknowledged
+      attempts_ = k + 1;
+      break;
+    }
     const int window = std::min(((r.cw_min + 1) << std::min(k + 1, 16)) - 1, r.cw_max);
     const double ack_timeout = r.sifs_s + r.slot_s + r.ack_s, difs = r.sifs_s + 2 * r.slot_s;
     spent += airtime + ack_timeout + difs + std::floor(draw.Uniform() * (window + 1)) * r.slot_s;
@@ -129,6 +136,7 @@ double AbstractChannel::AirtimeBeyondSerialization(std::uint32_t bytes, bool bro
 
 void AbstractChannel::Arrive(std::uint32_t from, std::uint32_t to, ns3::Ptr<ns3::Packet> p, uint16_t protocol,
                              ns3::Mac48Address dst, ns3::Mac48Address src) {
+  if (off_[to]) return;  // switched off or dead while the frame was on its way
   const bool broadcast = dst.IsBroadcast() || dst.IsGroup();
   if (observer_) Observe(to, false, from, p, protocol, broadcast);
   if (on_air_) on_air_(to, false, Airtime(p->GetSize(), broadcast));

@@ -6,7 +6,8 @@
 //
 // - A link's mean power is the scenario's mean loss chain (path loss, walls, shadowing: fading is
 //   in the calibration, which was measured with it). PRR and delay are interpolated linearly in
-//   the calibration's table; nothing is delivered under its lowest power with a non-zero PRR.
+//   the calibration's table, a broadcast's PRR at the lowest rate, a unicast's at the data rate;
+//   nothing is delivered under its lowest power with a non-zero PRR.
 // - Each frame's fate at each receiver is a counter-based draw keyed by (seed, sender, receiver,
 //   the sender's frame number), so that it depends on nothing else that happens.
 // - A unicast frame is considered only at its addressee (an 802.11 MAC's filtering would drop it
@@ -17,8 +18,9 @@
 //   window that doubles. The addressee has the frame from the first attempt that reached it.
 // - The sender's device serializes its frames (IP packets) at the radio's data rate, and the
 //   channel adds the rest of the frame's airtime (preamble, MAC bytes; broadcasts at the lowest
-//   rate) and the calibration's access delay. Frames do not collide: contention, hidden
-//   terminals and retransmissions are in the calibration's averages only.
+//   rate) and the calibration's access delay. Frames do not collide and do not wait for each
+//   other's retries: contention and hidden terminals are not modelled (docs/swarms.md measures
+//   what that changes).
 #pragma once
 
 #include <ns3/mac48-address.h>
@@ -55,7 +57,7 @@ class AbstractChannel : public ns3::SimpleChannel {
     // A unicast frame is retried as the 802.11 MAC retries it (docs/swarms.md#the-abstract-radio).
     struct Retries {
       int attempts = 1;                          // ns-3's MaxSsrc, 7
-      double slot_s = 0, sifs_s = 0, ack_s = 0;  // the PHY's slot, SIFS and an ACK's airtime
+      double slot_s = 0, sifs_s = 0, ack_s = 0;  // the PHY's slot and SIFS; an ACK's PHY header
       int cw_min = 0, cw_max = 0;                // contention window, in slots
     } unicast;
   };
@@ -90,8 +92,9 @@ class AbstractChannel : public ns3::SimpleChannel {
 
  private:
   double AirtimeBeyondSerialization(std::uint32_t bytes, bool broadcast) const;
+  // Sets attempts_ to the attempts the frame took.
   std::optional<double> UnicastRetries(std::uint32_t from, std::uint32_t to, std::uint64_t frame, double prr,
-                                       double airtime) const;
+                                       double airtime);
   void Observe(std::uint32_t node, bool sent, std::optional<std::uint32_t> peer, ns3::Ptr<const ns3::Packet> p,
                uint16_t protocol, bool broadcast) const;
   void Arrive(std::uint32_t from, std::uint32_t to, ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac48Address dst,
@@ -109,6 +112,7 @@ class AbstractChannel : public ns3::SimpleChannel {
   std::vector<std::uint64_t> sent_;  // frames each node sent
   std::vector<bool> off_;            // by node id
   std::vector<std::uint32_t> near_;  // scratch
+  int attempts_ = 1;                 // the last unicast offered: attempts it took (all, where none was acknowledged)
   Counters counters_;
   FrameObserver observer_;
   OnAirObserver on_air_;

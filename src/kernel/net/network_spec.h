@@ -98,6 +98,7 @@ struct NetworkSpec {
   std::optional<LinkCalibration> calibration;
   std::string calibration_file;                   // the scenario's `network.calibration` file, where it named one
   std::string calibration_source;                 // "measured", "cached" or "file", for the summary
+  bool broadcast_at_data_rate = false;            // not a scenario's: the calibration measures unicasts' PRR so
   WifiStandard standard = WifiStandard::k80211b;  // of every 802.11 radio: they share one channel
   double data_rate = 1;                           // Mbps, one of the standard's rates; broadcasts go at the lowest
   double tx_power = 16;                           // dBm, every node unless it overrides it

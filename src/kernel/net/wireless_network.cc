@@ -68,15 +68,16 @@ std::string ModeName(WifiStandard standard, double mbps) {
 }
 
 // How ns-3 3.37's 802.11 MAC retries a unicast frame: 7 attempts (MaxSsrc), the PHY's slot and
-// SIFS, an ACK at the basic rate, a contention window from 31 slots (DSSS) or 15 (OFDM) to 1023.
+// SIFS, an ACK timeout of SIFS, a slot and the ACK's PHY header, a contention window from 31
+// slots (DSSS) or 15 (OFDM) to 1023. (network.ns3 values for these are not read.)
 AbstractChannel::Settings::Retries UnicastRetries(WifiStandard standard) {
   AbstractChannel::Settings::Retries r;
   r.attempts = 7, r.cw_max = 1023;
   if (standard == WifiStandard::k80211a)
-    r.slot_s = 9e-6, r.sifs_s = 16e-6, r.ack_s = 44e-6, r.cw_min = 15;
+    r.slot_s = 9e-6, r.sifs_s = 16e-6, r.cw_min = 15;
   else  // 802.11b, and 802.11g with its long slot beside 802.11b stations, as ns-3 sets it
-    r.slot_s = 20e-6, r.sifs_s = 10e-6, r.ack_s = standard == WifiStandard::k80211b ? 304e-6 : 50e-6,
-    r.cw_min = standard == WifiStandard::k80211b ? 31 : 15;
+    r.slot_s = 20e-6, r.sifs_s = 10e-6, r.cw_min = standard == WifiStandard::k80211b ? 31 : 15;
+  r.ack_s = PreambleSeconds(standard);  // ns-3 waits for an ACK's start: SIFS, a slot and its PHY header
   return r;
 }
 
@@ -146,7 +147,7 @@ void WirelessNetwork::ConfigureRadios() {
   // because ns-3's own default for them is the first basic rate (1 Mbps DSSS even for 802.11g).
   wifi_helper_.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(data_mode),
                                        "ControlMode", ns3::StringValue(control_mode), "NonUnicastMode",
-                                       ns3::StringValue(control_mode));
+                                       ns3::StringValue(spec_.broadcast_at_data_rate ? data_mode : control_mode));
 
   ns3::YansWifiChannelHelper channel;
   if (spec_.delay == DelayModel::kConstantSpeed) {

@@ -99,17 +99,17 @@ void WriteLinkCurve(const LinkCurve& curve, const RunSpec& spec, const LinkCurve
   WriteFileAtomically(folder + "/link_curve.svg", CurveSvg(curve, spec.name + ": " + RadioText(*spec.network)));
   WriteFileAtomically(folder + "/link_curve.json", Summary(curve, spec, options).dump(2) + "\n");
   if (CurveCalibrates(spec, options))
-    WriteFileAtomically(
-        folder + "/calibration.csv",
-        CalibrationCsv(CalibrationFromCurve(curve, *spec.network, options.size),
-                       "sanet link-curve of " + spec.name + ", " + std::to_string(curve.sets_done) + " links x " +
-                           std::to_string(options.frames) + " frames of " + std::to_string(options.size) + " B"));
+    WriteFileAtomically(folder + "/calibration.csv",
+                        net::LinkCalibrationCsv(
+                            CalibrationFromCurve(curve, *spec.network, options.size),
+                            "sanet link-curve of " + spec.name + ", " + std::to_string(curve.sets_done) + " links x " +
+                                std::to_string(options.frames) + " frames of " + std::to_string(options.size) + " B"));
 }
 
 bool CurveCalibrates(const RunSpec& spec, const LinkCurveOptions& options) {
   const net::NetworkSpec& n = *spec.network;
   return n.radio_model == net::RadioModel::kFull && n.radios.wifi && !n.radios.lr_wpan && n.shadowing.sigma_db == 0 &&
-         !options.along;
+         n.spread.tx_power_db == 0 && n.data_rate == net::DataRates(n.standard).front() && !options.along;
 }
 
 }  // namespace sanet::sim

@@ -1,12 +1,13 @@
 #include "sim/radio_calibration.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "core/atomic_file.h"
 #include "core/fingerprint.h"
 #include "core/version.h"
 #include "net/abstract_channel.h"
@@ -44,7 +45,8 @@ net::LinkCalibration CalibrationFromCurve(const LinkCurve& curve, const net::Net
   net::LinkCalibration c;
   for (auto row = curve.rows.rbegin(); row != curve.rows.rend(); ++row)
     c.rows.push_back({row->mean_dbm, row->Prr(),
-                      row->delay_ms.any ? std::max(0.0, row->delay_ms.median / 1e3 - BroadcastAirtime(n, size)) : -1});
+                      row->delay_ms.any ? std::max(0.0, row->delay_ms.median / 1e3 - BroadcastAirtime(n, size)) : -1,
+                      row->Prr()});
   // Rows without a delay are the weak ones, first: each takes the first measured delay above it.
   double above = 0;
   for (auto it = c.rows.rbegin(); it != c.rows.rend(); ++it) {
@@ -73,16 +75,11 @@ std::optional<std::pair<double, double>> Transition(const LinkCurve& curve) {
   return std::pair(rows[last_full].distance, rows[last_heard + 1].distance);
 }
 
-Calibration Measure(const RunSpec& spec) {
-  RunSpec measured = spec;
-  net::NetworkSpec& n = *measured.network;
-  n.radio_model = net::RadioModel::kFull;
-  n.radios = {true, false};
-  n.shadowing.sigma_db = 0;
-  measured.seed = kSeed;
+// A link curve of `measured`'s network, with the fall from full to no delivery measured again.
+LinkCurve CurveWithItsFall(const RunSpec& measured) {
   LinkCurveOptions o;
   o.sets = kLinks, o.frames = kFrames, o.size = kBytes;
-  DefaultDistances(n, o);
+  DefaultDistances(*measured.network, o);
   LinkCurve curve = MeasureLinkCurve(measured, o, nullptr, [] { return false; });
   if (const auto fall = Transition(curve)) {
     o.from = fall->first, o.to = fall->second, o.step = (o.to - o.from) / kTransitionSteps;
@@ -93,42 +90,60 @@ Calibration Measure(const RunSpec& spec) {
         std::unique(curve.rows.begin(), curve.rows.end(), [](auto& a, auto& b) { return a.distance == b.distance; }),
         curve.rows.end());
   }
-  return {CalibrationFromCurve(curve, n, kBytes), "measured", ""};
+  return curve;
 }
 
-// The cached table, if the file exists and holds the same key.
+// Broadcasts go at the lowest rate; unicasts at the data rate, which needs a stronger signal: where
+// the two differ, a second curve with broadcasts sent at the data rate gives the unicasts' PRR per
+// attempt, and the table has a row at every power either curve measured.
+Calibration Measure(const RunSpec& spec) {
+  RunSpec measured = spec;
+  net::NetworkSpec& n = *measured.network;
+  n.radio_model = net::RadioModel::kFull;
+  n.radios = {true, false};
+  n.shadowing.sigma_db = 0;
+  n.spread.tx_power_db = 0;  // the abstract channel applies each sender's own offset
+  measured.seed = kSeed;
+  const net::LinkCalibration broadcast = CalibrationFromCurve(CurveWithItsFall(measured), n, kBytes);
+  if (n.data_rate == net::DataRates(n.standard).front()) return {broadcast, "measured", ""};
+  n.broadcast_at_data_rate = true;
+  const net::LinkCalibration unicast = CalibrationFromCurve(CurveWithItsFall(measured), n, kBytes);
+  std::vector<double> powers;
+  for (const auto* table : {&broadcast, &unicast})
+    for (const auto& r : table->rows) powers.push_back(r.mean_dbm);
+  std::sort(powers.begin(), powers.end());
+  powers.erase(std::unique(powers.begin(), powers.end()), powers.end());
+  net::LinkCalibration both;
+  for (double p : powers) both.rows.push_back({p, broadcast.Prr(p), broadcast.AccessDelay(p), unicast.Prr(p)});
+  return {both, "measured", ""};
+}
+
+// The cached table, if the file exists, holds the same key and reads as a whole table.
 std::optional<net::LinkCalibration> Read(const std::string& path, const std::string& key) {
   std::ifstream in(path);
   std::string line;
-  if (!std::getline(in, line) || line != "# " + key || !std::getline(in, line)) return std::nullopt;
-  net::LinkCalibration c;
-  net::LinkCalibration::Row r;
-  char comma = 0;
-  while (in >> r.mean_dbm >> comma >> r.prr >> comma >> r.access_delay_s) c.rows.push_back(r);
-  if (c.rows.empty()) return std::nullopt;
-  return c;
+  if (!std::getline(in, line) || line != "# " + key) return std::nullopt;
+  std::stringstream rest;
+  rest << in.rdbuf();
+  try {
+    return net::ParseLinkCalibrationCsv(rest.str());
+  } catch (const net::CalibrationCsvError&) {  // damaged: measured again
+    return std::nullopt;
+  }
 }
 
 }  // namespace
-
-std::string CalibrationCsv(const net::LinkCalibration& c, const std::string& comment) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "# " << comment << "\nmean_dbm,prr,access_delay_s\n";
-  for (const auto& r : c.rows) out << r.mean_dbm << ',' << r.prr << ',' << r.access_delay_s << '\n';
-  return out.str();
-}
 
 std::string CalibrationKey(const net::NetworkSpec& n) {
   std::ostringstream text;
   text.precision(17);
   text << "sanet " << SanetVersion() << "; " << net::StandardName(n.standard) << " " << n.data_rate << " Mbps, rx "
        << n.rx_threshold << " dBm, channel " << net::ChannelName(n.channel) << " " << n.ChannelFloor() << ", fading "
-       << static_cast<int>(n.fading.model) << " " << n.fading.m << ", spread " << n.spread.tx_power_db << "/"
-       << n.spread.noise_figure_db << ", delay " << static_cast<int>(n.delay) << " " << n.random_delay_max;
+       << static_cast<int>(n.fading.model) << " " << n.fading.m << ", noise figure spread " << n.spread.noise_figure_db
+       << ", delay " << static_cast<int>(n.delay) << " " << n.random_delay_max;
   for (const auto& [name, value] : n.ns3) text << ", " << name << "=" << value;
   text << "; " << kLinks << " links x " << kFrames << " frames of " << kBytes << " B, the fall again in "
-       << kTransitionSteps << " steps";
+       << kTransitionSteps << " steps, unicasts at the data rate";
   return text.str();
 }
 
@@ -160,14 +175,15 @@ Calibration CalibrationFor(const RunSpec& spec) {
     if (auto cached = Read(path, key)) return {*cached, "cached", path};
   Calibration c = Measure(spec);
   if (path.empty()) return c;
-  try {
-    fs::create_directories(fs::path(path).parent_path());
-    AtomicFile file(path);
-    file.Write(CalibrationCsv(c.table, key));
-    file.Commit();
-    c.path = path;
-  } catch (const std::exception&) {  // a cache that cannot be written: measured again next time
-  }
+  // Runs of a sweep may measure the same radio at once: each writes a file of its own and renames
+  // it into place, so that a reader sees one whole table (the same, whoever wrote it last).
+  const std::string own = path + "." + std::to_string(::getpid()) + ".tmp";
+  std::error_code error;
+  fs::create_directories(fs::path(path).parent_path(), error);
+  std::ofstream(own) << net::LinkCalibrationCsv(c.table, key);
+  fs::rename(own, path, error);
+  if (!error) c.path = path;  // else: a cache that cannot be written, measured again next time
+  fs::remove(own, error);
   return c;
 }
 

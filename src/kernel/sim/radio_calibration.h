@@ -34,8 +34,7 @@ std::string DescribeCalibration(const net::NetworkSpec& network);
 std::string CalibrationKey(const net::NetworkSpec& network);
 // A link curve's rows as a calibration: median delay less the airtime of a broadcast of `size`
 // bytes at the lowest rate; rows where nothing arrived take the nearest measured delay above.
+// Unicasts take the broadcasts' PRR (the curve measured one rate).
 net::LinkCalibration CalibrationFromCurve(const LinkCurve& curve, const net::NetworkSpec& network, int size);
-// The table as the CSV that `network.calibration` reads, after a `# comment` line.
-std::string CalibrationCsv(const net::LinkCalibration& table, const std::string& comment);
 
 }  // namespace sanet::sim

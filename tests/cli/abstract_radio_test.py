@@ -214,6 +214,26 @@ class AbstractRadio(unittest.TestCase):
             self.assertAlmostEqual(used["radio_tx"] + used["radio_rx"] + used["radio_idle"] + used["electronics"]
                                    + used["motion"] + used["sensors"], used["total"], places=6)
 
+    def test_the_mac_gives_up_on_a_unicast_to_a_radio_switched_off(self):
+        scenario = self.write("gave-up.yaml", """name: gave-up
+duration: 10
+network: {radio_model: abstract, routing: none, packet_log: true, tx_power: 10}
+nodes:
+  - {name: a, model: mote, pose: [0, 0, 0]}
+  - {name: b, model: mote, pose: [20, 0, 0], controller: {name: pinger, params: {to: a, start: 1}}}
+events:
+  - {time: 5, node: a, action: switch_off}
+""")
+        out = os.path.join(self.tmp.name, "gave-up")
+        self.sanet("run", scenario, "-q", "-o", out, "--force")
+        with open(os.path.join(out, "packets", "b.csv")) as f:
+            rows = list(csv.DictReader(f))
+        gave_up = [float(r["time"]) for r in rows if r["reason"] == "mac_gave_up"]
+        self.assertEqual(len(gave_up), 5, "the unicasts of 5 to 9 s")
+        self.assertTrue(all(t >= 5 for t in gave_up))
+        with open(os.path.join(out, "messages.csv")) as f:
+            self.assertEqual(sum(1 for r in csv.DictReader(f) if r["time_received"]), 4, "those of 1 to 4 s arrive")
+
     def test_a_duty_cycle_is_refused_on_the_abstract_radio(self):
         scenario = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios",
                                 "duty-cycled-motes.yaml")

@@ -58,9 +58,11 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
     const std::optional<std::uint32_t> peer =
         addressee == by_address_.end() ? std::nullopt : std::optional(addressee->second);
     if (observer_) Observe(origin, true, peer, p, protocol, false);
+    acknowledged_ = false, attempts_ = settings_.unicast.attempts;
     if (peer) Offer(origin, *peer, frame, p, protocol, to, from);
     // The sender is on the air for every attempt: all of them where nobody acknowledges.
-    if (on_air_) on_air_(origin, true, Airtime(p->GetSize(), false) * (peer ? attempts_ : settings_.unicast.attempts));
+    if (on_air_) on_air_(origin, true, Airtime(p->GetSize(), false) * attempts_);
+    if (!acknowledged_ && gave_up_) gave_up_(origin, p);
     return;
   }
   if (observer_) Observe(origin, true, std::nullopt, p, protocol, true);
@@ -76,7 +78,6 @@ void AbstractChannel::Send(ns3::Ptr<ns3::Packet> p, uint16_t protocol, ns3::Mac4
 // unicast has the MAC's attempts.
 void AbstractChannel::Offer(std::uint32_t from, std::uint32_t to, std::uint64_t frame, ns3::Ptr<ns3::Packet> p,
                             uint16_t protocol, ns3::Mac48Address dst, ns3::Mac48Address src) {
-  attempts_ = settings_.unicast.attempts;
   if (off_[to]) return;
   ++counters_.asked;
   const double dbm = settings_.mean_loss->CalcRxPower(settings_.tx_power_dbm(from), mobility_[from], mobility_[to]);
@@ -114,8 +115,8 @@ std::optional<double> AbstractChannel::UnicastRetries(std::uint32_t from, std::u
     CounterRandom draw(settings_.seed, {kDeliveryKey, from, to, frame, static_cast<std::uint64_t>(k)});
     const bool reached = draw.Uniform() < prr;
     if (reached && !arrived) arrived = spent;
-    if (reached && draw.Uniform() < prr) {  // acknowledged
-      attempts_ = k + 1;
+    if (reached && draw.Uniform() < prr) {
+      attempts_ = k + 1, acknowledged_ = true;
       break;
     }
     const int window = std::min(((r.cw_min + 1) << std::min(k + 1, 16)) - 1, r.cw_max);

@@ -82,6 +82,9 @@ class AbstractChannel : public ns3::SimpleChannel {
   // reaches (when it arrives): what the abstract radio draws energy for.
   using OnAirObserver = std::function<void(std::uint32_t node, bool sent, double seconds)>;
   void ObserveAirtime(OnAirObserver observer) { on_air_ = std::move(observer); }
+  // A unicast frame none of whose attempts was acknowledged (the MAC gives up on it), at its sender.
+  using GaveUpObserver = std::function<void(std::uint32_t node, ns3::Ptr<const ns3::Packet> p)>;
+  void ObserveGivingUp(GaveUpObserver observer) { gave_up_ = std::move(observer); }
   // The bytes an 802.11 frame adds to the IP packet: MAC header, LLC/SNAP and FCS.
   static constexpr std::uint32_t kMacOverhead = 24 + 8 + 4;
 
@@ -92,7 +95,7 @@ class AbstractChannel : public ns3::SimpleChannel {
 
  private:
   double AirtimeBeyondSerialization(std::uint32_t bytes, bool broadcast) const;
-  // Sets attempts_ to the attempts the frame took.
+  // Sets attempts_ to the attempts the frame took, acknowledged_ to whether one was acknowledged.
   std::optional<double> UnicastRetries(std::uint32_t from, std::uint32_t to, std::uint64_t frame, double prr,
                                        double airtime);
   void Observe(std::uint32_t node, bool sent, std::optional<std::uint32_t> peer, ns3::Ptr<const ns3::Packet> p,
@@ -113,9 +116,11 @@ class AbstractChannel : public ns3::SimpleChannel {
   std::vector<bool> off_;            // by node id
   std::vector<std::uint32_t> near_;  // scratch
   int attempts_ = 1;                 // the last unicast offered: attempts it took (all, where none was acknowledged)
+  bool acknowledged_ = false;        // the last unicast offered
   Counters counters_;
   FrameObserver observer_;
   OnAirObserver on_air_;
+  GaveUpObserver gave_up_;
 };
 
 }  // namespace sanet::net

@@ -250,6 +250,9 @@ void WirelessNetwork::ConfigureAbstract(const ChannelLosses& losses) {
   s.range_m = far;
   abstract_ = ns3::CreateObject<AbstractChannel>();
   abstract_->Configure(std::move(s));
+  abstract_->ObserveGivingUp([this](std::uint32_t node, ns3::Ptr<const ns3::Packet> p) {
+    trace_.MacGaveUp(node, p->GetSize() + AbstractChannel::kMacOverhead);
+  });
 }
 
 // After the IP stack: the radio, 6LoWPAN and the IPv6 interface, with the node's own power.

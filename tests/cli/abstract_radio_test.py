@@ -143,6 +143,20 @@ class AbstractRadio(unittest.TestCase):
         with open(os.path.join(self.tmp.name, "run", "summary.json")) as f:
             self.assertEqual(json.load(f)["network"]["channel"]["calibration"], "measured")
 
+    def test_a_weak_radio_measured_within_a_metre_is_cached_and_read_back(self):
+        # At -5 dBm the curve starts under the path loss's reference distance (1 m), where every
+        # distance has the same power: the table keeps one row for it, and the cache reads back.
+        self.env = dict(self.env, SANET_CACHE=os.path.join(self.tmp.name, "cache-of-weak"))
+        weak = self.write("weak.yaml", "name: weak\nduration: 1\nnetwork: {radio_model: abstract, tx_power: -5}\n"
+                                       "nodes:\n  - {name: a, model: mote, pose: [0, 0, 0]}\n")
+        sources = []
+        for run in ("first", "second"):
+            out = os.path.join(self.tmp.name, "weak-" + run)
+            self.sanet("run", weak, "-q", "-o", out, "--force")
+            with open(os.path.join(out, "summary.json")) as f:
+                sources.append(json.load(f)["network"]["channel"]["calibration"])
+        self.assertEqual(sources, ["measured", "cached"])
+
     def test_unicasts_at_a_higher_rate_are_calibrated_at_that_rate(self):
         self.env = dict(self.env, SANET_CACHE=os.path.join(self.tmp.name, "cache-of-rates"))
         fast = ["--set", "network.radio_model=abstract", "--set", "network.data_rate=11",

@@ -41,7 +41,22 @@ void ClaimCurveFolder(const std::string& dir, bool force) {
                                dir + " holds an earlier link curve: --force replaces it, or give another folder");
 }
 
-void PrintCurve(const sim::LinkCurve& curve, const std::string& dir, bool calibrates) {
+// A table interpolates between its rows: where all frames arrive at one distance and none at the
+// next, it would make a grey zone of that step which the radio does not have.
+void PrintSteepFall(const sim::LinkCurve& curve) {
+  for (std::size_t i = 0; i + 1 < curve.rows.size(); ++i) {
+    const sim::LinkCurveRow &near = curve.rows[i], &far = curve.rows[i + 1];
+    if (near.Prr() < 0.99 || far.Prr() > 0) continue;
+    std::printf(
+        "  note: the PRR falls from %.2f to 0 between %g and %g m, one step: as a calibration the table would "
+        "ramp between them. Measure the fall in finer steps (--from %g --to %g --step %g), as `calibration: "
+        "measure` does\n",
+        near.Prr(), near.distance, far.distance, near.distance, far.distance, (far.distance - near.distance) / 40);
+    return;
+  }
+}
+
+void PrintCurve(const sim::LinkCurve& curve, const std::string& dir, const std::string& no_calibration) {
   std::printf("  %-10s %-9s %-6s %-8s %-8s\n", "distance", "mean dBm", "PRR", ">=0.9", ">0.1");
   for (const sim::LinkCurveRow& r : curve.rows)
     std::printf("  %7.1f m %9.1f %6.3f %8.2f %8.2f\n", r.distance, r.mean_dbm, r.Prr(), r.share_90, r.share_10);
@@ -52,7 +67,12 @@ void PrintCurve(const sim::LinkCurve& curve, const std::string& dir, bool calibr
               bound(curve.disconnected_from).c_str());
   if (curve.p50_dbm) std::printf("; half the frames arrive at a mean of %.1f dBm", *curve.p50_dbm);
   std::printf("\n");
-  if (calibrates) std::printf("  calibration.csv: this curve as the abstract radio's network.calibration\n");
+  if (no_calibration.empty()) {
+    std::printf("  calibration.csv: this curve as the abstract radio's network.calibration\n");
+    PrintSteepFall(curve);
+  } else {
+    std::printf("  no calibration.csv: %s\n", no_calibration.c_str());
+  }
   std::printf("  results in %s/\n", dir.c_str());
 }
 
@@ -111,7 +131,7 @@ int Measure(LinkCurveArgs& a, hosting::Registry& registry) {
                  InterruptReason().c_str(), curve.sets_done, a.options.sets, dir.c_str());
     return 128 + InterruptSignal();
   }
-  if (!a.quiet) PrintCurve(curve, dir, sim::CurveCalibrates(sc.run, a.options));
+  if (!a.quiet) PrintCurve(curve, dir, sim::WhyNoCalibration(sc.run, a.options));
   return 0;
 }
 

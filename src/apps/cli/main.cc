@@ -95,6 +95,9 @@ int Run(const RunArgs& args, hosting::Registry& registry) {
                 sc.run.nodes.size(), sc.run.nodes.size() == 1 ? "" : "s", sc.run.duration,
                 static_cast<unsigned long long>(sc.run.seed),
                 sc.run.threads == 2 ? ", physics on a second thread" : "");
+  const net::NetworkSpec* network = sc.run.network ? &*sc.run.network : nullptr;
+  if (!args.quiet && network && network->radio_model == net::RadioModel::kAbstract)
+    std::printf("  the abstract radio's calibration: %s\n", sim::DescribeCalibration(*network).c_str());
   if (args.real_time) sim::UseRealTimeClock();  // the same schedule, against the wall clock
   sim::World world(sc.run, registry);
   ros2_presentation::RunPresentation ros2_messages(world);  // trace.mcap and the Foxglove stream

@@ -31,7 +31,8 @@ bool SimulatedNode::SetRadioSleep(bool asleep) {
     return false;
   }
   if (transport_.SetSleep(id_, asleep)) return true;
-  Log("radio sleep refused: this run has no radio model (no `network` section)");
+  Log("radio sleep refused: this node's radio does not sleep (the run has no `network` section, or its radio is "
+      "the abstract one)");
   return false;
 }
 

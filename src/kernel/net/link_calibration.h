@@ -56,7 +56,10 @@ void CheckCalibration(const LinkCalibration& c, Fail fail) {
     if (!(r.prr >= 0 && r.prr <= 1)) fail(i, 1, "must be within [0, 1]");
     if (!(r.access_delay_s >= 0 && r.access_delay_s <= 60)) fail(i, 2, "must be within [0, 60] s");
     if (!(r.unicast_prr >= 0 && r.unicast_prr <= 1)) fail(i, 3, "must be within [0, 1]");
-    if (i > 0 && !(r.mean_dbm > c.rows[i - 1].mean_dbm)) fail(i, 0, "rows must be in ascending mean_dbm");
+    if (i > 0 && !(r.mean_dbm > c.rows[i - 1].mean_dbm))
+      fail(i, 0,
+           "rows must be in strictly ascending mean_dbm (" + std::to_string(r.mean_dbm) + " after " +
+               std::to_string(c.rows[i - 1].mean_dbm) + "): sort them, one row for each power");
     heard = heard || r.prr > 0 || r.unicast_prr > 0;
   }
   if (!heard) fail(c.rows.size() - 1, 1, "no row delivers anything (every prr is 0)");

@@ -81,11 +81,12 @@ std::size_t DistanceCount(const LinkCurveOptions& options);
 LinkCurve MeasureLinkCurve(const RunSpec& spec, const LinkCurveOptions& options,
                            const std::function<void(int, int)>& progress, const std::function<bool()>& stop);
 // link_curve.csv, link_curve_links.csv, link_curve.svg and link_curve.json, each written whole;
-// and calibration.csv, the abstract radio's table (`network.calibration`), where CurveCalibrates.
+// and calibration.csv, the abstract radio's table (`network.calibration`), unless WhyNoCalibration.
 // The abstract channel adds each link's shadowing, walls and transmit-power spread to its mean
 // power, so a curve calibrates only without them: the full 802.11 model alone, no shadowing and
 // no transmit spread, in free space; and at the lowest rate, which broadcasts and (then) unicasts use.
-bool CurveCalibrates(const RunSpec& spec, const LinkCurveOptions& options);
+// Why a curve of `spec` with `options` is no calibration (empty: it is one).
+std::string WhyNoCalibration(const RunSpec& spec, const LinkCurveOptions& options);
 void WriteLinkCurve(const LinkCurve& curve, const RunSpec& spec, const LinkCurveOptions& options,
                     const std::string& folder);
 

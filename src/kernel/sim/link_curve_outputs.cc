@@ -98,18 +98,26 @@ void WriteLinkCurve(const LinkCurve& curve, const RunSpec& spec, const LinkCurve
   WriteFileAtomically(folder + "/link_curve_links.csv", LinksCsv(curve));
   WriteFileAtomically(folder + "/link_curve.svg", CurveSvg(curve, spec.name + ": " + RadioText(*spec.network)));
   WriteFileAtomically(folder + "/link_curve.json", Summary(curve, spec, options).dump(2) + "\n");
-  if (CurveCalibrates(spec, options))
-    WriteFileAtomically(folder + "/calibration.csv",
-                        net::LinkCalibrationCsv(
-                            CalibrationFromCurve(curve, *spec.network, options.size),
-                            "sanet link-curve of " + spec.name + ", " + std::to_string(curve.sets_done) + " links x " +
-                                std::to_string(options.frames) + " frames of " + std::to_string(options.size) + " B"));
+  if (WhyNoCalibration(spec, options).empty())
+    WriteFileAtomically(
+        folder + "/calibration.csv",
+        net::LinkCalibrationCsv(CalibrationFromCurve(curve, *spec.network, options.size),
+                                "sanet link-curve of " + spec.name + ", " + std::to_string(curve.sets_done) +
+                                    " links x " + std::to_string(options.frames) + " frames of " +
+                                    std::to_string(options.size) + " B; " + CalibrationKey(*spec.network)));
 }
 
-bool CurveCalibrates(const RunSpec& spec, const LinkCurveOptions& options) {
+std::string WhyNoCalibration(const RunSpec& spec, const LinkCurveOptions& options) {
   const net::NetworkSpec& n = *spec.network;
-  return n.radio_model == net::RadioModel::kFull && n.radios.wifi && !n.radios.lr_wpan && n.shadowing.sigma_db == 0 &&
-         n.spread.tx_power_db == 0 && n.data_rate == net::DataRates(n.standard).front() && !options.along;
+  if (n.radio_model != net::RadioModel::kFull) return "it measures the abstract radio, not the full model";
+  if (!n.radios.wifi || n.radios.lr_wpan) return "the abstract radio stands for 802.11 radios only";
+  if (n.shadowing.sigma_db != 0) return "the curve has shadowing, which the abstract radio adds to each link itself";
+  if (n.spread.tx_power_db != 0)
+    return "the curve has a transmit-power spread, which the abstract radio applies to each sender itself";
+  if (n.data_rate != net::DataRates(n.standard).front())
+    return "its broadcasts go at the lowest rate, not network.data_rate (the `measure` calibration measures both)";
+  if (options.along) return "its lines cross the scenario's walls, which the abstract radio adds to each link itself";
+  return "";
 }
 
 }  // namespace sanet::sim

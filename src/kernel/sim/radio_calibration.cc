@@ -47,6 +47,9 @@ net::LinkCalibration CalibrationFromCurve(const LinkCurve& curve, const net::Net
     c.rows.push_back({row->mean_dbm, row->Prr(),
                       row->delay_ms.any ? std::max(0.0, row->delay_ms.median / 1e3 - BroadcastAirtime(n, size)) : -1,
                       row->Prr()});
+  // Distances within the path loss's reference distance share its power: one row for each power.
+  c.rows.erase(std::unique(c.rows.begin(), c.rows.end(), [](auto& a, auto& b) { return a.mean_dbm == b.mean_dbm; }),
+               c.rows.end());
   // Rows without a delay are the weak ones, first: each takes the first measured delay above it.
   double above = 0;
   for (auto it = c.rows.rbegin(); it != c.rows.rend(); ++it) {

@@ -20,6 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kLinks = 20, kFrames = 50, kBytes = 64;
+// Raised whenever the measurement changes in a way its key's other words do not say, so that no
+// cache measured the old way is read.
+constexpr int kMethod = 3;
 constexpr int kTransitionSteps = 40;  // the fall from full to no delivery is measured again in as many steps
 constexpr std::uint64_t kSeed = 1;
 
@@ -140,10 +143,11 @@ std::optional<net::LinkCalibration> Read(const std::string& path, const std::str
 std::string CalibrationKey(const net::NetworkSpec& n) {
   std::ostringstream text;
   text.precision(17);
-  text << "sanet " << SanetVersion() << "; " << net::StandardName(n.standard) << " " << n.data_rate << " Mbps, rx "
-       << n.rx_threshold << " dBm, channel " << net::ChannelName(n.channel) << " " << n.ChannelFloor() << ", fading "
-       << static_cast<int>(n.fading.model) << " " << n.fading.m << ", noise figure spread " << n.spread.noise_figure_db
-       << ", delay " << static_cast<int>(n.delay) << " " << n.random_delay_max;
+  text << "sanet " << SanetVersion() << ", calibration method " << kMethod << "; " << net::StandardName(n.standard)
+       << " " << n.data_rate << " Mbps, rx " << n.rx_threshold << " dBm, channel " << net::ChannelName(n.channel) << " "
+       << n.ChannelFloor() << ", fading " << static_cast<int>(n.fading.model) << " " << n.fading.m
+       << ", noise figure spread " << n.spread.noise_figure_db << ", delay " << static_cast<int>(n.delay) << " "
+       << n.random_delay_max;
   for (const auto& [name, value] : n.ns3) text << ", " << name << "=" << value;
   text << "; " << kLinks << " links x " << kFrames << " frames of " << kBytes << " B, the fall again in "
        << kTransitionSteps << " steps, unicasts at the data rate";

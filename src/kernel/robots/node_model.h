@@ -31,8 +31,18 @@ struct SensorConfig {
 // other name for more of a kind ("laser_rear").
 using SensorConfigs = std::map<std::string, SensorConfig>;
 
+// Where a body came from when a URDF file described it (scenario/urdf_body.h): what the
+// effective scenario prints, so that the body can be read again without the file.
+struct UrdfSource {
+  std::string file;                 // as the scenario named it
+  std::string text;                 // the file's content
+  std::vector<std::string> wheels;  // the wheel joints: left, right
+  std::string base_link;            // as given (empty: the URDF's root)
+};
+
 struct ModelSpec {
   ModelKind kind = ModelKind::kMote;
+  std::shared_ptr<const UrdfSource> urdf;  // null: the body's keys alone
   physics::MoteSpec mote;
   physics::Omni3Spec omni3;
   physics::DiffDriveSpec diffdrive;

@@ -4,6 +4,7 @@
 #include "scenario/declarations.h"
 #include "scenario/energy_fields.h"
 #include "scenario/sensor_fields.h"
+#include "scenario/urdf_body.h"
 
 namespace sanet::scenario {
 namespace {
@@ -13,6 +14,8 @@ void PutRobot(YAML::Node& out, const robots::ModelSpec& model, const net::NodeRa
               const std::optional<energy::EnergySpec>& energy, bool has_network) {
   out["model"] = robots::ModelName(model.kind);
   out["body"] = BodyFields(model.kind).Print(model);
+  YAML::Node body = out["body"];
+  PrintUrdfBody(model, body);
   out["sensors"] = PrintSensors(model);
   const bool own_radio =
       radio.radios || radio.tx_power || radio.lr_wpan_tx_power || radio.antenna_height > 0 || radio.duty_cycle;

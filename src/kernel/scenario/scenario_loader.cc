@@ -16,6 +16,7 @@
 #include "scenario/lr_wpan_fields.h"
 #include "scenario/placement.h"
 #include "scenario/sensor_fields.h"
+#include "scenario/urdf_body.h"
 #include "sensors/sensor_registry.h"
 #include "sim/world.h"
 
@@ -35,7 +36,8 @@ ModelKind ReadModel(const Field& f) {
 }
 
 void ReadBody(const Field& f, ModelSpec& m) {
-  BodyFields(m.kind).Read(f, m);
+  ReadUrdfBody(f, m);  // first: the keys given beside it override what it says
+  BodyFields(m.kind).Read(f, m, kUrdfBodyKeys);
   if (m.kind == ModelKind::kOmni3 && m.omni3.wheel_distance >= m.omni3.body_radius + m.omni3.wheel_radius)
     f.Fail("wheel_distance must keep the wheels under the body (less than body_radius + wheel_radius)");
 }

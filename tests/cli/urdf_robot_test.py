@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""A robot from a URDF file (`body.urdf`) as a user meets it: validate --print shows the values read
+under their usual keys (worked out by hand from scenarios/robots/little-diff.urdf), its wheels at
+w rad/s drive it at w times their radius, the effective scenario carries the file's text and runs
+to the same fingerprint without the file, and faults are refused with the file and line."""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SANET = sys.argv.pop(1)
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+URDF = os.path.join(ROOT, "scenarios", "robots", "little-diff.urdf")
+SCENARIO = """name: urdf-robot
+duration: 5
+world: {size: [20, 20]}
+nodes:
+  - name: r
+    model: diffdrive
+    pose: [2, 2, 0]
+    body:
+      urdf: robot.urdf
+      wheels: {left: left_wheel_joint, right: right_wheel_joint}
+    controller: {name: constant_velocity, params: {wheel_speeds: [4, 4], start: 1, stop: 4}}
+"""
+
+
+class UrdfRobot(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+        shutil.copy(URDF, os.path.join(self.tmp, "robot.urdf"))
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def write(self, name, text):
+        path = os.path.join(self.tmp, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def sanet(self, *args, check=True):
+        done = subprocess.run([SANET, *args], capture_output=True, text=True)
+        if check:
+            self.assertEqual(done.returncode, 0, done.stderr)
+        return done
+
+    def test_the_body_is_the_files_and_its_wheels_drive_it(self):
+        scenario = self.write("s.yaml", SCENARIO)
+        printed = self.sanet("validate", scenario, "--print").stdout
+        for key, value in (("wheel_radius", "0.05"), ("axle_length", "0.29"), ("body_mass", "2.3"),
+                           ("wheel_mass", "0.25"), ("body_length", "0.3"), ("body_width", "0.24"),
+                           ("body_height", "0.1"), ("ground_clearance", "0.04")):
+            self.assertIn("      %s: %s\n" % (key, value), printed)
+        out = os.path.join(self.tmp, "run")
+        self.sanet("run", scenario, "-q", "-o", out)
+        with open(os.path.join(out, "trajectories.csv")) as f:
+            rows = list(csv.DictReader(f))
+        travelled = float(rows[-1]["x"]) - float(rows[0]["x"])
+        self.assertAlmostEqual(travelled, 4 * 0.05 * 3, delta=0.01, msg="4 rad/s for 3 s on wheels of 5 cm")
+
+    def test_the_effective_scenario_carries_the_file_and_runs_the_same(self):
+        scenario = self.write("s.yaml", SCENARIO)
+        effective = self.write("effective.yaml", self.sanet("validate", scenario, "--print").stdout)
+        runs = []
+        for path in (scenario, effective):
+            out = os.path.join(self.tmp, "run-" + os.path.basename(path))
+            self.sanet("run", path, "-q", "-o", out)
+            with open(os.path.join(out, "summary.json")) as f:
+                runs.append(json.load(f))
+            os.remove(os.path.join(self.tmp, "robot.urdf")) if path == scenario else None
+        self.assertEqual(runs[0]["scenario_fingerprint"], runs[1]["scenario_fingerprint"])
+        self.assertEqual(runs[0]["fingerprint"], runs[1]["fingerprint"])
+        # The fingerprint covers the file's content: a heavier chassis is another scenario.
+        shutil.copy(URDF, os.path.join(self.tmp, "robot.urdf"))
+        with open(URDF) as f:
+            heavier = f.read().replace('<mass value="2.0"/>', '<mass value="2.5"/>')
+        self.write("robot.urdf", heavier)
+        out = os.path.join(self.tmp, "run-heavier")
+        self.sanet("run", scenario, "-q", "-o", out)
+        with open(os.path.join(out, "summary.json")) as f:
+            self.assertNotEqual(json.load(f)["scenario_fingerprint"], runs[0]["scenario_fingerprint"])
+
+    def test_faults_are_refused_with_file_and_line(self):
+        with open(URDF) as f:
+            text = f.read()
+        cases = [
+            (text.replace('type="continuous">\n    <parent link="base_link"/>\n    <child link="right_wheel"/>',
+                          'type="fixed">\n    <parent link="base_link"/>\n    <child link="right_wheel"/>'),
+             SCENARIO, "robot.urdf:47", "continuous joint"),
+            (text.replace('<origin xyz="0 0 0.12"/>', '<origin xyz="0 0 ${mast}"/>'), SCENARIO, "robot.urdf:90",
+             "xacro"),
+            (text, SCENARIO.replace("right: right_wheel_joint", "right: rear_wheel_joint"), "s.yaml:10",
+             "no joint of that name"),
+            (text, SCENARIO.replace("model: diffdrive", "model: omni3"), "s.yaml:9", "diffdrive"),
+            (text, SCENARIO.replace("      urdf: robot.urdf\n", ""), "s.yaml:9", "goes with `urdf`"),
+        ]
+        for urdf, scenario_text, where, words in cases:
+            self.write("robot.urdf", urdf)
+            done = self.sanet("validate", self.write("s.yaml", scenario_text), check=False)
+            self.assertEqual(done.returncode, 2, done.stderr)
+            self.assertIn(where, done.stderr)
+            self.assertIn(words, done.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()

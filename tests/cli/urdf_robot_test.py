@@ -25,6 +25,7 @@ nodes:
     body:
       urdf: robot.urdf
       wheels: {left: left_wheel_joint, right: right_wheel_joint}
+    sensors: {laser: {link: laser, max_range: 5}}
     controller: {name: constant_velocity, params: {wheel_speeds: [4, 4], start: 1, stop: 4}}
 """
 
@@ -56,6 +57,11 @@ class UrdfRobot(unittest.TestCase):
                            ("wheel_mass", "0.25"), ("body_length", "0.3"), ("body_width", "0.24"),
                            ("body_height", "0.1"), ("ground_clearance", "0.04")):
             self.assertIn("      %s: %s\n" % (key, value), printed)
+        # The laser on its link: the mast 0.05 m ahead of the axle and 0.09 m up, the laser 0.12 m
+        # above the mast, the axle 0.05 m (a wheel's radius) above the ground.
+        laser = printed[printed.index("      laser:\n"):]
+        self.assertIn("        mount_x: 0.05\n", laser[:300])
+        self.assertIn("        height: 0.26\n", laser[:300])
         out = os.path.join(self.tmp, "run")
         self.sanet("run", scenario, "-q", "-o", out)
         with open(os.path.join(out, "trajectories.csv")) as f:
@@ -98,6 +104,9 @@ class UrdfRobot(unittest.TestCase):
              "no joint of that name"),
             (text, SCENARIO.replace("model: diffdrive", "model: omni3"), "s.yaml:9", "diffdrive"),
             (text, SCENARIO.replace("      urdf: robot.urdf\n", ""), "s.yaml:9", "goes with `urdf`"),
+            (text, SCENARIO.replace("link: laser", "link: lidar"), "s.yaml:11", "no link 'lidar'"),
+            (text, SCENARIO.replace("    body:\n      urdf: robot.urdf\n      wheels: {left: left_wheel_joint, "
+                                    "right: right_wheel_joint}\n", ""), "s.yaml:8", "needs `urdf`"),
         ]
         for urdf, scenario_text, where, words in cases:
             self.write("robot.urdf", urdf)

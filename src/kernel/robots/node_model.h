@@ -3,6 +3,7 @@
 #pragma once
 
 #include <any>
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -38,6 +39,8 @@ struct UrdfSource {
   std::string text;                 // the file's content
   std::vector<std::string> wheels;  // the wheel joints: left, right
   std::string base_link;            // as given (empty: the URDF's root)
+  // Every link's place, x forward and z up from the ground under the base link's origin (m).
+  std::map<std::string, std::array<double, 3>> links;
 };
 
 struct ModelSpec {

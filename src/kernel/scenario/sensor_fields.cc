@@ -76,6 +76,23 @@ const Fields<robots::SensorConfig>& DrawFields() {
   return fields;
 }
 
+// `link: NAME` on a robot from a URDF: the sensor's mount_x and height are the link's place (keys
+// the sensor gives itself are read after). Read as the kind's own keys, so that they print as those.
+void MountOnLink(const Field& link, const Field& value, const robots::ModelSpec& model, const std::string& kind,
+                 std::any& settings) {
+  if (!model.urdf) link.Fail("names a URDF link: the robot's body needs `urdf`");
+  const auto place = model.urdf->links.find(link.Text());
+  if (place == model.urdf->links.end()) link.Fail("the robot's URDF has no link '" + link.Text() + "'");
+  bool mounts = false, heights = false;
+  for (const FieldInfo& key : FieldsOf(kind).Describe(settings))
+    mounts = mounts || key.key == "mount_x", heights = heights || key.key == "height";
+  if (!mounts || !heights) link.Fail("a " + kind + " sensor has no mount_x and height to put on a link");
+  YAML::Node mount(YAML::NodeType::Map);
+  mount["mount_x"] = place->second[0];
+  mount["height"] = place->second[2];
+  FieldsOf(kind).Read(Field(mount, value.path(), std::make_shared<const std::string>(value.file())), settings);
+}
+
 void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec& model) {
   if (!IsToken(name))
     value.Fail(
@@ -100,7 +117,8 @@ void ReadInstance(const std::string& name, const Field& value, robots::ModelSpec
                  KeysOf(kind, model, true) + ": ...} instead of true");
   } else {
     if (it != model.sensors.end() && it->second.kind == kind_name) config = it->second;
-    FieldsOf(kind_name).Read(value, settings);
+    if (auto link = value.Get("link")) MountOnLink(*link, value, model, kind_name, settings);
+    FieldsOf(kind_name).Read(value, settings);  // after: mount_x and height given override the link's
     DrawFields().ReadPresent(value, config);
   }
   model.sensors[name] = std::move(config);

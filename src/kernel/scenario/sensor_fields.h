@@ -22,7 +22,7 @@ namespace sanet::scenario {
 
 // The keys every sensor instance has, which ReadSensors reads beside the kind's own: its kind,
 // and its draw on the node's battery.
-inline const std::vector<std::string> kInstanceKeys = {"kind", "power_w", "energy_j"};
+inline const std::vector<std::string> kInstanceKeys = {"kind", "power_w", "energy_j", "link"};
 
 class SensorFields {
  public:

@@ -74,6 +74,9 @@ void ReadUrdfBody(const Field& body, robots::ModelSpec& m) {
     throw ScenarioError(e.file(), e.line(), e.element(), std::string(e.what()).substr(e.file().size() + 1));
   }
   ApplyDiffDrive(robot, m.diffdrive);
+  // The ground is under the wheels' lowest points.
+  const double ground_z = (robot.wheels[0].pose.xyz[2] + robot.wheels[1].pose.xyz[2]) / 2 - m.diffdrive.wheel_radius;
+  for (const auto& [name, pose] : robot.links) source.links[name] = {pose.xyz[0], pose.xyz[1], pose.xyz[2] - ground_z};
   m.urdf = std::make_shared<const robots::UrdfSource>(std::move(source));
 }
 

@@ -197,7 +197,11 @@ std::vector<UrdfShape> ReadChassis(const std::string& file, const urdf::Link& ba
 }  // namespace
 
 UrdfError::UrdfError(const std::string& file, int line, const std::string& element, const std::string& message)
-    : std::runtime_error(Where(file, line, element) + ": " + message), file_(file), line_(line), element_(element) {}
+    : std::runtime_error(Where(file, line, element) + ": " + message),
+      file_(file),
+      line_(line),
+      element_(element),
+      message_(message) {}
 
 UrdfRobot ReadUrdf(const std::string& file, const std::string& text, const std::vector<std::string>& wheel_joints,
                    const std::string& base_link) {

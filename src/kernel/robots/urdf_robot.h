@@ -28,11 +28,13 @@ class UrdfError : public std::runtime_error {
   const std::string& file() const { return file_; }
   int line() const { return line_; }  // 0: the file as a whole
   const std::string& element() const { return element_; }
+  const std::string& message() const { return message_; }  // without the file, line and element
 
  private:
   std::string file_;
   int line_;
   std::string element_;
+  std::string message_;
 };
 
 struct UrdfPose {

@@ -10,18 +10,19 @@ namespace sanet::scenario {
 namespace {
 
 // The URDF's text: from the file named (relative to the scenario), or as the effective scenario
-// carries it (`{file, text}`).
-robots::UrdfSource Source(const Field& urdf) {
+// carries it (`{file, text}`). `path_named`: the file as errors name it.
+robots::UrdfSource Source(const Field& urdf, std::string& path_named) {
   robots::UrdfSource s;
   if (urdf.IsMap()) {
     urdf.ExpectKeys({"file", "text"});
-    s.file = urdf.Require("file").Text();
+    s.file = path_named = urdf.Require("file").Text();
     s.text = urdf.Require("text").Text();
     return s;
   }
   s.file = urdf.Text();
   std::filesystem::path path(s.file);
   if (path.is_relative()) path = std::filesystem::path(urdf.file()).parent_path() / path;
+  path_named = path.lexically_normal().string();
   std::ifstream in(path);
   if (!in) urdf.Fail("cannot read the URDF file " + path.string());
   std::stringstream text;
@@ -63,15 +64,16 @@ void ReadUrdfBody(const Field& body, robots::ModelSpec& m) {
       if (auto given = body.Get(key)) given->Fail("goes with `urdf`: the joints and link of a URDF file");
     return;
   }
-  robots::UrdfSource source = Source(*urdf);
+  std::string path;
+  robots::UrdfSource source = Source(*urdf, path);
   source.wheels = WheelJoints(body, m.kind);
   if (auto base = body.Get("base_link")) source.base_link = base->Text();
   robots::UrdfRobot robot;
   try {
-    robot = robots::ReadUrdf(source.file, source.text, source.wheels, source.base_link);
+    robot = robots::ReadUrdf(path, source.text, source.wheels, source.base_link);
   } catch (const robots::UrdfError& e) {
     if (e.line() == 0) body.Get(e.element().rfind("joint", 0) == 0 ? "wheels" : "base_link")->Fail(e.what());
-    throw ScenarioError(e.file(), e.line(), e.element(), std::string(e.what()).substr(e.file().size() + 1));
+    throw ScenarioError(e.file(), e.line(), e.element(), e.message());
   }
   ApplyDiffDrive(robot, m.diffdrive);
   // The ground is under the wheels' lowest points.

@@ -159,6 +159,21 @@ class HelpRequest(unittest.TestCase):
         self.assertEqual(self.log["first"]["/robot/ir_3"]["header"]["frame_id"], "robot/ir_3")
 
 
+class RobotDescription(unittest.TestCase):
+    def test_a_urdf_robots_description_is_the_file(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "urdf")
+            run(os.path.join(SOURCE, "scenarios", "urdf-robot.yaml"), out, "--set", "outputs.trace=true",
+                "--duration", "3")
+            log = decode(os.path.join(out, "trace.mcap"))
+        self.assertEqual(log["errorCount"], 0, log["errors"])
+        self.assertEqual(log["channels"]["/little/robot_description"]["schema"], "std_msgs/msg/String")
+        self.assertEqual(log["counts"]["/little/robot_description"], 1, "latched: once, at the start")
+        with open(os.path.join(SOURCE, "scenarios", "robots", "little-diff.urdf")) as f:
+            self.assertEqual(log["first"]["/little/robot_description"]["data"], f.read())
+        self.assertNotIn("/base/robot_description", log["channels"], "a mote from no URDF has none")
+
+
 class FormationLayout(unittest.TestCase):
     """The Foxglove layout shipped in docs names only topics, nodes and metrics the formation's log has."""
 

@@ -63,7 +63,10 @@ const Topic& RunMessages::TopicOf(const std::string& name, const std::string& ty
   topic.name = name;
   topic.type = type;
   topic.definition = definition;
-  topic.latched = name == "/tf_static" || name == "/world";
+  const std::string description = "/robot_description";
+  topic.latched = name == "/tf_static" || name == "/world" ||
+                  (name.size() > description.size() &&
+                   name.compare(name.size() - description.size(), description.size(), description) == 0);
   for (MessageSink* sink : sinks_) sink->Advertise(topic);
   return topic;
 }
@@ -128,7 +131,18 @@ void RunMessages::Statics(double t) {
   for (NodeId id = where_.size(); id < nodes_.size(); ++id) {
     where_.push_back({nodes_[id].pose.x, nodes_[id].pose.y});
     AdvertiseNode(id);
+    DescribeRobot(id, t);
   }
+}
+
+// A robot brought as a URDF: its text on /<robot>/robot_description, latched, as ROS 2's
+// robot_state_publisher gives it, for RViz's and Foxglove's robot-model panels.
+void RunMessages::DescribeRobot(NodeId node, double t) {
+  const auto& urdf = nodes_[node].model.urdf;
+  if (!urdf) return;
+  msg::std_msgs::String description;
+  description.data = urdf->text;
+  Publish("/" + RosToken(nodes_[node].name) + "/robot_description", t, description);
 }
 
 // Every topic is known before its first message, so that a live client can subscribe in time

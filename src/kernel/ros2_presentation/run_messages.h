@@ -74,6 +74,7 @@ class RunMessages {
   void Statics(double t);
   void AdvertiseShared();
   void AdvertiseNode(NodeId node);
+  void DescribeRobot(NodeId node, double t);
 
   const sim::RunSpec& spec_;
   const sim::RunNodes& nodes_;

@@ -218,8 +218,9 @@ UrdfRobot ReadUrdf(const std::string& file, const std::string& text, const std::
   for (const std::string& joint : wheel_joints) r.wheels.push_back(ReadWheel(file, *model, lines, joint, r.links));
   r.chassis = ReadChassis(file, *base, UrdfPose{}, lines);
   for (const auto& [name, link] : model->links_) {
+    const std::string& link_name = name;  // a lambda cannot capture a structured binding in C++17
     const bool wheel =
-        std::any_of(r.wheels.begin(), r.wheels.end(), [&](const UrdfWheel& w) { return w.link == name; });
+        std::any_of(r.wheels.begin(), r.wheels.end(), [&](const UrdfWheel& w) { return w.link == link_name; });
     if (!wheel && link->inertial) r.chassis_mass += link->inertial->mass;
   }
   return r;

@@ -172,6 +172,20 @@ network:
 """ % (name, duration, network, rows, cols, spacing, controller)
 
 
+def both_models(args, tmp, tag, text, measure):
+    """`measure` of a run of the scenario `text` on each model, full first."""
+    scenario = os.path.join(tmp, tag + ".yaml")
+    with open(scenario, "w") as f:
+        f.write(text)
+    return [measure(run(args, scenario, os.path.join(tmp, tag + "-" + model), model)) for model in MODELS]
+
+
+def reached(receivers):
+    """Messages received per message sent and per receiver each could reach."""
+    return lambda r: r["network"]["packets"]["messages_received"] / max(
+        1, r["network"]["packets"]["messages_sent"] * receivers)
+
+
 def contention(args, tmp, table):
     table.append("| departure | setting | full | abstract |")
     table.append("|---|---|---|---|")
@@ -179,15 +193,9 @@ def contention(args, tmp, table):
     # broadcast jitter): 1 Mbps carries about 200 such frames a second.
     for interval in (0.5, 0.1, 0.05, 0.025):
         load = 10 * 500 * 8 / interval / 1e6
-        scenario = os.path.join(tmp, "contention.yaml")
-        with open(scenario, "w") as f:
-            f.write(mote_grid("contention", 2, 5, 2.5, "{name: pinger, params: {to: broadcast, interval: %g, size: 500}}"
-                              % interval, "  broadcast_jitter: %g\n" % interval))
-        got = []
-        for model in MODELS:
-            r = run(args, scenario, os.path.join(tmp, "contention-" + model), model)
-            sent = r["network"]["packets"]["messages_sent"]
-            got.append(r["network"]["packets"]["messages_received"] / max(1, sent * 9))
+        text = mote_grid("contention", 2, 5, 2.5, "{name: pinger, params: {to: broadcast, interval: %g, size: 500}}"
+                         % interval, "  broadcast_jitter: %g\n" % interval)
+        got = both_models(args, tmp, "contention", text, reached(9))
         table.append("| contention: share of 9 neighbours reached per broadcast | offered load %.0f %% of 1 Mbps "
                      "| %.3f | %.3f |" % (100 * load, *got))
 
@@ -206,15 +214,8 @@ nodes:
   - {name: b, model: mote, pose: [280, 0, 0], controller: {name: pinger, params: {to: r, interval: %g, size: 500,
                                                                                   start: 1.37}}}
 """ % (interval, interval * 1.037)
-        scenario = os.path.join(tmp, "hidden.yaml")
-        with open(scenario, "w") as f:
-            f.write(text)
-        got = []
-        for model in MODELS:
-            r = run(args, scenario, os.path.join(tmp, "hidden-" + model), model)
-            p = r["network"]["packets"]
-            median = statistics.median(delays(r)) * 1e3 if delays(r) else float("nan")
-            got.append("%.3f, %.1f ms" % (p["messages_received"] / max(1, p["messages_sent"]), median))
+        got = both_models(args, tmp, "hidden", text, lambda r: "%.3f, %.1f ms" % (
+            reached(1)(r), statistics.median(delays(r)) * 1e3 if delays(r) else float("nan")))
         table.append("| hidden terminals: delivered, median delay | each sender %g frames/s | %s | %s |"
                      % (1 / interval, *got))
 
@@ -222,16 +223,10 @@ nodes:
 def broadcast_storm(args, tmp, table):
     # One mote floods every 2 s; each of the grid's 49 motes relays it once. Motes 40 m apart
     # hear up to about 44 others (151 m).
-    scenario = os.path.join(tmp, "storm.yaml")
     for jitter in (0, 0.01):
-        with open(scenario, "w") as f:
-            f.write(mote_grid("storm", 7, 7, 40, "{name: pinger, params: {to: flood, interval: 2}}",
-                              "  broadcast_jitter: %g\n" % jitter, duration=60, source=True))
-        got = []
-        for model in MODELS:
-            r = run(args, scenario, os.path.join(tmp, "storm-" + model), model)
-            floods = r["network"]["packets"]["messages_sent"]
-            got.append(r["network"]["packets"]["messages_received"] / max(1, floods * 49))
+        text = mote_grid("storm", 7, 7, 40, "{name: pinger, params: {to: flood, interval: 2}}",
+                         "  broadcast_jitter: %g\n" % jitter, duration=60, source=True)
+        got = both_models(args, tmp, "storm", text, reached(49))
         table.append("| broadcast storm: share of 49 motes a flood reaches | one mote floods every 2 s through 49, "
                      "relay jitter %g s | %.3f | %.3f |" % (jitter, *got))
 

@@ -91,7 +91,7 @@ class Capture(threading.Thread):
             s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4 << 20)
             s.bind((port, 0))
             self.sockets.append(s)
-        self.counts, self.stop = {}, False
+        self.counts, self.first_seen, self.stop = {}, {}, False
 
     def run(self):
         while not self.stop:
@@ -106,9 +106,17 @@ class Capture(threading.Thread):
                 kind = {6: "tcp", 17: "udp"}.get(protocol, "ip protocol %d" % protocol)
                 key = (kind, min(ports)) if kind == "tcp" else (kind, ports)
                 self.counts[key] = self.counts.get(key, 0) + 1
+                self.first_seen.setdefault(key, describe(frame, header, protocol))
 
     def total(self, match):
         return sum(n for key, n in self.counts.items() if match(*key))
+
+
+def describe(frame, header, protocol):
+    """A frame's addresses (and TCP flags), so that an unexpected one says where it came from."""
+    source, destination = socket.inet_ntoa(frame[26:30]), socket.inet_ntoa(frame[30:34])
+    flags = " flags 0x%02x" % frame[14 + header + 13] if protocol == 6 and len(frame) > 14 + header + 13 else ""
+    return f"{source} -> {destination}{flags}"
 
 
 def peer_port(ports):
@@ -226,7 +234,7 @@ class RemoteRobots(unittest.TestCase):
         housekeeping = ("ip protocol 1", "ip protocol 2")
         others = {k: n for k, n in self.lan.counts.items()
                   if not (k == ("tcp", PORT) or (k[0] == "udp" and time_service in k[1]) or k[0] in housekeeping)}
-        self.assertEqual(others, {})
+        self.assertEqual(others, {}, {k: self.lan.first_seen[k] for k in others})
 
     def test_an_agent_of_another_protocol_version_is_refused(self):
         self.assertNotEqual(self.refused.returncode, 0)

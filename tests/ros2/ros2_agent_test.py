@@ -62,7 +62,9 @@ class FormationOverRos2(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.served = os.path.join(cls.tmp.name, "served")
         server = serve(FORMATION, cls.served, 45)
-        cls.agents = {r: agent(FORMATION, r, os.path.join(cls.tmp.name, r), "--use-sim-time", "--duration", "40")
+        # Ports of its own: the formation's loop.udp_port is 47000, which launches on loopback take.
+        cls.agents = {r: agent(FORMATION, r, os.path.join(cls.tmp.name, r), "--use-sim-time", "--duration", "40",
+                               "--udp-base", "52650")
                       for r in ("leader", "f1", "f2", "f3")}
         cls.said = {r: a.communicate(timeout=120)[0] for r, a in cls.agents.items()}
         cls.server_said = server.communicate(timeout=60)[0]

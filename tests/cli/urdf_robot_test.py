@@ -5,7 +5,9 @@ w rad/s drive it at w times their radius, the effective scenario carries the fil
 to the same fingerprint without the file, and faults are refused with the file and line."""
 import csv
 import json
+import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -27,6 +29,41 @@ nodes:
       wheels: {left: left_wheel_joint, right: right_wheel_joint}
     sensors: {laser: {link: laser, max_range: 5}}
     controller: {name: constant_velocity, params: {wheel_speeds: [4, 4], start: 1, stop: 4}}
+"""
+
+# A three-wheeled omnidirectional robot written for this test: a cylinder chassis (radius 0.15 m,
+# 0.1 m tall, its centre 0.03 m above the base link's origin), wheels of 3.5 cm 0.12 m out at 0,
+# 120 and 240 degrees, at the base link's height.
+OMNI_WHEEL = """  <link name="wheel_{i}">
+    <inertial><mass value="0.1"/><inertia ixx="0.0001" ixy="0" ixz="0" iyy="0.0001" iyz="0" izz="0.0001"/></inertial>
+    <collision><geometry><cylinder radius="0.035" length="0.02"/></geometry></collision>
+  </link>
+  <joint name="wheel_{i}_joint" type="continuous">
+    <parent link="base_link"/><child link="wheel_{i}"/>
+    <origin xyz="{x:.6f} {y:.6f} 0" rpy="0 1.5707963 {yaw:.6f}"/>
+    <axis xyz="0 0 1"/>
+  </joint>
+"""
+OMNI_URDF = """<?xml version="1.0"?>
+<robot name="little_omni">
+  <link name="base_link">
+    <inertial><origin xyz="0 0 0.03"/><mass value="2.0"/>
+      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.02"/></inertial>
+    <collision><origin xyz="0 0 0.03"/><geometry><cylinder radius="0.15" length="0.1"/></geometry></collision>
+  </link>
+""" + "".join(OMNI_WHEEL.format(i=i, x=0.12 * math.cos(a), y=0.12 * math.sin(a), yaw=a)
+              for i, a in enumerate((0, 2 * math.pi / 3, 4 * math.pi / 3))) + "</robot>\n"
+OMNI_SCENARIO = """name: urdf-omni
+duration: 5
+world: {size: [20, 20]}
+nodes:
+  - name: r
+    model: omni3
+    pose: [2, 2, 0]
+    body:
+      urdf: omni.urdf
+      wheels: [wheel_0_joint, wheel_1_joint, wheel_2_joint]
+    controller: {name: constant_velocity, params: {wheel_speeds: [2, 2, 2], start: 1, stop: 3}}
 """
 
 
@@ -69,6 +106,25 @@ class UrdfRobot(unittest.TestCase):
         travelled = float(rows[-1]["x"]) - float(rows[0]["x"])
         self.assertAlmostEqual(travelled, 4 * 0.05 * 3, delta=0.01, msg="4 rad/s for 3 s on wheels of 5 cm")
 
+    def test_an_omni3_from_a_urdf_turns_as_its_wheels_say(self):
+        self.write("omni.urdf", OMNI_URDF)
+        scenario = self.write("omni.yaml", OMNI_SCENARIO)
+        printed = self.sanet("validate", scenario, "--print").stdout
+        for key, value in (("wheel_radius", 0.035), ("wheel_distance", 0.12), ("body_radius", 0.15),
+                           ("body_height", 0.1), ("body_mass", 2), ("wheel_mass", 0.1), ("ground_clearance", 0.015)):
+            read = re.search(r"\n      %s: (\S+)\n" % key, printed)
+            self.assertAlmostEqual(float(read.group(1)), value, places=5, msg=key)  # the file has 6 decimals
+        self.assertIn("wheels: [wheel_0_joint, wheel_1_joint, wheel_2_joint]", printed)
+        out = os.path.join(self.tmp, "run")
+        self.sanet("run", scenario, "-q", "-o", out)
+        with open(os.path.join(out, "trajectories.csv")) as f:
+            rows = [r for r in csv.DictReader(f) if 1.5 <= float(r["time"]) <= 2.5]
+        # Three wheels at the same speed turn the body in place at w r / d.
+        turned = math.remainder(float(rows[-1]["theta"]) - float(rows[0]["theta"]), 2 * math.pi)
+        elapsed = float(rows[-1]["time"]) - float(rows[0]["time"])
+        self.assertAlmostEqual(abs(turned) / elapsed, 2 * 0.035 / 0.12, delta=0.03)
+        self.assertLess(math.hypot(float(rows[-1]["x"]) - 2, float(rows[-1]["y"]) - 2), 0.02)
+
     def test_the_effective_scenario_carries_the_file_and_runs_the_same(self):
         scenario = self.write("s.yaml", SCENARIO)
         effective = self.write("effective.yaml", self.sanet("validate", scenario, "--print").stdout)
@@ -102,7 +158,8 @@ class UrdfRobot(unittest.TestCase):
              "xacro"),
             (text, SCENARIO.replace("right: right_wheel_joint", "right: rear_wheel_joint"), "s.yaml:10",
              "no joint of that name"),
-            (text, SCENARIO.replace("model: diffdrive", "model: omni3"), "s.yaml:9", "diffdrive"),
+            (text, SCENARIO.replace("model: diffdrive", "model: omni3"), "s.yaml:10", "list of its three wheel"),
+            (text, SCENARIO.replace("model: diffdrive", "model: mote"), "s.yaml:9", "diffdrive's or an omni3's"),
             (text, SCENARIO.replace("      urdf: robot.urdf\n", ""), "s.yaml:9", "goes with `urdf`"),
             (text, SCENARIO.replace("link: laser", "link: lidar"), "s.yaml:11", "no link 'lidar'"),
             (text, SCENARIO.replace("    body:\n      urdf: robot.urdf\n      wheels: {left: left_wheel_joint, "

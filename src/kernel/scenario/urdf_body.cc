@@ -1,5 +1,6 @@
 #include "scenario/urdf_body.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -31,28 +32,77 @@ robots::UrdfSource Source(const Field& urdf, std::string& path_named) {
   return s;
 }
 
+// A differential drive's wheels by side (`{left, right}`), an omni3's as a list of three.
 std::vector<std::string> WheelJoints(const Field& body, robots::ModelKind kind) {
-  if (kind != robots::ModelKind::kDiffDrive)
-    body.Require("urdf").Fail("a URDF describes a diffdrive's body so far (omni3 is to come)");
+  if (kind != robots::ModelKind::kDiffDrive && kind != robots::ModelKind::kOmni3)
+    body.Require("urdf").Fail("a URDF describes a diffdrive's or an omni3's body");
   const Field wheels = body.Require("wheels");
-  wheels.ExpectKeys({"left", "right"});
-  return {wheels.Require("left").Text(), wheels.Require("right").Text()};
+  if (kind == robots::ModelKind::kDiffDrive) {
+    wheels.ExpectKeys({"left", "right"});
+    return {wheels.Require("left").Text(), wheels.Require("right").Text()};
+  }
+  const std::vector<Field> items = wheels.IsSequence() ? wheels.Items() : std::vector<Field>{};
+  if (items.size() != 3)
+    wheels.Fail(
+        "an omni3's wheels are a list of its three wheel joints, e.g. [wheel_1_joint, wheel_2_joint, "
+        "wheel_3_joint]");
+  std::vector<std::string> joints;
+  for (const Field& joint : items) joints.push_back(joint.Text());
+  return joints;
+}
+
+double MeanRadius(const std::vector<robots::UrdfWheel>& wheels) {
+  double sum = 0;
+  for (const robots::UrdfWheel& w : wheels) sum += w.radius;
+  return sum / static_cast<double>(wheels.size());
+}
+
+double MeanMass(const std::vector<robots::UrdfWheel>& wheels) {
+  double sum = 0;
+  for (const robots::UrdfWheel& w : wheels) sum += w.mass;
+  return sum / static_cast<double>(wheels.size());
+}
+
+// Where the ground is in the base link's frame: under the wheels' lowest points.
+double GroundZ(const robots::UrdfRobot& r) {
+  double axle_z = 0;
+  for (const robots::UrdfWheel& w : r.wheels) axle_z += w.pose.xyz[2];
+  return axle_z / static_cast<double>(r.wheels.size()) - MeanRadius(r.wheels);
 }
 
 void ApplyDiffDrive(const robots::UrdfRobot& r, physics::DiffDriveSpec& d) {
-  const robots::UrdfWheel &left = r.wheels[0], &right = r.wheels[1];
-  d.wheel_radius = (left.radius + right.radius) / 2;
-  d.axle_length = robots::WheelSpacing(left, right);
-  d.wheel_mass = (left.mass + right.mass) / 2;
+  d.wheel_radius = MeanRadius(r.wheels);
+  d.axle_length = robots::WheelSpacing(r.wheels[0], r.wheels[1]);
+  d.wheel_mass = MeanMass(r.wheels);
   d.body_mass = r.chassis_mass;
   for (const robots::UrdfShape& s : r.chassis) {
     if (s.kind != robots::UrdfShape::Kind::kBox) continue;
     d.body_length = s.box[0], d.body_width = s.box[1], d.body_height = s.box[2];
-    // The wheels' lowest points are the ground: the box's bottom stands this far above it.
-    const double axle_z = (left.pose.xyz[2] + right.pose.xyz[2]) / 2;
-    d.ground_clearance = std::max(0.0, s.pose.xyz[2] - s.box[2] / 2 - (axle_z - d.wheel_radius));
+    d.ground_clearance = std::max(0.0, s.pose.xyz[2] - s.box[2] / 2 - GroundZ(r));
     break;
   }
+}
+
+// An omni3's body is a cylinder: the chassis's first cylinder, sphere or box (its larger half
+// side as the radius), standing where the URDF puts its bottom. Each wheel's angle and distance
+// are its place seen from the base link's origin.
+void ApplyOmni3(const robots::UrdfRobot& r, physics::Omni3Spec& o) {
+  o.wheel_radius = MeanRadius(r.wheels);
+  o.wheel_mass = MeanMass(r.wheels);
+  o.body_mass = r.chassis_mass;
+  o.wheel_distance = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto& xyz = r.wheels[i].pose.xyz;
+    o.wheel_distance += std::hypot(xyz[0], xyz[1]) / 3;
+    o.wheel_angles[i] = std::atan2(xyz[1], xyz[0]);
+  }
+  const robots::UrdfShape& s = r.chassis.front();
+  const double height = s.kind == robots::UrdfShape::Kind::kBox        ? s.box[2]
+                        : s.kind == robots::UrdfShape::Kind::kCylinder ? s.length
+                                                                       : 2 * s.radius;
+  o.body_radius = s.kind == robots::UrdfShape::Kind::kBox ? std::max(s.box[0], s.box[1]) / 2 : s.radius;
+  o.body_height = height;
+  o.ground_clearance = std::max(0.0, s.pose.xyz[2] - height / 2 - GroundZ(r));
 }
 
 }  // namespace
@@ -75,9 +125,11 @@ void ReadUrdfBody(const Field& body, robots::ModelSpec& m) {
     if (e.line() == 0) body.Get(e.element().rfind("joint", 0) == 0 ? "wheels" : "base_link")->Fail(e.what());
     throw ScenarioError(e.file(), e.line(), e.element(), e.message());
   }
-  ApplyDiffDrive(robot, m.diffdrive);
-  // The ground is under the wheels' lowest points.
-  const double ground_z = (robot.wheels[0].pose.xyz[2] + robot.wheels[1].pose.xyz[2]) / 2 - m.diffdrive.wheel_radius;
+  if (m.kind == robots::ModelKind::kDiffDrive)
+    ApplyDiffDrive(robot, m.diffdrive);
+  else
+    ApplyOmni3(robot, m.omni3);
+  const double ground_z = GroundZ(robot);
   for (const auto& [name, pose] : robot.links) source.links[name] = {pose.xyz[0], pose.xyz[1], pose.xyz[2] - ground_z};
   m.urdf = std::make_shared<const robots::UrdfSource>(std::move(source));
 }
@@ -88,10 +140,17 @@ void PrintUrdfBody(const robots::ModelSpec& m, YAML::Node& body) {
   urdf["file"] = m.urdf->file;
   urdf["text"] = m.urdf->text;
   body["urdf"] = urdf;
-  YAML::Node wheels(YAML::NodeType::Map);
-  wheels["left"] = m.urdf->wheels.at(0);
-  wheels["right"] = m.urdf->wheels.at(1);
-  body["wheels"] = wheels;
+  if (m.kind == robots::ModelKind::kDiffDrive) {
+    YAML::Node wheels(YAML::NodeType::Map);
+    wheels["left"] = m.urdf->wheels.at(0);
+    wheels["right"] = m.urdf->wheels.at(1);
+    body["wheels"] = wheels;
+  } else {
+    YAML::Node wheels(YAML::NodeType::Sequence);
+    for (const std::string& joint : m.urdf->wheels) wheels.push_back(joint);
+    wheels.SetStyle(YAML::EmitterStyle::Flow);
+    body["wheels"] = wheels;
+  }
   if (!m.urdf->base_link.empty()) body["base_link"] = m.urdf->base_link;
 }
 

@@ -4,8 +4,8 @@
 // back with the same library's writer, which must give the same bytes (up to CDR's closing
 // padding), so that a field too many or too few cannot pass. Prints JSON for the test: the
 // channels, the count per topic, the decoding errors, messages whose stamp is not their log time,
-// every ground-truth pose and battery state, the node events, the parent and child frames /tf links, and the first and last message
-// of each topic.
+// every ground-truth pose and battery state, the node events, the parent and child frames /tf links, the
+// rotations of a URDF robot's moving links over time, and the first and last message of each topic.
 //
 //   node decode_mcap.mjs NODE_MODULES FILE
 import { createRequire } from "node:module";
@@ -35,7 +35,7 @@ for (const [id, c] of reader.channelsById) {
 const stampOf = (m) => m.header?.stamp ?? m.stamp ?? m.transforms?.[0]?.header.stamp ?? m.markers?.[0]?.header.stamp;
 const plain = (value) => JSON.parse(JSON.stringify(value, (k, v) =>
   typeof v === "bigint" ? Number(v) : ArrayBuffer.isView(v) ? Array.from(v) : v));
-const counts = {}, first = {}, last = {}, groundTruth = {}, batteries = {}, events = [], tfPairs = new Set();
+const counts = {}, first = {}, last = {}, groundTruth = {}, batteries = {}, events = [], tfPairs = new Set(), urdfTracks = {};
 const errors = [], stampMismatches = [];
 for await (const record of reader.readMessages()) {
   const topic = reader.channelsById.get(record.channelId).topic;
@@ -66,7 +66,13 @@ for await (const record of reader.readMessages()) {
     (batteries[topic.split("/")[1]] ??= []).push({ t: Number(record.logTime) / 1e9, ...plain(message) });
   if (topic === "/events") events.push({ t: Number(record.logTime) / 1e9, ...plain(message) });
   if (topic === "/tf")
-    for (const tf of message.transforms) tfPairs.add(`${tf.header.frame_id} ${tf.child_frame_id}`);
+    for (const tf of message.transforms) {
+      tfPairs.add(`${tf.header.frame_id} ${tf.child_frame_id}`);
+      if (tf.child_frame_id.includes("/urdf/")) {  // a URDF robot's moving links, in full
+        const r = tf.transform.rotation;
+        (urdfTracks[tf.child_frame_id] ??= []).push([Number(record.logTime) / 1e9, r.x, r.y, r.z, r.w]);
+      }
+    }
   first[topic] ??= plain(message);
   last[topic] = message;
 }
@@ -84,7 +90,7 @@ for (let r; (r = stream.nextRecord()); )
   }
 console.log(JSON.stringify({
   profile: reader.header.profile, channels, counts, errors: errors.slice(0, 20), errorCount: errors.length,
-  stampMismatches: stampMismatches.slice(0, 20), groundTruth, batteries, events, first, last, tfPairs: [...tfPairs].sort(),
+  stampMismatches: stampMismatches.slice(0, 20), groundTruth, batteries, events, first, last, tfPairs: [...tfPairs].sort(), urdfTracks,
   statistics: Number(reader.statistics.messageCount), chunks: reader.chunkIndexes.length,
   compression: [...new Set(reader.chunkIndexes.map((c) => c.compression))], backwards,
 }));

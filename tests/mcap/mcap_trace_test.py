@@ -160,18 +160,60 @@ class HelpRequest(unittest.TestCase):
 
 
 class RobotDescription(unittest.TestCase):
-    def test_a_urdf_robots_description_is_the_file(self):
+    def test_a_urdf_robots_description_is_the_file_and_its_links_are_in_tf(self):
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "urdf")
             run(os.path.join(SOURCE, "scenarios", "urdf-robot.yaml"), out, "--set", "outputs.trace=true",
                 "--duration", "3")
             log = decode(os.path.join(out, "trace.mcap"))
+            out_rows = [r for r in rows(out, "trajectories.csv") if r["node"] == "little"]
         self.assertEqual(log["errorCount"], 0, log["errors"])
         self.assertEqual(log["channels"]["/little/robot_description"]["schema"], "std_msgs/msg/String")
         self.assertEqual(log["counts"]["/little/robot_description"], 1, "latched: once, at the start")
         with open(os.path.join(SOURCE, "scenarios", "robots", "little-diff.urdf")) as f:
             self.assertEqual(log["first"]["/little/robot_description"]["data"], f.read())
         self.assertNotIn("/base/robot_description", log["channels"], "a mote from no URDF has none")
+        self.tf_tree_holds_the_links(log)
+        self.the_wheels_turn_as_the_robot_drives(log, out_rows)
+
+    def tf_tree_holds_the_links(self, log):
+        """little-diff.urdf by hand: base_link's origin is the axle's middle, a wheel's radius (5 cm)
+        above the ground; the mast 0.05 m ahead and 0.09 m up, the laser 0.12 m above the mast."""
+        statics = {(tf["header"]["frame_id"], tf["child_frame_id"]): tf["transform"]
+                   for tf in log["first"]["/tf_static"]["transforms"]}
+        expected = {("little/base_link", "little/urdf/base_link"): (0, 0, 0.05),
+                    ("little/urdf/base_link", "little/urdf/mast"): (0.05, 0, 0.09),
+                    ("little/urdf/mast", "little/urdf/laser"): (0, 0, 0.12),
+                    ("little/urdf/base_link", "little/urdf/caster"): (-0.17, 0, -0.03)}
+        for pair, xyz in expected.items():
+            self.assertIn(pair, statics)
+            t = statics[pair]["translation"]
+            self.assertEqual([round(t[k], 6) for k in "xyz"], list(xyz), pair)
+        wheels = [p for p in log["tfPairs"] if p.startswith("little/urdf/base_link little/urdf/")]
+        self.assertEqual(wheels, ["little/urdf/base_link little/urdf/left_wheel",
+                                  "little/urdf/base_link little/urdf/right_wheel"])
+        self.assertNotIn(("little/urdf/base_link", "little/urdf/left_wheel"), statics, "a wheel moves: in /tf")
+
+    def the_wheels_turn_as_the_robot_drives(self, log, trajectory):
+        # Each wheel's turn about its axis: its rotation with the joint's (-90 deg about x) undone.
+        undo = (-math.sin(-math.pi / 4), 0, 0, math.cos(-math.pi / 4))  # x, y, z, w: the inverse turn
+        turned = {}
+        for wheel in ("left_wheel", "right_wheel"):
+            angles = []
+            for _, x, y, z, w in log["urdfTracks"]["little/urdf/" + wheel]:
+                ux, _, _, uw = undo
+                # (undo * q): its z and w parts give the angle about the wheel's axis.
+                qz, qw = uw * z + ux * y, uw * w - ux * x
+                angles.append(2 * math.atan2(qz, qw))
+            unwrapped = angles[0]
+            for a, b in zip(angles, angles[1:]):
+                unwrapped += math.remainder(b - a, 2 * math.pi)
+            turned[wheel] = unwrapped - angles[0]
+        path = sum(math.dist((float(a["x"]), float(a["y"])), (float(b["x"]), float(b["y"])))
+                   for a, b in zip(trajectory, trajectory[1:]))
+        print(f"\npath {path:.3f} m, wheels turned {turned}", file=sys.stderr)
+        self.assertGreater(path, 0.3)
+        self.assertAlmostEqual((turned["left_wheel"] + turned["right_wheel"]) / 2 * 0.05, path, delta=0.05 * path)
 
 
 class FormationLayout(unittest.TestCase):

@@ -3,6 +3,7 @@
 // ODE implementation lives in physics/ode/, the Box2D one in physics/box2d/.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -121,6 +122,14 @@ class Vehicle : public virtual Body {
   virtual double wheel_angle(std::size_t wheel) const = 0;
   virtual DriveTally drive_tally() const = 0;
 };
+
+// A vehicle's first three wheels' angles (rad, as wheel_angle); zeros for none or no vehicle.
+inline std::array<double, 3> WheelAngles(const Vehicle* vehicle) {
+  std::array<double, 3> angles{};
+  for (std::size_t i = 0; vehicle && i < std::min<std::size_t>(3, vehicle->wheel_count()); ++i)
+    angles[i] = vehicle->wheel_angle(i);
+  return angles;
+}
 
 // A message the engine printed (ODE's "LCP internal error" and the like), kept for the run's
 // warnings instead of going to the terminal unexplained.

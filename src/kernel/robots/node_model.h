@@ -12,6 +12,7 @@
 #include "physics/physics_world.h"
 #include "robots/kinematics.h"
 #include "robots/robot_models.h"
+#include "robots/urdf_robot.h"
 #include "sanet/node.h"
 
 namespace sanet::robots {
@@ -41,6 +42,13 @@ struct UrdfSource {
   std::string base_link;            // as given (empty: the URDF's root)
   // Every link's place, x forward and z up from the ground under the base link's origin (m).
   std::map<std::string, std::array<double, 3>> links;
+  // The tf tree: the root link's pose in the same frame, and every joint from the root down.
+  std::string root;
+  UrdfPose root_pose;
+  std::vector<UrdfJoint> joints;
+  // Per wheel (as `wheels`): +1 where the joint's axis turns the wheel forward as the physics
+  // turns it (its angle grows as it drives the body its way), -1 where it points the other way.
+  std::vector<double> wheel_signs;
 };
 
 struct ModelSpec {

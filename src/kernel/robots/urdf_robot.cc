@@ -127,6 +127,27 @@ std::map<std::string, UrdfPose> PosesFromRoot(const urdf::ModelInterface& model)
   return poses;
 }
 
+// Every joint, from the root down (a parent link's joint before its children's).
+std::vector<UrdfJoint> JointsFromRoot(const urdf::ModelInterface& model) {
+  std::vector<UrdfJoint> joints;
+  std::deque<urdf::LinkConstSharedPtr> open = {model.getRoot()};
+  while (!open.empty()) {
+    const urdf::LinkConstSharedPtr link = open.front();
+    open.pop_front();
+    for (const urdf::JointSharedPtr& joint : link->child_joints) {
+      const urdf::Pose& o = joint->parent_to_joint_origin_transform;
+      UrdfJoint j{joint->name, link->name, joint->child_link_name, {}, {}, false};
+      j.origin = {{o.position.x, o.position.y, o.position.z}, {o.rotation.x, o.rotation.y, o.rotation.z, o.rotation.w}};
+      j.axis = {joint->axis.x, joint->axis.y, joint->axis.z};
+      j.moves = joint->type == urdf::Joint::CONTINUOUS || joint->type == urdf::Joint::REVOLUTE ||
+                joint->type == urdf::Joint::PRISMATIC;
+      joints.push_back(j);
+      open.push_back(model.getLink(joint->child_link_name));
+    }
+  }
+  return joints;
+}
+
 std::string JointNames(const urdf::ModelInterface& model) {
   std::string names;
   for (const auto& [name, joint] : model.joints_) names += (names.empty() ? "" : ", ") + name;
@@ -144,7 +165,10 @@ UrdfWheel ReadWheel(const std::string& file, const urdf::ModelInterface& model, 
     throw UrdfError(file, line, "<joint name=\"" + name + "\">",
                     "a wheel turns on a continuous joint (type=\"continuous\"); this one is not");
   const urdf::LinkConstSharedPtr link = model.getLink(joint->child_link_name);
-  UrdfWheel w{name, link->name, 0, link->inertial ? link->inertial->mass : 0, poses.at(link->name), line};
+  UrdfWheel w{name, link->name, 0, link->inertial ? link->inertial->mass : 0, poses.at(link->name), {}, line};
+  const UrdfPose& p = w.pose;
+  const urdf::Vector3 axis = urdf::Rotation(p.xyzw[0], p.xyzw[1], p.xyzw[2], p.xyzw[3]) * joint->axis;
+  w.axis = {axis.x, axis.y, axis.z};
   for (const urdf::CollisionSharedPtr& c : link->collision_array)
     if (c->geometry && c->geometry->type == urdf::Geometry::CYLINDER)
       w.radius = static_cast<const urdf::Cylinder&>(*c->geometry).radius;
@@ -217,6 +241,8 @@ UrdfRobot ReadUrdf(const std::string& file, const std::string& text, const std::
   for (const auto& [name, pose] : from_root) r.links[name] = Compose(root_in_base, AsUrdf(pose));
   for (const std::string& joint : wheel_joints) r.wheels.push_back(ReadWheel(file, *model, lines, joint, r.links));
   r.chassis = ReadChassis(file, *base, UrdfPose{}, lines);
+  r.root = model->getRoot()->name;
+  r.joints = JointsFromRoot(*model);
   for (const auto& [name, link] : model->links_) {
     const std::string& link_name = name;  // a lambda cannot capture a structured binding in C++17
     const bool wheel =

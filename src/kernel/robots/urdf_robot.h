@@ -51,10 +51,19 @@ struct UrdfShape {
 
 struct UrdfWheel {
   std::string joint, link;
-  double radius = 0;  // m
-  double mass = 0;    // kg
-  UrdfPose pose;      // of the wheel's link in the base link's frame
-  int line = 0;       // of the joint's element
+  double radius = 0;             // m
+  double mass = 0;               // kg
+  UrdfPose pose;                 // of the wheel's link in the base link's frame
+  std::array<double, 3> axis{};  // the joint's axis in the base link's frame
+  int line = 0;                  // of the joint's element
+};
+
+// A joint as the robot's tf tree draws it: the child link's frame in the parent's.
+struct UrdfJoint {
+  std::string name, parent, child;
+  UrdfPose origin;                      // the joint at zero
+  std::array<double, 3> axis{1, 0, 0};  // in the child's frame
+  bool moves = false;                   // continuous, revolute or prismatic
 };
 
 struct UrdfRobot {
@@ -66,6 +75,8 @@ struct UrdfRobot {
   double chassis_mass = 0;                // kg: every link but the wheels'
   std::vector<UrdfShape> chassis;         // the base link's collision shapes
   std::map<std::string, UrdfPose> links;  // every link's pose, the joints at zero
+  std::string root;                       // the root link (the base link unless base_link names another)
+  std::vector<UrdfJoint> joints;          // every joint, each after its parent link's own joint
 };
 
 // Reads `text` (the content of `file`, named in errors) with the wheels' joint names in order and

@@ -57,7 +57,7 @@ void RunPresentation::Subscribe() {
     m.Spawned(e.t);
     m.Event(e.t, e.node, "spawn", e.spawned_as);
   });
-  Present<sim::PoseRow>([&m](const sim::PoseRow& e) { m.Pose(e.t, e.node, e.pose, e.velocity); });
+  Present<sim::PoseRow>([&m](const sim::PoseRow& e) { m.Pose(e.t, e.node, e.pose, e.velocity, e.wheel_angles); });
   Present<sim::SensorRead>(
       [&m](const sim::SensorRead& e) { m.Read(e.t, e.node, e.instance, e.kind, e.reading, e.body); });
   Present<net::FrameEvent>([&m](const net::FrameEvent& f) { m.Frame(f); });

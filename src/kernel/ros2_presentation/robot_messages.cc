@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ros2_presentation/sensor_messages.h"
+#include "ros2_presentation/urdf_frames.h"
 
 namespace sanet::ros2_presentation {
 
@@ -83,6 +84,7 @@ msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function
     for (const auto& [instance, config] : sensors::PresentationOrder(node.model))
       if (const SensorMessages* kind = MessagesOf(config->kind))
         kind->Mounts(instance, config->settings, robot, t, out.transforms);
+    if (node.model.urdf) UrdfStaticTransforms(*node.model.urdf, robot, t, out.transforms);
   }
   return out;
 }

@@ -42,9 +42,9 @@ Twist2D InBody(const Twist2D& world, double theta);
 // R/odom -> R/base_link at `t`, from the odometry's pose (the start pose without one).
 msg::geometry_msgs::TransformStamped OdomToBase(double t, const std::optional<Pose2D>& odometry, const Pose2D& start,
                                                 const RobotFrames& frames);
-// What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor, for every
-// robot (`frames`: each robot's, by node; FramesOf for the others); world -> M for every mote, of
-// the `count` nodes whose specs `spec_of` gives, stamped `t`.
+// What does not move: world -> R/odom (the start pose) and R/base_link -> each sensor (and a URDF
+// robot's links: ros2_presentation/urdf_frames.h), for every robot (`frames`: each robot's, by node; FramesOf for the
+// others); world -> M for every mote, of the `count` nodes whose specs `spec_of` gives, stamped `t`.
 msg::tf2_msgs::TFMessage StaticTransforms(std::size_t count, const std::function<const sim::NodeSpec&(NodeId)>& spec_of,
                                           const std::map<NodeId, RobotFrames>& frames, double t = 0);
 // `parent` -> `child` at time `t`: a shift by (x, y, z) and a turn of `yaw` about z.

@@ -6,6 +6,7 @@
 
 #include "core/delivery.h"
 #include "ros2_presentation/sensor_messages.h"
+#include "ros2_presentation/urdf_frames.h"
 #include "ros2msg/codec.h"
 
 namespace sanet::ros2_presentation {
@@ -179,8 +180,9 @@ MessageContext RunMessages::ContextOf(double t, NodeId node, const Pose2D& pose,
   return {t, &FramesOf(node), nodes_[node].pose, pose, velocity};
 }
 
-// The true pose on the node's ground truth topic, and its body in /tf.
-void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
+// The true pose on the node's ground truth topic, its body in /tf, and a URDF robot's wheels.
+void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity,
+                       const std::array<double, 3>& wheel_angles) {
   const RobotFrames& frames = FramesOf(node);
   PublishReading(node, "ground_truth", pose, ContextOf(t, node, pose, velocity));
   msg::tf2_msgs::TFMessage tf;
@@ -188,6 +190,10 @@ void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D&
     tf.transforms.push_back(Transform("world", frames.base, t, pose.x, pose.y, 0, pose.theta));
   else
     tf.transforms.push_back(OdomToBase(t, pose, nodes_[node].pose, frames));
+  if (const auto& urdf = nodes_[node].model.urdf) {
+    const auto wheels = UrdfWheelTransforms(*urdf, frames, t, wheel_angles).transforms;
+    tf.transforms.insert(tf.transforms.end(), wheels.begin(), wheels.end());
+  }
   Publish("/tf", t, tf);
   if (node < where_.size()) where_[node] = {pose.x, pose.y};
 }

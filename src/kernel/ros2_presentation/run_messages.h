@@ -36,8 +36,9 @@ class RunMessages {
 
   // A robot joined at `t`: /tf_static and the world's markers again, with it.
   void Spawned(double t);
-  // A true pose the trace records (a row of trajectories.csv).
-  void Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity);
+  // A true pose the trace records (a row of trajectories.csv), and the wheels' angles (rad).
+  void Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity,
+            const std::array<double, 3>& wheel_angles = {});
   // A reading a node's driver took: published on its instance's topics by its kind's part
   // (ros2_presentation/sensor_messages.h).
   void Read(double t, NodeId node, const std::string& instance, const std::string& kind, const SensorReading& reading,

@@ -105,6 +105,29 @@ void ApplyOmni3(const robots::UrdfRobot& r, physics::Omni3Spec& o) {
   o.ground_clearance = std::max(0.0, s.pose.xyz[2] - height / 2 - GroundZ(r));
 }
 
+// The axis a wheel turns about as the physics drives it forward (its angle growing): across a
+// differential drive (+y, left), inwards on an omni3 (whose wheels push the body
+// counter-clockwise round its centre: robots/kinematics.h).
+std::array<double, 3> ForwardAxis(robots::ModelKind kind, const robots::UrdfWheel& w) {
+  if (kind == robots::ModelKind::kDiffDrive) return {0, 1, 0};
+  const double a = std::atan2(w.pose.xyz[1], w.pose.xyz[0]);
+  return {-std::cos(a), -std::sin(a), 0};
+}
+
+// What the tf tree needs: the joints, the root's pose above the ground, each wheel's sign.
+void TreeOf(const robots::UrdfRobot& robot, robots::ModelKind kind, double ground_z, robots::UrdfSource& source) {
+  for (const auto& [name, pose] : robot.links) source.links[name] = {pose.xyz[0], pose.xyz[1], pose.xyz[2] - ground_z};
+  source.root = robot.root;
+  source.root_pose = robot.links.at(robot.root);
+  source.root_pose.xyz[2] -= ground_z;
+  source.joints = robot.joints;
+  for (const robots::UrdfWheel& w : robot.wheels) {
+    const std::array<double, 3> forward = ForwardAxis(kind, w);
+    const double along = w.axis[0] * forward[0] + w.axis[1] * forward[1] + w.axis[2] * forward[2];
+    source.wheel_signs.push_back(along < 0 ? -1 : 1);
+  }
+}
+
 }  // namespace
 
 void ReadUrdfBody(const Field& body, robots::ModelSpec& m) {
@@ -129,8 +152,7 @@ void ReadUrdfBody(const Field& body, robots::ModelSpec& m) {
     ApplyDiffDrive(robot, m.diffdrive);
   else
     ApplyOmni3(robot, m.omni3);
-  const double ground_z = GroundZ(robot);
-  for (const auto& [name, pose] : robot.links) source.links[name] = {pose.xyz[0], pose.xyz[1], pose.xyz[2] - ground_z};
+  TreeOf(robot, m.kind, GroundZ(robot), source);
   m.urdf = std::make_shared<const robots::UrdfSource>(std::move(source));
 }
 

@@ -315,7 +315,7 @@ void Assembly::ReadSensor(NodeId node, const std::string& instance, const std::s
 
 BodyState Assembly::Body(NodeId node) const {
   const physics::Body& body = models_.at(node)->body();
-  return {body.pose(), body.velocity()};
+  return {body.pose(), body.velocity(), physics::WheelAngles(models_.at(node)->vehicle())};
 }
 
 std::vector<NodeId> Assembly::RadioNeighbours(NodeId node) const { return transport_->View(node).Neighbours(); }

@@ -164,18 +164,20 @@ void Outputs::Sample(double now, bool final_row, const PoseReader& world) {
     // Nodes at rest add no rows (a mote appears at the start and the end unless something moves
     // it); the last row of every node is its final pose.
     if (last && (final_row ? last->time >= spec_.duration : Unmoved(p, last->pose))) continue;
-    Record(now, id, p, world.velocity ? world.velocity(id) : Twist2D{});
+    Record(now, id, p, world.velocity ? world.velocity(id) : Twist2D{},
+           world.wheel_angles ? world.wheel_angles(id) : std::array<double, 3>{});
   }
 }
 
-void Outputs::Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity) {
+void Outputs::Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity,
+                     const std::array<double, 3>& wheel_angles) {
   last_recorded_[id] = Recorded{p, now};
   if (spec_.figures && robots::HasDrive(nodes_[id].model)) {
     trace::Track& track = tracks_[id];
     track.t.push_back(now), track.x.push_back(p.x), track.y.push_back(p.y);
   }
   trajectories_.Row(Format("%.3f,%s,%.4f,%.4f,%.4f", now, Name(id).c_str(), p.x, p.y, p.theta));
-  if (bus_.Heard<PoseRow>()) bus_.Publish(PoseRow{now, id, p, velocity});
+  if (bus_.Heard<PoseRow>()) bus_.Publish(PoseRow{now, id, p, velocity, wheel_angles});
 }
 
 void Outputs::FirstRow(double t, NodeId node, const Pose2D& pose) {

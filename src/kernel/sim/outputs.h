@@ -63,8 +63,9 @@ struct RunResult {
 // What the outputs read of the world when they sample it.
 struct PoseReader {
   std::function<Pose2D(NodeId)> pose;
-  std::function<Twist2D(NodeId)> velocity;  // world frame, for the trace
-  std::vector<NodeId> vehicles;             // the nodes that move by themselves
+  std::function<Twist2D(NodeId)> velocity;                    // world frame, for the trace
+  std::function<std::array<double, 3>(NodeId)> wheel_angles;  // rad, as BodyState's
+  std::vector<NodeId> vehicles;                               // the nodes that move by themselves
 };
 
 // Where a run came from: written first into its results folder (provenance.json, scenario.yaml),
@@ -117,7 +118,8 @@ class Outputs {
   // A row without time_received, delay and hops: the message reached the node but not whoever drives it.
   void Lost(const MessageLost& e);
   void SampleMinDistance(double now, const PoseReader& world);
-  void Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity);
+  void Record(double now, NodeId id, const Pose2D& p, const Twist2D& velocity,
+              const std::array<double, 3>& wheel_angles = {});
   void AddNetworkFiles(const net::NetworkTraces& network, Fingerprint& fp);
   void AddTapFiles(const net::NetworkTraces& network, nlohmann::ordered_json& summary);
   void WriteFigures(const std::vector<Pose2D>& final_poses, const std::optional<net::NetworkTraces>& network);

@@ -11,6 +11,7 @@
 // the subscribers that care.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -123,7 +124,8 @@ struct PoseRow {
   double t;
   NodeId node;
   Pose2D pose;
-  Twist2D velocity;  // world frame
+  Twist2D velocity;                      // world frame
+  std::array<double, 3> wheel_angles{};  // rad, as BodyState's
 };
 
 // A node's route to `destination` appeared, changed or went away (next_hop empty). Routing

@@ -3,6 +3,7 @@
 // during that step, so a run whose observers ask for nothing pays nothing for it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -15,7 +16,8 @@ namespace sanet::sim {
 
 struct BodyState {
   Pose2D pose;
-  Twist2D velocity;  // world frame
+  Twist2D velocity;                      // world frame
+  std::array<double, 3> wheel_angles{};  // rad, each wheel's turn so far (a diffdrive's: left, right)
 };
 
 // An application message sent and not yet delivered (see MessageLedger for when it stops being

@@ -311,7 +311,8 @@ void Stepper::Record() {
 
 PoseReader Stepper::Poses() const {
   return {[this](NodeId id) { return world_.model(id).body().pose(); },
-          [this](NodeId id) { return world_.model(id).body().velocity(); }, vehicles_};
+          [this](NodeId id) { return world_.model(id).body().velocity(); },
+          [this](NodeId id) { return physics::WheelAngles(world_.model(id).vehicle()); }, vehicles_};
 }
 
 void Stepper::ScheduleEvent(const NodeEvent& e) {

@@ -124,6 +124,21 @@ class Face(unittest.TestCase):
         self.assertAlmostEqual(after["last_x"], after["first_x"], delta=0.01, msg="and then stood still")
         self.assertGreaterEqual(summary["ros2"]["robots"]["r1"]["stopped_by_cmd_vel_timeout"], 1)
 
+    def test_a_urdf_robots_description_and_links(self):
+        """scenarios/urdf-robot.yaml's robot: its file on robot_description (latched: a client that
+        comes later gets it), its links on /tf_static (the root and little-diff's three fixed
+        joints) and its two wheels on /tf as it drives."""
+        with tempfile.TemporaryDirectory() as tmp:
+            served = Served(tmp, 6, "--ros2", path=os.path.join(SOURCE, "scenarios", "urdf-robot.yaml"))
+            time.sleep(1)
+            seen = client("little", 3, 0.2, 0)
+            served.finish()
+        with open(os.path.join(SOURCE, "scenarios", "robots", "little-diff.urdf"), "rb") as f:
+            self.assertEqual(seen["description_bytes"], len(f.read()))
+        self.assertEqual(seen["description"], 1)
+        self.assertEqual(seen["urdf_static"], 4, "base_link -> root, mast, laser, caster")
+        self.assertGreater(seen["urdf_moving"], 2 * 20, "two wheels at 10 Hz for 3 s")
+
     def test_ir_ranges_and_twist_stamped(self):
         with tempfile.TemporaryDirectory() as tmp:
             served = Served(tmp, 7, "--ros2-cmd-vel-stamped")

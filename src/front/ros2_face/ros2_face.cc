@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "ros2_presentation/sensor_messages.h"
+#include "ros2_presentation/urdf_frames.h"
 #include "ros2msg/codec.h"
 
 namespace sanet::ros2_face {
@@ -26,7 +27,8 @@ struct Ros2Face::Robot {
   std::string name;
   RobotFrames frames;
   Pose2D start;
-  DdsDomain::Entity cmd_vel = 0;
+  std::shared_ptr<const robots::UrdfSource> urdf;  // a robot from a URDF: its description and links
+  DdsDomain::Entity cmd_vel = 0, description = 0;
   std::map<std::string, std::vector<DdsDomain::Entity>> sensors;  // by instance: a writer per topic
   double period = 0.1;                                            // s between its sensor messages
   double next_sensors = 0;
@@ -79,10 +81,12 @@ void Ros2Face::AddRobots() {
         for (const ros2_presentation::SensorTopic& t : kind->Topics(instance, config->settings))
           r->sensors[instance].push_back(
               dds_.Writer(ns + "/" + t.name, t.dds_type, t.reliable ? Qos::kDefault : Qos::kSensorData));
+    Describe(*r, node, ns);
     r->cmd_vel = dds_.Reader(
         ns + "/cmd_vel",
         settings_.twist_stamped ? DdsType<msg::geometry_msgs::TwistStamped>() : DdsType<msg::geometry_msgs::Twist>(),
         Qos::kDefault);
+    any_urdf_ |= r->urdf != nullptr;
     robots_.push_back(std::move(r));
   }
   nodes_seen_ = driver_.NodeCount();
@@ -93,6 +97,32 @@ void Ros2Face::AddRobots() {
                  driver_.NodeCount(), [this](NodeId id) -> const sim::NodeSpec& { return driver_.Spec(id); }, frames)));
 }
 
+// A robot from a URDF: its text on /<robot>/robot_description, latched (reliable, transient local,
+// keep last 1, as robot_state_publisher's), its links with the face's /tf_static and /tf.
+void Ros2Face::Describe(Robot& r, const sim::NodeSpec& node, const std::string& ns) {
+  if (!node.model.urdf) return;
+  r.urdf = node.model.urdf;
+  r.description = dds_.Writer(ns + "/robot_description", DdsType<msg::std_msgs::String>(), Qos::kTfStatic);
+  msg::std_msgs::String description;
+  description.data = r.urdf->text;
+  dds_.Write(r.description, ros2msg::Encode(description));
+}
+
+// The URDF robots' wheel joints at their wheels' angles, once a sensor period.
+void Ros2Face::PublishWheels(const sim::WorldSnapshot& snapshot) {
+  if (snapshot.time() + 1e-9 < next_wheels_) return;
+  next_wheels_ = snapshot.time() + settings_.sensor_period;
+  msg::tf2_msgs::TFMessage tf;
+  for (const auto& r : robots_) {
+    if (!r->urdf || r->id >= snapshot.bodies().size()) continue;
+    const auto wheels =
+        ros2_presentation::UrdfWheelTransforms(*r->urdf, r->frames, snapshot.time(), snapshot.bodies()[r->id].wheel_angles)
+            .transforms;
+    tf.transforms.insert(tf.transforms.end(), wheels.begin(), wheels.end());
+  }
+  if (!tf.transforms.empty()) dds_.Write(tf_, ros2msg::Encode(tf));
+}
+
 void Ros2Face::Start() {
   driver_.Every(settings_.command_period, [this] { Poll(); });
   step_ended_ = driver_.bus().On<sim::StepEnded>(sim::RunStage::kObserve,
@@ -100,6 +130,7 @@ void Ros2Face::Start() {
 }
 
 void Ros2Face::AfterStep(const sim::WorldSnapshot& snapshot) {
+  if (any_urdf_) PublishWheels(snapshot);
   if (snapshot.time() + 1e-9 < next_clock_) return;
   next_clock_ = snapshot.time() + kClockPeriod;
   msg::rosgraph_msgs::Clock clock;

@@ -1,6 +1,7 @@
 // The ROS 2 face of a served world: every robot that no other front end drives is a ROS 2 robot
 // under its name as namespace. It publishes /<robot>/odom, /<robot>/ground_truth, /<robot>/scan
-// (a laser), /<robot>/ir_<i> (each IR sensor; a ROS name token may not start with a digit), /tf, /tf_static and /clock,
+// (a laser), /<robot>/ir_<i> (each IR sensor; a ROS name token may not start with a digit),
+// /<robot>/robot_description (a robot from a URDF, with its links in tf), /tf, /tf_static and /clock,
 // and takes
 // /<robot>/cmd_vel (geometry_msgs/Twist, or TwistStamped) to the robot's Node, as a controller
 // would drive it. Over plain DDS as ROS 2 nodes speak it (docs/ros2.md): no ROS install needed.
@@ -58,6 +59,8 @@ class Ros2Face {
   Subscription step_ended_;  // AfterStep, on the run's bus
   struct Robot;
   void AddRobots();
+  void Describe(Robot& robot, const sim::NodeSpec& node, const std::string& ns);
+  void PublishWheels(const sim::WorldSnapshot& snapshot);
   void Publish(Robot& robot);
   void TakeCommands(Robot& robot);
   void StopIfQuiet(Robot& robot);
@@ -72,6 +75,8 @@ class Ros2Face {
   std::vector<std::unique_ptr<Robot>> robots_;
   std::size_t nodes_seen_ = 0;
   double next_clock_ = 0;
+  bool any_urdf_ = false;  // a robot from a URDF: wheels in /tf
+  double next_wheels_ = 0;
   std::uint64_t clock_messages_ = 0;
 };
 

@@ -176,6 +176,8 @@ const Case kCases[] = {
      "ros2.domain", "between 0 and 232"},
     {"ros2_cmd_vel_type", "ros2: {cmd_vel: twistt}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 2,
      "ros2.cmd_vel", "expected one of: twist, twist_stamped"},
+    {"ros2_distro", "ros2: {distro: iron}\nnodes:\n  - {name: a, model: omni3, pose: [0, 0, 0]}\n", 2, "ros2.distro",
+     "unknown value 'iron' (expected one of: humble, jazzy)"},
     // energy (docs/energy.md)
     {"energy_without_capacity", "nodes:\n  - name: m\n    model: mote\n    pose: [0, 0, 0]\n    energy: {voltage: 3}\n",
      6, "nodes[0].energy", "missing required key 'battery_j'"},

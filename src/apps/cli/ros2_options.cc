@@ -36,6 +36,10 @@ void AddRos2Options(CLI::App* cmd, Ros2Args& args) {
       "--ros2-interface", args.interface,
       "The network interface (name or IPv4 address) of the ROS 2 face's DDS traffic; other Cyclone settings "
       "still come from CYCLONEDDS_URI (sanet launch gives its namespaces' bridge)");
+  cmd->add_option("--ros2-distro", args.distro,
+                  "The ROS 2 release whose `ros2 node list` shows the face as node /sanet: humble, or jazzy (also "
+                  "Iron's; default: the scenario's ros2.distro, jazzy)")
+      ->check(CLI::IsMember({"humble", "jazzy"}));
 }
 
 std::unique_ptr<ros2_face::Ros2Face> StartRos2Face(sim::World& world, const Ros2Args& args,
@@ -50,6 +54,9 @@ std::unique_ptr<ros2_face::Ros2Face> StartRos2Face(sim::World& world, const Ros2
   settings.interface = args.interface.value_or("");
   settings.sensor_period = 1.0 / args.rate.value_or(given.rate);
   settings.twist_stamped = args.stamped || given.cmd_vel == sections::CmdVelType::kTwistStamped;
+  settings.distro = !args.distro               ? given.distro
+                    : *args.distro == "humble" ? sections::Ros2Distro::kHumble
+                                               : sections::Ros2Distro::kJazzy;
   settings.robots = given.robots;
   settings.cmd_vel_timeout = given.cmd_vel_timeout;
   std::unique_ptr<ros2_face::Ros2Face> face;
@@ -61,7 +68,8 @@ std::unique_ptr<ros2_face::Ros2Face> StartRos2Face(sim::World& world, const Ros2
   face->Start();
   notices.push_back("sanet: ROS 2 face on DDS domain " + std::to_string(settings.domain) +
                     (settings.interface.empty() ? "" : ", interface " + settings.interface) +
-                    ": its robots' topics under /ROBOT/, /tf, /tf_static, /clock");
+                    ": its robots' topics under /ROBOT/, /tf, /tf_static, /clock; node /sanet for ROS 2 " +
+                    (settings.distro == sections::Ros2Distro::kHumble ? "Humble" : "Jazzy (and Iron)"));
   return face;
 }
 

@@ -17,6 +17,7 @@ struct Ros2Args {
   std::optional<double> rate;            // Hz of each robot's sensor messages
   bool stamped = false;                  // cmd_vel as TwistStamped
   std::optional<std::string> interface;  // --ros2-interface: the face's network interface
+  std::optional<std::string> distro;     // --ros2-distro: humble or jazzy
 };
 
 void AddRos2Options(CLI::App* cmd, Ros2Args& args);

@@ -41,7 +41,10 @@ struct Ros2Face::Robot {
 };
 
 Ros2Face::Ros2Face(sim::Driver& driver, Ros2Settings settings)
-    : driver_(driver), settings_(settings), dds_(settings.domain, settings.interface) {
+    : driver_(driver),
+      settings_(settings),
+      dds_(settings.domain, settings.interface),
+      discovery_(dds_, settings.distro) {
   clock_ = dds_.Writer("/clock", DdsType<msg::rosgraph_msgs::Clock>(), Qos::kClock);
   tf_ = dds_.Writer("/tf", DdsType<msg::tf2_msgs::TFMessage>(), Qos::kTf);
   tf_static_ = dds_.Writer("/tf_static", DdsType<msg::tf2_msgs::TFMessage>(), Qos::kTfStatic);
@@ -141,6 +144,7 @@ void Ros2Face::AfterStep(const sim::WorldSnapshot& snapshot) {
 
 void Ros2Face::Poll() {
   if (driver_.NodeCount() != nodes_seen_) AddRobots();
+  discovery_.Update();  // the robots' topics, once made
   const double now = driver_.Now();
   for (auto& r : robots_) {
     TakeCommands(*r);

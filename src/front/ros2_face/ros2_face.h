@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "ros2_face/dds_domain.h"
+#include "ros2_face/discovery_info.h"
 #include "ros2_presentation/robot_messages.h"
 #include "sections/ros2_section.h"
 #include "sim/driver.h"
@@ -40,6 +41,7 @@ struct Ros2Settings {
   bool twist_stamped = false;               // cmd_vel as geometry_msgs/TwistStamped (ROS 2 Jazzy's controllers)
   double cmd_vel_timeout = 0.5;             // s without cmd_vel before a robot the face drives stops; 0: never
   std::vector<sections::Ros2Robot> robots;  // robots with a namespace or a rate of their own
+  sections::Ros2Distro distro = sections::Ros2Distro::kJazzy;  // whose ros_discovery_info (discovery_info.h)
 };
 
 class Ros2Face {
@@ -71,6 +73,7 @@ class Ros2Face {
   sim::Driver& driver_;
   Ros2Settings settings_;
   DdsDomain dds_;
+  DiscoveryInfo discovery_;  // node /sanet in `ros2 node list`: every reader and writer above
   DdsDomain::Entity clock_, tf_, tf_static_;
   std::vector<std::unique_ptr<Robot>> robots_;
   std::size_t nodes_seen_ = 0;

@@ -541,6 +541,11 @@ const Fields<sections::Ros2Spec>& Ros2Fields() {
         {{"twist", sections::CmdVelType::kTwist}, {"twist_stamped", sections::CmdVelType::kTwistStamped}},
         "the type cmd_vel takes: `geometry_msgs/msg/Twist`, or `TwistStamped` (as ROS 2 Jazzy's "
         "diff_drive_controller subscribes to it)");
+    f.Choice<sections::Ros2Distro>(
+        "distro", Member(&Ros2Spec::distro),
+        {{"humble", sections::Ros2Distro::kHumble}, {"jazzy", sections::Ros2Distro::kJazzy}},
+        "the ROS 2 release whose `ros2 node list` lists the face (its `ros_discovery_info`: Humble's, or Iron's and "
+        "Jazzy's); topics are the same for both");
     f.Number("cmd_vel_timeout", Member(&Ros2Spec::cmd_vel_timeout), "s", 0, 3600,
              "a robot the face drives stops when no cmd_vel came for this long (as ROS 2's diff_drive_controller); "
              "0: it keeps the last command");

@@ -9,6 +9,9 @@
 namespace sanet::sections {
 
 enum class CmdVelType { kTwist, kTwistStamped };
+// The ROS 2 release whose graph messages the face speaks: rmw_dds_common's Gid, in the
+// ros_discovery_info that `ros2 node list` reads, is 24 bytes in Humble and 16 from Iron on.
+enum class Ros2Distro { kHumble, kJazzy };
 
 // One robot's topics: under /<namespace>/ (its frames <namespace>/odom, ...), at `rate` Hz.
 struct Ros2Robot {
@@ -25,8 +28,9 @@ struct Ros2Spec {
   int domain = -1;   // DDS domain; -1: ROS_DOMAIN_ID, else 0
   double rate = 10;  // Hz of each robot's sensor messages
   CmdVelType cmd_vel = CmdVelType::kTwist;
-  double cmd_vel_timeout = 0.5;   // s without cmd_vel after which a robot the face drives stops; 0: never
-  std::vector<Ros2Robot> robots;  // robots whose names or rates differ
+  Ros2Distro distro = Ros2Distro::kJazzy;  // the newer: Iron's and Jazzy's ros_discovery_info
+  double cmd_vel_timeout = 0.5;            // s without cmd_vel after which a robot the face drives stops; 0: never
+  std::vector<Ros2Robot> robots;           // robots whose names or rates differ
 };
 
 }  // namespace sanet::sections

@@ -118,9 +118,9 @@ void Ros2Face::PublishWheels(const sim::WorldSnapshot& snapshot) {
   msg::tf2_msgs::TFMessage tf;
   for (const auto& r : robots_) {
     if (!r->urdf || r->id >= snapshot.bodies().size()) continue;
-    const auto wheels =
-        ros2_presentation::UrdfWheelTransforms(*r->urdf, r->frames, snapshot.time(), snapshot.bodies()[r->id].wheel_angles)
-            .transforms;
+    const auto wheels = ros2_presentation::UrdfWheelTransforms(*r->urdf, r->frames, snapshot.time(),
+                                                               snapshot.bodies()[r->id].wheel_angles)
+                            .transforms;
     tf.transforms.insert(tf.transforms.end(), wheels.begin(), wheels.end());
   }
   if (!tf.transforms.empty()) dds_.Write(tf_, ros2msg::Encode(tf));

@@ -31,28 +31,10 @@ nodes:
     controller: {name: constant_velocity, params: {wheel_speeds: [4, 4], start: 1, stop: 4}}
 """
 
-# A three-wheeled omnidirectional robot written for this test: a cylinder chassis (radius 0.15 m,
-# 0.1 m tall, its centre 0.03 m above the base link's origin), wheels of 3.5 cm 0.12 m out at 0,
-# 120 and 240 degrees, at the base link's height.
-OMNI_WHEEL = """  <link name="wheel_{i}">
-    <inertial><mass value="0.1"/><inertia ixx="0.0001" ixy="0" ixz="0" iyy="0.0001" iyz="0" izz="0.0001"/></inertial>
-    <collision><geometry><cylinder radius="0.035" length="0.02"/></geometry></collision>
-  </link>
-  <joint name="wheel_{i}_joint" type="continuous">
-    <parent link="base_link"/><child link="wheel_{i}"/>
-    <origin xyz="{x:.6f} {y:.6f} 0" rpy="0 1.5707963 {yaw:.6f}"/>
-    <axis xyz="0 0 1"/>
-  </joint>
-"""
-OMNI_URDF = """<?xml version="1.0"?>
-<robot name="little_omni">
-  <link name="base_link">
-    <inertial><origin xyz="0 0 0.03"/><mass value="2.0"/>
-      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.02"/></inertial>
-    <collision><origin xyz="0 0 0.03"/><geometry><cylinder radius="0.15" length="0.1"/></geometry></collision>
-  </link>
-""" + "".join(OMNI_WHEEL.format(i=i, x=0.12 * math.cos(a), y=0.12 * math.sin(a), yaw=a)
-              for i, a in enumerate((0, 2 * math.pi / 3, 4 * math.pi / 3))) + "</robot>\n"
+# A three-wheeled omnidirectional robot: a cylinder chassis (radius 0.15 m, 0.1 m tall, its centre
+# 0.03 m above the base link's origin), wheels of 3.5 cm 0.12 m out at 0, 120 and 240 degrees, at
+# the base link's height.
+OMNI_URDF = os.path.join(ROOT, "scenarios", "robots", "little-omni.urdf")
 OMNI_SCENARIO = """name: urdf-omni
 duration: 5
 world: {size: [20, 20]}
@@ -107,7 +89,7 @@ class UrdfRobot(unittest.TestCase):
         self.assertAlmostEqual(travelled, 4 * 0.05 * 3, delta=0.01, msg="4 rad/s for 3 s on wheels of 5 cm")
 
     def test_an_omni3_from_a_urdf_turns_as_its_wheels_say(self):
-        self.write("omni.urdf", OMNI_URDF)
+        shutil.copy(OMNI_URDF, os.path.join(self.tmp, "omni.urdf"))
         scenario = self.write("omni.yaml", OMNI_SCENARIO)
         printed = self.sanet("validate", scenario, "--print").stdout
         for key, value in (("wheel_radius", 0.035), ("wheel_distance", 0.12), ("body_radius", 0.15),
@@ -124,6 +106,31 @@ class UrdfRobot(unittest.TestCase):
         elapsed = float(rows[-1]["time"]) - float(rows[0]["time"])
         self.assertAlmostEqual(abs(turned) / elapsed, 2 * 0.035 / 0.12, delta=0.03)
         self.assertLess(math.hypot(float(rows[-1]["x"]) - 2, float(rows[-1]["y"]) - 2), 0.02)
+
+    def test_the_robot_turns_about_its_axle_wherever_the_base_link_is(self):
+        """A URDF whose base link stands 0.1 m behind the axle, under a root footprint link, and whose
+        left wheel turns about -y (as some files write it): the robot is the same; the laser's
+        mount is measured from the axle; a namespace declaration for xacro alone is no xacro."""
+        with open(URDF) as f:
+            text = f.read()
+        moved = text.replace('<robot name="little_diff">', '<robot name="little_diff" '
+                             'xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="base_footprint"/>\n'
+                             '  <joint name="footprint_joint" type="fixed">\n    <parent link="base_footprint"/>\n'
+                             '    <child link="base_link"/>\n    <origin xyz="0 0 0.05"/>\n  </joint>')
+        for joint in ("0 0.145 0", "0 -0.145 0"):
+            moved = moved.replace('<origin xyz="%s"' % joint, '<origin xyz="0.1 %s"' % joint.split(" ", 1)[1])
+        moved = moved.replace('<origin xyz="0 0.145 0" rpy="-1.5707963 0 0"/>\n    <axis xyz="0 0 1"/>',
+                              '<origin xyz="0 0.145 0" rpy="-1.5707963 0 0"/>\n    <axis xyz="0 0 -1"/>')
+        self.write("robot.urdf", moved)
+        named = SCENARIO.replace("      urdf: robot.urdf\n", "      urdf: robot.urdf\n      base_link: base_link\n")
+        refused = self.sanet("validate", self.write("s.yaml", SCENARIO), check=False).stderr
+        self.assertIn("the default is the URDF's root", refused, "base_footprint has no chassis")
+        printed = self.sanet("validate", self.write("s.yaml", named), "--print").stdout
+        for key, value in (("wheel_radius", "0.05"), ("axle_length", "0.29"), ("ground_clearance", "0.04")):
+            self.assertIn("      %s: %s\n" % (key, value), printed)
+        laser = printed[printed.index("      laser:\n"):]
+        self.assertIn("        mount_x: -0.05\n", laser[:300], "the mast is 0.05 m behind the axle now")
+        self.assertIn("        height: 0.26\n", laser[:300])
 
     def test_the_effective_scenario_carries_the_file_and_runs_the_same(self):
         scenario = self.write("s.yaml", SCENARIO)
@@ -164,6 +171,22 @@ class UrdfRobot(unittest.TestCase):
             (text, SCENARIO.replace("link: laser", "link: lidar"), "s.yaml:11", "no link 'lidar'"),
             (text, SCENARIO.replace("    body:\n      urdf: robot.urdf\n      wheels: {left: left_wheel_joint, "
                                     "right: right_wheel_joint}\n", ""), "s.yaml:8", "needs `urdf`"),
+        ]
+        no_mass = text
+        for mass in ('<mass value="2.0"/>', '<mass value="0.05"/>', '<mass value="0.1"/>', '<mass value="0.15"/>'):
+            no_mass = no_mass.replace(mass, '<mass value="0"/>')
+        cases += [
+            ("", SCENARIO, "robot.urdf:1", "the XML"),
+            (text.replace('<mass value="0.25"/>', '<mass value="0"/>', 1), SCENARIO, "robot.urdf:22",
+             "<inertial> mass above 0"),
+            (no_mass, SCENARIO, "robot.urdf:6", "weigh nothing"),
+            (text, SCENARIO.replace("right: right_wheel_joint", "right: left_wheel_joint"), "s.yaml:10", "twice"),
+            (text, SCENARIO.replace("{left: left_wheel_joint, right: right_wheel_joint}",
+                                    "{left: right_wheel_joint, right: left_wheel_joint}"), "robot.urdf:47", "swap"),
+            (text.replace('<origin xyz="0 0.145 0" rpy="-1.5707963 0 0"/>', '<origin xyz="0.05 0.145 0" '
+                          'rpy="-1.5707963 0 0"/>'), SCENARIO, "robot.urdf:31", "not across the base link's x"),
+            (text.replace('<axis xyz="0 0 1"/>', '<axis xyz="1 0 0"/>', 1), SCENARIO, "robot.urdf:31",
+             "does not roll the wheel"),
         ]
         for urdf, scenario_text, where, words in cases:
             self.write("robot.urdf", urdf)

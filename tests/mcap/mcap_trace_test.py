@@ -10,6 +10,7 @@ import csv
 import json
 import math
 import os
+import shutil
 import re
 import subprocess
 import sys
@@ -195,25 +196,55 @@ class RobotDescription(unittest.TestCase):
         self.assertNotIn(("little/urdf/base_link", "little/urdf/left_wheel"), statics, "a wheel moves: in /tf")
 
     def the_wheels_turn_as_the_robot_drives(self, log, trajectory):
-        # Each wheel's turn about its axis: its rotation with the joint's (-90 deg about x) undone.
-        undo = (-math.sin(-math.pi / 4), 0, 0, math.cos(-math.pi / 4))  # x, y, z, w: the inverse turn
-        turned = {}
-        for wheel in ("left_wheel", "right_wheel"):
-            angles = []
-            for _, x, y, z, w in log["urdfTracks"]["little/urdf/" + wheel]:
-                ux, _, _, uw = undo
-                # (undo * q): its z and w parts give the angle about the wheel's axis.
-                qz, qw = uw * z + ux * y, uw * w - ux * x
-                angles.append(2 * math.atan2(qz, qw))
-            unwrapped = angles[0]
-            for a, b in zip(angles, angles[1:]):
-                unwrapped += math.remainder(b - a, 2 * math.pi)
-            turned[wheel] = unwrapped - angles[0]
+        # Each wheel's joint turns it -90 deg about x (its axis then along +y, left).
+        turned = {wheel: turn_about_joint(log["urdfTracks"]["little/urdf/" + wheel], (-math.pi / 2, 0, 0))
+                  for wheel in ("left_wheel", "right_wheel")}
         path = sum(math.dist((float(a["x"]), float(a["y"])), (float(b["x"]), float(b["y"])))
                    for a, b in zip(trajectory, trajectory[1:]))
         print(f"\npath {path:.3f} m, wheels turned {turned}", file=sys.stderr)
         self.assertGreater(path, 0.3)
         self.assertAlmostEqual((turned["left_wheel"] + turned["right_wheel"]) / 2 * 0.05, path, delta=0.05 * path)
+
+    def test_an_omni3s_wheels_roll_without_slipping_as_it_turns(self):
+        """scenarios/robots/little-omni.urdf turning in place: a wheel 0.12 m out whose rim does not
+        slip turns by -(the body's turn) x 0.12 / 0.035 about its own (outward) axis."""
+        with tempfile.TemporaryDirectory() as tmp:
+            shutil.copy(os.path.join(SOURCE, "scenarios", "robots", "little-omni.urdf"), tmp)
+            scenario = os.path.join(tmp, "omni.yaml")
+            with open(scenario, "w") as f:
+                f.write("name: omni\nduration: 3\nworld: {size: [10, 10]}\noutputs: {trajectory_interval: 0.05}\n"
+                        "nodes:\n  - name: o\n    model: omni3\n    pose: [5, 5, 0]\n    body:\n"
+                        "      urdf: little-omni.urdf\n      wheels: [wheel_0_joint, wheel_1_joint, wheel_2_joint]\n"
+                        "    controller: {name: constant_velocity, params: {wheel_speeds: [2, 2, 2], start: 0.5}}\n")
+            out = os.path.join(tmp, "out")
+            run(scenario, out)
+            log = decode(os.path.join(out, "trace.mcap"))
+            trajectory = [r for r in rows(out, "trajectories.csv") if r["node"] == "o"]
+        thetas = [float(r["theta"]) for r in trajectory]
+        body = sum(math.remainder(b - a, 2 * math.pi) for a, b in zip(thetas, thetas[1:]))
+        wheel = turn_about_joint(log["urdfTracks"]["o/urdf/wheel_0"], (0, math.pi / 2, 0))
+        self.assertGreater(abs(body), 1.0)
+        self.assertAlmostEqual(wheel, -body * 0.12 / 0.035, delta=0.05 * abs(body) * 0.12 / 0.035)
+
+
+def quaternion(roll, pitch, yaw):
+    """(x, y, z, w) of URDF's rpy: about fixed x, then y, then z."""
+    cr, sr, cp, sp, cy, sy = (f(a / 2) for a in (roll, pitch, yaw) for f in (math.cos, math.sin))
+    return (sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy,
+            cr * cp * cy + sr * sp * sy)
+
+
+def turn_about_joint(track, rpy):
+    """A wheel's total turn about its joint's axis (z of the joint's frame), unwrapped, from its
+    /tf rotations over time and the joint's origin rpy."""
+    ox, oy, oz, ow = quaternion(*rpy)
+    angles = []
+    for _, x, y, z, w in track:
+        # (origin^-1 * q): its z and w parts give the angle about the joint's z.
+        qz = ow * z - ox * y + oy * x - oz * w
+        qw = ow * w + ox * x + oy * y + oz * z
+        angles.append(2 * math.atan2(qz, qw))
+    return sum(math.remainder(b - a, 2 * math.pi) for a, b in zip(angles, angles[1:]))
 
 
 class FormationLayout(unittest.TestCase):

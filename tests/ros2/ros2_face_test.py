@@ -125,19 +125,25 @@ class Face(unittest.TestCase):
         self.assertGreaterEqual(summary["ros2"]["robots"]["r1"]["stopped_by_cmd_vel_timeout"], 1)
 
     def test_a_urdf_robots_description_and_links(self):
-        """scenarios/urdf-robot.yaml's robot: its file on robot_description (latched: a client that
+        """scenarios/urdf-robot.yaml's robots: little-diff's file on robot_description (latched: a client that
         comes later gets it), its links on /tf_static (the root and little-diff's three fixed
         joints) and its two wheels on /tf as it drives."""
         with tempfile.TemporaryDirectory() as tmp:
             served = Served(tmp, 6, "--ros2", path=os.path.join(SOURCE, "scenarios", "urdf-robot.yaml"))
             time.sleep(1)
+            omni = {}  # every robot with a controller needs a driver in a served world: the face drives both
+            other = threading.Thread(target=lambda: omni.update(client("omni", 3, 0, 0.5)))
+            other.start()
             seen = client("little", 3, 0.2, 0)
+            other.join()
             served.finish()
         with open(os.path.join(SOURCE, "scenarios", "robots", "little-diff.urdf"), "rb") as f:
             self.assertEqual(seen["description_bytes"], len(f.read()))
         self.assertEqual(seen["description"], 1)
         self.assertEqual(seen["urdf_static"], 4, "base_link -> root, mast, laser, caster")
         self.assertGreater(seen["urdf_moving"], 2 * 20, "two wheels at 10 Hz for 3 s")
+        self.assertEqual(omni["urdf_static"], 1, "base_link -> root: little-omni has no fixed joint")
+        self.assertGreater(omni["urdf_moving"], 3 * 20, "three wheels")
 
     def test_ir_ranges_and_twist_stamped(self):
         with tempfile.TemporaryDirectory() as tmp:

@@ -27,8 +27,8 @@ void RefuseXacro(const std::string& file, const TiXmlElement& e) {
   const std::string name = e.ValueStr();
   bool xacro = name.rfind("xacro:", 0) == 0;
   for (const TiXmlAttribute* a = e.FirstAttribute(); a && !xacro; a = a->Next())
-    xacro = std::string(a->Name()).rfind("xmlns:xacro", 0) == 0 ||
-            std::string(a->Value()).find("${") != std::string::npos ||
+    // (a namespace declaration alone is no xacro: older xacro output keeps it)
+    xacro = std::string(a->Value()).find("${") != std::string::npos ||
             std::string(a->Value()).find("$(") != std::string::npos;
   if (!xacro) return;
   throw UrdfError(
@@ -50,7 +50,7 @@ ElementLines FindLines(const std::string& file, const std::string& text) {
   TiXmlDocument doc;
   doc.Parse(text.c_str(), nullptr, TIXML_ENCODING_UTF8);
   if (doc.Error())
-    throw UrdfError(file, doc.ErrorRow(), "the XML",
+    throw UrdfError(file, std::max(1, doc.ErrorRow()), "the XML",
                     std::string(doc.ErrorDesc()) + " (column " + std::to_string(doc.ErrorCol()) + ")");
   const TiXmlElement* robot = doc.RootElement();
   if (!robot || robot->ValueStr() != "robot")
@@ -169,14 +169,16 @@ UrdfWheel ReadWheel(const std::string& file, const urdf::ModelInterface& model, 
   const UrdfPose& p = w.pose;
   const urdf::Vector3 axis = urdf::Rotation(p.xyzw[0], p.xyzw[1], p.xyzw[2], p.xyzw[3]) * joint->axis;
   w.axis = {axis.x, axis.y, axis.z};
-  for (const urdf::CollisionSharedPtr& c : link->collision_array)
+  for (const urdf::CollisionSharedPtr& c : link->collision_array)  // the largest, if there are more
     if (c->geometry && c->geometry->type == urdf::Geometry::CYLINDER)
-      w.radius = static_cast<const urdf::Cylinder&>(*c->geometry).radius;
-  if (w.radius <= 0) {
-    const int link_line = lines.links.count(link->name) ? lines.links.at(link->name) : line;
+      w.radius = std::max(w.radius, static_cast<const urdf::Cylinder&>(*c->geometry).radius);
+  const int link_line = lines.links.count(link->name) ? lines.links.at(link->name) : line;
+  if (w.radius <= 0)
     throw UrdfError(file, link_line, "<link name=\"" + link->name + "\">",
                     "a wheel's link needs a <collision> cylinder: its radius is the wheel's");
-  }
+  if (w.mass <= 0)
+    throw UrdfError(file, link_line, "<link name=\"" + link->name + "\">",
+                    "a wheel's link needs an <inertial> mass above 0: the physics moves it");
   return w;
 }
 
@@ -213,7 +215,8 @@ std::vector<UrdfShape> ReadChassis(const std::string& file, const urdf::Link& ba
     throw UrdfError(file, line, "<link name=\"" + base.name + "\">",
                     mesh ? "its collision is a mesh only: add a <collision> box, cylinder or sphere that bounds it "
                            "(sanet does not compute shapes from meshes)"
-                         : "the base link needs a <collision> box, cylinder or sphere: the chassis sanet simulates");
+                         : "the base link needs a <collision> box, cylinder or sphere: the chassis sanet simulates "
+                           "(`base_link` names the link that carries it; the default is the URDF's root)");
   }
   return shapes;
 }
@@ -249,6 +252,10 @@ UrdfRobot ReadUrdf(const std::string& file, const std::string& text, const std::
         std::any_of(r.wheels.begin(), r.wheels.end(), [&](const UrdfWheel& w) { return w.link == link_name; });
     if (!wheel && link->inertial) r.chassis_mass += link->inertial->mass;
   }
+  if (r.chassis_mass <= 0)
+    throw UrdfError(file, lines.links.count(r.base_link) ? lines.links.at(r.base_link) : lines.robot,
+                    "<link name=\"" + r.base_link + "\">",
+                    "the links other than the wheels weigh nothing: give the chassis an <inertial> mass above 0");
   return r;
 }
 

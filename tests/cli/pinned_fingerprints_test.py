@@ -34,7 +34,7 @@ PINNED = {
     "sensor-network": (60, "ca79ea1813db313a"),
     "sensor-network-energy": (600, "59b947a8e462943e"),  # on batteries: 24 of 26 motes die (issue 47)
     "swarm-1k": (5, "b78520b232205dd8"),
-    "urdf-robot": (120, "53162fab84ddddd9"),  # a diffdrive and an omni3 from URDF files (issue 54)
+    "urdf-robot": (120, "00b37c5e79d6f33f"),  # a diffdrive and an omni3 from URDF files (issue 54)
     "swarm-1k-abstract": (5, "19afe3bebbc920a0"),  # the abstract radio, calibrated by the full model (issue 53)
     "swarm-10k": (2, "1a7825e66ad97414"),  # on the abstract radio since issue 53; a few seconds are enough
 }

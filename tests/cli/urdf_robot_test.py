@@ -76,6 +76,17 @@ class UrdfRobot(unittest.TestCase):
                            ("wheel_mass", "0.25"), ("body_length", "0.3"), ("body_width", "0.24"),
                            ("body_height", "0.1"), ("ground_clearance", "0.04")):
             self.assertIn("      %s: %s\n" % (key, value), printed)
+        # The chassis's moments: base_link, caster, mast and laser (little-diff.urdf's <inertial>s, at
+        # their links' places) about their common centre, by the parallel axis theorem.
+        links = [(2.0, (-0.05, 0, 0.04), (0.02, 0.03, 0.04)), (0.05, (-0.17, 0, -0.03), (1e-5, 1e-5, 1e-5)),
+                 (0.1, (0.05, 0, 0.09), (1e-4, 1e-4, 1e-5)), (0.15, (0.05, 0, 0.21), (1e-4, 1e-4, 1e-4))]
+        mass = sum(m for m, _, _ in links)
+        centre = [sum(m * at[i] for m, at, _ in links) / mass for i in range(3)]
+        moments = [sum(own[i] + m * sum((at[j] - centre[j]) ** 2 for j in range(3) if j != i)
+                       for m, at, own in links) for i in range(3)]
+        read = re.search(r"\n      body_inertia: \[(.*)\]\n", printed).group(1).split(", ")
+        for got, expected in zip(read, moments):
+            self.assertAlmostEqual(float(got), expected, places=9)
         # The laser on its link: the mast 0.05 m ahead of the axle and 0.09 m up, the laser 0.12 m
         # above the mast, the axle 0.05 m (a wheel's radius) above the ground.
         laser = printed[printed.index("      laser:\n"):]
@@ -106,6 +117,16 @@ class UrdfRobot(unittest.TestCase):
         elapsed = float(rows[-1]["time"]) - float(rows[0]["time"])
         self.assertAlmostEqual(abs(turned) / elapsed, 2 * 0.035 / 0.12, delta=0.03)
         self.assertLess(math.hypot(float(rows[-1]["x"]) - 2, float(rows[-1]["y"]) - 2), 0.02)
+        # The file's moments are the physics': four thousand times its izz spins it up more slowly.
+        heavy = self.write("heavy.yaml", OMNI_SCENARIO.replace("      wheels:", "      body_inertia: [50, 50, 90]\n"
+                                                                 "      wheels:"))
+        self.sanet("run", heavy, "-q", "-o", os.path.join(self.tmp, "heavy"))
+        turned_by = {}
+        for name in ("run", "heavy"):
+            with open(os.path.join(self.tmp, name, "trajectories.csv")) as f:
+                early = [r for r in csv.DictReader(f) if 1.0 <= float(r["time"]) <= 1.3]
+            turned_by[name] = abs(math.remainder(float(early[-1]["theta"]) - float(early[0]["theta"]), 2 * math.pi))
+        self.assertLess(turned_by["heavy"], 0.5 * turned_by["run"], turned_by)
 
     def test_the_robot_turns_about_its_axle_wherever_the_base_link_is(self):
         """A URDF whose base link stands 0.1 m behind the axle, under a root footprint link, and whose
@@ -181,6 +202,10 @@ class UrdfRobot(unittest.TestCase):
              "<inertial> mass above 0"),
             (no_mass, SCENARIO, "robot.urdf:6", "weigh nothing"),
             (text, SCENARIO.replace("right: right_wheel_joint", "right: left_wheel_joint"), "s.yaml:10", "twice"),
+            (text.replace('ixx="0.02" ixy="0" ixz="0" iyy="0.03"', 'ixx="0.2" ixy="0" ixz="0" iyy="0.03"'),
+             SCENARIO, "robot.urdf:6", "moments no body has"),
+            (text, SCENARIO.replace("      wheels:", "      body_inertia: [1, 1, 3]\n      wheels:"), "s.yaml:10",
+             "no body has these moments"),
             (text, SCENARIO.replace("{left: left_wheel_joint, right: right_wheel_joint}",
                                     "{left: right_wheel_joint, right: left_wheel_joint}"), "robot.urdf:47", "swap"),
             (text.replace('<origin xyz="0 0.145 0" rpy="-1.5707963 0 0"/>', '<origin xyz="0.05 0.145 0" '

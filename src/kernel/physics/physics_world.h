@@ -51,13 +51,14 @@ double DistanceFromAbove(Vec2 p, const StaticBox& box);
 // hinges; anisotropic friction (grip along the rolling direction, slip along the wheel axis)
 // stands in for the rollers of a Swedish wheel.
 struct Omni3Spec {
-  double body_radius = 0.19;                                      // m, lower cylinder; the upper one is 80 % of it
-  double body_height = 0.2;                                       // m, both cylinders together
-  double body_mass = 3.2;                                         // kg
-  double ground_clearance = 0.02;                                 // m, under the lower cylinder
-  double wheel_radius = 0.04;                                     // m
-  double wheel_mass = 0.1;                                        // kg each
-  double wheel_distance = 0.13;                                   // m, from the centre to each wheel's contact point
+  double body_radius = 0.19;             // m, lower cylinder; the upper one is 80 % of it
+  double body_height = 0.2;              // m, both cylinders together
+  double body_mass = 3.2;                // kg
+  std::array<double, 3> body_inertia{};  // kg m², principal moments about the body's centre of mass; 0: its shape's
+  double ground_clearance = 0.02;        // m, under the lower cylinder
+  double wheel_radius = 0.04;            // m
+  double wheel_mass = 0.1;               // kg each
+  double wheel_distance = 0.13;          // m, from the centre to each wheel's contact point
   std::array<double, 3> wheel_angles{kPi / 3, kPi, 5 * kPi / 3};  // rad, from forward
   double max_wheel_torque = 0.5;                                  // N m, the motors' limit
   double grip_friction = 1.0;                                     // along the rolling direction
@@ -67,17 +68,18 @@ struct Omni3Spec {
 // Pioneer-P2DX-like differential drive: a box chassis, two driven wheels on one axle and a
 // passive (frictionless) caster behind.
 struct DiffDriveSpec {
-  double body_length = 0.44;       // m
-  double body_width = 0.38;        // m
-  double body_height = 0.22;       // m
-  double body_mass = 9.0;          // kg
-  double ground_clearance = 0.05;  // m
-  double wheel_radius = 0.0975;    // m
-  double wheel_mass = 0.5;         // kg each
-  double axle_length = 0.33;       // m, between the wheels' contact points
-  double caster_offset = 0.2;      // m, behind the axle
-  double caster_radius = 0.03;     // m
-  double max_wheel_torque = 3.0;   // N m
+  double body_length = 0.44;             // m
+  double body_width = 0.38;              // m
+  double body_height = 0.22;             // m
+  double body_mass = 9.0;                // kg
+  std::array<double, 3> body_inertia{};  // kg m², principal moments about the body's centre of mass; 0: its shape's
+  double ground_clearance = 0.05;        // m
+  double wheel_radius = 0.0975;          // m
+  double wheel_mass = 0.5;               // kg each
+  double axle_length = 0.33;             // m, between the wheels' contact points
+  double caster_offset = 0.2;            // m, behind the axle
+  double caster_radius = 0.03;           // m
+  double max_wheel_torque = 3.0;         // N m
   double wheel_friction = 1.0;
 };
 

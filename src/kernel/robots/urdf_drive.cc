@@ -107,6 +107,7 @@ void ApplyDiffDrive(const UrdfRobot& r, const DriveCentre& centre, physics::Diff
   d.axle_length = WheelSpacing(r.wheels[0], r.wheels[1]);
   d.wheel_mass = MeanMass(r.wheels);
   d.body_mass = r.chassis_mass;
+  d.body_inertia = r.chassis_inertia;
   const UrdfShape& s = r.chassis.front();
   const std::array<double, 3> size = Extent(s);
   d.body_length = size[0], d.body_width = size[1], d.body_height = size[2];
@@ -117,6 +118,7 @@ void ApplyOmni3(const UrdfRobot& r, const DriveCentre& centre, physics::Omni3Spe
   o.wheel_radius = MeanRadius(r.wheels);
   o.wheel_mass = MeanMass(r.wheels);
   o.body_mass = r.chassis_mass;
+  o.body_inertia = r.chassis_inertia;
   o.wheel_distance = 0;
   for (std::size_t i = 0; i < 3; ++i) {
     const auto& xyz = r.wheels[i].pose.xyz;

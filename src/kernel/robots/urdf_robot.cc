@@ -148,6 +148,56 @@ std::vector<UrdfJoint> JointsFromRoot(const urdf::ModelInterface& model) {
   return joints;
 }
 
+using Matrix = std::array<std::array<double, 3>, 3>;
+
+Matrix RotationOf(const UrdfPose& p) {
+  const double x = p.xyzw[0], y = p.xyzw[1], z = p.xyzw[2], w = p.xyzw[3];
+  return {{{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+           {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+           {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}}};
+}
+
+// One link's mass: where its centre is (in the base link's frame) and its tensor along the base
+// link's axes (R I R^T).
+struct PointMass {
+  double mass;
+  std::array<double, 3> at;
+  Matrix inertia;
+};
+
+PointMass MassOf(const urdf::Inertial& inertial, const UrdfPose& link) {
+  const UrdfPose centre = Compose(link, inertial.origin);
+  const Matrix r = RotationOf(centre);
+  const Matrix own = {{{inertial.ixx, inertial.ixy, inertial.ixz},
+                       {inertial.ixy, inertial.iyy, inertial.iyz},
+                       {inertial.ixz, inertial.iyz, inertial.izz}}};
+  Matrix turned{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) turned[i][j] += r[i][k] * own[k][l] * r[j][l];
+  return {inertial.mass, centre.xyz, turned};
+}
+
+// The masses' moments about their common centre (parallel axes), along the base link's axes.
+std::array<double, 3> Moments(const std::vector<PointMass>& masses) {
+  double total = 0;
+  std::array<double, 3> centre{};
+  for (const PointMass& m : masses) {
+    total += m.mass;
+    for (int i = 0; i < 3; ++i) centre[i] += m.mass * m.at[i];
+  }
+  if (total <= 0) return {};
+  for (double& c : centre) c /= total;
+  std::array<double, 3> moments{};
+  for (const PointMass& m : masses) {
+    const std::array<double, 3> d = {m.at[0] - centre[0], m.at[1] - centre[1], m.at[2] - centre[2]};
+    const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    for (int i = 0; i < 3; ++i) moments[i] += m.inertia[i][i] + m.mass * (d2 - d[i] * d[i]);
+  }
+  return moments;
+}
+
 std::string JointNames(const urdf::ModelInterface& model) {
   std::string names;
   for (const auto& [name, joint] : model.joints_) names += (names.empty() ? "" : ", ") + name;
@@ -246,12 +296,24 @@ UrdfRobot ReadUrdf(const std::string& file, const std::string& text, const std::
   r.chassis = ReadChassis(file, *base, UrdfPose{}, lines);
   r.root = model->getRoot()->name;
   r.joints = JointsFromRoot(*model);
+  std::vector<PointMass> chassis;
   for (const auto& [name, link] : model->links_) {
     const std::string& link_name = name;  // a lambda cannot capture a structured binding in C++17
     const bool wheel =
         std::any_of(r.wheels.begin(), r.wheels.end(), [&](const UrdfWheel& w) { return w.link == link_name; });
-    if (!wheel && link->inertial) r.chassis_mass += link->inertial->mass;
+    if (wheel || !link->inertial) continue;
+    r.chassis_mass += link->inertial->mass;
+    chassis.push_back(MassOf(*link->inertial, r.links.at(name)));
   }
+  r.chassis_inertia = Moments(chassis);
+  const std::array<double, 3>& i = r.chassis_inertia;
+  if (std::min({i[0], i[1], i[2]}) <= 0) r.chassis_inertia = {};
+  for (int k = 0; k < 3 && i[0] > 0; ++k)
+    if (i[k] > i[(k + 1) % 3] + i[(k + 2) % 3] + 1e-12)
+      throw UrdfError(file, lines.links.count(r.base_link) ? lines.links.at(r.base_link) : lines.robot,
+                      "<link name=\"" + r.base_link + "\">",
+                      "the chassis links' <inertia> give moments no body has (one above the sum of the other two): "
+                      "check ixx, iyy and izz");
   if (r.chassis_mass <= 0)
     throw UrdfError(file, lines.links.count(r.base_link) ? lines.links.at(r.base_link) : lines.robot,
                     "<link name=\"" + r.base_link + "\">",

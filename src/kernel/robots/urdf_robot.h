@@ -71,8 +71,11 @@ struct UrdfRobot {
   std::string text;  // the file's content, whole
   std::string name;  // <robot name>
   std::string base_link;
-  std::vector<UrdfWheel> wheels;          // in the order asked for
-  double chassis_mass = 0;                // kg: every link but the wheels'
+  std::vector<UrdfWheel> wheels;  // in the order asked for
+  double chassis_mass = 0;        // kg: every link but the wheels'
+  // kg m²: those links' <inertia> together, about their common centre of mass, along the base
+  // link's axes (the tensor's diagonal); zeros where the file gives none.
+  std::array<double, 3> chassis_inertia{};
   std::vector<UrdfShape> chassis;         // the base link's collision shapes
   std::map<std::string, UrdfPose> links;  // every link's pose, the joints at zero
   std::string root;                       // the root link (the base link unless base_link names another)

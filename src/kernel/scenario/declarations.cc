@@ -710,6 +710,27 @@ void DriveLimits(Fields<ModelSpec>& f, const char* speed_meaning, const char* tu
   f.Number("max_turn_rate", Member(&ModelSpec::max_turn_rate), "rad/s", 0, 100, turn_meaning);
 }
 
+void BodyInertia(Fields<ModelSpec>& f, std::function<std::array<double, 3>&(ModelSpec&)> at) {
+  f.Custom(
+      {"body_inertia", "list `[ixx, iyy, izz]`", "kg·m²", "its shape's",
+       "each > 0, none above the sum of the other two",
+       "the chassis's principal moments of inertia about its centre of mass (from a URDF: `<inertia>`)"},
+      [at](const Field& v, ModelSpec& m) {
+        const std::vector<Field> items = v.IsSequence() ? v.Items() : std::vector<Field>{};
+        if (items.size() != 3) v.Fail("must be a list of three moments [ixx, iyy, izz] in kg·m²");
+        std::array<double, 3> moments{};
+        for (std::size_t i = 0; i < 3; ++i) moments[i] = items[i].NumberAbove(0, 1e6);
+        for (std::size_t i = 0; i < 3; ++i)
+          if (moments[i] > moments[(i + 1) % 3] + moments[(i + 2) % 3] + 1e-12)
+            v.Fail("no body has these moments: each must be at most the sum of the other two");
+        at(m) = moments;
+      },
+      [at](const ModelSpec& m) {
+        const std::array<double, 3>& moments = at(const_cast<ModelSpec&>(m));
+        return moments[2] > 0 ? Numbers({moments[0], moments[1], moments[2]}) : YAML::Node();
+      });
+}
+
 const Fields<ModelSpec>& BodyFields(ModelKind kind) {
   switch (kind) {
 #define SANET_BODY_FIELDS_CASE(name, Name, kind) \

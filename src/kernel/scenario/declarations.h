@@ -39,6 +39,8 @@ SANET_ROBOT_MODELS(SANET_DECLARE_BODY_FIELDS)
 #undef SANET_DECLARE_BODY_FIELDS
 // The keys every robot's body has: its drive limits.
 void DriveLimits(Fields<robots::ModelSpec>& fields, const char* speed_meaning, const char* turn_meaning);
+// `body_inertia: [ixx, iyy, izz]`, printed only where it is given (or a URDF gives it).
+void BodyInertia(Fields<robots::ModelSpec>& fields, std::function<std::array<double, 3>&(robots::ModelSpec&)> at);
 const Fields<net::NodeRadio>& RadioFields();
 const Fields<sim::ControllerSpec>& ControllerFields();
 

@@ -12,7 +12,8 @@ std::string ShortNumber(double value) {
   const double size = std::fabs(value);
   const bool exponent = size >= 1e5 || (size > 0 && size < 1e-4);
   char text[40];
-  for (int digits = 1; digits <= 17; ++digits) {
+  // Fixed notation of a number under 0.1 needs more decimals than 17 for 17 significant digits.
+  for (int digits = 1; digits <= (exponent ? 17 : 22); ++digits) {
     std::snprintf(text, sizeof text, exponent ? "%.*e" : "%.*f", exponent ? digits - 1 : digits, value);
     if (std::strtod(text, nullptr) == value) break;
   }

@@ -94,9 +94,9 @@ Vehicle* Box2dWorld::add_omni3(const Omni3Spec& spec, const Pose2D& pose) {
   disc.m_radius = static_cast<float>(spec.body_radius);
   body->CreateFixture(&disc, 0);
   const double mass = spec.body_mass + 3 * spec.wheel_mass;
-  SetMass(body, mass, b2Vec2(0, 0),
-          0.5 * spec.body_mass * spec.body_radius * spec.body_radius +
-              3 * spec.wheel_mass * spec.wheel_distance * spec.wheel_distance);
+  const double body_izz =
+      spec.body_inertia[2] > 0 ? spec.body_inertia[2] : 0.5 * spec.body_mass * spec.body_radius * spec.body_radius;
+  SetMass(body, mass, b2Vec2(0, 0), body_izz + 3 * spec.wheel_mass * spec.wheel_distance * spec.wheel_distance);
   std::vector<Wheel> wheels;
   for (double a : spec.wheel_angles) {
     Wheel w;
@@ -125,9 +125,12 @@ Vehicle* Box2dWorld::add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose
   body->CreateFixture(&box, 0);
   const double mass = spec.body_mass + 2 * spec.wheel_mass;
   const double half_axle = spec.axle_length / 2;
+  const double body_izz =
+      spec.body_inertia[2] > 0
+          ? spec.body_inertia[2]
+          : spec.body_mass * (spec.body_length * spec.body_length + spec.body_width * spec.body_width) / 12;
   SetMass(body, mass, b2Vec2(static_cast<float>(-com_behind_axle), 0),
-          spec.body_mass * (spec.body_length * spec.body_length + spec.body_width * spec.body_width) / 12 +
-              2 * spec.wheel_mass * half_axle * half_axle);
+          body_izz + 2 * spec.wheel_mass * half_axle * half_axle);
   const double on_axle = 1 - com_behind_axle / spec.caster_offset;
   const double grip = std::min(spec.wheel_friction, settings_.ground_friction);
   std::vector<Wheel> wheels;

@@ -8,6 +8,12 @@
 namespace sanet::physics::ode {
 namespace {
 
+// A body's principal moments (kg m²) in place of its shape's, when given (all three > 0).
+void SetMoments(dMass& mass, const std::array<double, 3>& moments) {
+  if (moments[0] <= 0 || moments[1] <= 0 || moments[2] <= 0) return;
+  dMassSetParameters(&mass, mass.mass, 0, 0, 0, moments[0], moments[1], moments[2], 0, 0, 0);
+}
+
 // Places a freshly made body at `local` (in the frame of a robot standing at `pose`, z from the
 // ground) with the robot's yaw.
 void Place(dBodyID body, const Pose2D& pose, Vec3 local) {
@@ -32,6 +38,7 @@ Vehicle* OdeWorld::add_omni3(const Omni3Spec& spec, const Pose2D& pose) {
   Place(chassis, pose, {0, 0, z_body});
   dMass mass;
   dMassSetCylinderTotal(&mass, spec.body_mass, 3, spec.body_radius, spec.body_height);
+  SetMoments(mass, spec.body_inertia);
   dBodySetMass(chassis, &mass);
   vehicles_.push_back(std::make_unique<OdeVehicle>(chassis, Vec3{0, 0, 0}));
   OdeVehicle* robot = vehicles_.back().get();
@@ -70,6 +77,7 @@ Vehicle* OdeWorld::add_diffdrive(const DiffDriveSpec& spec, const Pose2D& pose) 
   Place(chassis, pose, {-com_behind_axle, 0, z_body});
   dMass mass;
   dMassSetBoxTotal(&mass, spec.body_mass, spec.body_length, spec.body_width, spec.body_height);
+  SetMoments(mass, spec.body_inertia);
   dBodySetMass(chassis, &mass);
   vehicles_.push_back(std::make_unique<OdeVehicle>(chassis, Vec3{com_behind_axle, 0, 0}));
   OdeVehicle* robot = vehicles_.back().get();

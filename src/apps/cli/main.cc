@@ -26,6 +26,7 @@
 #include "launch/radio_taps.h"
 #include "launch_command.h"
 #include "link_curve_command.h"
+#include "map_command.h"
 #include "merge_command.h"
 #include "options.h"
 #include "python_controllers/python_controller.h"
@@ -359,9 +360,9 @@ int main(int argc, char** argv) {
       "Physics (ODE) and network (ns-3) advance on one clock; controllers see one portable interface."};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("sanet ") + SanetVersion() + " (" + SanetCommit() + ")");
-  const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app),    AddReport(app),
-                                         AddServe(app), AddAgent(app),    AddLaunch(app),   AddList(app),
-                                         AddView(app),  AddMerge(app),    AddLinkCurve(app)};
+  const std::vector<Command> commands = {AddRun(app),   AddValidate(app), AddSweep(app),     AddReport(app),
+                                         AddServe(app), AddAgent(app),    AddLaunch(app),    AddList(app),
+                                         AddView(app),  AddMerge(app),    AddLinkCurve(app), AddMap(app)};
   if (UnknownCommand(argc, argv, app)) return kExitScenarioError;
   try {
     app.parse(argc, argv);

@@ -37,7 +37,7 @@ Marker ObstacleMarker(const sim::Obstacle& o, int id, double t) {
   Marker m = Shape("world", t, "obstacles", id, Marker::CUBE);
   Place(m, o.box.center.x, o.box.center.y, o.box.center.z, o.box.yaw);
   m.scale.x = o.box.size.x, m.scale.y = o.box.size.y, m.scale.z = o.box.size.z;
-  m.color = o.kind == "wall" ? Colour(0.55f, 0.55f, 0.6f) : Colour(0.7f, 0.5f, 0.3f);
+  m.color = o.kind == "wall" || o.kind == "map" ? Colour(0.55f, 0.55f, 0.6f) : Colour(0.7f, 0.5f, 0.3f);
   return m;
 }
 

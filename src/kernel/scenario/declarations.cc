@@ -8,6 +8,7 @@
 #include "scenario/energy_fields.h"
 #include "scenario/link_variation_fields.h"
 #include "scenario/lr_wpan_fields.h"
+#include "scenario/map_field.h"
 #include "scenario/sensor_fields.h"
 
 namespace sanet::scenario {
@@ -41,13 +42,6 @@ std::string MaterialList(const std::string& quote = "") {
   std::string list;
   for (const std::string& name : net::MaterialNames()) list += (list.empty() ? "" : ", ") + quote + name + quote;
   return list;
-}
-
-net::Material ReadMaterial(const Field& v) {
-  const std::string text = v.Text();
-  const auto material = net::MaterialNamed(text);
-  if (!material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
-  return *material;
 }
 
 sim::Obstacle ReadBox(const Field& box) {
@@ -87,6 +81,7 @@ sim::Obstacle ReadObstacle(const Field& f) {
 YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
   YAML::Node list(YAML::NodeType::Sequence);
   for (const sim::Obstacle& o : obstacles) {
+    if (o.from_map) continue;  // printed with world.map
     YAML::Node box;
     box["center"] = Numbers({o.box.center.x, o.box.center.y});
     box["size"] = Numbers({o.box.size.x, o.box.size.y, o.box.size.z});
@@ -98,10 +93,17 @@ YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
     item["box"] = box;
     list.push_back(item);
   }
-  return list;
+  return list.size() == 0 ? YAML::Node() : list;
 }
 
 }  // namespace
+
+net::Material ReadMaterial(const Field& v) {
+  const std::string text = v.Text();
+  const auto material = net::MaterialNamed(text);
+  if (!material) v.Fail("unknown material '" + text + "' (expected one of: " + MaterialList() + ")");
+  return *material;
+}
 
 const Fields<sim::Charger>& ChargerFields() {
   static const Fields<sim::Charger> fields = [] {
@@ -183,7 +185,8 @@ const Fields<sim::RunSpec>& WorldFields() {
           if (!v.node().IsNull())
             for (const Field& o : v.Items()) s.obstacles.push_back(ReadObstacle(o));
         },
-        [](const RunSpec& s) { return s.obstacles.empty() ? YAML::Node() : PrintObstacles(s.obstacles); });
+        [](const RunSpec& s) { return PrintObstacles(s.obstacles); });
+    AddWorldMap(f);  // after obstacles: its boxes come after theirs
     AddChargers(f);
     f.Custom(
         {"obstacle_material", "text", "", "`none`", MaterialList("`"),

@@ -38,6 +38,8 @@ const Fields<robots::ModelSpec>& BodyFields(robots::ModelKind kind);
 SANET_ROBOT_MODELS(SANET_DECLARE_BODY_FIELDS)
 #undef SANET_DECLARE_BODY_FIELDS
 // The keys every robot's body has: its drive limits.
+// A radio material's name (net/materials.h), or an error listing them.
+net::Material ReadMaterial(const Field& v);
 void DriveLimits(Fields<robots::ModelSpec>& fields, const char* speed_meaning, const char* turn_meaning);
 // `body_inertia: [ixx, iyy, izz]`, printed only where it is given (or a URDF gives it).
 void BodyInertia(Fields<robots::ModelSpec>& fields, std::function<std::array<double, 3>&(robots::ModelSpec&)> at);

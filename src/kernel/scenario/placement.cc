@@ -17,6 +17,18 @@ long long CellKey(long long cx, long long cy) { return cx * 4000003LL + cy; }
 
 std::string At(const sim::NodeSpec& n) { return n.name + " at (" + Metres(n.pose.x) + ", " + Metres(n.pose.y) + ")"; }
 
+// "world.obstacles[2], a wall (line 9)", or a box of world.map's.
+std::string ObstacleNamed(const sim::RunSpec& run, std::size_t i, const std::vector<int>& obstacle_lines) {
+  const sim::Obstacle& o = run.obstacles[i];
+  if (!o.from_map)
+    return "world.obstacles[" + std::to_string(i) + "], a " + o.kind + " (line " +
+           std::to_string(obstacle_lines.at(i)) + ")";
+  const double hx = o.box.size.x / 2, hy = o.box.size.y / 2;
+  return "a wall of world.map " + run.map->file + " (its box from (" + Metres(o.box.center.x - hx) + ", " +
+         Metres(o.box.center.y - hy) + ") to (" + Metres(o.box.center.x + hx) + ", " + Metres(o.box.center.y + hy) +
+         ") m" + (o.box.yaw != 0 ? " in the map's turned frame" : "") + ")";
+}
+
 void CheckObstacles(const std::string& file, const sim::RunSpec& run, const std::vector<NodePlace>& places,
                     const std::vector<int>& obstacle_lines) {
   for (NodeId id = 0; id < run.nodes.size(); ++id) {
@@ -25,13 +37,13 @@ void CheckObstacles(const std::string& file, const sim::RunSpec& run, const std:
     for (std::size_t i = 0; i < run.obstacles.size(); ++i) {
       const double gap = physics::DistanceFromAbove(n.pose.position(), run.obstacles[i].box);
       if (gap >= radius) continue;
-      throw ScenarioError(file, places[id].line, places[id].field,
-                          At(n) + " is inside world.obstacles[" + std::to_string(i) + "], a " + run.obstacles[i].kind +
-                              " (line " + std::to_string(obstacle_lines.at(i)) + "): its body reaches " +
-                              Metres(radius) + " m around its pose, and " +
-                              (gap > 0 ? "the " + run.obstacles[i].kind + " is " + Metres(gap) + " m away"
-                                       : "its pose is inside the " + run.obstacles[i].kind) +
-                              "; move one of them");
+      const std::string what = run.obstacles[i].from_map ? "wall" : run.obstacles[i].kind;
+      throw ScenarioError(
+          file, places[id].line, places[id].field,
+          At(n) + " is inside " + ObstacleNamed(run, i, obstacle_lines) + ": its body reaches " + Metres(radius) +
+              " m around its pose, and " +
+              (gap > 0 ? "the " + what + " is " + Metres(gap) + " m away" : "its pose is inside the " + what) +
+              "; move one of them");
     }
   }
 }

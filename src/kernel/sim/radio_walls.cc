@@ -18,6 +18,12 @@ std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec, double frequency
   std::vector<net::RadioObstacle> walls;
   if (!spec.network) return walls;
   for (const Obstacle& o : spec.obstacles) {
+    if (o.from_map && spec.map) {
+      const double t = spec.map->wall_thickness;
+      const double per_m = net::SlabLossDb(o.material.value_or(spec.obstacle_material), t, frequency) / t;
+      if (per_m > 0) walls.push_back({o.box, 0, per_m});
+      continue;
+    }
     const double loss = o.radio_loss_db.value_or(
         net::SlabLossDb(o.material.value_or(spec.obstacle_material), RadioThickness(o), frequency));
     if (loss > 0 || o.radio_loss_db_per_m > 0) walls.push_back({o.box, loss, o.radio_loss_db_per_m});

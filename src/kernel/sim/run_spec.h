@@ -6,6 +6,7 @@
 // here: sim never sees them (sections/).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -45,6 +46,23 @@ struct Obstacle {
   std::optional<net::Material> material;
   std::optional<double> radio_loss_db;  // dB per crossing
   double radio_loss_db_per_m = 0;       // dB/m inside it
+  bool from_map = false;                // one of world.map's boxes (printed with the map, not as an obstacle)
+};
+
+// world.map: a ROS map's blocked cells, merged into boxes (scenario/map_field.h). The boxes are
+// kept in cells so that the effective scenario carries them exactly, without the map's files.
+struct WorldMap {
+  std::string file;          // the map's YAML, as the scenario named it
+  double wall_height = 2.5;  // m
+  // m: the walls' material costs a radio its slab loss at this thickness per this much path
+  // inside the walls (a wall's cells may be split into several boxes across it).
+  double wall_thickness = 0.15;
+  std::optional<net::Material> material;  // of its walls; unset: the world's obstacle_material
+  bool unknown_blocked = false;           // unknown cells are walls too
+  double resolution = 0;                  // m per cell
+  std::array<double, 3> origin{};         // x, y (m), yaw (rad) of the lower-left cell's corner
+  int columns = 0, rows = 0;              // the map's size in cells
+  std::vector<std::array<int, 4>> boxes;  // column, row, columns, rows of each box
 };
 
 // Something that happens to a node at a given time.
@@ -77,7 +95,8 @@ struct RunSpec {
   // 2: the physics step runs on a second thread while ns-3 processes the network events of the
   // same step (same results as 1).
   int threads = 1;
-  std::vector<Obstacle> obstacles;
+  std::vector<Obstacle> obstacles;  // world.obstacles, then world.map's boxes
+  std::optional<WorldMap> map;
   net::Material obstacle_material = net::Material::kNone;  // of obstacles that name none
   std::vector<Charger> chargers;
   std::vector<NodeSpec> nodes;

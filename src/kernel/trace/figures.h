@@ -19,7 +19,7 @@ struct Track {
 
 // What the figures draw, in world metres; the writers know nothing of how a run is described.
 struct FigureObstacle {
-  std::string kind;  // "box" or "wall", the tooltip
+  std::string kind;  // "box", "wall" or "map" (a box of world.map), the tooltip
   Vec2 center, size;
   double yaw = 0;
 };

@@ -78,7 +78,7 @@ function buildScene(run, poses, box) {
   grid.rotation.x = Math.PI / 2; grid.position.set(box.cx, box.cy, -0.01); scene.add(grid);
   for (const [kind, cx, cy, length, width, height, yaw] of run.obstacles) {
     const mesh = new THREE.Mesh(new THREE.BoxGeometry(length, width, height),
-                                new THREE.MeshLambertMaterial({ color: kind === "wall" ? 0x777777 : 0x999999 }));
+                                new THREE.MeshLambertMaterial({ color: kind === "wall" || kind === "map" ? 0x777777 : 0x999999 }));
     mesh.position.set(cx, cy, height / 2); mesh.rotation.z = yaw; scene.add(mesh);
   }
   const moteSize = Math.max(0.1, box.size / 120), robotSize = Math.max(0.4, box.size / 70);

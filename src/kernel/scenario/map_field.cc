@@ -1,0 +1,114 @@
+#include "scenario/map_field.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "scenario/declarations.h"
+#include "scenario/map_boxes.h"
+#include "scenario/ros_map.h"
+
+namespace sanet::scenario {
+namespace {
+
+constexpr const char* kKeys[] = {"file",       "height", "thickness", "material", "unknown",
+                                 "resolution", "origin", "cells",     "boxes"};
+
+// The map's files, read now: the scenario's own map.
+void FromFile(const Field& v, sim::WorldMap& m) {
+  std::filesystem::path path(m.file);
+  if (path.is_relative()) path = std::filesystem::path(v.file()).parent_path() / path;
+  if (!std::filesystem::exists(path)) v.Require("file").Fail("no map file " + path.lexically_normal().string());
+  const OccupancyMap map = ReadRosMap(path.lexically_normal().string());
+  m.resolution = map.resolution, m.origin = map.origin, m.columns = map.width, m.rows = map.height;
+  const bool unknown_blocked = m.unknown_blocked;
+  for (const CellRect& r : MergeCells(map.width, map.height, [&](int column, int row) {
+         const std::int8_t cell = map.at(column, row);
+         return cell == OccupancyMap::kOccupied || (unknown_blocked && cell == OccupancyMap::kUnknown);
+       }))
+    m.boxes.push_back({r.column, r.row, r.columns, r.rows});
+}
+
+// The boxes as the effective scenario printed them.
+void FromBoxes(const Field& v, sim::WorldMap& m) {
+  m.resolution = v.Require("resolution").NumberAbove(0, 1e3);
+  const std::vector<double> origin = v.Require("origin").Numbers(3);
+  m.origin = {origin[0], origin[1], origin[2]};
+  const std::vector<double> cells = v.Require("cells").Numbers(2);
+  m.columns = static_cast<int>(cells[0]), m.rows = static_cast<int>(cells[1]);
+  for (const Field& box : v.Require("boxes").Items()) {
+    const std::vector<double> b = box.Numbers(4);
+    if (b[0] < 0 || b[1] < 0 || b[2] < 1 || b[3] < 1 || b[0] + b[2] > m.columns || b[1] + b[3] > m.rows)
+      box.Fail("a box is [column, row, columns, rows] within the map's cells");
+    m.boxes.push_back({static_cast<int>(b[0]), static_cast<int>(b[1]), static_cast<int>(b[2]), static_cast<int>(b[3])});
+  }
+}
+
+void ReadWorldMap(const Field& v, sim::RunSpec& s) {
+  v.ExpectKeys(std::vector<std::string>(std::begin(kKeys), std::end(kKeys)));
+  sim::WorldMap m;
+  m.file = v.Require("file").Text();
+  if (auto height = v.Get("height")) m.wall_height = height->NumberAbove(0, 1000);
+  if (auto thickness = v.Get("thickness")) m.wall_thickness = thickness->NumberAbove(0, 100);
+  if (auto material = v.Get("material")) m.material = ReadMaterial(*material);
+  if (auto unknown = v.Get("unknown")) {
+    const std::string text = unknown->Text();
+    if (text != "free" && text != "blocked") unknown->Fail("unknown value '" + text + "' (expected free or blocked)");
+    m.unknown_blocked = text == "blocked";
+  }
+  if (v.Get("boxes"))
+    FromBoxes(v, m);
+  else
+    FromFile(v, m);
+  AppendMapObstacles(m, s.obstacles);
+  s.map = std::move(m);
+}
+
+YAML::Node PrintWorldMap(const sim::RunSpec& s) {
+  if (!s.map) return YAML::Node();
+  const sim::WorldMap& m = *s.map;
+  YAML::Node out;
+  out["file"] = m.file;
+  out["height"] = NumberNode(m.wall_height);
+  out["thickness"] = NumberNode(m.wall_thickness);
+  if (m.material) out["material"] = net::MaterialName(*m.material);
+  out["unknown"] = m.unknown_blocked ? "blocked" : "free";
+  out["resolution"] = NumberNode(m.resolution);
+  YAML::Node origin(YAML::NodeType::Sequence), cells(YAML::NodeType::Sequence), boxes(YAML::NodeType::Sequence);
+  for (double o : m.origin) origin.push_back(NumberNode(o));
+  cells.push_back(m.columns), cells.push_back(m.rows);
+  origin.SetStyle(YAML::EmitterStyle::Flow), cells.SetStyle(YAML::EmitterStyle::Flow);
+  for (const auto& b : m.boxes) {
+    YAML::Node box(YAML::NodeType::Sequence);
+    for (int n : b) box.push_back(n);
+    box.SetStyle(YAML::EmitterStyle::Flow);
+    boxes.push_back(box);
+  }
+  out["origin"] = origin, out["cells"] = cells, out["boxes"] = boxes;
+  return out;
+}
+
+}  // namespace
+
+void AppendMapObstacles(const sim::WorldMap& m, std::vector<sim::Obstacle>& obstacles) {
+  const double c = std::cos(m.origin[2]), s = std::sin(m.origin[2]), r = m.resolution;
+  for (const auto& [column, row, columns, rows] : m.boxes) {
+    // The box's centre in the map's frame, turned by the origin's yaw about its corner.
+    const double x = (column + columns / 2.0) * r, y = (row + rows / 2.0) * r;
+    sim::Obstacle o{"map",
+                    {{m.origin[0] + c * x - s * y, m.origin[1] + s * x + c * y, m.wall_height / 2},
+                     {columns * r, rows * r, m.wall_height},
+                     m.origin[2]},
+                    m.material,
+                    {}};
+    o.from_map = true;
+    obstacles.push_back(o);
+  }
+}
+
+void AddWorldMap(Fields<sim::RunSpec>& f) {
+  f.Custom({"map", "mapping `{file, height, thickness, material, unknown}`", "", "none", "",
+            "a building from a ROS map (map_server's YAML and image): see [world.map](#worldmap)"},
+           ReadWorldMap, PrintWorldMap);
+}
+
+}  // namespace sanet::scenario

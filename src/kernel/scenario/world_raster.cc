@@ -1,0 +1,81 @@
+#include "scenario/world_raster.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sanet::scenario {
+namespace {
+
+constexpr double kMargin = 1.0;  // m around what the world holds
+
+struct Bounds {
+  Vec2 low{HUGE_VAL, HUGE_VAL}, high{-HUGE_VAL, -HUGE_VAL};
+  void Add(Vec2 p) {
+    low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+  }
+};
+
+// A box's corners seen from above.
+std::array<Vec2, 4> Corners(const physics::StaticBox& b) {
+  const double c = std::cos(b.yaw), s = std::sin(b.yaw), hx = b.size.x / 2, hy = b.size.y / 2;
+  std::array<Vec2, 4> out;
+  int i = 0;
+  for (const double sx : {-1.0, 1.0})
+    for (const double sy : {-1.0, 1.0})
+      out[i++] = {b.center.x + c * sx * hx - s * sy * hy, b.center.y + s * sx * hx + c * sy * hy};
+  return out;
+}
+
+bool Inside(const physics::StaticBox& b, Vec2 p) {
+  const double c = std::cos(b.yaw), s = std::sin(b.yaw), dx = p.x - b.center.x, dy = p.y - b.center.y;
+  return std::fabs(c * dx + s * dy) <= b.size.x / 2 && std::fabs(-s * dx + c * dy) <= b.size.y / 2;
+}
+
+Bounds WorldBounds(const sim::RunSpec& spec) {
+  Bounds b;
+  for (const sim::Obstacle& o : spec.obstacles)
+    for (const Vec2 corner : Corners(o.box)) b.Add(corner);
+  for (const sim::NodeSpec& n : spec.nodes) b.Add({n.pose.x, n.pose.y});
+  if (b.low.x > b.high.x) b.Add({0, 0});
+  b.low = b.low - Vec2{kMargin, kMargin}, b.high = b.high + Vec2{kMargin, kMargin};
+  return b;
+}
+
+// Where the grid's lines fall: on the world map's when it has one of this resolution and no turn.
+Vec2 Anchor(const sim::RunSpec& spec, double resolution) {
+  if (spec.map && spec.map->resolution == resolution && spec.map->origin[2] == 0)
+    return {spec.map->origin[0], spec.map->origin[1]};
+  return {0, 0};
+}
+
+}  // namespace
+
+OccupancyMap RasterizeWorld(const sim::RunSpec& spec, double resolution) {
+  const Bounds b = WorldBounds(spec);
+  const Vec2 anchor = Anchor(spec, resolution);
+  OccupancyMap map;
+  map.resolution = resolution;
+  // (1e-6 of a cell: a bound on a grid line stays on it whatever the rounding)
+  const double x0 = anchor.x + std::floor((b.low.x - anchor.x) / resolution + 1e-6) * resolution;
+  const double y0 = anchor.y + std::floor((b.low.y - anchor.y) / resolution + 1e-6) * resolution;
+  map.origin = {x0, y0, 0};
+  map.width = static_cast<int>(std::ceil((b.high.x - x0) / resolution - 1e-6));
+  map.height = static_cast<int>(std::ceil((b.high.y - y0) / resolution - 1e-6));
+  map.cells.assign(static_cast<std::size_t>(map.width) * map.height, OccupancyMap::kFree);
+  for (const sim::Obstacle& o : spec.obstacles) {
+    Bounds box;
+    for (const Vec2 corner : Corners(o.box)) box.Add(corner);
+    const int c0 = std::max(0, static_cast<int>(std::floor((box.low.x - x0) / resolution)));
+    const int c1 = std::min(map.width - 1, static_cast<int>(std::floor((box.high.x - x0) / resolution)));
+    const int r0 = std::max(0, static_cast<int>(std::floor((box.low.y - y0) / resolution)));
+    const int r1 = std::min(map.height - 1, static_cast<int>(std::floor((box.high.y - y0) / resolution)));
+    for (int row = r0; row <= r1; ++row)
+      for (int column = c0; column <= c1; ++column)
+        if (Inside(o.box, {x0 + (column + 0.5) * resolution, y0 + (row + 0.5) * resolution}))
+          map.cells[static_cast<std::size_t>(row) * map.width + column] = OccupancyMap::kOccupied;
+  }
+  return map;
+}
+
+}  // namespace sanet::scenario

@@ -5,7 +5,9 @@ this script against the same world built by hand:
 1. Loading: a 4000 x 4000-cell map (200 x 200 m at 0.05 m: 20 x 20 rooms of 10 m with 0.2 m
    walls and 2 m doorways, written as a PGM here) through `sanet validate`, against the same
    walls typed as `wall:` obstacles; and `sanet map` writing the map's world back.
-2. Per frame: 400 motes, one in each room, each broadcasting every 2 s (at its own phase), heard
+2. Physics: a diffdrive with its laser driving round a room for 60 s, in the map, among the
+   same walls typed by hand, and in an empty world (the baseline).
+3. Per frame: 400 motes, one in each room, each broadcasting every 2 s (at its own phase), heard
    through the concrete walls by its neighbours or not, for `--seconds` of simulated time: the
    wall time of the map's world against the hand-made one's and against no wall loss at all
    (material none), the frames received, and the wall time per frame received.
@@ -77,6 +79,22 @@ def worlds(folder):
             "none": "  obstacle_material: none\n  obstacles:\n" + hand}
 
 
+ROBOT = """nodes:
+  - name: r
+    model: diffdrive
+    pose: [3, 3, 0]
+    controller: {name: waypoint, params: {waypoints: [[3, 8], [8, 8], [8, 3], [3, 3]], speed: 0.4}}
+"""
+
+
+def robot_worlds(folder):
+    """A laser robot driving round its room for 60 s: in the map, among the same walls by hand,
+    and with no walls (its baseline); no radio, no wall loss."""
+    w = worlds(folder)
+    return {"empty": "", "hand": "world:\n" + w["none"] + "\n",
+            "map": "world:\n  map: {file: " + os.path.join(folder, "big.yaml") + "}\n"}
+
+
 def timed(command, repeat):
     walls_s = []
     for _ in range(repeat):
@@ -110,6 +128,15 @@ def main():
         boxes = subprocess.run([a.sanet, "validate", paths["map"], "--print"], capture_output=True, text=True,
                                check=True).stdout.count("      - [")
         print(f"the map's boxes: {boxes}")
+        print(f"\n{'a robot, 60 s':>22} {'wall s':>8} {'ratio':>6}")
+        base = None
+        for name, world in robot_worlds(tmp).items():
+            path = os.path.join(tmp, "robot-" + name + ".yaml")
+            with open(path, "w") as f:
+                f.write("name: robot\nduration: 60\n" + world + ROBOT)
+            wall, _ = measure(a.sanet, path, os.path.join(tmp, "robot-run-" + name), 60, [], a.repeat)
+            base = base or wall
+            print(f"{name:>22} {wall:8.3f} {wall / base:6.2f}")
         print(f"\n{'run of 400 motes':>22} {'wall s':>8} {'ratio':>6} {'received':>10} {'us/frame':>9} {'ratio':>6}")
         base = None
         for name in ("hand", "map", "none"):

@@ -138,7 +138,8 @@ class MapServerRules(Sanet, unittest.TestCase):
         pgm(os.path.join(self.tmp, "m.pgm"), rows)
         yaml = map_yaml(self.tmp, "m.pgm", resolution=0.5, origin=(-3, 2, 0))
         s = scenario(self.tmp, "{file: " + yaml + ", height: 2, material: brick}",
-                     nodes="  - {name: m, model: mote, pose: [0, 3, 0]}\n")
+                     nodes="  - {name: m, model: mote, pose: [0, 3, 0]}\n",
+                     extra="network: {radio: 802.11b, routing: none}\n")
         out = os.path.join(self.tmp, "out")
         self.sanet("run", s, "-q", "-o", out)
         with sqlite3.connect(os.path.join(out, "trace.sqlite")) as db:
@@ -178,9 +179,11 @@ class MapServerRules(Sanet, unittest.TestCase):
             self.assertEqual(done.returncode, 2, done.stderr)
             self.assertIn(where, done.stderr)
             self.assertIn(words, done.stderr)
+        map_yaml(self.tmp, "m.png")  # a good map again: the scenario's own mistakes
         for block, where, words in (("{file: none.yaml}", "s.yaml:4", "no map file"),
                                     ("{file: m.yaml, unknown: maybe}", "s.yaml:4", "free or blocked"),
-                                    ("{file: m.yaml, material: cheese}", "s.yaml:4", "unknown material")):
+                                    ("{file: m.yaml, material: cheese}", "s.yaml:4", "unknown material"),
+                                    ("{file: m.yaml, material: brick}", "s.yaml:4", "needs a 'network'")):
             done = self.sanet("validate", scenario(self.tmp, block), check=False)
             self.assertEqual(done.returncode, 2, done.stderr)
             self.assertIn(where, done.stderr)
@@ -314,7 +317,8 @@ class RoundTrip(Sanet, unittest.TestCase):
             f.write(WORLD)
         self.sanet("map", built, "-o", os.path.join(self.tmp, "maps"))
         s = scenario(self.tmp, "{file: maps/built.yaml, material: concrete}",
-                     nodes="  - {name: r, model: diffdrive, pose: [5, 2.5, 0]}\n")
+                     nodes="  - {name: r, model: diffdrive, pose: [5, 2.5, 0]}\n",
+                     extra="network: {radio: 802.11b, routing: none}\n")
         effective = os.path.join(self.tmp, "effective.yaml")
         with open(effective, "w") as f:
             f.write(self.sanet("validate", s, "--print").stdout)

@@ -406,6 +406,8 @@ void CheckObstacleRadioNeedsANetwork(const Field& root, const Scenario& sc) {
   if (run.network || !world) return;
   constexpr const char* kNeeds = "is a radio loss: it needs a 'network' section in the scenario";
   if (run.obstacle_material != net::Material::kNone) world->Require("obstacle_material").Fail(kNeeds);
+  if (run.map && run.map->material.value_or(net::Material::kNone) != net::Material::kNone)
+    world->Require("map").Require("material").Fail(kNeeds);
   const auto obstacles = world->Get("obstacles");
   if (!obstacles || obstacles->node().IsNull()) return;
   const std::vector<Field> items = obstacles->Items();  // in the order run.obstacles was read

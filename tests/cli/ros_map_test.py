@@ -157,6 +157,45 @@ class MapServerRules(Sanet, unittest.TestCase):
         self.assertIn("s.yaml:6", done.stderr)
         self.assertIn("inside a wall of world.map m.yaml (its box from (0.50, 2.00) to (1.00, 5.00) m)", done.stderr)
 
+    def test_pgm_depths_colour_and_a_turned_origin(self):
+        # A 16-bit PGM (two bytes, big-endian) and one of maxval 100: values scaled to 0..255.
+        with open(os.path.join(self.tmp, "m.pgm"), "wb") as f:
+            f.write(b"P5\n# sixteen bits\n3 1\n65535\n" + bytes([0x00, 0xFF, 0xFE, 0x00, 0xFF, 0xFF]))
+        s = scenario(self.tmp, "{file: " + map_yaml(self.tmp, "m.pgm") + "}")
+        self.assertEqual(self.cells(s), {(0, 0)})  # 0x00FF is dark: a wall; 0xFE00 and 0xFFFF light
+        with open(os.path.join(self.tmp, "m.pgm"), "wb") as f:
+            f.write(b"P5 3 1 100\n" + bytes([0, 50, 100]))
+        self.assertEqual(self.cells(s), {(0, 0)})  # 100 is white, 50 (p 0.5) unknown
+        self.assertEqual(self.cells(scenario(self.tmp, "{file: m.yaml, unknown: blocked}")), {(0, 0), (1, 0)})
+        # A colour PNG: red's luma (76) is a wall at occupied_thresh 0.65, blue's (29) too, green's (150) not.
+        with open(os.path.join(self.tmp, "m.png"), "wb") as f:
+            rows = [[255, 0, 0, 0, 0, 255, 0, 255, 0]]
+            def chunk(kind, data):
+                body = kind + data
+                return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
+            f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 3, 1, 8, 2, 0, 0, 0)) +
+                    chunk(b"IDAT", zlib.compress(b"\x00" + bytes(rows[0]))) + chunk(b"IEND", b""))
+        self.assertEqual(self.cells(scenario(self.tmp, "{file: " + map_yaml(self.tmp, "m.png") + "}")), {(0, 0), (1, 0)})
+        # A turned origin: one wall cell at column 2 of a map turned 90 degrees about (1, 1).
+        png(os.path.join(self.tmp, "m.png"), [[254, 254, 0, 254]])
+        map_yaml(self.tmp, "m.png", resolution=1, origin=(1, 1, math.pi / 2))
+        out = os.path.join(self.tmp, "turned")
+        self.sanet("run", scenario(self.tmp, "{file: m.yaml}"), "-q", "-o", out)
+        with sqlite3.connect(os.path.join(out, "trace.sqlite")) as db:
+            (x, y, yaw), = db.execute("SELECT cx, cy, yaw FROM obstacles").fetchall()
+        self.assertAlmostEqual(x, 0.5), self.assertAlmostEqual(y, 3.5), self.assertAlmostEqual(yaw, math.pi / 2)
+
+    def test_a_cut_short_or_empty_pgm_is_refused(self):
+        map_yaml(self.tmp, "m.pgm")
+        s = scenario(self.tmp, "{file: m.yaml}")
+        for content, words in ((b"P5\n10 10\n255\n" + bytes(50), "cut short"), (b"P5\n0 0\n255\n", "header")):
+            with open(os.path.join(self.tmp, "m.pgm"), "wb") as f:
+                f.write(content)
+            done = self.sanet("validate", s, check=False)
+            self.assertEqual(done.returncode, 2, done.stderr)
+            self.assertIn("m.yaml:1", done.stderr)
+            self.assertIn(words, done.stderr)
+
     def test_faults_name_the_file_the_line_and_the_key(self):
         png(os.path.join(self.tmp, "m.png"), [self.GREYS])
         cases = [
@@ -205,14 +244,17 @@ class Ranger:
 
 
 class InTheMapsWorld(Sanet, unittest.TestCase):
-    """A wall along column 60 and 61 of a map of 0.05 m cells (x from 3.0 to 3.1 m), the whole
-    height: the laser and the radio meet it there."""
+    """A ragged wall of a map of 0.05 m cells: column 60 (x from 3.0 to 3.05 m) the whole height,
+    and column 61 beside it on every other row (the odd rows from the bottom), as SLAM draws a
+    wall: the map's boxes are column 60 and single cells beside it. The laser and the radio meet
+    it there."""
 
     def setUp(self):
         self.tmp = tempfile.mkdtemp()
         rows = [[254] * 100 for _ in range(60)]
-        for row in rows:
-            row[60] = row[61] = 0
+        for i, row in enumerate(rows):
+            row[60] = 0
+            row[61] = 0 if (59 - i) % 2 == 1 else 254
         pgm(os.path.join(self.tmp, "m.pgm"), rows)
         map_yaml(self.tmp, "m.pgm", resolution=0.05)
 
@@ -222,7 +264,7 @@ class InTheMapsWorld(Sanet, unittest.TestCase):
     def test_a_laser_reads_the_distance_to_the_maps_wall(self):
         with open(os.path.join(self.tmp, "ranger.py"), "w") as f:
             f.write(RANGER)
-        s = scenario(self.tmp, "{file: m.yaml}", nodes="  - name: r\n    model: diffdrive\n    pose: [1, 1.5, 0]\n"
+        s = scenario(self.tmp, "{file: m.yaml}", nodes="  - name: r\n    model: diffdrive\n    pose: [1, 1.525, 0]\n"
                      "    sensors: {laser: {mount_x: 0.2, max_range: 5}}\n"
                      "    controller: {python: \"ranger:Ranger\", rate: 10}\n")
         out = os.path.join(self.tmp, "out")
@@ -234,32 +276,40 @@ class InTheMapsWorld(Sanet, unittest.TestCase):
         self.assertAlmostEqual(float(said[0].split()[1]), 3.0 - 1.2, delta=0.05)
 
     def test_a_radio_link_through_the_maps_wall_loses_what_a_wall_built_by_hand_loses(self):
-        """A link curve along y = 1.5 from x = 2 across the wall: the received power beyond it, with
-        the map's wall of concrete 0.1 m thick, equals that with the same wall built by hand."""
+        """Link curves across the wall, square-on (along y = 1.5 from x = 1.5) and slanted (45
+        degrees from (1.5, 0.2)): the received power beyond it, with the map's wall of concrete
+        0.1 m thick (two boxes side by side across it: its columns), equals that with the same
+        wall built by hand, and is well below the power with no wall loss."""
+        for along in ("1.5,1.575,9,1.575", "1.5,0.2,4.5,3.2"):
+            with self.subTest(along=along):
+                self.compare(along)
+
+    def compare(self, along):
         radio = "network: {radio: 802.11b, routing: none}\n"
         powers = {}
         for name, world in (("map", "{file: m.yaml, material: concrete, thickness: 0.1}"),
                             ("none", "{file: m.yaml, material: none}")):
             s = scenario(self.tmp, world, extra=radio)
-            powers[name] = self.curve(s, name)
+            powers[name] = self.curve(s, name, along)
         hand = os.path.join(self.tmp, "hand.yaml")
         with open(hand, "w") as f:
             f.write("name: s\nduration: 1\nworld:\n  obstacles:\n    - wall: {from: [3.05, 0], to: [3.05, 3], "
                     "thickness: 0.1, material: concrete}\n" + radio +
                     "nodes:\n  - {name: m, model: mote, pose: [50, 50, 0]}\n")
-        powers["hand"] = self.curve(hand, "hand")
+        powers["hand"] = self.curve(hand, "hand", along)
+        face = 1.5 if along.startswith("1.5,1.575") else 1.5 * math.sqrt(2)  # where the line meets the wall
         for distance in powers["map"]:
-            if distance == 1.5:
-                continue  # in the wall's face
-            if distance > 1.5:  # beyond the wall
+            if abs(distance - face) < 0.3:
+                continue  # in the wall
+            if distance > face:
                 self.assertAlmostEqual(powers["map"][distance], powers["hand"][distance], delta=0.05)
                 self.assertGreater(powers["none"][distance] - powers["map"][distance], 5, distance)
             else:
                 self.assertAlmostEqual(powers["map"][distance], powers["none"][distance], delta=0.05)
 
-    def curve(self, scenario_path, name):
+    def curve(self, scenario_path, name, along):
         out = os.path.join(self.tmp, "curve-" + name)
-        self.sanet("link-curve", scenario_path, "-o", out, "--along", "1.5,1.5,9,1.5", "--from", "0.5", "--to", "3",
+        self.sanet("link-curve", scenario_path, "-o", out, "--force", "--along", along, "--from", "0.5", "--to", "3",
                    "--step", "0.5", "--frames", "10", "--links", "2", "-q")
         with open(os.path.join(out, "link_curve.csv")) as f:
             # (mean_dbm is the open field's: the received power through the walls is the RSSI's)
@@ -310,6 +360,16 @@ class RoundTrip(Sanet, unittest.TestCase):
         height = len(first)
         blocked = {(c, height - 1 - r) for r, row in enumerate(first) for c, v in enumerate(row) if v == 0}
         self.assertEqual(self.cells(again), blocked)
+
+    def test_a_wall_thinner_than_a_cell_stays_a_wall(self):
+        built = os.path.join(self.tmp, "built.yaml")
+        with open(built, "w") as f:
+            f.write(WORLD)
+        self.sanet("map", built, "-o", os.path.join(self.tmp, "coarse"), "--resolution", "0.5")
+        cells = read_pgm(os.path.join(self.tmp, "coarse", "built.pgm"))
+        # The 0.2 m wall along y = 1 from x = 1 to 9: a row of cells at 0.5 m, unbroken.
+        rows = [r for r, row in enumerate(cells) if sum(v == 0 for v in row) >= 16]
+        self.assertTrue(rows, "the wall along x is in the coarse map")
 
     def test_the_effective_scenario_runs_the_same_without_the_files(self):
         built = os.path.join(self.tmp, "built.yaml")

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "run_common.h"
 #include "scenario/world_raster.h"
@@ -11,18 +12,21 @@ namespace {
 
 struct MapArgs {
   std::string file, output, name;
-  double resolution = 0.05;
+  std::optional<double> resolution;
   std::vector<std::string> sets;
   bool quiet = false;
 };
 
 int WriteMap(const MapArgs& a, hosting::Registry& registry) {
   const scenario::Scenario sc = LoadChecked(a.file, a.sets, registry);
-  const scenario::OccupancyMap map = scenario::RasterizeWorld(sc.run, a.resolution);
-  constexpr long kMostCells = 400'000'000;  // 400 MB of image: past it, a coarser resolution
-  if (static_cast<long>(map.width) * map.height > kMostCells)
-    throw CLI::ValidationError("--resolution", "gives " + std::to_string(map.width) + " x " +
-                                                   std::to_string(map.height) + " cells: take a coarser one");
+  // The world's map's cells by default: its walls come back as they were.
+  const double resolution = a.resolution ? *a.resolution : sc.run.map ? sc.run.map->resolution : 0.05;
+  scenario::OccupancyMap map;
+  try {
+    map = scenario::RasterizeWorld(sc.run, resolution);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--resolution", e.what());
+  }
   const std::string name = a.name.empty() ? sc.run.name : a.name;
   try {
     scenario::WriteRosMap(map, a.output, name);

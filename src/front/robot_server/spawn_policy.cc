@@ -56,7 +56,9 @@ std::string PlaceRefusal(const sim::Driver& world, const SpawnSpec& spawn, const
   const std::vector<sim::Obstacle>& obstacles = world.spec().obstacles;
   for (std::size_t i = 0; i < obstacles.size(); ++i)
     if (physics::DistanceFromAbove(p, obstacles[i].box) < radius)
-      return Point(p) + " is inside world.obstacles[" + std::to_string(i) + "], a " + obstacles[i].kind +
+      return Point(p) + " is inside " +
+             (obstacles[i].from_map ? std::string("a wall of world.map")
+                                    : "world.obstacles[" + std::to_string(i) + "], a " + obstacles[i].kind) +
              " (a body of radius " + Metres(radius) + " m does not fit there)";
   for (NodeId id = 0; id < world.NodeCount(); ++id) {
     const double gap = Norm(world.PoseOf(id).position() - p);

@@ -18,7 +18,7 @@ void FootprintBounds(const physics::StaticBox& box, double& lo_x, double& lo_y, 
 
 }  // namespace
 
-double LengthInside(const physics::StaticBox& box, const physics::Vec3& a, const physics::Vec3& b) {
+std::pair<double, double> EnterLeave(const physics::StaticBox& box, const physics::Vec3& a, const physics::Vec3& b) {
   // Both ends in the box's own frame, where it is axis-aligned about the origin.
   const double c = std::cos(-box.yaw), s = std::sin(-box.yaw);
   const auto local = [&](const physics::Vec3& p) {
@@ -31,15 +31,22 @@ double LengthInside(const physics::StaticBox& box, const physics::Vec3& a, const
   double t0 = 0, t1 = 1;  // the slabs' clipping of the segment
   for (int i = 0; i < 3; ++i) {
     if (std::fabs(d[i]) < 1e-15) {
-      if (std::fabs(from[i]) >= half[i]) return 0;
+      if (std::fabs(from[i]) >= half[i]) return {1, 0};
       continue;
     }
     double enter = (-half[i] - from[i]) / d[i], leave = (half[i] - from[i]) / d[i];
     if (enter > leave) std::swap(enter, leave);
     t0 = std::max(t0, enter), t1 = std::min(t1, leave);
-    if (t0 >= t1) return 0;
+    if (t0 >= t1) return {1, 0};
   }
-  return (t1 - t0) * std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {t0, t1};
+}
+
+double LengthInside(const physics::StaticBox& box, const physics::Vec3& a, const physics::Vec3& b) {
+  const auto [enter, leave] = EnterLeave(box, a, b);
+  if (enter >= leave) return 0;
+  const double dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
+  return (leave - enter) * std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 ObstacleCrossings::ObstacleCrossings(std::vector<RadioObstacle> obstacles, double cell)
@@ -114,11 +121,37 @@ std::vector<Crossing> ObstacleCrossings::Crossings(const physics::Vec3& a, const
 double ObstacleCrossings::LossDb(const physics::Vec3& a, const physics::Vec3& b) const {
   Candidates(a, b, found_);
   std::sort(found_.begin(), found_.end());
+  const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y) + (b.z - a.z) * (b.z - a.z));
   double loss = 0;
-  for (const std::size_t i : found_)
-    if (const double length = LengthInside(obstacles_[i].box, a, b); length > 0)
-      loss += obstacles_[i].loss_db + obstacles_[i].loss_db_per_m * length;
-  return loss;
+  std::vector<std::pair<double, double>>& pieces = pieces_;  // where pieces are crossed, along a-b
+  pieces.clear();
+  double piece_loss = 0, joined_within = 0;
+  for (const std::size_t i : found_) {
+    const RadioObstacle& o = obstacles_[i];
+    const auto [enter, leave] = EnterLeave(o.box, a, b);
+    if (enter >= leave) continue;
+    loss += o.loss_db_per_m * (leave - enter) * length;
+    if (!o.piece) {
+      loss += o.loss_db;
+      continue;
+    }
+    pieces.push_back({enter, leave});
+    piece_loss = o.loss_db, joined_within = o.joined_within;
+  }
+  return loss + piece_loss * static_cast<double>(Runs(pieces, length > 0 ? joined_within / length : 0));
+}
+
+// The runs the crossed pieces make along the segment: crossings closer than `gap` (a fraction of
+// the segment) are one.
+std::size_t ObstacleCrossings::Runs(std::vector<std::pair<double, double>>& pieces, double gap) {
+  std::sort(pieces.begin(), pieces.end());
+  std::size_t runs = 0;
+  double reach = -1;
+  for (const auto& [enter, leave] : pieces) {
+    if (enter > reach + gap) ++runs;
+    reach = std::max(reach, leave);
+  }
+  return runs;
 }
 
 }  // namespace sanet::net

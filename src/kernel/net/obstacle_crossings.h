@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "physics/physics_world.h"
@@ -19,6 +20,11 @@ struct RadioObstacle {
   physics::StaticBox box;    // centre (z: half way up), length, width, height, yaw
   double loss_db = 0;        // per crossing
   double loss_db_per_m = 0;  // inside it
+  // A piece of a wall made of several boxes (a map's cells): a segment's crossings of pieces
+  // whose gaps along it are at most `joined_within` m are one crossing of the wall, charged
+  // `loss_db` once. false: every crossing is its own.
+  bool piece = false;
+  double joined_within = 0;
 };
 
 struct Crossing {
@@ -28,6 +34,8 @@ struct Crossing {
 
 // The part of segment a-b inside `box`, in m (0 if it misses, or only touches a face).
 double LengthInside(const physics::StaticBox& box, const physics::Vec3& a, const physics::Vec3& b);
+// The same as the fractions of a-b where it enters and leaves the box (enter >= leave: it misses).
+std::pair<double, double> EnterLeave(const physics::StaticBox& box, const physics::Vec3& a, const physics::Vec3& b);
 
 class ObstacleCrossings {
  public:
@@ -37,7 +45,8 @@ class ObstacleCrossings {
   std::size_t size() const { return obstacles_.size(); }
   // Every obstacle segment a-b passes through, in the order the obstacles were given.
   std::vector<Crossing> Crossings(const physics::Vec3& a, const physics::Vec3& b) const;
-  // The multi-wall loss of a-b: each crossing's loss plus its loss per metre times its length.
+  // The multi-wall loss of a-b: each crossing's loss plus its loss per metre times its length
+  // (a run of pieces one crossing).
   double LossDb(const physics::Vec3& a, const physics::Vec3& b) const;
 
  private:
@@ -52,6 +61,8 @@ class ObstacleCrossings {
   mutable std::vector<std::uint32_t> seen_;                       // per obstacle: the query that saw it
   mutable std::uint32_t query_ = 0;
   mutable std::vector<std::size_t> found_;  // LossDb's scratch
+  mutable std::vector<std::pair<double, double>> pieces_;
+  static std::size_t Runs(std::vector<std::pair<double, double>>& pieces, double gap);
 };
 
 }  // namespace sanet::net

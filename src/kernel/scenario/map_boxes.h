@@ -2,7 +2,8 @@
 // bottom-left, each rectangle takes the longest run of blocked cells along its row not yet
 // covered, then grows upwards while the whole run above is blocked and uncovered. Every blocked
 // cell is in exactly one rectangle and no free cell is in any. On a SLAM map, whose walls are
-// ragged lines of cells, this gives about a third as many boxes as cells (docs/scenario.md#map).
+// ragged lines of cells, this gives about a quarter as many boxes as cells
+// (docs/scenario.md#worldmap).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 #include "scenario/map_field.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -9,6 +10,9 @@
 
 namespace sanet::scenario {
 namespace {
+
+constexpr std::size_t kMostBoxes = 200000;  // past it a map is noise: the physics and radio would crawl
+constexpr double kWidest = 1e5;             // m, a map's side at most
 
 constexpr const char* kKeys[] = {"file",       "height", "thickness", "material", "unknown",
                                  "resolution", "origin", "cells",     "boxes"};
@@ -20,12 +24,19 @@ void FromFile(const Field& v, sim::WorldMap& m) {
   if (!std::filesystem::exists(path)) v.Require("file").Fail("no map file " + path.lexically_normal().string());
   const OccupancyMap map = ReadRosMap(path.lexically_normal().string());
   m.resolution = map.resolution, m.origin = map.origin, m.columns = map.width, m.rows = map.height;
+  if (std::max(map.width, map.height) * map.resolution > kWidest)
+    v.Require("file").Fail("the map is " + std::to_string(map.width) + " x " + std::to_string(map.height) +
+                           " cells of " + ShortNumber(map.resolution) + " m: more than 100 km across");
   const bool unknown_blocked = m.unknown_blocked;
   for (const CellRect& r : MergeCells(map.width, map.height, [&](int column, int row) {
          const std::int8_t cell = map.at(column, row);
          return cell == OccupancyMap::kOccupied || (unknown_blocked && cell == OccupancyMap::kUnknown);
        }))
     m.boxes.push_back({r.column, r.row, r.columns, r.rows});
+  if (m.boxes.size() > kMostBoxes)
+    v.Require("file").Fail("the map's blocked cells make " + std::to_string(m.boxes.size()) +
+                           " boxes (more than 200,000): a map this scattered is noise, not walls; clean it (or with "
+                           "`unknown: blocked`, try `free`)");
 }
 
 // The boxes as the effective scenario printed them.
@@ -33,13 +44,17 @@ void FromBoxes(const Field& v, sim::WorldMap& m) {
   m.resolution = v.Require("resolution").NumberAbove(0, 1e3);
   const std::vector<double> origin = v.Require("origin").Numbers(3);
   m.origin = {origin[0], origin[1], origin[2]};
-  const std::vector<double> cells = v.Require("cells").Numbers(2);
-  m.columns = static_cast<int>(cells[0]), m.rows = static_cast<int>(cells[1]);
-  for (const Field& box : v.Require("boxes").Items()) {
-    const std::vector<double> b = box.Numbers(4);
-    if (b[0] < 0 || b[1] < 0 || b[2] < 1 || b[3] < 1 || b[0] + b[2] > m.columns || b[1] + b[3] > m.rows)
-      box.Fail("a box is [column, row, columns, rows] within the map's cells");
-    m.boxes.push_back({static_cast<int>(b[0]), static_cast<int>(b[1]), static_cast<int>(b[2]), static_cast<int>(b[3])});
+  const std::vector<Field> cells = v.Require("cells").Items();
+  if (cells.size() != 2) v.Require("cells").Fail("must be [columns, rows]");
+  m.columns = cells[0].Integer(1, 100000), m.rows = cells[1].Integer(1, 100000);
+  if (std::max(m.columns, m.rows) * m.resolution > kWidest) v.Require("cells").Fail("more than 100 km across");
+  const std::vector<Field> boxes = v.Require("boxes").Items();
+  if (boxes.size() > kMostBoxes) v.Require("boxes").Fail("more than 200,000 boxes");
+  for (const Field& box : boxes) {
+    const std::vector<Field> b = box.Items();
+    if (b.size() != 4) box.Fail("a box is [column, row, columns, rows]");
+    const int column = b[0].Integer(0, m.columns - 1), row = b[1].Integer(0, m.rows - 1);
+    m.boxes.push_back({column, row, b[2].Integer(1, m.columns - column), b[3].Integer(1, m.rows - row)});
   }
 }
 
@@ -55,10 +70,13 @@ void ReadWorldMap(const Field& v, sim::RunSpec& s) {
     if (text != "free" && text != "blocked") unknown->Fail("unknown value '" + text + "' (expected free or blocked)");
     m.unknown_blocked = text == "blocked";
   }
-  if (v.Get("boxes"))
+  if (v.Get("boxes")) {
     FromBoxes(v, m);
-  else
+  } else {
+    for (const char* key : {"resolution", "origin", "cells"})  // they describe the boxes
+      if (auto given = v.Get(key)) given->Fail("goes with `boxes` (the effective scenario's); the map file gives it");
     FromFile(v, m);
+  }
   AppendMapObstacles(m, s.obstacles);
   s.map = std::move(m);
 }

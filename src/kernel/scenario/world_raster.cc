@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace sanet::scenario {
 namespace {
 
-constexpr double kMargin = 1.0;  // m around what the world holds
+constexpr double kMargin = 1.0;       // m around what the world holds
+constexpr double kMostCells = 400e6;  // 400 MB of image
 
 struct Bounds {
   Vec2 low{HUGE_VAL, HUGE_VAL}, high{-HUGE_VAL, -HUGE_VAL};
@@ -27,9 +30,20 @@ std::array<Vec2, 4> Corners(const physics::StaticBox& b) {
   return out;
 }
 
-bool Inside(const physics::StaticBox& b, Vec2 p) {
+// Whether the box's footprint and the square cell centred at `p` (side `side`) overlap by more
+// than a hair (boxes made of cells do not spill into their neighbours): separating axes, the
+// cell's two and the box's two.
+bool Overlaps(const physics::StaticBox& b, Vec2 p, double side) {
+  constexpr double kHair = 1e-6;
   const double c = std::cos(b.yaw), s = std::sin(b.yaw), dx = p.x - b.center.x, dy = p.y - b.center.y;
-  return std::fabs(c * dx + s * dy) <= b.size.x / 2 && std::fabs(-s * dx + c * dy) <= b.size.y / 2;
+  const double hx = b.size.x / 2, hy = b.size.y / 2, h = side / 2;
+  // The box's half extent along the world's x and y, and the cell's along the box's axes.
+  const bool apart_x = std::fabs(dx) >= hx * std::fabs(c) + hy * std::fabs(s) + h - kHair * side;
+  const bool apart_y = std::fabs(dy) >= hx * std::fabs(s) + hy * std::fabs(c) + h - kHair * side;
+  const double cell_extent = h * (std::fabs(c) + std::fabs(s));
+  const bool apart_u = std::fabs(c * dx + s * dy) >= hx + cell_extent - kHair * side;
+  const bool apart_v = std::fabs(-s * dx + c * dy) >= hy + cell_extent - kHair * side;
+  return !(apart_x || apart_y || apart_u || apart_v);
 }
 
 Bounds WorldBounds(const sim::RunSpec& spec) {
@@ -44,7 +58,7 @@ Bounds WorldBounds(const sim::RunSpec& spec) {
 
 // Where the grid's lines fall: on the world map's when it has one of this resolution and no turn.
 Vec2 Anchor(const sim::RunSpec& spec, double resolution) {
-  if (spec.map && spec.map->resolution == resolution && spec.map->origin[2] == 0)
+  if (spec.map && std::fabs(spec.map->resolution - resolution) <= 1e-6 * resolution && spec.map->origin[2] == 0)
     return {spec.map->origin[0], spec.map->origin[1]};
   return {0, 0};
 }
@@ -60,8 +74,13 @@ OccupancyMap RasterizeWorld(const sim::RunSpec& spec, double resolution) {
   const double x0 = anchor.x + std::floor((b.low.x - anchor.x) / resolution + 1e-6) * resolution;
   const double y0 = anchor.y + std::floor((b.low.y - anchor.y) / resolution + 1e-6) * resolution;
   map.origin = {x0, y0, 0};
-  map.width = static_cast<int>(std::ceil((b.high.x - x0) / resolution - 1e-6));
-  map.height = static_cast<int>(std::ceil((b.high.y - y0) / resolution - 1e-6));
+  const double columns = std::ceil((b.high.x - x0) / resolution - 1e-6);
+  const double rows = std::ceil((b.high.y - y0) / resolution - 1e-6);
+  if (columns * rows > kMostCells)
+    throw std::invalid_argument("the world is " + std::to_string(static_cast<long long>(columns)) + " x " +
+                                std::to_string(static_cast<long long>(rows)) +
+                                " cells of that size: take a coarser one");
+  map.width = static_cast<int>(columns), map.height = static_cast<int>(rows);
   map.cells.assign(static_cast<std::size_t>(map.width) * map.height, OccupancyMap::kFree);
   for (const sim::Obstacle& o : spec.obstacles) {
     Bounds box;
@@ -72,7 +91,7 @@ OccupancyMap RasterizeWorld(const sim::RunSpec& spec, double resolution) {
     const int r1 = std::min(map.height - 1, static_cast<int>(std::floor((box.high.y - y0) / resolution)));
     for (int row = r0; row <= r1; ++row)
       for (int column = c0; column <= c1; ++column)
-        if (Inside(o.box, {x0 + (column + 0.5) * resolution, y0 + (row + 0.5) * resolution}))
+        if (Overlaps(o.box, {x0 + (column + 0.5) * resolution, y0 + (row + 0.5) * resolution}, resolution))
           map.cells[static_cast<std::size_t>(row) * map.width + column] = OccupancyMap::kOccupied;
   }
   return map;

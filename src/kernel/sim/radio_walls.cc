@@ -18,10 +18,10 @@ std::vector<net::RadioObstacle> RadioWalls(const RunSpec& spec, double frequency
   std::vector<net::RadioObstacle> walls;
   if (!spec.network) return walls;
   for (const Obstacle& o : spec.obstacles) {
-    if (o.from_map && spec.map) {
-      const double t = spec.map->wall_thickness;
-      const double per_m = net::SlabLossDb(o.material.value_or(spec.obstacle_material), t, frequency) / t;
-      if (per_m > 0) walls.push_back({o.box, 0, per_m});
+    if (o.from_map && spec.map) {  // a run of the map's boxes is one wall `thickness` thick
+      const double loss =
+          net::SlabLossDb(o.material.value_or(spec.obstacle_material), spec.map->wall_thickness, frequency);
+      if (loss > 0) walls.push_back({o.box, loss, 0, true, spec.map->resolution / 2});
       continue;
     }
     const double loss = o.radio_loss_db.value_or(

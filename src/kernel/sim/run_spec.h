@@ -38,7 +38,7 @@ struct NodeSpec {
 inline bool RunsAsAgent(const NodeSpec& n) { return robots::HasDrive(n.model) && n.controller.has_value(); }
 
 struct Obstacle {
-  std::string kind;  // "box" or "wall", for plots
+  std::string kind;  // "box", "wall" or "map" (a box of world.map), for plots
   physics::StaticBox box;
   // What it costs a radio frame crossing it (net/obstacle_loss_model.h): its material's loss
   // (unset: the world's obstacle_material), or an explicit loss per crossing; plus a loss per
@@ -54,8 +54,8 @@ struct Obstacle {
 struct WorldMap {
   std::string file;          // the map's YAML, as the scenario named it
   double wall_height = 2.5;  // m
-  // m: the walls' material costs a radio its slab loss at this thickness per this much path
-  // inside the walls (a wall's cells may be split into several boxes across it).
+  // m: a radio's path through a wall (a run of its boxes, whatever their number) costs the
+  // material's slab loss at this thickness.
   double wall_thickness = 0.15;
   std::optional<net::Material> material;  // of its walls; unset: the world's obstacle_material
   bool unknown_blocked = false;           // unknown cells are walls too

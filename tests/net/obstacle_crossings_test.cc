@@ -35,6 +35,22 @@ TEST(ObstacleCrossings, TwoWallsAddTwice) {
   EXPECT_NEAR(walls.LossDb({0, 1, 1}, {5, 1, 1}), 12, 1e-9);
 }
 
+// A map's wall cut into pieces: two boxes side by side across it (x 5.0-5.05 and 5.05-5.1),
+// and a third piece 1 m on.
+TEST(ObstacleCrossings, PiecesCrossedOneAfterAnotherAreOneWall) {
+  const auto piece = [](double x) {
+    RadioObstacle o{StaticBox{{x, 0, 1.25}, {0.05, 6, 2.5}, 0}, 10};
+    o.piece = true, o.joined_within = 0.025;
+    return o;
+  };
+  const ObstacleCrossings walls({piece(5.025), piece(5.075), piece(6.025)});
+  EXPECT_NEAR(walls.LossDb({0, 0, 1}, {5.5, 0, 1}), 10, 1e-9) << "two touching pieces: one wall";
+  EXPECT_NEAR(walls.LossDb({0, 0, 1}, {10, 0, 1}), 20, 1e-9) << "the third, 0.9 m beyond: another";
+  EXPECT_NEAR(walls.LossDb({0, -2, 1}, {10, 3, 1}), 20, 1e-9) << "slanted: still two walls";
+  const ObstacleCrossings apart({WallAcrossX(5.025, 0.05, 2.5, 10), WallAcrossX(5.075, 0.05, 2.5, 10)});
+  EXPECT_NEAR(apart.LossDb({0, 0, 1}, {5.5, 0, 1}), 20, 1e-9) << "walls that are not pieces count each";
+}
+
 TEST(ObstacleCrossings, ASegmentOverALowWallIsNotAttenuated) {
   const ObstacleCrossings walls({WallAcrossX(5, 0.2, 1.0, 10)});
   // From 0.2 m up to 2.0 m up: at the wall (half way) the segment is 1.1 m up, over its 1 m.

@@ -3,8 +3,12 @@
 namespace sanet::hosting {
 
 sensors::ReadContext SimulatedNode::Context(std::optional<NodeId> target) const {
-  return {id_, directory_.NodeCount(), [this](NodeId node) { return directory_.TruePose(node); }, target,
-          [this] { return directory_.Battery(id_); }};
+  return {id_,
+          directory_.NodeCount(),
+          [this](NodeId node) { return directory_.TruePose(node); },
+          target,
+          [this] { return directory_.Battery(id_); },
+          Now()};
 }
 
 std::optional<SensorReading> SimulatedNode::Sensor(const std::string& name) {

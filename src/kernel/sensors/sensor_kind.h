@@ -35,6 +35,7 @@ struct ReadContext {
   std::function<Pose2D(NodeId)> true_pose;
   std::optional<NodeId> target;
   std::function<std::optional<BatteryReading>()> battery;  // empty without a battery
+  double time = 0;                                         // s, simulated: when the reading is taken
 };
 
 // One sensor on one node.

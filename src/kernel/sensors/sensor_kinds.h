@@ -11,4 +11,5 @@
   KIND(ground_truth, GroundTruth) \
   KIND(bearing, Bearing)          \
   KIND(sonar, Sonar)              \
-  KIND(battery, Battery)
+  KIND(battery, Battery)          \
+  KIND(encoders, Encoders)

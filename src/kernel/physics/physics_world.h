@@ -170,6 +170,7 @@ class PhysicsWorld {
 
   virtual void step(double dt) = 0;
   virtual std::size_t awake_body_count() const = 0;
+  virtual double gravity() const = 0;  // m/s^2, pointing down
   // Returns once no step is under way (a world whose steps may run on another thread waits for
   // them): for state a step updates outside the engine, such as odometry.
   virtual void Settle() {}

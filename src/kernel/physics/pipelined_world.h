@@ -41,6 +41,7 @@ class PipelinedWorld : public PhysicsWorld {
   std::vector<double> cast_rays(const std::vector<Ray>& rays, double max_range, const Body* ignore) const override;
   void step(double dt) override;
   std::size_t awake_body_count() const override;
+  double gravity() const override { return engine_->gravity(); }
   // The engine's messages, their bodies the ones handed out here.
   std::vector<EngineMessage> TakeMessages() override;
 

@@ -44,8 +44,9 @@ class SensorInstance {
   virtual ~SensorInstance() = default;
   // Empty when the sensor has nothing to say (a target out of range).
   virtual std::optional<SensorReading> Read(const ReadContext& context) = 0;
-  // After every physics step of a moving node: for sensors that integrate (odometry).
-  virtual void AfterPhysicsStep() {}
+  // After every physics step of a moving node, the step ending at `time` (s, simulated): for
+  // sensors that integrate (odometry) or sample on their own clock (the IMU).
+  virtual void AfterPhysicsStep(double /*time*/) {}
 };
 
 // Where an instance sits and what it draws its noise from.

@@ -12,4 +12,5 @@
   KIND(bearing, Bearing)          \
   KIND(sonar, Sonar)              \
   KIND(battery, Battery)          \
-  KIND(encoders, Encoders)
+  KIND(encoders, Encoders)        \
+  KIND(imu, Imu)

@@ -32,8 +32,8 @@ std::optional<SensorReading> SensorSet::Read(const std::string& name, const Read
   return e->instance->Read(context);
 }
 
-void SensorSet::AfterPhysicsStep() {
-  for (Entry& e : entries_) e.instance->AfterPhysicsStep();
+void SensorSet::AfterPhysicsStep(double time) {
+  for (Entry& e : entries_) e.instance->AfterPhysicsStep(time);
 }
 
 }  // namespace sanet::sensors

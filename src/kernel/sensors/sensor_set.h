@@ -25,7 +25,7 @@ class SensorSet {
   std::string KindOf(const std::string& name) const;
   // Empty when there is no such instance or it has nothing to say.
   std::optional<SensorReading> Read(const std::string& name, const ReadContext& context);
-  void AfterPhysicsStep();
+  void AfterPhysicsStep(double time);
 
  private:
   struct Entry {

@@ -233,7 +233,7 @@ void Stepper::Integrate(StepOutcome& outcome, DriveStep* drive) {
   {
     WallTimer timer(profile_.sensing);
     for (NodeId id : moved_)
-      if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep();
+      if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep(outcome.end);
   }
   outcome.poses = world_.RadioPoses(moved_);
   if (drive)

@@ -81,6 +81,7 @@ class Box2dWorld : public PhysicsWorld, private b2ContactListener {
   std::vector<double> cast_rays(const std::vector<Ray>& rays, double max_range, const Body* ignore) const override;
   void step(double dt) override;
   std::size_t awake_body_count() const override;
+  double gravity() const override { return settings_.gravity; }
 
  private:
   b2Body* MakeBody(b2BodyType type, const Pose2D& pose);

@@ -109,6 +109,7 @@ class OdeWorld : public PhysicsWorld {
   double cast_ray(const Vec3& origin, const Vec3& direction, double max_range, const Body* ignore) const override;
   void step(double dt) override;
   std::size_t awake_body_count() const override;
+  double gravity() const override { return settings_.gravity; }
   std::vector<EngineMessage> TakeMessages() override;
 
   // Used by the vehicle builders.

@@ -14,7 +14,7 @@ class WheelOdometry : public SensorInstance {
     return pose_;
   }
 
-  void AfterPhysicsStep() override {
+  void AfterPhysicsStep(double /*time*/) override {
     const physics::Vehicle& vehicle = *mount_.model.vehicle();
     const std::size_t n = vehicle.wheel_count();
     std::vector<double> delta(n);

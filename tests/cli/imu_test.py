@@ -57,10 +57,13 @@ def run(folder, wheels, duration, imu="{}", trace="false"):
 
 
 def allan(values, rate, tau):
-    """Non-overlapping Allan deviation of samples at `rate` for averaging time `tau`."""
+    """Overlapping Allan deviation of samples at `rate` for averaging time `tau` (IEEE Std 952)."""
     n = max(1, int(round(tau * rate)))
-    means = [sum(values[i:i + n]) / n for i in range(0, len(values) - n + 1, n)]
-    diffs = [(b - a) ** 2 for a, b in zip(means, means[1:])]
+    sums = [0.0]
+    for v in values:
+        sums.append(sums[-1] + v)
+    means = [(sums[i + n] - sums[i]) / n for i in range(len(values) - n + 1)]
+    diffs = [(means[i + n] - means[i]) ** 2 for i in range(len(means) - n)]
     return math.sqrt(sum(diffs) / (2 * len(diffs)))
 
 

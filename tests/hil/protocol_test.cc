@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "robot_server/sim_server.h"
+#include "sensors/encoders/encoders.h"
+#include "sensors/imu/imu.h"
 #include "wire/message_lines.h"
+#include "wire/sensor_lines.h"
 
 namespace sanet::wire {
 namespace {
@@ -197,6 +200,61 @@ TEST(MessageLines, RecvAndMsgRefuseCountsOutOfRange) {
   EXPECT_FALSE(counts.Count("Steps", 10));
   EXPECT_FALSE(counts.Count("Big", std::uint64_t{1} << 53));
   EXPECT_FALSE(counts.Count("Part", 10));
+}
+
+}  // namespace
+}  // namespace sanet::wire
+
+namespace sanet::wire {
+namespace {
+
+// A reading written as its SEN line, sent as text, parsed and read back.
+SensorReading ThroughTheLine(const std::string& kind, const SensorReading& reading, const std::any& settings) {
+  const SensorLines* lines = LinesOf(kind);
+  EXPECT_NE(lines, nullptr) << kind;
+  LineContext context;
+  context.time = 2.5;
+  const std::vector<ProtocolMessage> written = lines->Write(kind, reading, context);
+  EXPECT_EQ(written.size(), 1u);
+  std::string error;
+  const auto parsed = ParseLine(FormatLine(written.at(0)), &error);
+  EXPECT_TRUE(parsed) << error;
+  EXPECT_TRUE(lines->IsFrom(*parsed, kind));
+  const auto back = lines->Read(*parsed, settings, context);
+  EXPECT_TRUE(back);
+  return *back;
+}
+
+TEST(SensorLines, EncodersGoAsTicksOfAMilliradian) {
+  sensors::EncodersSettings settings;
+  settings.names = {"wheel_l", "wheel_r"};
+  const JointStatesReading sent{{"wheel_l", "wheel_r"}, {12.3456789, -0.5}, {4, -4}};
+  const std::string line = FormatLine(LinesOf("encoders")->Write("encoders", sent, LineContext{}).at(0));
+  EXPECT_NE(line.find("{Type Encoder} {Name ECLeft Tick 12346} {Name ECRight Tick -500}"), std::string::npos) << line;
+  const auto back = std::get<JointStatesReading>(ThroughTheLine("encoders", sent, settings));
+  EXPECT_EQ(back.names, settings.names);
+  ASSERT_EQ(back.angles.size(), 2u);
+  EXPECT_NEAR(back.angles[0], 12.3456789, 5e-4);
+  EXPECT_NEAR(back.angles[1], -0.5, 5e-4);
+}
+
+TEST(SensorLines, AnImuReadingRoundTripsToSixDecimals) {
+  sensors::ImuSettings settings;
+  settings.rate = 200, settings.gyroscope_noise_density = 1e-3;
+  ImuReading sent;
+  sent.angular_velocity = {0.000123, -0.2, 0.75};
+  sent.linear_acceleration = {1.5, -0.001234, 9.81};
+  sent.orientation = Quaternion{0, 0, 0.6, 0.8};
+  const auto back = std::get<ImuReading>(ThroughTheLine("imu", sent, settings));
+  EXPECT_NEAR(back.angular_velocity.x, 0.000123, 1e-6);
+  EXPECT_NEAR(back.angular_velocity.z, 0.75, 1e-6);
+  EXPECT_NEAR(back.linear_acceleration.y, -0.001234, 1e-6);
+  EXPECT_NEAR(back.linear_acceleration.z, 9.81, 1e-6);
+  ASSERT_TRUE(back.orientation);
+  EXPECT_NEAR(back.orientation->z, 0.6, 1e-6);
+  EXPECT_NEAR(back.angular_velocity_covariance[0], 1e-6 * 200, 1e-12) << "the noise's variance from the scenario";
+  sent.orientation.reset();
+  EXPECT_EQ(std::get<ImuReading>(ThroughTheLine("imu", sent, settings)).orientation_covariance[0], -1);
 }
 
 }  // namespace

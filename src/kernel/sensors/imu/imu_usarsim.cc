@@ -1,8 +1,8 @@
 // sanet extension: SEN {Time t} {Type IMU} [{Instance i}] {AngularVelocity x,y,z}
 // {LinearAcceleration x,y,z} [{Orientation x,y,z,w}], in sanet's axes (REP 103: x forward, y
-// left, z up). USARSim has no such line: its INS sensor reports a pose it integrates, not the
-// rates an IMU measures (docs/scenario.md#sensors). The covariances come from the scenario's
-// noise at the reading end.
+// left, z up), six decimals. USARSim has no such line: its INS sensor reports a pose it
+// integrates, not the rates an IMU measures (docs/scenario.md#sensors). The covariances come
+// from the scenario's noise at the reading end.
 #include <cmath>
 
 #include "sensors/imu/imu.h"
@@ -11,7 +11,9 @@
 namespace sanet::wire {
 namespace {
 
-std::string Triple(const Vector3& v) { return FormatNumber(v.x) + "," + FormatNumber(v.y) + "," + FormatNumber(v.z); }
+std::string Triple(const Vector3& v) {
+  return FormatPrecise(v.x) + "," + FormatPrecise(v.y) + "," + FormatPrecise(v.z);
+}
 
 class ImuLines : public SensorLines {
  public:
@@ -22,8 +24,8 @@ class ImuLines : public SensorLines {
     if (instance != "imu") line.Add("Instance", instance);
     line.Add("AngularVelocity", Triple(r.angular_velocity)).Add("LinearAcceleration", Triple(r.linear_acceleration));
     if (r.orientation)
-      line.Add("Orientation", FormatNumber(r.orientation->x) + "," + FormatNumber(r.orientation->y) + "," +
-                                  FormatNumber(r.orientation->z) + "," + FormatNumber(r.orientation->w));
+      line.Add("Orientation", FormatPrecise(r.orientation->x) + "," + FormatPrecise(r.orientation->y) + "," +
+                                  FormatPrecise(r.orientation->z) + "," + FormatPrecise(r.orientation->w));
     return {line};
   }
   bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {

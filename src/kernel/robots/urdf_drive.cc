@@ -81,11 +81,10 @@ DriveCentre DriveCentreOf(const UrdfRobot& r) {
   return c;
 }
 
-DriveFault FaultOf(const UrdfRobot& r, ModelKind kind) {
+DriveFault FaultOf(const UrdfRobot& r, ModelKind kind, const DriveCentre& centre) {
   for (std::size_t i = 0; i < r.wheels.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (r.wheels[i].joint == r.wheels[j].joint) return {"names the joint '" + r.wheels[i].joint + "' twice", i};
-  const DriveCentre centre = DriveCentreOf(r);
+      if (r.wheels[i].joint == r.wheels[j].joint) return {"names the joint '" + r.wheels[i].joint + "' twice", i, true};
   for (std::size_t i = 0; i < r.wheels.size(); ++i)
     if (std::fabs(Along(r.wheels[i].axis, ForwardAxis(kind, r.wheels[i], centre))) < 0.7)
       return {"the joint's axis does not roll the wheel " +

@@ -29,8 +29,9 @@ DriveCentre DriveCentreOf(const UrdfRobot& robot);
 struct DriveFault {
   std::string message;
   std::size_t wheel = 0;
+  bool scenarios = false;  // the scenario's mistake (a joint named twice), not the file's
 };
-DriveFault FaultOf(const UrdfRobot& robot, ModelKind kind);
+DriveFault FaultOf(const UrdfRobot& robot, ModelKind kind, const DriveCentre& centre);
 
 void ApplyDiffDrive(const UrdfRobot& robot, const DriveCentre& centre, physics::DiffDriveSpec& spec);
 void ApplyOmni3(const UrdfRobot& robot, const DriveCentre& centre, physics::Omni3Spec& spec);

@@ -57,11 +57,12 @@ std::vector<std::string> WheelJoints(const Field& body, robots::ModelKind kind) 
 
 // The wheels' geometry must drive the model: refused at the wheel joint's line, or at the
 // scenario's `wheels` line for a joint named twice.
-void CheckDrive(const Field& body, const robots::UrdfRobot& robot, robots::ModelKind kind, const std::string& path) {
-  const robots::DriveFault fault = robots::FaultOf(robot, kind);
+void CheckDrive(const Field& body, const robots::UrdfRobot& robot, robots::ModelKind kind,
+                const robots::DriveCentre& centre, const std::string& path) {
+  const robots::DriveFault fault = robots::FaultOf(robot, kind, centre);
   if (fault.message.empty()) return;
   const robots::UrdfWheel& wheel = robot.wheels.at(fault.wheel);
-  if (fault.message.rfind("names", 0) == 0) body.Require("wheels").Fail(fault.message);
+  if (fault.scenarios) body.Require("wheels").Fail(fault.message);
   throw ScenarioError(path, wheel.line, "<joint name=\"" + wheel.joint + "\">", fault.message);
 }
 
@@ -87,8 +88,8 @@ void ReadUrdfBody(const Field& body, robots::ModelSpec& m) {
     if (e.line() == 0) (named ? *named : *urdf).Fail(e.what());
     throw ScenarioError(e.file(), e.line(), e.element(), e.message());
   }
-  CheckDrive(body, robot, m.kind, path);
   const robots::DriveCentre centre = robots::DriveCentreOf(robot);
+  CheckDrive(body, robot, m.kind, centre, path);
   if (m.kind == robots::ModelKind::kDiffDrive)
     robots::ApplyDiffDrive(robot, centre, m.diffdrive);
   else

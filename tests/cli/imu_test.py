@@ -89,6 +89,7 @@ class Imu(unittest.TestCase):
         log = json.loads(done.stdout)
         self.assertEqual(log["errorCount"], 0, log["errors"])
         self.assertEqual(log["channels"]["/r/imu"]["schema"], "sensor_msgs/msg/Imu")
+        self.assertEqual(log["counts"]["/r/imu"], 201, "every sample of 2 s at 100 Hz, at its own time")
         last = log["last"]["/r/imu"]
         self.assertEqual(last["header"]["frame_id"], "r/imu")
         self.assertAlmostEqual(last["linear_acceleration"]["z"], 9.81, places=6)

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "robot_server/sim_server.h"
 #include "sensors/encoders/encoders.h"
+#include "sensors/gnss/gnss.h"
 #include "sensors/imu/imu.h"
 #include "wire/message_lines.h"
 #include "wire/sensor_lines.h"
@@ -255,6 +258,35 @@ TEST(SensorLines, AnImuReadingRoundTripsToSixDecimals) {
   EXPECT_NEAR(back.angular_velocity_covariance[0], 1e-6 * 200, 1e-12) << "the noise's variance from the scenario";
   sent.orientation.reset();
   EXPECT_EQ(std::get<ImuReading>(ThroughTheLine("imu", sent, settings)).orientation_covariance[0], -1);
+}
+
+TEST(SensorLines, AFixGoesAsUsarsimsDegreesAndMinutesAndNoFixAsFixZero) {
+  sensors::GnssSettings settings;
+  settings.horizontal_noise = 2, settings.vertical_noise = 3;
+  FixReading sent;
+  sent.status = FixReading::kFix;
+  sent.latitude = -33.8567844, sent.longitude = 151.2152967, sent.altitude = 42.25;
+  const std::string line = FormatLine(LinesOf("gnss")->Write("gnss", sent, LineContext{}).at(0));
+  EXPECT_NE(line.find("{Type GPS} {Name GPS} {Latitude 33,51.407064,S} {Longitude 151,12.917802,E} {Fix 1}"),
+            std::string::npos)
+      << line;
+  const auto back = std::get<FixReading>(ThroughTheLine("gnss", sent, settings));
+  EXPECT_EQ(back.status, FixReading::kFix);
+  EXPECT_NEAR(back.latitude, sent.latitude, 1e-7);  // a millionth of a minute: 2 mm
+  EXPECT_NEAR(back.longitude, sent.longitude, 1e-7);
+  EXPECT_NEAR(back.altitude, 42.25, 1e-6);
+  EXPECT_EQ(back.position_covariance[0], 4);
+  EXPECT_EQ(back.position_covariance[8], 9);
+  sent.latitude = 1 - 1e-12;  // minutes that round up to the next degree
+  EXPECT_NE(FormatLine(LinesOf("gnss")->Write("gnss", sent, LineContext{}).at(0)).find("{Latitude 1,0.000000,N}"),
+            std::string::npos);
+  FixReading none;
+  none.status = FixReading::kNoFix;
+  const std::string lost = FormatLine(LinesOf("gnss")->Write("gnss", none, LineContext{}).at(0));
+  EXPECT_NE(lost.find("{Name GPS} {Fix 0} {Satellites 0}"), std::string::npos) << lost;
+  const auto nothing = std::get<FixReading>(ThroughTheLine("gnss", none, settings));
+  EXPECT_EQ(nothing.status, FixReading::kNoFix);
+  EXPECT_TRUE(std::isnan(nothing.latitude));
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ std::string FieldLines(const std::vector<FieldInfo>& fields) {
   for (const FieldInfo& f : fields) {
     std::string what = f.type + (f.unit.empty() ? "" : " (" + f.unit + ")") + ", default " + Unquoted(f.default_text);
     if (!f.range.empty()) what += ", " + Unquoted(f.range);
-    out += Line("      %-20s %s\n", f.key, what);
+    out += Line("      %-28s %s\n", f.key, what);
   }
   return out;
 }
@@ -49,7 +49,7 @@ std::string ParamLines(const ControllerInfo& info) {
       what += ", at least " + ShortNumber(r.min);
     else if (r.max < HUGE_VAL)
       what += ", at most " + ShortNumber(r.max);
-    out += Line("      %-20s %s\n", r.key, what);
+    out += Line("      %-28s %s\n", r.key, what);
   }
   return out + note;
 }
@@ -72,10 +72,10 @@ std::string ModelSection() {
   for (robots::ModelKind kind : robots::AllModels()) {
     const robots::ModelSpec model = robots::ModelSpec::Defaults(kind);
     out += Line("  %-10s %s\n", robots::ModelName(kind), robots::ModelOf(kind).Summary());
-    out += Line("      %-20s %s\n", "carries",
+    out += Line("      %-28s %s\n", "carries",
                 Joined(robots::DefaultSensorKinds(model)) + " (any other kind may be added)");
     if (robots::HasDrive(model))
-      out += Line("      %-20s %s\n", "drive limits",
+      out += Line("      %-28s %s\n", "drive limits",
                   ShortNumber(model.max_speed) + " m/s, " + ShortNumber(model.max_turn_rate) + " rad/s");
     out += FieldLines(Table(std::string("body.") + robots::ModelName(kind)));
   }
@@ -90,8 +90,8 @@ std::string SensorSection() {
   for (const sensors::SensorKind* kind : sensors::AllKinds()) {
     const sensors::SensorInfo& info = kind->Info();
     out += Line("  %-12s %s\n", info.name, info.summary);
-    out += Line("      %-20s %s\n", "reading", info.reading + " (" + info.units + ")");
-    out += Line("      %-20s %s\n", "ROS 2",
+    out += Line("      %-28s %s\n", "reading", info.reading + " (" + info.units + ")");
+    out += Line("      %-28s %s\n", "ROS 2",
                 info.ros2_type.empty() ? "none" : info.ros2_type + " on /<robot>/" + info.topic);
     out += FieldLines(Table("sensors." + info.name));
   }

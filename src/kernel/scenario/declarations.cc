@@ -49,6 +49,7 @@ sim::Obstacle ReadBox(const Field& box) {
   BoxFields().Read(box, b);
   sim::Obstacle o{"box", {{b.center.x, b.center.y, b.size[2] / 2}, {b.size[0], b.size[1], b.size[2]}, b.yaw}, {}, {}};
   WithRadio(box, b.radio, o);
+  o.indoor = b.indoor;
   return o;
 }
 
@@ -63,6 +64,7 @@ sim::Obstacle ReadWall(const Field& wall) {
                   {},
                   {}};
   WithRadio(wall, w.radio, o);
+  o.indoor = w.indoor;
   return o;
 }
 
@@ -89,6 +91,7 @@ YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
     if (o.material) box["material"] = net::MaterialName(*o.material);
     if (o.radio_loss_db) box["radio_loss_db"] = NumberNode(*o.radio_loss_db);
     if (o.radio_loss_db_per_m > 0) box["radio_loss_db_per_m"] = NumberNode(o.radio_loss_db_per_m);
+    if (o.indoor) box["indoor"] = true;
     YAML::Node item;
     item["box"] = box;
     list.push_back(item);
@@ -126,6 +129,81 @@ const Fields<sim::Charger>& ChargerFields() {
 }
 
 namespace {
+
+void CheckPlace(const Field& where, Vec2 p) {
+  if (std::fabs(p.x) > kFarthest || std::fabs(p.y) > kFarthest) where.Fail("lies more than 1e6 m from the origin");
+}
+
+// world.datum: the world's origin on the Earth, {latitude, longitude, altitude}.
+sensors::GeoDatum ReadDatum(const Field& v) {
+  v.ExpectKeys({"latitude", "longitude", "altitude"});
+  sensors::GeoDatum d;
+  d.latitude = v.Require("latitude").Number(-90, 90);
+  d.longitude = v.Require("longitude").Number(-180, 180);
+  if (auto altitude = v.Get("altitude")) d.altitude = altitude->Number(-11000, 100000);
+  return d;
+}
+
+// One of world.gnss_denied: `{polygon: [[x, y], ...]}` (three corners or more, in order) or a box
+// `{center, size: [length, width], yaw}`. Printed as its polygon.
+sensors::Region ReadDeniedRegion(const Field& v) {
+  v.ExpectKeys({"polygon", "center", "size", "yaw"});
+  sensors::Region region;
+  if (auto polygon = v.Get("polygon")) {
+    for (const char* key : {"center", "size", "yaw"})
+      if (auto box = v.Get(key)) box->Fail("is a box's: a region is either a `polygon` or a box, not both");
+    for (const Field& corner : polygon->Items()) {
+      region.push_back(ReadPoint(corner));
+      CheckPlace(corner, region.back());
+    }
+    if (region.size() < 3) polygon->Fail("a polygon needs three corners or more");
+    return region;
+  }
+  const Vec2 center = ReadPoint(v.Require("center"));
+  CheckPlace(v.Require("center"), center);
+  const std::vector<double> size = v.Require("size").Numbers(2);
+  if (size[0] <= 0 || size[1] <= 0) v.Require("size").Fail("both sides must be greater than 0");
+  const double yaw = v.Get("yaw") ? v.Require("yaw").Number(-kInf, kInf) : 0;
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  for (const auto& [u, w] : {std::pair{0.5, 0.5}, {-0.5, 0.5}, {-0.5, -0.5}, {0.5, -0.5}})
+    region.push_back({center.x + c * u * size[0] - s * w * size[1], center.y + s * u * size[0] + c * w * size[1]});
+  return region;
+}
+
+// world.datum and world.gnss_denied: where the world lies, and where satellites are not heard.
+void AddGeography(Fields<sim::RunSpec>& f) {
+  f.Custom(
+      {"datum", "mapping `{latitude, longitude, altitude}`", "degrees, degrees, m", "none", "",
+       "the world's origin on the WGS 84 ellipsoid (x east, y north): see [satellite fixes](#satellite-fixes)"},
+      [](const Field& v, sim::RunSpec& s) { s.datum = ReadDatum(v); },
+      [](const sim::RunSpec& s) {
+        if (!s.datum) return YAML::Node();
+        YAML::Node out;
+        out["latitude"] = NumberNode(s.datum->latitude);
+        out["longitude"] = NumberNode(s.datum->longitude);
+        out["altitude"] = NumberNode(s.datum->altitude);
+        return out;
+      });
+  f.Custom(
+      {"gnss_denied", "list of regions", "m", "none", "",
+       "no satellite fix inside: each `{polygon: [[x, y], ...]}` or `{center, size: [length, width], yaw}`"},
+      [](const Field& v, sim::RunSpec& s) {
+        if (!v.node().IsNull())
+          for (const Field& r : v.Items()) s.gnss_denied.push_back(ReadDeniedRegion(r));
+      },
+      [](const sim::RunSpec& s) {
+        if (s.gnss_denied.empty()) return YAML::Node();
+        YAML::Node list(YAML::NodeType::Sequence);
+        for (const sensors::Region& r : s.gnss_denied) {
+          YAML::Node polygon(YAML::NodeType::Sequence);
+          for (Vec2 p : r) polygon.push_back(Numbers({p.x, p.y}));
+          YAML::Node item;
+          item["polygon"] = polygon;
+          list.push_back(item);
+        }
+        return list;
+      });
+}
 
 // world.chargers: a list of ChargerFields, printed where there are any.
 void AddChargers(Fields<sim::RunSpec>& f) {
@@ -188,6 +266,7 @@ const Fields<sim::RunSpec>& WorldFields() {
         [](const RunSpec& s) { return PrintObstacles(s.obstacles); });
     AddWorldMap(f);  // after obstacles: its boxes come after theirs
     AddChargers(f);
+    AddGeography(f);
     f.Custom(
         {"obstacle_material", "text", "", "`none`", MaterialList("`"),
          "material of the obstacles that name none: `none` costs the radio nothing"},
@@ -893,6 +972,10 @@ void AddObstacleRadioFields(Fields<S>& f) {
       {"radio_loss_db_per_m", "number", "dB/m", "`0`", "[0, 1000]",
        "loss per metre of the path inside it, added to the loss per crossing"},
       [](const Field& v, S& s) { s.radio.loss_db_per_m = v.Number(0, 1000); }, Unprinted<S>());
+  f.Custom(
+      {"indoor", "`true` or `false`", "", "`false`", "",
+       "part of a building: no satellite fix inside it (see [world.gnss_denied](#satellite-fixes))"},
+      [](const Field& v, S& s) { s.indoor = v.Bool(); }, Unprinted<S>());
 }
 
 }  // namespace

@@ -57,11 +57,13 @@ struct BoxSettings {
   std::vector<double> size;  // length, width, height
   double yaw = 0;
   ObstacleRadio radio;
+  bool indoor = false;
 };
 struct WallSettings {
   Vec2 from, to;
   double height = 1.0, thickness = 0.2;
   ObstacleRadio radio;
+  bool indoor = false;
 };
 struct GridSettings {
   std::string name;

@@ -18,6 +18,7 @@
 #include "scenario/sensor_fields.h"
 #include "scenario/urdf_body.h"
 #include "sensors/sensor_registry.h"
+#include "sim/surroundings_of.h"
 #include "sim/world.h"
 
 namespace sanet::scenario {
@@ -142,14 +143,27 @@ struct NodeTemplate {
   net::Radios radio_set;  // the radios it carries (none without a network)
 };
 
+// Each sensor works in the scenario's world (a satellite fix needs world.datum).
+void CheckSensorsFitTheWorld(const Field& f, const ModelSpec& model, const sensors::Surroundings& world) {
+  for (const auto& [name, config] : model.sensors) {
+    const sensors::SensorKind* kind = sensors::FindKind(config.kind);
+    const auto why = kind ? kind->RefusesWorld(world) : std::nullopt;
+    if (!why) continue;
+    const auto given = f.Get("sensors");
+    const auto at = given && given->IsMap() ? given->Get(name) : std::nullopt;
+    (at ? *at : f).Fail(*why);
+  }
+}
+
 // A node with `energy` carries a battery sensor unless its `sensors` take it off; a battery
 // sensor on a node without one has nothing to read.
-void ReadEnergyAndSensors(const Field& f, NodeTemplate& t) {
+void ReadEnergyAndSensors(const Field& f, NodeTemplate& t, const sensors::Surroundings& world) {
   if (auto energy = f.Get("energy")) {
     t.energy = ReadEnergy(*energy, robots::HasDrive(t.model), t.radio_set);
     t.model.sensors["battery"] = {"battery", sensors::FindKind("battery")->DefaultSettings(t.model)};
   }
   if (auto sensors = f.Get("sensors")) ReadSensors(*sensors, t.model);
+  CheckSensorsFitTheWorld(f, t.model, world);
   if (t.energy) return;
   for (const auto& [name, config] : t.model.sensors)
     if (config.kind == "battery")
@@ -164,14 +178,16 @@ void ReadEnergyAndSensors(const Field& f, NodeTemplate& t) {
   }
 }
 
-// What reading the nodes' radios learns about the network: the run's 802.11 standard, when the
-// network's radio is 802.15.4 and a node with two radios names it.
-struct RadioContext {
+// What reading a node needs of the rest of the scenario: the network, and what reading the nodes'
+// radios learns about it (the run's 802.11 standard, when the network's radio is 802.15.4 and a
+// node with two radios names it); the world's surroundings, for sensors that need them.
+struct NodeContext {
   net::NetworkSpec* network = nullptr;  // none: the scenario has no network
   bool wifi_standard_named = false;
+  sensors::Surroundings surroundings;
 };
 
-NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, RadioContext& radios) {
+NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, NodeContext& radios) {
   NodeTemplate t;
   if (auto radio = f.Get("radio")) {
     if (!radios.network) radio->Fail("a node's radio needs a 'network' section in the scenario");
@@ -191,7 +207,7 @@ NodeTemplate ReadNodeTemplate(const Field& f, const fs::path& dir, RadioContext&
     // The default sensors sit on the body: follow its new dimensions.
     t.model.sensors = sensors::DefaultSensors(t.model);
   }
-  ReadEnergyAndSensors(f, t);
+  ReadEnergyAndSensors(f, t, radios.surroundings);
   if (auto c = f.Get("controller")) {
     sim::ControllerSpec spec;
     ControllerFields().Read(*c, spec);
@@ -246,7 +262,7 @@ void CheckPlace(const Field& where, Vec2 p) {
     where.Fail("lies more than 1e6 m from the origin, where the physics loses its precision");
 }
 
-void ReadGrid(const Field& n, const fs::path& dir, RadioContext& radios, NodeList& list) {
+void ReadGrid(const Field& n, const fs::path& dir, NodeContext& radios, NodeList& list) {
   n.ExpectKeys(GridItemFields().Keys());
   GridSettings g;
   GridFields().Read(n.Require("grid"), g);
@@ -275,7 +291,7 @@ void ReadGrid(const Field& n, const fs::path& dir, RadioContext& radios, NodeLis
 // `scatter: {name, distribution, count | density | cluster keys, region, min_separation, seed}`:
 // nodes NAME0, NAME1, ... where the seed puts them (scenario/scatter.h), clear of the obstacles
 // and of the nodes listed before the item.
-void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, RadioContext& radios, NodeList& list) {
+void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, NodeContext& radios, NodeList& list) {
   n.ExpectKeys(ScatterItemFields().Keys());
   const Field item = n.Require("scatter");
   const ScatterSettings s = ReadScatter(item);
@@ -307,7 +323,7 @@ void ReadScattered(const Field& n, const fs::path& dir, Scenario& sc, RadioConte
              t.controller_line);
 }
 
-std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc, RadioContext& radios) {
+std::vector<NodePlace> ReadNodes(const Field& nodes, const fs::path& dir, Scenario& sc, NodeContext& radios) {
   sim::RunSpec& run = sc.run;
   NodeList list(sc);
   for (const Field& n : nodes.Items()) {
@@ -496,7 +512,7 @@ void ReadEnd(const Field& end, sim::RunSpec& run) {
 
 void ReadOutputs(const Field& outputs, Scenario& sc) { OutputsFields().Read(outputs, sc); }
 
-sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, RadioContext& radios) {
+sections::SpawnClass ReadSpawnClass(const Field& item, const fs::path& dir, NodeContext& radios) {
   item.ExpectKeys(SpawnClassFields().Keys());
   sections::SpawnClass c;
   c.usarsim_class = item.Require("class").Text();
@@ -563,7 +579,7 @@ void ReadRos2(const Field& ros2, Scenario& sc) {
 }
 
 // After the nodes and the world: the default region is the field around them.
-void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc, RadioContext& radios) {
+void ReadSpawn(const Field& spawn, const fs::path& dir, Scenario& sc, NodeContext& radios) {
   const sim::RunSpec& run = sc.run;
   sections::SpawnSpec s;
   s.region = sections::DefaultSpawnRegion(run);
@@ -602,7 +618,7 @@ void Read(const Field& root, Scenario& sc) {
   if (auto network = root.Get("network")) run.network = ReadNetwork(*network);
   if (auto world = root.Get("world")) ReadWorld(*world, run);
   CheckObstacleRadioNeedsANetwork(root, sc);
-  RadioContext radios{run.network ? &*run.network : nullptr};
+  NodeContext radios{run.network ? &*run.network : nullptr, false, sim::SurroundingsOf(run)};
   CheckWhereNodesStart(root, ReadNodes(root.Require("nodes"), fs::path(path).parent_path(), sc, radios), sc);
   ResolveNodePlaces(sc);
   if (auto messages = root.Get("messages")) ReadMessages(*messages, run);

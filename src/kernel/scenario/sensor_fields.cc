@@ -76,20 +76,22 @@ const Fields<robots::SensorConfig>& DrawFields() {
   return fields;
 }
 
-// `link: NAME` on a robot from a URDF: the sensor's mount_x and height are the link's place (keys
-// the sensor gives itself are read after). Read as the kind's own keys, so that they print as those.
+// `link: NAME` on a robot from a URDF: the sensor's mount (mount_x, and mount_y and height where
+// the kind has them) is the link's place (keys the sensor gives itself are read after). Read as
+// the kind's own keys, so that they print as those.
 void MountOnLink(const Field& link, const Field& value, const robots::ModelSpec& model, const std::string& kind,
                  std::any& settings) {
   if (!model.urdf) link.Fail("names a URDF link: the robot's body needs `urdf`");
   const auto place = model.urdf->links.find(link.Text());
   if (place == model.urdf->links.end()) link.Fail("the robot's URDF has no link '" + link.Text() + "'");
-  bool mounts = false, heights = false;
-  for (const FieldInfo& key : FieldsOf(kind).Describe(settings))
-    mounts = mounts || key.key == "mount_x", heights = heights || key.key == "height";
-  if (!mounts || !heights) link.Fail("a " + kind + " sensor has no mount_x and height to put on a link");
   YAML::Node mount(YAML::NodeType::Map);
-  mount["mount_x"] = place->second[0];
-  mount["height"] = place->second[2];
+  const std::pair<const char*, double> keys[] = {
+      {"mount_x", place->second[0]}, {"mount_y", place->second[1]}, {"height", place->second[2]}};
+  bool mounts = false;
+  for (const FieldInfo& key : FieldsOf(kind).Describe(settings))
+    for (const auto& [name, value] : keys)
+      if (key.key == name) mount[name] = value, mounts = mounts || key.key == "mount_x";
+  if (!mounts) link.Fail("a " + kind + " sensor has no mount to put on a link");
   FieldsOf(kind).Read(Field(mount, value.path(), std::make_shared<const std::string>(value.file())), settings);
 }
 

@@ -9,11 +9,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/random_stream.h"
 #include "physics/physics_world.h"
 #include "robots/node_model.h"
 #include "sanet/readings.h"
+#include "sensors/surroundings.h"
 
 namespace sanet::sensors {
 
@@ -38,6 +40,12 @@ struct ReadContext {
   double time = 0;                                         // s, simulated: when the reading is taken
 };
 
+// A sample a sensor took on its own clock, at `t` (s, simulated).
+struct TimedReading {
+  double t = 0;
+  SensorReading reading;
+};
+
 // One sensor on one node.
 class SensorInstance {
  public:
@@ -47,6 +55,9 @@ class SensorInstance {
   // After every physics step of a moving node, the step ending at `time` (s, simulated): for
   // sensors that integrate (odometry) or sample on their own clock (the IMU).
   virtual void AfterPhysicsStep(double /*time*/) {}
+  // The samples taken on the sensor's own clock since the last call, oldest first (a kind that
+  // SamplesOnItsOwn; others take none): the run logs each one.
+  virtual void TakeSamples(std::vector<TimedReading>& /*out*/) {}
 };
 
 // Where an instance sits and what it draws its noise from.
@@ -55,6 +66,7 @@ struct Mount {
   const robots::NodeModel& model;
   Pose2D start;         // the node's pose when the run began
   RandomStream random;  // the instance's own stream
+  const Surroundings& surroundings;
 };
 
 class SensorKind {
@@ -68,7 +80,12 @@ class SensorKind {
   virtual bool Removable() const { return true; }
   // Why the kind cannot sit on `model` ("a mote has no wheels, so no odometry"); empty if it can.
   virtual std::optional<std::string> Refuses(const robots::ModelSpec& /*model*/) const { return std::nullopt; }
+  // Why the kind cannot work in a world of these surroundings ("a fix needs world.datum").
+  virtual std::optional<std::string> RefusesWorld(const Surroundings& /*world*/) const { return std::nullopt; }
   virtual std::unique_ptr<SensorInstance> Create(const std::any& settings, Mount mount) const = 0;
+  // Whether an instance samples on its own clock (an IMU, a satellite fix): the run logs its
+  // samples as it takes them (TakeSamples), not the readings a controller takes of them.
+  virtual bool SamplesOnItsOwn() const { return false; }
 };
 
 }  // namespace sanet::sensors

@@ -13,4 +13,5 @@
   KIND(sonar, Sonar)              \
   KIND(battery, Battery)          \
   KIND(encoders, Encoders)        \
-  KIND(imu, Imu)
+  KIND(imu, Imu)                  \
+  KIND(gnss, Gnss)

@@ -5,12 +5,13 @@
 namespace sanet::sensors {
 
 SensorSet::SensorSet(physics::PhysicsWorld& world, const robots::NodeModel& model, const Pose2D& start,
-                     std::uint64_t seed, const std::string& stream_prefix) {
+                     std::uint64_t seed, const std::string& stream_prefix, const Surroundings& surroundings) {
   for (const auto& [name, config] : PresentationOrder(model.spec())) {
     const SensorKind* kind = FindKind(config->kind);
     if (!kind) continue;  // the scenario's reader refused unknown kinds already
-    Mount mount{world, model, start, RandomStream(seed, stream_prefix + "/" + name)};
+    Mount mount{world, model, start, RandomStream(seed, stream_prefix + "/" + name), surroundings};
     entries_.push_back({name, config->kind, kind->Create(config->settings, mount)});
+    if (kind->SamplesOnItsOwn()) ++samplers_;
     names_.push_back(name);
   }
 }
@@ -30,6 +31,15 @@ std::optional<SensorReading> SensorSet::Read(const std::string& name, const Read
   const Entry* e = Find(name);
   if (!e) return std::nullopt;
   return e->instance->Read(context);
+}
+
+void SensorSet::TakeSamples(std::vector<Sample>& out) {
+  if (samplers_ == 0) return;
+  for (Entry& e : entries_) {
+    taken_.clear();
+    e.instance->TakeSamples(taken_);
+    for (TimedReading& r : taken_) out.push_back({&e.name, &e.kind, std::move(r)});
+  }
 }
 
 void SensorSet::AfterPhysicsStep(double time) {

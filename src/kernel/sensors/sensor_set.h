@@ -15,8 +15,9 @@ namespace sanet::sensors {
 class SensorSet {
  public:
   // Each instance draws its noise from the stream `stream_prefix`/<instance name> of `seed`.
+  // `surroundings` outlives the set.
   SensorSet(physics::PhysicsWorld& world, const robots::NodeModel& model, const Pose2D& start, std::uint64_t seed,
-            const std::string& stream_prefix);
+            const std::string& stream_prefix, const Surroundings& surroundings);
 
   // The instances' names, in the order front ends present them (PresentationOrder).
   const std::vector<std::string>& names() const { return names_; }
@@ -26,6 +27,14 @@ class SensorSet {
   // Empty when there is no such instance or it has nothing to say.
   std::optional<SensorReading> Read(const std::string& name, const ReadContext& context);
   void AfterPhysicsStep(double time);
+  // A sample of a sensor that samples on its own clock; the names live as long as the set.
+  struct Sample {
+    const std::string *instance, *kind;
+    TimedReading taken;
+  };
+  // The samples its sensors took on their own clocks since the last call, instance by instance.
+  void TakeSamples(std::vector<Sample>& out);
+  bool SamplesOnItsOwn() const { return samplers_ > 0; }  // some sensor does
 
  private:
   struct Entry {
@@ -35,6 +44,8 @@ class SensorSet {
   const Entry* Find(const std::string& name) const;
   std::vector<Entry> entries_;
   std::vector<std::string> names_;
+  std::size_t samplers_ = 0;
+  std::vector<TimedReading> taken_;  // reused
 };
 
 }  // namespace sanet::sensors

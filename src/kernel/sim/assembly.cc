@@ -10,8 +10,10 @@
 #include "net/body_mobility_model.h"
 #include "net/local_transport.h"
 #include "net/wireless_network.h"
+#include "sensors/sensor_registry.h"
 #include "sim/radio_calibration.h"
 #include "sim/radio_walls.h"
+#include "sim/surroundings_of.h"
 
 namespace sanet::sim {
 namespace {
@@ -48,7 +50,7 @@ std::string Quantity(const char* format, double value) {
 }  // namespace
 
 Assembly::Assembly(const RunSpec& spec, hosting::Registry& registry, RobotDrivers drivers)
-    : spec_(spec), run_nodes_(spec.nodes), drivers_(drivers) {
+    : spec_(spec), surroundings_(SurroundingsOf(spec)), run_nodes_(spec.nodes), drivers_(drivers) {
   if (g_assembly_exists) throw WorldError("only one World may exist at a time (ns-3 is process-wide)");
   if (spec.physics_step <= 0) throw WorldError("physics step must be positive");
   g_assembly_exists = true;
@@ -86,8 +88,8 @@ void Assembly::BuildBodies() {
 // A node's body and its sensors (whose noise streams are named after the node).
 void Assembly::AddBody(const NodeSpec& n) {
   models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose));
-  sensors_.push_back(
-      std::make_unique<sensors::SensorSet>(*physics_, *models_.back(), n.pose, spec_.seed, "node/" + n.name));
+  sensors_.push_back(std::make_unique<sensors::SensorSet>(*physics_, *models_.back(), n.pose, spec_.seed,
+                                                          "node/" + n.name, surroundings_));
 }
 
 // One ns-3 node per body, in node order (ns-3's node ids are sanet's).
@@ -310,7 +312,22 @@ void Assembly::ReadSensor(NodeId node, const std::string& instance, const std::s
     const auto it = sensors.find(instance);
     if (it != sensors.end()) energy->SensorRead(it->second.energy_j);
   }
-  if (running_ && bus_.Heard<SensorRead>()) bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
+  // A sensor sampling on its own clock is logged by its samples: those this read took (a body at
+  // rest has no physics steps to take them), now; those of physics steps, at the steps' ends.
+  const sensors::SensorKind* sensor = sensors::FindKind(kind);
+  if (!sensor || !sensor->SamplesOnItsOwn()) {
+    if (running_ && bus_.Heard<SensorRead>())
+      bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
+    return;
+  }
+  std::vector<sensors::SensorSet::Sample> taken;
+  sensors_.at(node)->TakeSamples(taken);
+  for (const sensors::SensorSet::Sample& sample : taken) Sampled(node, sample);
+}
+
+void Assembly::Sampled(NodeId node, const sensors::SensorSet::Sample& sample) {
+  if (running_ && bus_.Heard<SensorRead>())
+    bus_.Publish(SensorRead{sample.taken.t, node, *sample.instance, *sample.kind, sample.taken.reading, Body(node)});
 }
 
 BodyState Assembly::Body(NodeId node) const {

@@ -105,6 +105,8 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
 
   // SnapshotSource
   BodyState Body(NodeId node) const override;
+  // A sample one of the node's sensors took on its own clock: logged as a reading at its time.
+  void Sampled(NodeId node, const sensors::SensorSet::Sample& sample);
   std::vector<NodeId> RadioNeighbours(NodeId node) const override;
   std::vector<MessageInFlight> MessagesInFlight() const override { return transport_->InFlight(); }
   std::string ControllerState(NodeId node) const override { return states_.at(node); }
@@ -129,7 +131,8 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   void FollowBody(NodeId id, net::BodyMobilityModel* mobility);  // its radio, from its body's pose now
 
   const RunSpec spec_;
-  std::optional<Calibration> calibration_;  // the abstract radio's, measured or cached
+  const sensors::Surroundings surroundings_;  // of spec_
+  std::optional<Calibration> calibration_;    // the abstract radio's, measured or cached
   RunNodes run_nodes_;
   const RobotDrivers drivers_;
   std::unique_ptr<physics::PipelinedWorld> physics_;

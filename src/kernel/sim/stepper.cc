@@ -100,7 +100,7 @@ void Stepper::StopNow(const std::string& why) {
 }
 
 void Stepper::End() {
-  ApplyDrives(0);
+  ApplyAftermath(0);
   world_.batteries().SettleMotion();
   // Controllers finish while the run can still record what they log and measure.
   for (NodeId id = 0; id < world_.size(); ++id) world_.host(id).Finish();
@@ -204,16 +204,16 @@ void Stepper::PhysicsStep() {
     CatchUp();
     Notify();
   }
-  ApplyDrives(1);  // the step that ends now stays in flight
+  ApplyAftermath(1);  // the step that ends now stays in flight
   const double dt = world_.spec().physics_step;
   // No step ends past the run: [0, duration] (events at exactly `duration` still run).
   if (Period(Now() + dt) > Period(world_.spec().duration)) return;
   StepOutcome& outcome = steps_.emplace_back();
   outcome.dt = dt;
   outcome.end = Now() + dt;
-  DriveStep* drive = any_drive_battery_ ? &drive_steps_.emplace_back() : nullptr;
-  outcome.number = world_.physics().StepAsync([this, &outcome, drive] { Integrate(outcome, drive); });
-  if (drive) drive->number = outcome.number, drive->dt = dt;
+  Aftermath* aftermath = any_drive_battery_ || any_sampler_ ? &aftermaths_.emplace_back() : nullptr;
+  outcome.number = world_.physics().StepAsync([this, &outcome, aftermath] { Integrate(outcome, aftermath); });
+  if (aftermath) aftermath->number = outcome.number, aftermath->dt = dt;
   ++launched_;
   ns3::Simulator::Schedule(Period(dt), &Stepper::PhysicsStep, this);
 }
@@ -223,7 +223,7 @@ void Stepper::PhysicsStep() {
 // thread when there is one: it steps the engine, reads vehicles_, motes_ and the models, and
 // writes the bodies, their odometry, moved_, moving_, the physics and sensing times and
 // `outcome`; the network's thread touches none of these without waiting for it.
-void Stepper::Integrate(StepOutcome& outcome, DriveStep* drive) {
+void Stepper::Integrate(StepOutcome& outcome, Aftermath* aftermath) {
   CollectMoving();  // awake before the step
   {
     WallTimer timer(profile_.physics);
@@ -236,12 +236,21 @@ void Stepper::Integrate(StepOutcome& outcome, DriveStep* drive) {
       if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep(outcome.end);
   }
   outcome.poses = world_.RadioPoses(moved_);
-  if (drive)
-    for (NodeId id : moved_)
-      if (drives_battery_[id]) drive->tallies.emplace_back(id, world_.model(id).vehicle()->drive_tally());
+  if (aftermath) Leave(*aftermath);
   outcome.messages = world_.physics().TakeMessages();
   for (NodeId id : moved_) moving_[id] = 0;
   moved_.clear();
+}
+
+// On the physics thread, with Integrate: what the step leaves for its boundary.
+void Stepper::Leave(Aftermath& aftermath) {
+  static thread_local std::vector<sensors::SensorSet::Sample> taken;
+  for (NodeId id : moved_) {
+    if (drives_battery_[id]) aftermath.tallies.emplace_back(id, world_.model(id).vehicle()->drive_tally());
+    taken.clear();
+    world_.sensors(id).TakeSamples(taken);
+    for (sensors::SensorSet::Sample& sample : taken) aftermath.samples.emplace_back(id, std::move(sample));
+  }
 }
 
 // The radios learn where the bodies were at the end of each step that has ended.
@@ -255,15 +264,17 @@ void Stepper::CatchUp() {
   }
 }
 
-// The batteries draw what the drives did, a step late: at each physics boundary, for the steps
-// before the one that ends there; at the run's end, for all. So when a drive's work is drawn
-// depends on the steps alone, not on who read positions, nor on where a script cut the run.
-void Stepper::ApplyDrives(std::size_t keep) {
-  while (drive_steps_.size() > keep) {
-    const DriveStep& step = drive_steps_.front();
+// The batteries draw what the drives did, and the samples the sensors took are published, a step
+// late: at each physics boundary, for the steps before the one that ends there; at the run's end,
+// for all. So when a drive's work is drawn depends on the steps alone, not on who read positions,
+// nor on where a script cut the run.
+void Stepper::ApplyAftermath(std::size_t keep) {
+  while (aftermaths_.size() > keep) {
+    const Aftermath& step = aftermaths_.front();
     world_.physics().SettleStep(step.number);
     for (const auto& [id, tally] : step.tallies) world_.Drove(id, tally, step.dt);
-    drive_steps_.pop_front();
+    for (const auto& [id, sample] : step.samples) world_.Sampled(id, sample);
+    aftermaths_.pop_front();
   }
 }
 
@@ -273,6 +284,7 @@ void Stepper::NoteDrive(NodeId id) {
   const energy::NodeEnergy* energy = world_.batteries().Of(id);
   drives_battery_[id] = world_.model(id).mobile() && energy && energy->spec().drive;
   any_drive_battery_ = any_drive_battery_ || drives_battery_[id];
+  any_sampler_ = any_sampler_ || world_.sensors(id).SamplesOnItsOwn();
 }
 
 void Stepper::ReportEngineMessage(double t, const physics::EngineMessage& m) {

@@ -74,17 +74,20 @@ class Stepper {
     double end = 0;                                // s, simulated
     std::vector<physics::EngineMessage> messages;  // the engine's, during it
   };
-  // What the drives of robots with batteries did in a step, by the end of it: drawn from their
-  // batteries at the next step's boundary (ApplyDrives), whoever reads positions in between.
-  struct DriveStep {
+  // What a step leaves for the next step's boundary (ApplyAftermath), whoever reads positions in
+  // between: what the drives of robots with batteries did, drawn from their batteries, and the
+  // samples sensors took on their own clocks during it, published.
+  struct Aftermath {
     std::uint64_t number = 0;  // the physics world's
     double dt = 0;
     std::vector<std::pair<NodeId, physics::DriveTally>> tallies;  // the robots that moved
+    std::vector<std::pair<NodeId, sensors::SensorSet::Sample>> samples;
   };
-  void Integrate(StepOutcome& outcome, DriveStep* drive);
+  void Integrate(StepOutcome& outcome, Aftermath* aftermath);
+  void Leave(Aftermath& aftermath);
   void CatchUp();
-  void ApplyDrives(std::size_t keep);  // all steps' but the last `keep`
-  void NoteDrive(NodeId id);           // whether its drive draws on a battery
+  void ApplyAftermath(std::size_t keep);  // all steps' but the last `keep`
+  void NoteDrive(NodeId id);              // whether its drive draws on a battery, its sensors sample
   void Record();
   void StartEnergySamples();      // once some node has a battery
   void SampleEnergy(bool again);  // every battery, for energy.csv; `again`: and the next sample
@@ -104,7 +107,7 @@ class Stepper {
   std::vector<Subscription> subscriptions_;
   std::vector<NodeId> vehicles_, motes_;
   std::map<std::int64_t, std::vector<NodeId>> control_rounds_;  // period (ns) -> nodes, in node order
-  std::deque<DriveStep> drive_steps_;                           // started, their drives not drawn yet
+  std::deque<Aftermath> aftermaths_;                            // of steps started, not applied yet
   std::deque<StepOutcome> steps_;                               // started, and not yet published to the radios
   std::size_t due_ = 0;                                         // the first due_ of them have ended
   std::uint64_t launched_ = 0;
@@ -113,6 +116,7 @@ class Stepper {
   Chargers chargers_{world_};
   std::vector<char> drives_battery_;  // per node: a robot with a battery
   bool any_drive_battery_ = false;
+  bool any_sampler_ = false;  // some node's sensor samples on its own clock
   RouteWatch routes_;
   double last_energy_sample_ = -1;  // s
   bool sampling_energy_ = false;

@@ -5,37 +5,28 @@
 #include <array>
 #include <cmath>
 
+#include "sensors/sampling_sensor.h"
 #include "sensors/sensor_registry.h"
 
 namespace sanet::sensors {
 namespace {
 
-class Imu : public SensorInstance {
+class Imu : public SamplingSensor {
  public:
-  Imu(ImuSettings settings, Mount mount) : settings_(settings), mount_(mount) {}
-
-  std::optional<SensorReading> Read(const ReadContext& context) override {
-    mount_.world.Settle();
-    SampleUntil(context.time);  // a robot at rest has no physics steps to sample on
-    return sample_;
-  }
-
-  void AfterPhysicsStep(double time) override { SampleUntil(time); }
+  Imu(ImuSettings settings, Mount mount)
+      : SamplingSensor(settings.rate, mount.world), settings_(settings), mount_(mount) {}
 
  private:
-  // Every sample due by `time`. A sample's acceleration is the change of the body's velocity
-  // since the previous sample over the sample period (an IMU's delta velocity): integrated, the
-  // samples give the velocity back exactly.
-  void SampleUntil(double time) {
-    const double period = 1 / settings_.rate;
-    for (; next_sample_ <= time + 1e-9; next_sample_ += period) {
-      const Twist2D v = mount_.model.body().velocity();
-      const bool first = !sampled_;
-      const Vec2 a = first ? Vec2{0, 0} : Vec2{(v.vx - velocity_.vx) / period, (v.vy - velocity_.vy) / period};
-      const double alpha = first ? 0 : (v.omega - velocity_.omega) / period;
-      velocity_ = v, sampled_ = true;
-      sample_ = Noisy(Truth(a, alpha), period);
-    }
+  // A sample's acceleration is the change of the body's velocity since the previous sample over
+  // the sample period (an IMU's delta velocity): integrated, the samples give the velocity back
+  // exactly.
+  SensorReading Sample(double period) override {
+    const Twist2D v = mount_.model.body().velocity();
+    const bool first = !sampled_;
+    const Vec2 a = first ? Vec2{0, 0} : Vec2{(v.vx - velocity_.vx) / period, (v.vy - velocity_.vy) / period};
+    const double alpha = first ? 0 : (v.omega - velocity_.omega) / period;
+    velocity_ = v, sampled_ = true;
+    return Noisy(Truth(a, alpha), period);
   }
 
   // The specific force and turn rate at the mount, in the robot's frame, from the body's
@@ -79,8 +70,6 @@ class Imu : public SensorInstance {
 
   ImuSettings settings_;
   Mount mount_;
-  ImuReading sample_;
-  double next_sample_ = 0;
   Twist2D velocity_;  // at the previous sample
   bool sampled_ = false;
   std::array<double, 3> gyro_bias_{}, accel_bias_{};
@@ -100,6 +89,7 @@ class InertialUnit : public SensorKind {
     return info;
   }
   std::any DefaultSettings(const robots::ModelSpec& /*model*/) const override { return ImuSettings{}; }
+  bool SamplesOnItsOwn() const override { return true; }
   std::unique_ptr<SensorInstance> Create(const std::any& settings, Mount mount) const override {
     return std::make_unique<Imu>(std::any_cast<ImuSettings>(settings), mount);
   }

@@ -1,0 +1,23 @@
+#include "sensors/sampling_sensor.h"
+
+namespace sanet::sensors {
+
+std::optional<SensorReading> SamplingSensor::Read(const ReadContext& context) {
+  world_.Settle();
+  SampleUntil(context.time);
+  return latest_;
+}
+
+void SamplingSensor::TakeSamples(std::vector<TimedReading>& out) {
+  for (TimedReading& r : unsent_) out.push_back(std::move(r));
+  unsent_.clear();
+}
+
+void SamplingSensor::SampleUntil(double time) {
+  for (; next_ <= time + 1e-9; next_ += period_) {
+    latest_ = Sample(period_);
+    unsent_.push_back({next_, *latest_});
+  }
+}
+
+}  // namespace sanet::sensors

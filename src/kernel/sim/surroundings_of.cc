@@ -1,0 +1,110 @@
+#include "sim/surroundings_of.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace sanet::sim {
+namespace {
+
+using sensors::Region;
+
+Region Footprint(const physics::StaticBox& box) {
+  const double c = std::cos(box.yaw), s = std::sin(box.yaw);
+  const double hx = box.size.x / 2, hy = box.size.y / 2;
+  Region corners;
+  for (const auto& [u, v] : {std::pair{hx, hy}, {-hx, hy}, {-hx, -hy}, {hx, -hy}})
+    corners.push_back({box.center.x + c * u - s * v, box.center.y + s * u + c * v});
+  return corners;
+}
+
+double Cross(Vec2 o, Vec2 a, Vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+double PointToSegment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double length2 = Dot(ab, ab);
+  const double t = length2 > 0 ? std::clamp(Dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return Norm(p - (a + ab * t));
+}
+
+bool SegmentsCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return Cross(a, b, c) * Cross(a, b, d) <= 0 && Cross(c, d, a) * Cross(c, d, b) <= 0;
+}
+
+// The gap between two convex footprints: 0 where they touch or overlap.
+double Gap(const Region& p, const Region& q) {
+  if (sensors::Inside(p, q[0]) || sensors::Inside(q, p[0])) return 0;
+  double gap = HUGE_VAL;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const Vec2 a = p[i], b = p[(i + 1) % p.size()], c = q[j], d = q[(j + 1) % q.size()];
+      if (SegmentsCross(a, b, c, d)) return 0;
+      gap = std::min({gap, PointToSegment(a, c, d), PointToSegment(c, a, b)});
+    }
+  return gap;
+}
+
+// Andrew's monotone chain, counter-clockwise.
+Region ConvexHull(Region points) {
+  std::sort(points.begin(), points.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  Region hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {  // lower
+    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {  // upper
+    while (k >= lower && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k > 1 ? k - 1 : k);
+  return hull;
+}
+
+std::size_t Root(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// world.map's extent: its cells' rectangle, turned by its origin's yaw about the origin.
+Region MapExtent(const WorldMap& map) {
+  const double c = std::cos(map.origin[2]), s = std::sin(map.origin[2]);
+  const double w = map.columns * map.resolution, h = map.rows * map.resolution;
+  Region corners;
+  for (const auto& [u, v] : {std::pair{0.0, 0.0}, {w, 0.0}, {w, h}, {0.0, h}})
+    corners.push_back({map.origin[0] + c * u - s * v, map.origin[1] + s * u + c * v});
+  return corners;
+}
+
+}  // namespace
+
+std::vector<Region> Buildings(const std::vector<Obstacle>& obstacles) {
+  std::vector<Region> footprints;
+  for (const Obstacle& o : obstacles)
+    if (o.indoor) footprints.push_back(Footprint(o.box));
+  std::vector<std::size_t> parent(footprints.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (std::size_t i = 0; i < footprints.size(); ++i)
+    for (std::size_t j = i + 1; j < footprints.size(); ++j)
+      if (Gap(footprints[i], footprints[j]) < kDoorway) parent[Root(parent, i)] = Root(parent, j);
+  std::vector<Region> corners(footprints.size());
+  for (std::size_t i = 0; i < footprints.size(); ++i) {
+    Region& group = corners[Root(parent, i)];
+    group.insert(group.end(), footprints[i].begin(), footprints[i].end());
+  }
+  std::vector<Region> buildings;
+  for (const Region& group : corners)
+    if (!group.empty()) buildings.push_back(ConvexHull(group));
+  return buildings;
+}
+
+sensors::Surroundings SurroundingsOf(const RunSpec& spec) {
+  sensors::Surroundings s;
+  s.datum = spec.datum;
+  s.gnss_denied = spec.gnss_denied;
+  for (Region& building : Buildings(spec.obstacles)) s.gnss_denied.push_back(std::move(building));
+  if (spec.map && spec.map->indoor) s.gnss_denied.push_back(MapExtent(*spec.map));
+  return s;
+}
+
+}  // namespace sanet::sim

@@ -1,0 +1,23 @@
+// A run's surroundings for its sensors (sensors/surroundings.h), from its world: the datum, and
+// where no satellite fix is had: world.gnss_denied's regions, each building drawn by obstacles
+// marked `indoor` (the convex hull of the indoor obstacles within a doorway of each other), and
+// world.map's extent when the map is marked `indoor`.
+#pragma once
+
+#include <vector>
+
+#include "sensors/surroundings.h"
+#include "sim/run_spec.h"
+
+namespace sanet::sim {
+
+// m: indoor obstacles closer than this belong to one building (a door between two walls).
+inline constexpr double kDoorway = 1.5;
+
+sensors::Surroundings SurroundingsOf(const RunSpec& spec);
+
+// The buildings that indoor obstacles make: the convex hull of each group of footprints within
+// kDoorway of each other.
+std::vector<sensors::Region> Buildings(const std::vector<Obstacle>& obstacles);
+
+}  // namespace sanet::sim

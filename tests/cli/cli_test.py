@@ -69,17 +69,19 @@ class Cli(unittest.TestCase):
     def test_list_prints_one_section_on_request(self):
         sensors = sanet("list", "--sensors").stdout
         self.assertTrue(sensors.startswith("sensors (keys under a node's `sensors`"), sensors[:80])
-        for line in ("  laser        a planar laser scanner", "reading              RangeScan (ranges in m",
-                     "ROS 2                sensor_msgs/msg/LaserScan on /<robot>/scan",
-                     "ROS 2                sensor_msgs/msg/Range (ULTRASOUND) on /<robot>/sonar",
-                     "reading              Pose2D (x, y in m, theta in rad)", "ROS 2                none"):
+        for line in ("  laser        a planar laser scanner", "reading                      RangeScan (ranges in m",
+                     "ROS 2                        sensor_msgs/msg/LaserScan on /<robot>/scan",
+                     "ROS 2                        sensor_msgs/msg/Range (ULTRASOUND) on /<robot>/sonar",
+                     "reading                      Pose2D (x, y in m, theta in rad)", "ROS 2                        none",
+                     "accelerometer_noise_density  number (m/s²/√Hz)",  # the longest key keeps its column
+                     "ROS 2                        sensor_msgs/msg/NavSatFix on /<robot>/fix"):
             self.assertIn(line, sensors)
         self.assertNotIn("waypoint", sensors)
         self.assertNotIn("models (", sensors)
         models = sanet("list", "--models").stdout
         self.assertTrue(models.startswith("models ("), models[:40])
-        self.assertIn("carries              ir, odometry, ground_truth", models, "omni3 carries these")
-        self.assertIn("drive limits         1.2 m/s, 3 rad/s", models, "diffdrive's")
+        self.assertIn("carries                      ir, odometry, ground_truth", models, "omni3 carries these")
+        self.assertIn("drive limits                 1.2 m/s, 3 rad/s", models, "diffdrive's")
         self.assertNotIn("sensors (keys", models)
         both = sanet("list", "--models", "--sensors").stdout
         self.assertEqual(both, models + sensors)

@@ -289,5 +289,18 @@ TEST(SensorLines, AFixGoesAsUsarsimsDegreesAndMinutesAndNoFixAsFixZero) {
   EXPECT_TRUE(std::isnan(nothing.latitude));
 }
 
+TEST(SensorLines, AMalformedFixIsNoReading) {
+  for (const char* fields :
+       {"{Latitude -47,40.1,N} {Longitude 1,0,E}", "{Latitude 47,60,N} {Longitude 1,0,E}",
+        "{Latitude nan,0,N} {Longitude 1,0,E}", "{Latitude 91,0,N} {Longitude 1,0,E}",
+        "{Latitude 47,1,N} {Longitude 181,0,W}", "{Latitude 47,1,X} {Longitude 1,0,E}",
+        "{Latitude 47,1,N} {Longitude 1,0,E extra}", "{Latitude 47.5,1,N} {Longitude 1,0,E}", "{Longitude 1,0,E}"}) {
+    std::string error;
+    const auto line = ParseLine(std::string("SEN {Type GPS} {Name GPS} ") + fields + " {Fix 1}", &error);
+    ASSERT_TRUE(line) << error;
+    EXPECT_FALSE(LinesOf("gnss")->Read(*line, sensors::GnssSettings{}, LineContext{})) << fields;
+  }
+}
+
 }  // namespace
 }  // namespace sanet::wire

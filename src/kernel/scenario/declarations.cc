@@ -157,6 +157,10 @@ sensors::Region ReadDeniedRegion(const Field& v) {
       CheckPlace(corner, region.back());
     }
     if (region.size() < 3) polygon->Fail("a polygon needs three corners or more");
+    double twice_area = 0;  // the shoelace formula
+    for (std::size_t i = 0, j = region.size() - 1; i < region.size(); j = i++)
+      twice_area += region[j].x * region[i].y - region[i].x * region[j].y;
+    if (std::fabs(twice_area) < 1e-9) polygon->Fail("the polygon's corners enclose no area");
     return region;
   }
   const Vec2 center = ReadPoint(v.Require("center"));

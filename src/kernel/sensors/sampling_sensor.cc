@@ -14,9 +14,10 @@ void SamplingSensor::TakeSamples(std::vector<TimedReading>& out) {
 }
 
 void SamplingSensor::SampleUntil(double time) {
-  for (; next_ <= time + 1e-9; next_ += period_) {
+  // Each due time a whole number of periods from 0, so that they do not drift.
+  for (double due = taken_ * period_; due <= time + 1e-9; due = ++taken_ * period_) {
     latest_ = Sample(period_);
-    unsent_.push_back({next_, *latest_});
+    unsent_.push_back({due, *latest_});
   }
 }
 

@@ -11,7 +11,7 @@ SensorSet::SensorSet(physics::PhysicsWorld& world, const robots::NodeModel& mode
     if (!kind) continue;  // the scenario's reader refused unknown kinds already
     Mount mount{world, model, start, RandomStream(seed, stream_prefix + "/" + name), surroundings};
     entries_.push_back({name, config->kind, kind->Create(config->settings, mount)});
-    if (kind->SamplesOnItsOwn()) ++samplers_;
+    if (auto* sampler = dynamic_cast<SamplingSensor*>(entries_.back().instance.get())) samplers_.push_back(sampler);
     names_.push_back(name);
   }
 }
@@ -33,8 +33,12 @@ std::optional<SensorReading> SensorSet::Read(const std::string& name, const Read
   return e->instance->Read(context);
 }
 
+void SensorSet::SampleOwnClocks(double time) {
+  for (SamplingSensor* s : samplers_) s->SampleUntil(time);
+}
+
 void SensorSet::TakeSamples(std::vector<Sample>& out) {
-  if (samplers_ == 0) return;
+  if (samplers_.empty()) return;
   for (Entry& e : entries_) {
     taken_.clear();
     e.instance->TakeSamples(taken_);

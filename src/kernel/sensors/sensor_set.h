@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sensors/sampling_sensor.h"
 #include "sensors/sensor_kind.h"
 
 namespace sanet::sensors {
@@ -32,9 +33,11 @@ class SensorSet {
     const std::string *instance, *kind;
     TimedReading taken;
   };
+  // Every sample due by `time` of the sensors that sample on their own clocks.
+  void SampleOwnClocks(double time);
   // The samples its sensors took on their own clocks since the last call, instance by instance.
   void TakeSamples(std::vector<Sample>& out);
-  bool SamplesOnItsOwn() const { return samplers_ > 0; }  // some sensor does
+  bool SamplesOnItsOwn() const { return !samplers_.empty(); }  // some sensor does
 
  private:
   struct Entry {
@@ -44,8 +47,8 @@ class SensorSet {
   const Entry* Find(const std::string& name) const;
   std::vector<Entry> entries_;
   std::vector<std::string> names_;
-  std::size_t samplers_ = 0;
-  std::vector<TimedReading> taken_;  // reused
+  std::vector<SamplingSensor*> samplers_;  // the instances that sample on their own clocks
+  std::vector<TimedReading> taken_;        // reused
 };
 
 }  // namespace sanet::sensors

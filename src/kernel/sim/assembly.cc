@@ -312,22 +312,18 @@ void Assembly::ReadSensor(NodeId node, const std::string& instance, const std::s
     const auto it = sensors.find(instance);
     if (it != sensors.end()) energy->SensorRead(it->second.energy_j);
   }
-  // A sensor sampling on its own clock is logged by its samples: those this read took (a body at
-  // rest has no physics steps to take them), now; those of physics steps, at the steps' ends.
+  // A sensor sampling on its own clock is logged by its samples, which the stepper publishes
+  // (Stepper::Aftermath), not by what reads take of them.
   const sensors::SensorKind* sensor = sensors::FindKind(kind);
-  if (!sensor || !sensor->SamplesOnItsOwn()) {
-    if (running_ && bus_.Heard<SensorRead>())
-      bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
-    return;
-  }
-  std::vector<sensors::SensorSet::Sample> taken;
-  sensors_.at(node)->TakeSamples(taken);
-  for (const sensors::SensorSet::Sample& sample : taken) Sampled(node, sample);
+  if (sensor && sensor->SamplesOnItsOwn()) return;
+  if (running_ && bus_.Heard<SensorRead>()) bus_.Publish(SensorRead{Now(), node, instance, kind, reading, Body(node)});
 }
 
+// Without the body's state: the step after the sample may be in flight (asking would wait for it),
+// and the messages of sampled readings do not use it.
 void Assembly::Sampled(NodeId node, const sensors::SensorSet::Sample& sample) {
   if (running_ && bus_.Heard<SensorRead>())
-    bus_.Publish(SensorRead{sample.taken.t, node, *sample.instance, *sample.kind, sample.taken.reading, Body(node)});
+    bus_.Publish(SensorRead{sample.taken.t, node, *sample.instance, *sample.kind, sample.taken.reading, BodyState{}});
 }
 
 BodyState Assembly::Body(NodeId node) const {

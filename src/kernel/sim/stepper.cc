@@ -101,6 +101,7 @@ void Stepper::StopNow(const std::string& why) {
 
 void Stepper::End() {
   ApplyAftermath(0);
+  PublishUnsentSamples();
   world_.batteries().SettleMotion();
   // Controllers finish while the run can still record what they log and measure.
   for (NodeId id = 0; id < world_.size(); ++id) world_.host(id).Finish();
@@ -211,7 +212,7 @@ void Stepper::PhysicsStep() {
   StepOutcome& outcome = steps_.emplace_back();
   outcome.dt = dt;
   outcome.end = Now() + dt;
-  Aftermath* aftermath = any_drive_battery_ || any_sampler_ ? &aftermaths_.emplace_back() : nullptr;
+  Aftermath* aftermath = any_drive_battery_ || !samplers_.empty() ? &aftermaths_.emplace_back() : nullptr;
   outcome.number = world_.physics().StepAsync([this, &outcome, aftermath] { Integrate(outcome, aftermath); });
   if (aftermath) aftermath->number = outcome.number, aftermath->dt = dt;
   ++launched_;
@@ -234,6 +235,7 @@ void Stepper::Integrate(StepOutcome& outcome, Aftermath* aftermath) {
     WallTimer timer(profile_.sensing);
     for (NodeId id : moved_)
       if (world_.model(id).mobile()) world_.sensors(id).AfterPhysicsStep(outcome.end);
+    for (NodeId id : samplers_) world_.sensors(id).SampleOwnClocks(outcome.end);  // moving or not
   }
   outcome.poses = world_.RadioPoses(moved_);
   if (aftermath) Leave(*aftermath);
@@ -242,15 +244,30 @@ void Stepper::Integrate(StepOutcome& outcome, Aftermath* aftermath) {
   moved_.clear();
 }
 
-// On the physics thread, with Integrate: what the step leaves for its boundary.
+// On the physics thread, with Integrate: what the step leaves for its boundary. The samples are
+// those its end took and those reads took before it (in order: reads happen between steps).
 void Stepper::Leave(Aftermath& aftermath) {
-  static thread_local std::vector<sensors::SensorSet::Sample> taken;
-  for (NodeId id : moved_) {
+  for (NodeId id : moved_)
     if (drives_battery_[id]) aftermath.tallies.emplace_back(id, world_.model(id).vehicle()->drive_tally());
+  static thread_local std::vector<sensors::SensorSet::Sample> taken;
+  for (NodeId id : samplers_) {
     taken.clear();
     world_.sensors(id).TakeSamples(taken);
     for (sensors::SensorSet::Sample& sample : taken) aftermath.samples.emplace_back(id, std::move(sample));
   }
+}
+
+// At the end, with the physics settled: the samples due by now that no step took (a world
+// without vehicles has no steps), a second at a time so that a long run's backlog never piles up.
+void Stepper::PublishUnsentSamples() {
+  std::vector<sensors::SensorSet::Sample> taken;
+  for (NodeId id : samplers_)
+    for (double t = 0, end = Now(); t < end + 1; t += 1) {
+      world_.sensors(id).SampleOwnClocks(std::min(t, end));
+      taken.clear();
+      world_.sensors(id).TakeSamples(taken);
+      for (const sensors::SensorSet::Sample& sample : taken) world_.Sampled(id, sample);
+    }
 }
 
 // The radios learn where the bodies were at the end of each step that has ended.
@@ -284,7 +301,8 @@ void Stepper::NoteDrive(NodeId id) {
   const energy::NodeEnergy* energy = world_.batteries().Of(id);
   drives_battery_[id] = world_.model(id).mobile() && energy && energy->spec().drive;
   any_drive_battery_ = any_drive_battery_ || drives_battery_[id];
-  any_sampler_ = any_sampler_ || world_.sensors(id).SamplesOnItsOwn();
+  if (world_.sensors(id).SamplesOnItsOwn() && std::find(samplers_.begin(), samplers_.end(), id) == samplers_.end())
+    samplers_.push_back(id);
 }
 
 void Stepper::ReportEngineMessage(double t, const physics::EngineMessage& m) {

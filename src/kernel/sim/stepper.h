@@ -85,6 +85,7 @@ class Stepper {
   };
   void Integrate(StepOutcome& outcome, Aftermath* aftermath);
   void Leave(Aftermath& aftermath);
+  void PublishUnsentSamples();  // at the end: those reads took after the last step
   void CatchUp();
   void ApplyAftermath(std::size_t keep);  // all steps' but the last `keep`
   void NoteDrive(NodeId id);              // whether its drive draws on a battery, its sensors sample
@@ -116,7 +117,7 @@ class Stepper {
   Chargers chargers_{world_};
   std::vector<char> drives_battery_;  // per node: a robot with a battery
   bool any_drive_battery_ = false;
-  bool any_sampler_ = false;  // some node's sensor samples on its own clock
+  std::vector<NodeId> samplers_;  // nodes with a sensor that samples on its own clock (read on the physics thread)
   RouteWatch routes_;
   double last_energy_sample_ = -1;  // s
   bool sampling_energy_ = false;

@@ -29,13 +29,20 @@ std::string DegreesMinutes(double degrees, char positive, char negative) {
   return text;
 }
 
-std::optional<double> Degrees(const std::string* text, char positive, char negative) {
+// "47,40.332312,N" back to degrees; nothing unless it is whole degrees up to `most`, minutes in
+// [0, 60), one of the hemispheres and nothing after.
+std::optional<double> Degrees(const std::string* text, char positive, char negative, double most) {
   if (!text) return std::nullopt;
   double whole = 0, minutes = 0;
   char hemisphere = 0;
-  if (std::sscanf(text->c_str(), "%lf,%lf,%c", &whole, &minutes, &hemisphere) != 3) return std::nullopt;
+  int end = 0;
+  if (std::sscanf(text->c_str(), "%lf,%lf,%c%n", &whole, &minutes, &hemisphere, &end) != 3 ||
+      static_cast<std::size_t>(end) != text->size())
+    return std::nullopt;
   if (hemisphere != positive && hemisphere != negative) return std::nullopt;
-  const double degrees = std::fabs(whole) + minutes / 60;
+  if (!(whole >= 0 && whole == std::floor(whole) && minutes >= 0 && minutes < 60)) return std::nullopt;
+  const double degrees = whole + minutes / 60;
+  if (degrees > most) return std::nullopt;
   return hemisphere == negative ? -degrees : degrees;
 }
 
@@ -61,10 +68,11 @@ class GpsLines : public SensorLines {
     FixReading r;
     r.latitude = r.longitude = r.altitude = std::numeric_limits<double>::quiet_NaN();
     if (*fix == 0) return r;  // status kNoFix
-    const auto latitude = Degrees(line.Get("Latitude"), 'N', 'S'), longitude = Degrees(line.Get("Longitude"), 'E', 'W');
+    const auto latitude = Degrees(line.Get("Latitude"), 'N', 'S', 90);
+    const auto longitude = Degrees(line.Get("Longitude"), 'E', 'W', 180);
     if (!latitude || !longitude) return std::nullopt;
     r.latitude = *latitude, r.longitude = *longitude, r.status = FixReading::kFix;
-    if (const auto altitude = line.Number("Altitude")) r.altitude = *altitude;
+    if (const auto altitude = line.Number("Altitude"); altitude && std::isfinite(*altitude)) r.altitude = *altitude;
     const auto& s = std::any_cast<const sensors::GnssSettings&>(settings);
     r.position_covariance[0] = r.position_covariance[4] = s.horizontal_noise * s.horizontal_noise;
     r.position_covariance[8] = s.vertical_noise * s.vertical_noise;

@@ -151,6 +151,79 @@ TEST_F(Ros2Interop, RangeIsTheSameBytesBothWays) {
   dds_return_loan(typed_reader_, loan_, 1);
 }
 
+TEST_F(Ros2Interop, ImuIsTheSameBytesBothWays) {
+  sensor_msgs_msg_dds__Imu_ c;
+  std::memset(&c, 0, sizeof c);
+  c.header.stamp.sec = 12, c.header.stamp.nanosec = 5000000;
+  c.header.frame_id = const_cast<char*>("little/imu");
+  c.orientation.w = 1;  // geometry_msgs/Quaternion's default: the identity
+  c.orientation_covariance[0] = -1;
+  c.angular_velocity.z = 0.75, c.angular_velocity_covariance[8] = 2.5e-5;
+  c.linear_acceleration.x = 0.125, c.linear_acceleration.z = 9.81, c.linear_acceleration_covariance[4] = 4e-4;
+  sensor_msgs::Imu m;
+  m.header.stamp.sec = 12, m.header.stamp.nanosec = 5000000;
+  m.header.frame_id = "little/imu";
+  m.orientation_covariance[0] = -1;
+  m.angular_velocity.z = 0.75, m.angular_velocity_covariance[8] = 2.5e-5;
+  m.linear_acceleration.x = 0.125, m.linear_acceleration.z = 9.81, m.linear_acceleration_covariance[4] = 4e-4;
+  EXPECT_EQ(CycloneBytes(&sensor_msgs_msg_dds__Imu__desc, "imu", &c), Encode(m));
+  auto* back = static_cast<sensor_msgs_msg_dds__Imu_*>(CycloneSample(Encode(m)));
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->linear_acceleration.z, 9.81);
+  EXPECT_EQ(back->orientation_covariance[0], -1);
+  dds_return_loan(typed_reader_, loan_, 1);
+}
+
+TEST_F(Ros2Interop, NavSatFixIsTheSameBytesBothWays) {
+  sensor_msgs_msg_dds__NavSatFix_ c;
+  std::memset(&c, 0, sizeof c);
+  c.header.frame_id = const_cast<char*>("little/gnss");
+  c.status.status = -1, c.status.service = 1;
+  c.latitude = 52.2053, c.longitude = -0.1218, c.altitude = std::nan("");
+  c.position_covariance[0] = c.position_covariance[4] = 1.44, c.position_covariance[8] = 6.25;
+  c.position_covariance_type = 2;
+  sensor_msgs::NavSatFix m;
+  m.header.frame_id = "little/gnss";
+  m.status.status = -1, m.status.service = 1;
+  m.latitude = 52.2053, m.longitude = -0.1218, m.altitude = std::nan("");
+  m.position_covariance[0] = m.position_covariance[4] = 1.44, m.position_covariance[8] = 6.25;
+  m.position_covariance_type = 2;
+  EXPECT_EQ(CycloneBytes(&sensor_msgs_msg_dds__NavSatFix__desc, "fix", &c), Encode(m));
+  auto* back = static_cast<sensor_msgs_msg_dds__NavSatFix_*>(CycloneSample(Encode(m)));
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->status.status, -1);
+  EXPECT_EQ(back->status.service, 1);
+  EXPECT_EQ(back->longitude, -0.1218);
+  EXPECT_TRUE(std::isnan(back->altitude));
+  EXPECT_EQ(back->position_covariance_type, 2);
+  dds_return_loan(typed_reader_, loan_, 1);
+}
+
+TEST_F(Ros2Interop, JointStateIsTheSameBytesBothWays) {
+  char left[] = "left_wheel_joint", right[] = "right_wheel_joint";
+  char* names[] = {left, right};
+  double position[] = {12.5, -3.25}, velocity[] = {4, -4};
+  sensor_msgs_msg_dds__JointState_ c;
+  std::memset(&c, 0, sizeof c);
+  c.header.frame_id = const_cast<char*>("little/base_link");
+  c.name._length = c.name._maximum = 2, c.name._buffer = names;
+  c.position._length = c.position._maximum = 2, c.position._buffer = position;
+  c.velocity._length = c.velocity._maximum = 2, c.velocity._buffer = velocity;
+  sensor_msgs::JointState m;
+  m.header.frame_id = "little/base_link";
+  m.name = {left, right};
+  m.position = {12.5, -3.25};
+  m.velocity = {4, -4};
+  EXPECT_EQ(CycloneBytes(&sensor_msgs_msg_dds__JointState__desc, "joints", &c), Encode(m));
+  auto* back = static_cast<sensor_msgs_msg_dds__JointState_*>(CycloneSample(Encode(m)));
+  ASSERT_TRUE(back);
+  ASSERT_EQ(back->name._length, 2u);
+  EXPECT_STREQ(back->name._buffer[1], "right_wheel_joint");
+  EXPECT_EQ(back->velocity._buffer[1], -4);
+  EXPECT_EQ(back->effort._length, 0u);
+  dds_return_loan(typed_reader_, loan_, 1);
+}
+
 TEST_F(Ros2Interop, TfMessageIsTheSameBytesBothWays) {
   geometry_msgs_msg_dds__TransformStamped_ transforms[2];
   std::memset(transforms, 0, sizeof transforms);

@@ -92,6 +92,7 @@ class Encoders(unittest.TestCase):
         log = json.loads(done.stdout)
         self.assertEqual(log["errorCount"], 0, log["errors"])
         self.assertEqual(log["channels"]["/r/joint_states"]["schema"], "sensor_msgs/msg/JointState")
+        self.assertEqual(log["counts"]["/r/joint_states"], 6 * 50 + 1, "every sample of 6 s at 50 Hz")
         last = log["last"]["/r/joint_states"]
         self.assertEqual(last["name"], ["left_wheel_joint", "right_wheel_joint"])
         self.assertEqual(len(last["position"]), 2)

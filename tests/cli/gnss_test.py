@@ -149,6 +149,9 @@ class Gnss(unittest.TestCase):
         self.assertEqual({r[1] for r in rows["inside"]}, {-1})
         self.assertEqual({r[1] for r in rows["doorway"]}, {-1}, "a doorway is inside the building")
         self.assertEqual({r[1] for r in rows["outside"]}, {0})
+        said = subprocess.run([SANET, "validate", os.path.join(self.tmp, "s.yaml")], capture_output=True, text=True)
+        self.assertIn("none in 1 region(s) of world.gnss_denied; in the building of indoor obstacles within (",
+                      said.stdout, "validate says where the walls' building denies the fix")
         office = os.path.join(SOURCE, "scenarios", "maps", "office.yaml")
         world = DATUM_LINE + f"  map: {{file: {office}, indoor: true}}\n"
         rows = run(self.tmp, robot("indoors", 4, 4) + robot("yard", -20, -20), 1, world)

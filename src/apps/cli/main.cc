@@ -40,6 +40,7 @@
 #include "scenario/scenario_loader.h"
 #include "serve_command.h"
 #include "sim/radio_calibration.h"
+#include "sim/surroundings_of.h"
 #include "sim/world.h"
 #include "study_commands.h"
 #include "terminal_progress.h"
@@ -140,6 +141,8 @@ int Validate(const std::string& file, const std::vector<std::string>& sets, bool
     std::fputs(scenario::EffectiveScenarioYaml(sc).c_str(), stdout);
     // A comment, so that the printed scenario still loads: where the abstract radio's table comes from.
     if (abstract) std::printf("# network.calibration: %s\n", sim::DescribeCalibration(*network).c_str());
+    if (const std::string fixes = sim::DescribeSurroundings(sc.run); !fixes.empty())
+      std::printf("# %s\n", fixes.c_str());
     return 0;
   }
   std::size_t robots = 0, controlled = 0;
@@ -152,6 +155,7 @@ int Validate(const std::string& file, const std::vector<std::string>& sets, bool
               Count(sc.run.obstacles.size(), "obstacle").c_str(), sc.run.duration,
               static_cast<unsigned long long>(sc.run.seed));
   if (abstract) std::printf("  the abstract radio's calibration: %s\n", sim::DescribeCalibration(*network).c_str());
+  if (const std::string fixes = sim::DescribeSurroundings(sc.run); !fixes.empty()) std::printf("  %s\n", fixes.c_str());
   return 0;
 }
 

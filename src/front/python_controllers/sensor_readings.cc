@@ -32,11 +32,22 @@ void BindMotionReadings(py::module_& m) {
                              })
       .def_readonly("angular_velocity_covariance", &ImuReading::angular_velocity_covariance)
       .def_readonly("linear_acceleration_covariance", &ImuReading::linear_acceleration_covariance)
-      .def_readonly("orientation_covariance", &ImuReading::orientation_covariance);
+      .def_readonly("orientation_covariance", &ImuReading::orientation_covariance)
+      .def("__repr__", [](const ImuReading& r) {
+        return py::str("ImuReading(angular_velocity={}, linear_acceleration={}, orientation={})")
+            .format(Tuple3(r.angular_velocity), Tuple3(r.linear_acceleration),
+                    r.orientation ? py::object(py::make_tuple(r.orientation->x, r.orientation->y, r.orientation->z,
+                                                              r.orientation->w))
+                                  : py::object(py::none()));
+      });
   py::class_<JointStatesReading>(m, "JointStatesReading", "Joints: names, angles (rad) and speeds (rad/s)")
       .def_readonly("names", &JointStatesReading::names)
       .def_readonly("angles", &JointStatesReading::angles)
-      .def_readonly("speeds", &JointStatesReading::speeds);
+      .def_readonly("speeds", &JointStatesReading::speeds)
+      .def("__repr__", [](const JointStatesReading& r) {
+        return py::str("JointStatesReading(names={}, angles={}, speeds={})")
+            .format(py::cast(r.names), py::cast(r.angles), py::cast(r.speeds));
+      });
 }
 
 void BindOtherReadings(py::module_& m) {
@@ -56,7 +67,11 @@ void BindOtherReadings(py::module_& m) {
       .def_readonly("longitude", &FixReading::longitude)
       .def_readonly("altitude", &FixReading::altitude)
       .def_readonly("status", &FixReading::status)
-      .def_readonly("position_covariance", &FixReading::position_covariance);
+      .def_readonly("position_covariance", &FixReading::position_covariance)
+      .def("__repr__", [](const FixReading& r) {
+        return py::str("FixReading(status={}, latitude={}, longitude={}, altitude={})")
+            .format(r.status, r.latitude, r.longitude, r.altitude);
+      });
   py::class_<ImageReading>(m, "ImageReading",
                            "A camera image: width, height, encoding, data (bytes, rows top to bottom), depth "
                            "(list of m per pixel, empty without depth)")

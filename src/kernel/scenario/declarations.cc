@@ -147,6 +147,8 @@ sensors::GeoDatum ReadDatum(const Field& v) {
 // One of world.gnss_denied: `{polygon: [[x, y], ...]}` (three corners or more, in order) or a box
 // `{center, size: [length, width], yaw}`. Printed as its polygon.
 sensors::Region ReadDeniedRegion(const Field& v) {
+  if (!v.IsMap())
+    v.Fail("a region is a mapping: `{polygon: [[x, y], ...]}` or `{center: [x, y], size: [length, width]}`");
   v.ExpectKeys({"polygon", "center", "size", "yaw"});
   sensors::Region region;
   if (auto polygon = v.Get("polygon")) {

@@ -81,17 +81,20 @@ const Fields<robots::SensorConfig>& DrawFields() {
 // the kind's own keys, so that they print as those.
 void MountOnLink(const Field& link, const Field& value, const robots::ModelSpec& model, const std::string& kind,
                  std::any& settings) {
+  std::vector<std::string> keys;  // of the mount, that the kind has
+  for (const FieldInfo& key : FieldsOf(kind).Describe(settings))
+    if (key.key == "mount_x" || key.key == "mount_y" || key.key == "height") keys.push_back(key.key);
+  if (std::find(keys.begin(), keys.end(), "mount_x") == keys.end())
+    link.Fail("a sensor of kind " + kind + " has no mount (mount_x) to put on a link: it takes no `link`");
   if (!model.urdf) link.Fail("names a URDF link: the robot's body needs `urdf`");
   const auto place = model.urdf->links.find(link.Text());
-  if (place == model.urdf->links.end()) link.Fail("the robot's URDF has no link '" + link.Text() + "'");
+  if (place == model.urdf->links.end()) {
+    std::string links;
+    for (const auto& [name, pose] : model.urdf->links) links += (links.empty() ? "" : ", ") + name;
+    link.Fail("the robot's URDF has no link '" + link.Text() + "' (its links: " + links + ")");
+  }
   YAML::Node mount(YAML::NodeType::Map);
-  const std::pair<const char*, double> keys[] = {
-      {"mount_x", place->second[0]}, {"mount_y", place->second[1]}, {"height", place->second[2]}};
-  bool mounts = false;
-  for (const FieldInfo& key : FieldsOf(kind).Describe(settings))
-    for (const auto& [name, value] : keys)
-      if (key.key == name) mount[name] = value, mounts = mounts || key.key == "mount_x";
-  if (!mounts) link.Fail("a " + kind + " sensor has no mount to put on a link");
+  for (const std::string& key : keys) mount[key] = place->second[key == "mount_x" ? 0 : key == "mount_y" ? 1 : 2];
   FieldsOf(kind).Read(Field(mount, value.path(), std::make_shared<const std::string>(value.file())), settings);
 }
 

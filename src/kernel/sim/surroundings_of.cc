@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 
 namespace sanet::sim {
@@ -105,6 +106,34 @@ sensors::Surroundings SurroundingsOf(const RunSpec& spec) {
   for (Region& building : Buildings(spec.obstacles)) s.gnss_denied.push_back(std::move(building));
   if (spec.map && spec.map->indoor) s.gnss_denied.push_back(MapExtent(*spec.map));
   return s;
+}
+
+namespace {
+
+std::string Corners(const Region& region) {
+  std::string text;
+  char point[64];
+  for (Vec2 p : region) {
+    std::snprintf(point, sizeof point, "%s(%.2f, %.2f)", text.empty() ? "" : ", ", p.x, p.y);
+    text += point;
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string DescribeSurroundings(const RunSpec& spec) {
+  const std::vector<Region> buildings = Buildings(spec.obstacles);
+  if (!spec.datum && spec.gnss_denied.empty() && buildings.empty() && !(spec.map && spec.map->indoor)) return "";
+  char datum[128] = "no world.datum (a gnss sensor needs one)";
+  if (spec.datum)
+    std::snprintf(datum, sizeof datum, "the datum %.7f, %.7f, %.2f m", spec.datum->latitude, spec.datum->longitude,
+                  spec.datum->altitude);
+  std::string text = std::string("satellite fixes: ") + datum + "; none in " + std::to_string(spec.gnss_denied.size()) +
+                     " region(s) of world.gnss_denied";
+  if (spec.map && spec.map->indoor) text += ", over world.map";
+  for (const Region& b : buildings) text += "; in the building of indoor obstacles within " + Corners(b);
+  return text;
 }
 
 }  // namespace sanet::sim

@@ -4,6 +4,7 @@
 // world.map's extent when the map is marked `indoor`.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "sensors/surroundings.h"
@@ -15,6 +16,9 @@ namespace sanet::sim {
 inline constexpr double kDoorway = 1.5;
 
 sensors::Surroundings SurroundingsOf(const RunSpec& spec);
+// For `sanet validate`: the datum and where there is no fix, the buildings of indoor obstacles by
+// their hulls' corners; "" for a world with neither.
+std::string DescribeSurroundings(const RunSpec& spec);
 
 // The buildings that indoor obstacles make: the convex hull of each group of footprints within
 // kDoorway of each other.

@@ -3,42 +3,43 @@
 
 #include <cmath>
 
+#include "sensors/sampling_sensor.h"
 #include "sensors/sensor_registry.h"
 
 namespace sanet::sensors {
 namespace {
 
-class WheelEncoders : public SensorInstance {
+// Sampled at its rate, as a motor controller counts its wheels' ticks: each sample's speed is the
+// mean over the period before it.
+class WheelEncoders : public SamplingSensor {
  public:
-  WheelEncoders(EncodersSettings settings, Mount mount) : settings_(std::move(settings)), mount_(mount) {}
+  WheelEncoders(EncodersSettings settings, Mount mount)
+      : SamplingSensor(settings.rate, mount.world), settings_(std::move(settings)), mount_(mount) {}
 
-  std::optional<SensorReading> Read(const ReadContext& context) override {
-    mount_.world.Settle();  // the step under way turns the wheels
+ private:
+  SensorReading Sample(double period) override {
     const physics::Vehicle& vehicle = *mount_.model.vehicle();
     const std::size_t n = vehicle.wheel_count();
-    if (last_angles_.size() != n) last_angles_.assign(n, 0.0);
+    const bool first = last_angles_.size() != n;
+    if (first) last_angles_.assign(n, 0.0);
     JointStatesReading r;
     r.names = settings_.names;
     r.names.resize(n);
-    const double dt = context.time - last_time_;
     for (std::size_t i = 0; i < n; ++i) {
       const double exact = vehicle.wheel_angle(i);
       r.angles.push_back(settings_.resolution > 0 ? std::floor(exact / settings_.resolution) * settings_.resolution
                                                   : exact);
-      double speed = dt > 0 ? (exact - last_angles_[i]) / dt : last_speeds_.size() == n ? last_speeds_[i] : 0;
+      double speed = first ? 0 : (exact - last_angles_[i]) / period;
       if (settings_.noise > 0) speed = mount_.random.Gaussian(speed, settings_.noise);
       r.speeds.push_back(speed);
-      if (dt > 0) last_angles_[i] = exact;
+      last_angles_[i] = exact;
     }
-    if (dt > 0) last_time_ = context.time, last_speeds_ = r.speeds;
     return r;
   }
 
- private:
   EncodersSettings settings_;
   Mount mount_;
-  std::vector<double> last_angles_, last_speeds_;
-  double last_time_ = 0;
+  std::vector<double> last_angles_;
 };
 
 class Encoders : public SensorKind {
@@ -67,6 +68,7 @@ class Encoders : public SensorKind {
       return "a " + std::string(robots::ModelName(model.kind)) + " has no wheels, so no encoders";
     return std::nullopt;
   }
+  bool SamplesOnItsOwn() const override { return true; }
   std::unique_ptr<SensorInstance> Create(const std::any& settings, Mount mount) const override {
     return std::make_unique<WheelEncoders>(std::any_cast<const EncodersSettings&>(settings), mount);
   }

@@ -12,6 +12,7 @@
 namespace sanet::sensors {
 
 struct EncodersSettings {
+  double rate = 50;                // Hz: samples a second, on the simulated clock
   double resolution = 0;           // rad per tick; 0: the exact angle
   double noise = 0;                // rad/s, standard deviation of each speed
   std::vector<std::string> names;  // per wheel (not a scenario key: from the model)

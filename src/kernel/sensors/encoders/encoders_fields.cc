@@ -10,6 +10,7 @@ using sensors::EncodersSettings;
 const Fields<EncodersSettings>& EncodersFields() {
   static const Fields<EncodersSettings> fields = [] {
     Fields<EncodersSettings> f;
+    f.Number("rate", Member(&EncodersSettings::rate), "Hz", 0, 10000, "samples a second, on the simulated clock", true);
     f.Number("resolution", Member(&EncodersSettings::resolution), "rad", 0, 1,
              "one tick: angles are whole ticks (2π / ticks per turn); 0: exact");
     f.Number("noise", Member(&EncodersSettings::noise), "rad/s", 0, 100, "standard deviation of each speed");

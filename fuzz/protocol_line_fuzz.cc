@@ -1,15 +1,33 @@
 // Any bytes as a client's stream to the simulation server: split into lines, parsed, and read as
-// the messages the server and the agents take apart (numbers, MSG, RECV). None may crash, hang
-// or trip a sanitizer; a line that parses must format and parse again to the same message.
+// the messages the server and the agents take apart (numbers, MSG, RECV, every sensor kind's SEN
+// line as an agent reads it). None may crash, hang or trip a sanitizer; a line that parses must
+// format and parse again to the same message.
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 #include <string_view>
 
+#include "sensors/sensor_registry.h"
 #include "wire/message_lines.h"
 #include "wire/protocol.h"
+#include "wire/sensor_lines.h"
 
 using sanet::wire::ProtocolMessage;
+
+namespace {
+
+// Every kind's SEN line reader, with the kind's settings on a diffdrive.
+void ReadAsSensorLines(const ProtocolMessage& m) {
+  static const sanet::robots::ModelSpec model = sanet::sensors::DefaultModel(sanet::robots::ModelKind::kDiffDrive);
+  sanet::wire::LineContext context;
+  context.name_of = [](sanet::NodeId) { return std::string("m1"); };
+  context.lookup = [](const std::string&) -> std::optional<sanet::NodeId> { return sanet::NodeId{1}; };
+  for (const sanet::sensors::SensorKind* kind : sanet::sensors::AllKinds())
+    if (const sanet::wire::SensorLines* lines = sanet::wire::LinesOf(kind->Info().name))
+      lines->Read(m, kind->DefaultSettings(model), context);
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   sanet::wire::LineReader reader(4096);
@@ -29,6 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       sanet::wire::ParseMsgLine(*m, sanet::NodeId{0}, 1, &error);
       sanet::wire::ParseRecvLine(*m, sanet::NodeId{0}, 1, &error);
+      ReadAsSensorLines(*m);
       const std::string again = sanet::wire::FormatLine(*m);
       const auto reparsed = sanet::wire::ParseLine(again.substr(0, again.size() - 2), &error);
       if (!reparsed || reparsed->type != m->type || reparsed->fields != m->fields) std::abort();

@@ -24,7 +24,8 @@ class SonarLines : public SensorLines {
                                     const LineContext& /*context*/) const override {
     const auto& sonar = std::any_cast<const sensors::SonarSettings&>(settings);
     double range = 0;
-    if (std::sscanf(line.Get("Name")->c_str(), "%*s Range %lf", &range) != 1) return std::nullopt;
+    const std::string* name = line.Get("Name");
+    if (!name || std::sscanf(name->c_str(), "%*s Range %lf", &range) != 1) return std::nullopt;
     return RangeScan{{sonar.direction}, {range}, sonar.max_range};
   }
 };

@@ -5,9 +5,11 @@
 // padding), so that a field too many or too few cannot pass. Prints JSON for the test: the
 // channels, the count per topic, the decoding errors, messages whose stamp is not their log time,
 // every ground-truth pose and battery state, the node events, the parent and child frames /tf links, the
-// rotations of a URDF robot's moving links over time, and the first and last message of each topic.
+// rotations of a URDF robot's moving links over time, and the first and last message of each topic
+// (a large byte array, such as an image's pixels, as its SHA-256 and length).
 //
 //   node decode_mcap.mjs NODE_MODULES FILE
+import { createHash } from "node:crypto";
 import { createRequire } from "node:module";
 import { readFile } from "node:fs/promises";
 import { resolve } from "node:path";
@@ -35,6 +37,10 @@ for (const [id, c] of reader.channelsById) {
 const stampOf = (m) => m.header?.stamp ?? m.stamp ?? m.transforms?.[0]?.header.stamp ?? m.markers?.[0]?.header.stamp;
 const plain = (value) => JSON.parse(JSON.stringify(value, (k, v) =>
   typeof v === "bigint" ? Number(v) : ArrayBuffer.isView(v) ? Array.from(v) : v));
+// An image's pixels as their SHA-256 and length (the first and last messages are printed whole).
+const slim = (m) => m.data instanceof Uint8Array && m.data.length > 1024
+  ? { ...m, data: undefined, dataLength: m.data.length, sha256: createHash("sha256").update(m.data).digest("hex") }
+  : m;
 const counts = {}, first = {}, last = {}, groundTruth = {}, batteries = {}, events = [], tfPairs = new Set(), urdfTracks = {};
 const errors = [], stampMismatches = [];
 for await (const record of reader.readMessages()) {
@@ -73,8 +79,8 @@ for await (const record of reader.readMessages()) {
         (urdfTracks[tf.child_frame_id] ??= []).push([Number(record.logTime) / 1e9, r.x, r.y, r.z, r.w]);
       }
     }
-  first[topic] ??= plain(message);
-  last[topic] = message;
+  first[topic] ??= plain(slim(message));
+  last[topic] = slim(message);
 }
 for (const topic of Object.keys(last)) last[topic] = plain(last[topic]);
 

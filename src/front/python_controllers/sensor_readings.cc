@@ -1,5 +1,6 @@
 // The readings of sanet/readings.h as Python classes (read-only attributes, SI units, the names
 // of the C++ fields), and Node.sensor's conversion of SensorReading into them.
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "python_controllers/controller_api.h"
@@ -73,15 +74,28 @@ void BindOtherReadings(py::module_& m) {
             .format(r.status, r.latitude, r.longitude, r.altitude);
       });
   py::class_<ImageReading>(m, "ImageReading",
-                           "A camera image: width, height, encoding, data (bytes, rows top to bottom), depth "
-                           "(list of m per pixel, empty without depth)")
+                           "A camera image: width, height, encoding, pixels (numpy, height x width x 3, uint8), "
+                           "data (the same as bytes, rows top to bottom), depth (numpy, height x width, float32, m "
+                           "along the optical axis, inf where nothing is; 0 x 0 without depth)")
       .def_readonly("width", &ImageReading::width)
       .def_readonly("height", &ImageReading::height)
       .def_readonly("encoding", &ImageReading::encoding)
       .def_property_readonly(
           "data",
           [](const ImageReading& r) { return py::bytes(reinterpret_cast<const char*>(r.data.data()), r.data.size()); })
-      .def_readonly("depth", &ImageReading::depth);
+      .def_property_readonly("pixels",
+                             [](const ImageReading& r) {
+                               return py::array_t<std::uint8_t>({r.height, r.width, 3}, r.data.data());
+                             })
+      .def_property_readonly("depth",
+                             [](const ImageReading& r) {
+                               const bool any = !r.depth.empty();
+                               return py::array_t<float>({any ? r.height : 0, any ? r.width : 0}, r.depth.data());
+                             })
+      .def("__repr__", [](const ImageReading& r) {
+        return py::str("ImageReading({} x {} {}{})")
+            .format(r.width, r.height, r.encoding, r.depth.empty() ? "" : ", depth");
+      });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "core/rgb.h"
 #include "physics/physics_world.h"
 #include "robots/kinematics.h"
 #include "robots/robot_models.h"
@@ -60,6 +61,7 @@ struct ModelSpec {
   double max_speed = 0;      // m/s, commands are clamped to it
   double max_turn_rate = 0;  // rad/s
   SensorConfigs sensors;
+  std::optional<Rgb> color;  // what cameras see of its body; unset: the model's (sim/surroundings_of.h)
 
   // The model's body and drive defaults, without sensors (sensors::DefaultModel adds those).
   static ModelSpec Defaults(ModelKind kind) { return ModelOf(kind).Defaults(); }

@@ -22,7 +22,18 @@ void McapSink::Advertise(const Topic& topic) {
 }
 
 void McapSink::Publish(const Topic& topic, std::uint64_t time_ns, const std::vector<std::uint8_t>& cdr) {
-  if (const std::uint16_t channel = channels_.at(topic.id - 1)) writer_.Write(channel, time_ns, time_ns, cdr);
+  const std::uint16_t channel = channels_.at(topic.id - 1);
+  if (!channel) return;
+  waiting_.emplace_hint(waiting_.upper_bound(time_ns), time_ns, std::make_pair(channel, cdr));
+  if (time_ns > newest_) newest_ = time_ns;
+  if (newest_ >= kReorder) WriteUntil(newest_ - kReorder);
+}
+
+void McapSink::WriteUntil(std::uint64_t time_ns) {
+  auto end = waiting_.upper_bound(time_ns);
+  for (auto it = waiting_.begin(); it != end; ++it)
+    writer_.Write(it->second.first, it->first, it->first, it->second.second);
+  waiting_.erase(waiting_.begin(), end);
 }
 
 }  // namespace sanet::ros2_presentation

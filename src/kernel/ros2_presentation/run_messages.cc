@@ -183,6 +183,7 @@ MessageContext RunMessages::ContextOf(double t, NodeId node, const Pose2D& pose,
 // The true pose on the node's ground truth topic, its body in /tf, and a URDF robot's wheels.
 void RunMessages::Pose(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity,
                        const std::array<double, 3>& wheel_angles) {
+  FlushRadio(t);  // as time passes, not only at the next frame: the log stays in time order
   const RobotFrames& frames = FramesOf(node);
   PublishReading(node, "ground_truth", pose, ContextOf(t, node, pose, velocity));
   msg::tf2_msgs::TFMessage tf;

@@ -49,7 +49,7 @@ sim::Obstacle ReadBox(const Field& box) {
   BoxFields().Read(box, b);
   sim::Obstacle o{"box", {{b.center.x, b.center.y, b.size[2] / 2}, {b.size[0], b.size[1], b.size[2]}, b.yaw}, {}, {}};
   WithRadio(box, b.radio, o);
-  o.indoor = b.indoor;
+  o.indoor = b.indoor, o.color = b.color;
   return o;
 }
 
@@ -64,7 +64,7 @@ sim::Obstacle ReadWall(const Field& wall) {
                   {},
                   {}};
   WithRadio(wall, w.radio, o);
-  o.indoor = w.indoor;
+  o.indoor = w.indoor, o.color = w.color;
   return o;
 }
 
@@ -92,6 +92,7 @@ YAML::Node PrintObstacles(const std::vector<sim::Obstacle>& obstacles) {
     if (o.radio_loss_db) box["radio_loss_db"] = NumberNode(*o.radio_loss_db);
     if (o.radio_loss_db_per_m > 0) box["radio_loss_db_per_m"] = NumberNode(o.radio_loss_db_per_m);
     if (o.indoor) box["indoor"] = true;
+    if (o.color) box["color"] = RgbText(*o.color);
     YAML::Node item;
     item["box"] = box;
     list.push_back(item);
@@ -211,6 +212,19 @@ void AddGeography(Fields<sim::RunSpec>& f) {
       });
 }
 
+// world.ground_color and world.sky_color, for cameras.
+void AddSceneColors(Fields<sim::RunSpec>& f) {
+  for (const auto& [key, member, meaning] :
+       {std::tuple{"ground_color", &sim::RunSpec::ground_color, "what cameras see of the ground"},
+        std::tuple{"sky_color", &sim::RunSpec::sky_color, "what cameras see where nothing is"}}) {
+    const std::string fallback = "`\"" + RgbText(sim::RunSpec{}.*member) + "\"`";
+    f.Custom(
+        {key, "text `\"#rrggbb\"`", "", fallback, "", meaning},
+        [member = member](const Field& v, sim::RunSpec& s) { s.*member = ReadColor(v); },
+        [member = member](const sim::RunSpec& s) { return YAML::Node(RgbText(s.*member)); });
+  }
+}
+
 // world.chargers: a list of ChargerFields, printed where there are any.
 void AddChargers(Fields<sim::RunSpec>& f) {
   f.Custom(
@@ -273,6 +287,7 @@ const Fields<sim::RunSpec>& WorldFields() {
     AddWorldMap(f);  // after obstacles: its boxes come after theirs
     AddChargers(f);
     AddGeography(f);
+    AddSceneColors(f);
     f.Custom(
         {"obstacle_material", "text", "", "`none`", MaterialList("`"),
          "material of the obstacles that name none: `none` costs the radio nothing"},
@@ -798,6 +813,19 @@ void DriveLimits(Fields<ModelSpec>& f, const char* speed_meaning, const char* tu
   f.Number("max_turn_rate", Member(&ModelSpec::max_turn_rate), "rad/s", 0, 100, turn_meaning);
 }
 
+Rgb ReadColor(const Field& v) {
+  const auto color = ParseRgb(v.Text());
+  if (!color) v.Fail("is not a colour: write \"#rrggbb\", red, green and blue in two hexadecimal digits each");
+  return *color;
+}
+
+void BodyColor(Fields<ModelSpec>& f) {
+  f.Custom(
+      {"color", "text `\"#rrggbb\"`", "", "the model's", "", "what cameras see of the body"},
+      [](const Field& v, ModelSpec& m) { m.color = ReadColor(v); },
+      [](const ModelSpec& m) { return m.color ? YAML::Node(RgbText(*m.color)) : YAML::Node(); });
+}
+
 void BodyInertia(Fields<ModelSpec>& f, std::function<std::array<double, 3>&(ModelSpec&)> at) {
   f.Custom(
       {"body_inertia", "list `[ixx, iyy, izz]`", "kg·m²", "its shape's",
@@ -982,6 +1010,9 @@ void AddObstacleRadioFields(Fields<S>& f) {
       {"indoor", "`true` or `false`", "", "`false`", "",
        "part of a building: no satellite fix inside it (see [world.gnss_denied](#satellite-fixes))"},
       [](const Field& v, S& s) { s.indoor = v.Bool(); }, Unprinted<S>());
+  f.Custom(
+      {"color", "text `\"#rrggbb\"`", "", "`\"#969696\"`", "", "what cameras see of it"},
+      [](const Field& v, S& s) { s.color = ReadColor(v); }, Unprinted<S>());
 }
 
 }  // namespace

@@ -41,6 +41,10 @@ SANET_ROBOT_MODELS(SANET_DECLARE_BODY_FIELDS)
 // A radio material's name (net/materials.h), or an error listing them.
 net::Material ReadMaterial(const Field& v);
 void DriveLimits(Fields<robots::ModelSpec>& fields, const char* speed_meaning, const char* turn_meaning);
+// A colour's text, "#rrggbb", or an error saying so.
+Rgb ReadColor(const Field& v);
+// `color: "#rrggbb"`: what cameras see of the body, printed only where it is given.
+void BodyColor(Fields<robots::ModelSpec>& fields);
 // `body_inertia: [ixx, iyy, izz]`, printed only where it is given (or a URDF gives it).
 void BodyInertia(Fields<robots::ModelSpec>& fields, std::function<std::array<double, 3>&(robots::ModelSpec&)> at);
 const Fields<net::NodeRadio>& RadioFields();
@@ -58,12 +62,14 @@ struct BoxSettings {
   double yaw = 0;
   ObstacleRadio radio;
   bool indoor = false;
+  std::optional<Rgb> color;
 };
 struct WallSettings {
   Vec2 from, to;
   double height = 1.0, thickness = 0.2;
   ObstacleRadio radio;
   bool indoor = false;
+  std::optional<Rgb> color;
 };
 struct GridSettings {
   std::string name;

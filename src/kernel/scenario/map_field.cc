@@ -14,8 +14,8 @@ namespace {
 constexpr std::size_t kMostBoxes = 200000;  // past it a map is noise: the physics and radio would crawl
 constexpr double kWidest = 1e5;             // m, a map's side at most
 
-constexpr const char* kKeys[] = {"file",   "height",     "thickness", "material", "unknown",
-                                 "indoor", "resolution", "origin",    "cells",    "boxes"};
+constexpr const char* kKeys[] = {"file",  "height",     "thickness", "material", "unknown", "indoor",
+                                 "color", "resolution", "origin",    "cells",    "boxes"};
 
 // The map's files, read now: the scenario's own map.
 void FromFile(const Field& v, sim::WorldMap& m) {
@@ -71,6 +71,7 @@ void ReadWorldMap(const Field& v, sim::RunSpec& s) {
     m.unknown_blocked = text == "blocked";
   }
   if (auto indoor = v.Get("indoor")) m.indoor = indoor->Bool();
+  if (auto color = v.Get("color")) m.color = ReadColor(*color);
   if (v.Get("boxes")) {
     FromBoxes(v, m);
   } else {
@@ -92,6 +93,7 @@ YAML::Node PrintWorldMap(const sim::RunSpec& s) {
   if (m.material) out["material"] = net::MaterialName(*m.material);
   out["unknown"] = m.unknown_blocked ? "blocked" : "free";
   if (m.indoor) out["indoor"] = true;
+  if (m.color) out["color"] = RgbText(*m.color);
   out["resolution"] = NumberNode(m.resolution);
   YAML::Node origin(YAML::NodeType::Sequence), cells(YAML::NodeType::Sequence), boxes(YAML::NodeType::Sequence);
   for (double o : m.origin) origin.push_back(NumberNode(o));
@@ -126,7 +128,7 @@ void AppendMapObstacles(const sim::WorldMap& m, std::vector<sim::Obstacle>& obst
 }
 
 void AddWorldMap(Fields<sim::RunSpec>& f) {
-  f.Custom({"map", "mapping `{file, height, thickness, material, unknown, indoor}`", "", "none", "",
+  f.Custom({"map", "mapping `{file, height, thickness, material, unknown, indoor, color}`", "", "none", "",
             "a building from a ROS map (map_server's YAML and image): see [world.map](#worldmap)"},
            ReadWorldMap, PrintWorldMap);
 }

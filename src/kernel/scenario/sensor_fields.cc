@@ -83,7 +83,8 @@ void MountOnLink(const Field& link, const Field& value, const robots::ModelSpec&
                  std::any& settings) {
   std::vector<std::string> keys;  // of the mount, that the kind has
   for (const FieldInfo& key : FieldsOf(kind).Describe(settings))
-    if (key.key == "mount_x" || key.key == "mount_y" || key.key == "height") keys.push_back(key.key);
+    if (key.key == "mount_x" || key.key == "mount_y" || key.key == "mount_z" || key.key == "height")
+      keys.push_back(key.key);
   if (std::find(keys.begin(), keys.end(), "mount_x") == keys.end())
     link.Fail("a sensor of kind " + kind + " has no mount (mount_x) to put on a link: it takes no `link`");
   if (!model.urdf) link.Fail("names a URDF link: the robot's body needs `urdf`");

@@ -67,6 +67,7 @@ struct Mount {
   Pose2D start;         // the node's pose when the run began
   RandomStream random;  // the instance's own stream
   const Surroundings& surroundings;
+  NodeId self = 0;  // the node it is on
 };
 
 class SensorKind {

@@ -14,4 +14,5 @@
   KIND(battery, Battery)          \
   KIND(encoders, Encoders)        \
   KIND(imu, Imu)                  \
-  KIND(gnss, Gnss)
+  KIND(gnss, Gnss)                \
+  KIND(camera, Camera)

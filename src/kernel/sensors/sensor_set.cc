@@ -5,11 +5,12 @@
 namespace sanet::sensors {
 
 SensorSet::SensorSet(physics::PhysicsWorld& world, const robots::NodeModel& model, const Pose2D& start,
-                     std::uint64_t seed, const std::string& stream_prefix, const Surroundings& surroundings) {
+                     std::uint64_t seed, const std::string& stream_prefix, const Surroundings& surroundings,
+                     NodeId self) {
   for (const auto& [name, config] : PresentationOrder(model.spec())) {
     const SensorKind* kind = FindKind(config->kind);
     if (!kind) continue;  // the scenario's reader refused unknown kinds already
-    Mount mount{world, model, start, RandomStream(seed, stream_prefix + "/" + name), surroundings};
+    Mount mount{world, model, start, RandomStream(seed, stream_prefix + "/" + name), surroundings, self};
     entries_.push_back({name, config->kind, kind->Create(config->settings, mount)});
     if (auto* sampler = dynamic_cast<SamplingSensor*>(entries_.back().instance.get())) samplers_.push_back(sampler);
     names_.push_back(name);

@@ -18,7 +18,7 @@ class SensorSet {
   // Each instance draws its noise from the stream `stream_prefix`/<instance name> of `seed`.
   // `surroundings` outlives the set.
   SensorSet(physics::PhysicsWorld& world, const robots::NodeModel& model, const Pose2D& start, std::uint64_t seed,
-            const std::string& stream_prefix, const Surroundings& surroundings);
+            const std::string& stream_prefix, const Surroundings& surroundings, NodeId self);
 
   // The instances' names, in the order front ends present them (PresentationOrder).
   const std::vector<std::string>& names() const { return names_; }

@@ -83,13 +83,20 @@ void Assembly::BuildBodies() {
                                                        kStepsAhead);
   for (const Obstacle& o : spec_.obstacles) physics_->add_static_box(o.box);
   for (const NodeSpec& n : run_nodes_) AddBody(n);
+  // On the physics thread too (a camera's samples): the bodies are its between its steps.
+  surroundings_.scenery.bodies = [this](std::vector<sensors::SceneBody>& out) {
+    out.clear();
+    for (NodeId id = 0; id < models_.size(); ++id)
+      out.push_back(SceneBodyOf(id, run_nodes_[id].model, models_[id]->body().pose()));
+  };
 }
 
 // A node's body and its sensors (whose noise streams are named after the node).
 void Assembly::AddBody(const NodeSpec& n) {
   models_.push_back(std::make_unique<robots::NodeModel>(*physics_, n.model, n.pose));
   sensors_.push_back(std::make_unique<sensors::SensorSet>(*physics_, *models_.back(), n.pose, spec_.seed,
-                                                          "node/" + n.name, surroundings_));
+                                                          "node/" + n.name, surroundings_,
+                                                          static_cast<NodeId>(sensors_.size())));
 }
 
 // One ns-3 node per body, in node order (ns-3's node ids are sanet's).

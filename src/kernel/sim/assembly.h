@@ -131,8 +131,8 @@ class Assembly : public hosting::NodeDirectory, public SnapshotSource {
   void FollowBody(NodeId id, net::BodyMobilityModel* mobility);  // its radio, from its body's pose now
 
   const RunSpec spec_;
-  const sensors::Surroundings surroundings_;  // of spec_
-  std::optional<Calibration> calibration_;    // the abstract radio's, measured or cached
+  sensors::Surroundings surroundings_;      // of spec_, with the bodies as cameras see them once they exist
+  std::optional<Calibration> calibration_;  // the abstract radio's, measured or cached
   RunNodes run_nodes_;
   const RobotDrivers drivers_;
   std::unique_ptr<physics::PipelinedWorld> physics_;

@@ -49,6 +49,7 @@ struct Obstacle {
   double radio_loss_db_per_m = 0;       // dB/m inside it
   bool from_map = false;                // one of world.map's boxes (printed with the map, not as an obstacle)
   bool indoor = false;                  // part of a building: no satellite fix within (sim/surroundings_of.h)
+  std::optional<Rgb> color;             // what cameras see; unset: the default obstacles' (sim/surroundings_of.h)
 };
 
 // world.map: a ROS map's blocked cells, merged into boxes (scenario/map_field.h). The boxes are
@@ -62,6 +63,7 @@ struct WorldMap {
   std::optional<net::Material> material;  // of its walls; unset: the world's obstacle_material
   bool unknown_blocked = false;           // unknown cells are walls too
   bool indoor = false;                    // the map is a building's: no satellite fix over it
+  std::optional<Rgb> color;               // of its walls, for cameras
   double resolution = 0;                  // m per cell
   std::array<double, 3> origin{};         // x, y (m), yaw (rad) of the lower-left cell's corner
   int columns = 0, rows = 0;              // the map's size in cells
@@ -102,8 +104,9 @@ struct RunSpec {
   std::optional<WorldMap> map;
   net::Material obstacle_material = net::Material::kNone;  // of obstacles that name none
   std::vector<Charger> chargers;
-  std::optional<sensors::GeoDatum> datum;    // world.datum: where the world lies on the Earth
-  std::vector<sensors::Region> gnss_denied;  // world.gnss_denied: no satellite fix inside
+  std::optional<sensors::GeoDatum> datum;                     // world.datum: where the world lies on the Earth
+  std::vector<sensors::Region> gnss_denied;                   // world.gnss_denied: no satellite fix inside
+  Rgb ground_color{110, 110, 100}, sky_color{170, 200, 235};  // what cameras see below and above
   std::vector<NodeSpec> nodes;
   // The wireless network; without one, messages are delivered locally after message_latency.
   std::optional<net::NetworkSpec> network;

@@ -99,8 +99,32 @@ std::vector<Region> Buildings(const std::vector<Obstacle>& obstacles) {
   return buildings;
 }
 
+Rgb DefaultBodyColor(robots::ModelKind kind) {
+  switch (kind) {
+    case robots::ModelKind::kDiffDrive:
+      return {200, 70, 50};
+    case robots::ModelKind::kOmni3:
+      return {50, 100, 200};
+    default:
+      return {230, 190, 40};
+  }
+}
+
+sensors::SceneBody SceneBodyOf(NodeId node, const robots::ModelSpec& model, const Pose2D& pose) {
+  const robots::BodyShape shape = model.model().Shape(model);
+  sensors::SceneBody b;
+  b.node = node, b.box = shape.box, b.length = shape.length, b.width = shape.width, b.radius = shape.radius;
+  b.height = shape.height, b.base = shape.base, b.pose = pose;
+  b.color = model.color.value_or(DefaultBodyColor(model.kind));
+  return b;
+}
+
 sensors::Surroundings SurroundingsOf(const RunSpec& spec) {
   sensors::Surroundings s;
+  s.scenery.ground = spec.ground_color, s.scenery.sky = spec.sky_color;
+  for (const Obstacle& o : spec.obstacles)
+    s.scenery.boxes.push_back({o.box.center, o.box.size, o.box.yaw,
+                               o.color.value_or(o.from_map ? spec.map->color.value_or(kMapColor) : kObstacleColor)});
   s.datum = spec.datum;
   s.gnss_denied = spec.gnss_denied;
   for (Region& building : Buildings(spec.obstacles)) s.gnss_denied.push_back(std::move(building));

@@ -16,6 +16,12 @@ namespace sanet::sim {
 inline constexpr double kDoorway = 1.5;
 
 sensors::Surroundings SurroundingsOf(const RunSpec& spec);
+// Colours cameras see where the scenario gives none.
+inline constexpr Rgb kObstacleColor{150, 150, 150}, kMapColor{180, 180, 170};
+Rgb DefaultBodyColor(robots::ModelKind kind);
+// A node's body as cameras see it, where it stands.
+sensors::SceneBody SceneBodyOf(NodeId node, const robots::ModelSpec& model, const Pose2D& pose);
+
 // For `sanet validate`: the datum and where there is no fix, the buildings of indoor obstacles by
 // their hulls' corners; "" for a world with neither.
 std::string DescribeSurroundings(const RunSpec& spec);

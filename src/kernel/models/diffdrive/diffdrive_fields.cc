@@ -14,6 +14,7 @@ const Fields<robots::ModelSpec>& DiffDriveBodyFields() {
     f.Number("body_height", SANET_DIFFDRIVE(body_height), "m", 0.02, 10, "");
     f.Number("body_mass", SANET_DIFFDRIVE(body_mass), "kg", 0.01, 10000, "");
     BodyInertia(f, [](robots::ModelSpec& m) -> std::array<double, 3>& { return m.diffdrive.body_inertia; });
+    BodyColor(f);
     f.Number("ground_clearance", SANET_DIFFDRIVE(ground_clearance), "m", 0, 1, "gap under the chassis");
     f.Number("wheel_radius", SANET_DIFFDRIVE(wheel_radius), "m", 0.005, 2, "");
     f.Number("wheel_mass", SANET_DIFFDRIVE(wheel_mass), "kg", 0.001, 100, "for each wheel");

@@ -11,6 +11,7 @@ const Fields<robots::ModelSpec>& MoteBodyFields() {
         "size", [](ModelSpec& m) -> double& { return m.mote.size; }, "m", 0.005, 10, "side of the cube");
     f.Number(
         "mass", [](ModelSpec& m) -> double& { return m.mote.mass; }, "kg", 0.001, 1000, "");
+    BodyColor(f);
     return f;
   }();
   return fields;

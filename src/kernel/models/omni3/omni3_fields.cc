@@ -14,6 +14,7 @@ const Fields<robots::ModelSpec>& Omni3BodyFields() {
     f.Number("body_height", SANET_OMNI3(body_height), "m", 0.02, 5, "both cylinders together, each half of it");
     f.Number("body_mass", SANET_OMNI3(body_mass), "kg", 0.01, 1000, "");
     BodyInertia(f, [](robots::ModelSpec& m) -> std::array<double, 3>& { return m.omni3.body_inertia; });
+    BodyColor(f);
     f.Number("ground_clearance", SANET_OMNI3(ground_clearance), "m", 0, 1, "gap under the lower cylinder");
     f.Number("wheel_radius", SANET_OMNI3(wheel_radius), "m", 0.005, 1, "");
     f.Number("wheel_mass", SANET_OMNI3(wheel_mass), "kg", 0.001, 100, "for each wheel");

@@ -7,11 +7,13 @@ OSMesa:
 - the same scenario and seed give the same picture, byte for byte, and a turning robot sees the
   box move sideways (left turn: to the right of the picture);
 - other bodies are drawn in their colours, the camera's own body is not;
-- sensor_msgs/Image and CameraInfo in trace.mcap, through the independent reader: the same
-  pixels, the pinhole's K, the optical frame mounted in /tf_static;
+- sensor_msgs/CompressedImage (PNG) and CameraInfo in trace.mcap at the record rate, through the
+  independent reader: the PNG decodes (Pillow) to the controller's picture byte for byte, the
+  pinhole's K, the optical frame mounted in /tf_static;
 - `far` not beyond `near` is refused at its line."""
 import csv
 import hashlib
+import io
 import json
 import math
 import os
@@ -117,25 +119,35 @@ class Camera(unittest.TestCase):
         rows = run(self.tmp, "{mount_x: -0.1, mount_z: 0.15}")
         self.assertEqual(rows[0]["middle"], RED, "a camera inside its own body sees through it")
 
-    def test_image_and_camera_info_in_the_mcap_log(self):
+    def test_compressed_pictures_and_camera_info_in_the_mcap_log(self):
         if not os.path.isdir(MODULES):
             self.skipTest("the MCAP reader's npm packages are not installed")
-        rows = run(self.tmp, CAMERA, trace="true")
+        from PIL import Image  # an independent PNG decoder
+        rows = run(self.tmp, CAMERA[:-1] + ", rate: 10, record_rate: 5}", trace="true")
+        saved = os.path.join(self.tmp, "saved")
+        os.makedirs(saved)
         done = subprocess.run(["node", os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs"), MODULES,
-                               os.path.join(self.tmp, "out", "trace.mcap")],
+                               os.path.join(self.tmp, "out", "trace.mcap"), saved],
                               capture_output=True, text=True, timeout=120)
         self.assertEqual(done.returncode, 0, done.stderr)
         log = json.loads(done.stdout)
         self.assertEqual(log["errorCount"], 0, log["errors"])
-        self.assertEqual(log["channels"]["/r/camera/image_raw"]["schema"], "sensor_msgs/msg/Image")
+        self.assertEqual(log["backwards"], 0)
+        self.assertEqual(log["channels"]["/r/camera/image_raw/compressed"]["schema"], "sensor_msgs/msg/CompressedImage")
         self.assertEqual(log["channels"]["/r/camera/camera_info"]["schema"], "sensor_msgs/msg/CameraInfo")
-        self.assertEqual(log["counts"]["/r/camera/image_raw"], 11, "every picture of 1 s at 10 Hz")
-        image = log["first"]["/r/camera/image_raw"]
-        self.assertEqual((image["width"], image["height"], image["encoding"], image["step"]), (320, 240, "rgb8", 960))
-        self.assertEqual(image["header"]["frame_id"], "r/camera_optical")
-        self.assertEqual(image["sha256"], rows[0]["sha"], "the controller's picture, byte for byte")
+        self.assertEqual(log["counts"]["/r/camera/image_raw/compressed"], 6, "1 s at record_rate 5 Hz")
+        self.assertEqual(log["counts"]["/r/camera/camera_info"], 6)
+        self.assertNotIn("/r/camera/image_raw", log["counts"], "the record keeps the compressed pictures")
+        compressed = log["first"]["/r/camera/image_raw/compressed"]
+        self.assertEqual((compressed["format"], compressed["header"]["frame_id"]), ("png", "r/camera_optical"))
+        with open(os.path.join(saved, "_r_camera_image_raw_compressed.bin"), "rb") as f:
+            picture = Image.open(io.BytesIO(f.read()))
+            picture.load()
+        self.assertEqual((picture.mode, picture.size), ("RGB", (320, 240)))
+        self.assertEqual(hashlib.sha256(picture.tobytes()).hexdigest(), rows[0]["sha"],
+                         "PNG is lossless: the controller's picture, byte for byte")
         depth = log["first"]["/r/camera/depth/image_raw"]
-        self.assertEqual((depth["encoding"], depth["step"]), ("32FC1", 1280))
+        self.assertEqual((depth["encoding"], depth["step"], depth["dataLength"]), ("32FC1", 1280, 1280 * 240))
         info = log["first"]["/r/camera/camera_info"]
         focal = 160 / math.tan(math.radians(30))
         for got, want in zip(info["k"], [focal, 0, 159.5, 0, focal, 119.5, 0, 0, 1]):
@@ -144,6 +156,11 @@ class Camera(unittest.TestCase):
         optical = mounts["r/camera_optical"]["rotation"]
         self.assertEqual((optical["x"], optical["y"], optical["z"], optical["w"]), (-0.5, 0.5, -0.5, 0.5))
         self.assertEqual(mounts["r/camera"]["translation"], {"x": 0.18, "y": 0, "z": 0.4})
+
+    def test_a_record_rate_that_does_not_divide_the_rate_is_refused(self):
+        done = run(self.tmp, "{rate: 10, record_rate: 3}", check=False)
+        self.assertNotEqual(done.returncode, 0)
+        self.assertIn("'nodes[0].sensors.camera.record_rate': must divide `rate` (10 Hz)", done.stderr)
 
     def test_far_not_beyond_near_is_refused_at_its_line(self):
         done = run(self.tmp, "{near: 5, far: 2}", check=False)

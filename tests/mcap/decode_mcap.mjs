@@ -8,15 +8,17 @@
 // rotations of a URDF robot's moving links over time, and the first and last message of each topic
 // (a large byte array, such as an image's pixels, as its SHA-256 and length).
 //
-//   node decode_mcap.mjs NODE_MODULES FILE
+//   node decode_mcap.mjs NODE_MODULES FILE [SAVE_DIR]
+// With SAVE_DIR, the first message's bytes of each image topic (Image, CompressedImage) are
+// written there as <topic, / as _>.bin, for a test to decode them its own way.
 import { createHash } from "node:crypto";
 import { createRequire } from "node:module";
-import { readFile } from "node:fs/promises";
+import { readFile, writeFile } from "node:fs/promises";
 import { resolve } from "node:path";
 
 import * as mcapFile from "./mcap_file.mjs";
 
-const [modules, file] = process.argv.slice(2);
+const [modules, file, saveDir] = process.argv.slice(2);
 const require = createRequire(resolve(modules) + "/");
 const { McapStreamReader } = require("@mcap/core");
 const { parse } = require("@foxglove/rosmsg");
@@ -79,6 +81,8 @@ for await (const record of reader.readMessages()) {
         (urdfTracks[tf.child_frame_id] ??= []).push([Number(record.logTime) / 1e9, r.x, r.y, r.z, r.w]);
       }
     }
+  if (!(topic in first) && saveDir && message.data instanceof Uint8Array && (message.format ?? message.encoding))
+    await writeFile(`${saveDir}/${topic.replaceAll("/", "_")}.bin`, message.data);
   first[topic] ??= plain(slim(message));
   last[topic] = slim(message);
 }

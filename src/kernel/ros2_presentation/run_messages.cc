@@ -177,7 +177,7 @@ void RunMessages::AdvertiseNode(NodeId node) {
 void RunMessages::Spawned(double t) { Statics(t); }
 
 MessageContext RunMessages::ContextOf(double t, NodeId node, const Pose2D& pose, const Twist2D& velocity) {
-  return {t, &FramesOf(node), nodes_[node].pose, pose, velocity};
+  return {t, &FramesOf(node), nodes_[node].pose, pose, velocity, /*recording=*/true};
 }
 
 // The true pose on the node's ground truth topic, its body in /tf, and a URDF robot's wheels.

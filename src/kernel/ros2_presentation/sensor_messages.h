@@ -43,6 +43,7 @@ struct MessageContext {
   Pose2D start;                         // the robot's start pose (the origin of its odom frame)
   Pose2D truth;                         // where the body is now
   Twist2D velocity;                     // the body's velocity, world frame
+  bool recording = false;               // for the run's record (trace.mcap, the Foxglove stream), not the face
 };
 
 class SensorMessages {

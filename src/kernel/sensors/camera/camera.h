@@ -18,6 +18,7 @@ struct CameraSettings {
   double pitch = 0;                 // rad, down from level
   double near = 0.05, far = 100;    // m: what is drawn lies between
   bool depth = false;               // also a depth image (32FC1)
+  double record_rate = 0;           // Hz of pictures in the record (trace.mcap), as PNG; 0: every picture
 };
 
 }  // namespace sanet::sensors

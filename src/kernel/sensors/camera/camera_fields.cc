@@ -1,4 +1,6 @@
 // The camera's keys in a scenario.
+#include <cmath>
+
 #include "scenario/sensor_fields.h"
 #include "sensors/camera/camera.h"
 
@@ -24,6 +26,8 @@ const Fields<CameraSettings>& CameraFields() {
     f.Number("near", Member(&CameraSettings::near), "m", 0, 10, "nothing nearer is drawn", true);
     f.Number("far", Member(&CameraSettings::far), "m", 0, 1e5, "nothing farther is drawn", true);
     f.Flag("depth", Member(&CameraSettings::depth), "also a depth image (m along the optical axis)");
+    f.Number("record_rate", Member(&CameraSettings::record_rate), "Hz", 0, 1000,
+             "pictures a second in trace.mcap (compressed, PNG); `0`: every picture; must divide `rate`");
     return f;
   }();
   return fields;
@@ -36,6 +40,14 @@ class CameraKeys : public DeclaredKeys<CameraSettings> {
   void Read(const Field& field, std::any& settings) const override {
     DeclaredKeys::Read(field, settings);
     const auto& s = std::any_cast<const CameraSettings&>(settings);
+    if (s.record_rate > 0) {
+      const double every = s.rate / s.record_rate;  // pictures per recorded one
+      if (std::fabs(every - std::round(every)) > 1e-9 || every < 1)
+        field.Require("record_rate")
+            .Fail("must divide `rate` (" + ShortNumber(s.rate) +
+                  " Hz) a whole number of times, so that the "
+                  "recorded pictures are taken ones");
+    }
     if (s.far <= s.near) {
       const auto far = field.Get("far");
       (far ? *far : field.Require("near")).Fail("`far` must be beyond `near` (" + ShortNumber(s.near) + " m)");

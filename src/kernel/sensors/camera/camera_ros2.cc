@@ -3,7 +3,11 @@
 // no distortion) and, with depth, depth/image_raw (32FC1, m along the optical axis, +Inf where
 // nothing is), all in the optical frame <robot>/<instance>_optical (REP 103: z forward, x right,
 // y down). /tf_static mounts <robot>/<instance> (the robot's axes, pitched down) on base_link and
-// the optical frame on it.
+// the optical frame on it. The run's record (trace.mcap, the Foxglove stream) takes the pictures
+// at `record_rate` as image_transport's compressed topic does, image_raw/compressed
+// (sensor_msgs/CompressedImage, PNG: lossless), with their camera_info and depth.
+#include <stb/stb_image_write.h>
+
 #include <cmath>
 #include <cstring>
 
@@ -14,7 +18,10 @@ namespace sanet::ros2_presentation {
 namespace {
 
 using msg::sensor_msgs::CameraInfo;
+using msg::sensor_msgs::CompressedImage;
 using msg::sensor_msgs::Image;
+
+enum Topic : std::size_t { kImage, kInfo, kCompressed, kDepth };
 
 std::string Base(const std::string& instance) { return instance == "camera" ? "camera" : instance; }
 
@@ -32,11 +39,36 @@ CameraInfo InfoOf(const sensors::CameraSettings& s) {
   return info;
 }
 
+// The picture as PNG, through stb_image_write (deterministic: the same pixels, the same bytes).
+CompressedImage Png(const msg::std_msgs::Header& header, const ImageReading& picture) {
+  CompressedImage m;
+  m.header = header;
+  m.format = "png";
+  stbi_write_png_to_func(
+      [](void* to, void* bytes, int size) {
+        auto& data = *static_cast<std::vector<std::uint8_t>*>(to);
+        data.insert(data.end(), static_cast<std::uint8_t*>(bytes), static_cast<std::uint8_t*>(bytes) + size);
+      },
+      &m.data, picture.width, picture.height, 3, picture.data.data(), picture.width * 3);
+  return m;
+}
+
+// Metres along the axis as 32FC1: little-endian floats, as this machine and ROS's tools keep them.
+Image DepthImage(const Image& like, const ImageReading& picture) {
+  Image depth;
+  depth.header = like.header;
+  depth.width = like.width, depth.height = like.height, depth.encoding = "32FC1", depth.step = like.width * 4;
+  depth.data.resize(picture.depth.size() * 4);
+  std::memcpy(depth.data.data(), picture.depth.data(), depth.data.size());
+  return depth;
+}
+
 class CameraMessages : public SensorMessages {
  public:
   std::vector<SensorTopic> Topics(const std::string& instance, const std::any& settings) const override {
     std::vector<SensorTopic> topics = {TopicFor<Image>(Base(instance) + "/image_raw"),
-                                       TopicFor<CameraInfo>(Base(instance) + "/camera_info")};
+                                       TopicFor<CameraInfo>(Base(instance) + "/camera_info"),
+                                       TopicFor<CompressedImage>(Base(instance) + "/image_raw/compressed")};
     if (std::any_cast<const sensors::CameraSettings&>(settings).depth)
       topics.push_back(TopicFor<Image>(Base(instance) + "/depth/image_raw"));
     return topics;
@@ -45,24 +77,24 @@ class CameraMessages : public SensorMessages {
                                       const SensorReading& reading, const MessageContext& context) const override {
     const auto& picture = std::get<ImageReading>(reading);
     const auto& s = std::any_cast<const sensors::CameraSettings&>(settings);
+    const double per_record = context.time * s.record_rate;
+    if (context.recording && s.record_rate > 0 && std::fabs(per_record - std::round(per_record)) > 1e-6) return {};
     Image image;
     image.header.stamp = StampOf(context.time);
     image.header.frame_id = context.frames->Sensor(instance + "_optical");
     image.width = static_cast<std::uint32_t>(picture.width), image.height = static_cast<std::uint32_t>(picture.height);
     image.encoding = picture.encoding;
     image.step = image.width * 3;
-    image.data = picture.data;
     CameraInfo info = InfoOf(s);
     info.header = image.header;
-    std::vector<SensorMessage> out = {MessageOn(0, image), MessageOn(1, info)};
-    if (s.depth && !picture.depth.empty()) {
-      Image depth;
-      depth.header = image.header;
-      depth.width = image.width, depth.height = image.height, depth.encoding = "32FC1", depth.step = image.width * 4;
-      depth.data.resize(picture.depth.size() * 4);
-      std::memcpy(depth.data.data(), picture.depth.data(), depth.data.size());  // little-endian floats
-      out.push_back(MessageOn(2, depth));
+    std::vector<SensorMessage> out = {MessageOn(kInfo, info)};
+    if (context.recording) {
+      out.push_back(MessageOn(kCompressed, Png(image.header, picture)));
+    } else {
+      image.data = picture.data;
+      out.push_back(MessageOn(kImage, image));
     }
+    if (s.depth && !picture.depth.empty()) out.push_back(MessageOn(kDepth, DepthImage(image, picture)));
     return out;
   }
   void Mounts(const std::string& instance, const std::any& settings, const RobotFrames& frames, double t,

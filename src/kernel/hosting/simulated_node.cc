@@ -56,4 +56,11 @@ void SimulatedNode::SwitchOn() {
   transport_.SwitchOn(id_);
 }
 
+bool SimulatedNode::Fits(const Bytes& payload) {
+  if (payload.size() <= net::kMostMessageBytes) return true;
+  Log("message of " + std::to_string(payload.size()) + " bytes refused: a message holds at most " +
+      std::to_string(net::kMostMessageBytes) + " bytes (one UDP datagram less sanet's header); split it");
+  return false;
+}
+
 }  // namespace sanet::hosting

@@ -72,15 +72,16 @@ class SimulatedNode : public Node {
 
   bool Holonomic() const override { return model_.holonomic(); }
 
-  // A switched-off node's radio is off: it sends nothing.
+  // A switched-off node's radio is off: it sends nothing. A message past one UDP datagram is
+  // refused, with or without a network, and the node's log says why.
   void Send(NodeId to, const Bytes& payload) override {
-    if (!off_) transport_.Send(id_, to, payload);
+    if (!off_ && Fits(payload)) transport_.Send(id_, to, payload);
   }
   void Broadcast(const Bytes& payload) override {
-    if (!off_) transport_.Broadcast(id_, payload);
+    if (!off_ && Fits(payload)) transport_.Broadcast(id_, payload);
   }
   void Flood(const Bytes& payload) override {
-    if (!off_) transport_.Flood(id_, payload);
+    if (!off_ && Fits(payload)) transport_.Flood(id_, payload);
   }
   NetworkView& Network() override { return transport_.View(id_); }
   bool SetRadioSleep(bool asleep) override;
@@ -104,6 +105,7 @@ class SimulatedNode : public Node {
   bool ApplyWheelSpeeds(const std::vector<double>& w) override;
 
  private:
+  bool Fits(const Bytes& payload);
   sensors::ReadContext Context(std::optional<NodeId> target = std::nullopt) const;
   LastReads last_;
 

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include "net/transport.h"
+
 namespace sanet::net {
 
 class MessageHeader : public ns3::Header {
@@ -30,6 +32,10 @@ class MessageHeader : public ns3::Header {
  private:
   static constexpr std::uint32_t kMagic = 0x53414E45;  // "SANE"
   static constexpr std::uint32_t kSize = 4 + 1 + 4 + 4 + 4 + 8 + 1 + 1;
+
+ public:
+  static constexpr std::uint32_t kBytes = kSize;
 };
+static_assert(kMostMessageBytes == 65507 - MessageHeader::kBytes, "one UDP datagram over IPv4, less the header");
 
 }  // namespace sanet::net

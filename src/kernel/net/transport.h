@@ -14,6 +14,11 @@
 
 namespace sanet::net {
 
+// The largest payload a message carries: one UDP datagram over IPv4 (65,507 bytes), less sanet's
+// 27-byte header (net/message_header.h). Over 802.11 it goes as IP fragments, and a lost
+// fragment loses the message.
+inline constexpr std::size_t kMostMessageBytes = 65480;
+
 class Transport {
  public:
   // Called when `message` reaches node `to`.

@@ -2,6 +2,7 @@
 // (sensors/camera/camera.h).
 #include "sensors/camera/camera.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sensors/camera/offscreen_renderer.h"
@@ -33,7 +34,17 @@ class Camera : public SamplingSensor {
     if (scenery.bodies) scenery.bodies(bodies_);
     ImageReading picture;
     renderer_.Render(view, scenery, bodies_, mount_.self, settings_.depth, picture);
+    if (settings_.noise > 0) AddNoise(picture.data);
     return picture;
+  }
+
+  // A sensor's read noise: each channel of each pixel off by a Gaussian draw, rounded and kept
+  // within [0, 255].
+  void AddNoise(std::vector<std::uint8_t>& channels) {
+    for (std::uint8_t& c : channels) {
+      const double v = std::round(c + mount_.random.Gaussian(0, settings_.noise));
+      c = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0));
+    }
   }
 
   CameraSettings settings_;

@@ -19,6 +19,7 @@ struct CameraSettings {
   double near = 0.05, far = 100;    // m: what is drawn lies between
   bool depth = false;               // also a depth image (32FC1)
   double record_rate = 0;           // Hz of pictures in the record (trace.mcap), as PNG; 0: every picture
+  double noise = 0;                 // levels (of 255): standard deviation of each pixel's channels
 };
 
 }  // namespace sanet::sensors

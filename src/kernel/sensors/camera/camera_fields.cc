@@ -26,6 +26,8 @@ const Fields<CameraSettings>& CameraFields() {
     f.Number("near", Member(&CameraSettings::near), "m", 0, 10, "nothing nearer is drawn", true);
     f.Number("far", Member(&CameraSettings::far), "m", 0, 1e5, "nothing farther is drawn", true);
     f.Flag("depth", Member(&CameraSettings::depth), "also a depth image (m along the optical axis)");
+    f.Number("noise", Member(&CameraSettings::noise), "levels", 0, 255,
+             "standard deviation of each channel of each pixel (of 255), as a sensor's read noise");
     f.Number("record_rate", Member(&CameraSettings::record_rate), "Hz", 0, 1000,
              "pictures a second in trace.mcap (compressed, PNG); `0`: every picture; must divide `rate`");
     return f;

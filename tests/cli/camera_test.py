@@ -50,7 +50,7 @@ class Look:
 """
 
 
-def run(folder, camera="{}", turn=0.0, extra_nodes="", trace="false", duration=1, check=True):
+def run(folder, camera="{}", turn=0.0, extra_nodes="", trace="false", duration=1, check=True, args=()):
     with open(os.path.join(folder, "look.py"), "w") as f:
         f.write(LOOK)
     path = os.path.join(folder, "s.yaml")
@@ -61,7 +61,7 @@ def run(folder, camera="{}", turn=0.0, extra_nodes="", trace="false", duration=1
                 f"    sensors:\n      laser: {{mount_x: 0.18, height: 0.4}}\n      camera: {camera}\n"
                 f"    controller: {{python: \"look:Look\", rate: 10, params: {{turn: {turn}}}}}\n{extra_nodes}")
     out = os.path.join(folder, "out")
-    done = subprocess.run([SANET, "run", path, "-q", "-o", out, "--force"], capture_output=True, text=True,
+    done = subprocess.run([SANET, "run", path, "-q", "-o", out, "--force", *args], capture_output=True, text=True,
                           timeout=600)
     if not check:
         return done
@@ -111,6 +111,14 @@ class Camera(unittest.TestCase):
         self.assertGreater(len(centres), 5)
         self.assertTrue(all(later > earlier for earlier, later in zip(centres, centres[1:])),
                         f"turning left, the box goes right: {centres}")
+
+    def test_an_isolated_controller_gets_the_same_pictures(self):
+        """Its node calls go over a socket pair as packets of 64 KiB: a picture with its depth
+        (537,600 bytes) is past one packet's limit, about 208 KiB."""
+        here = run(self.tmp, CAMERA, turn=0.3)
+        isolated = run(self.tmp, CAMERA, turn=0.3, args=("--isolate-controllers",))
+        self.assertEqual([r["sha"] for r in here], [r["sha"] for r in isolated])
+        self.assertEqual([r["depth"] for r in here], [r["depth"] for r in isolated])
 
     def test_other_bodies_in_their_colours_and_not_its_own(self):
         others = ("  - {name: m, model: mote, pose: [2, 0, 0], body: {size: 0.5, color: \"#10e020\"}}\n")

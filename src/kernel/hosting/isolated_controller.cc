@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstring>
 #include <stdexcept>
@@ -39,22 +40,41 @@ enum Call : std::uint8_t {
 };
 #undef SANET_CALL_NUMBER
 
-constexpr std::size_t kMostBytes = 1 << 20;  // one packet either way
+// A message goes as packets of at most kChunk bytes, each led by a byte saying whether more of it
+// follows: a SOCK_SEQPACKET packet past the socket's send buffer (about 208 KiB) is refused, and a
+// camera's picture with its depth is larger than that.
+constexpr std::size_t kChunk = 64 * 1024;
+constexpr std::size_t kMostBytes = std::size_t{1} << 30;  // a message, whole
 
 void SendPacket(int fd, const Bytes& bytes) {
-  if (::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(bytes.size()))
-    throw std::runtime_error(std::string("the controller's process is gone: ") + std::strerror(errno));
+  std::size_t offset = 0;
+  do {
+    const std::size_t size = std::min(kChunk, bytes.size() - offset);
+    Bytes packet;
+    packet.reserve(size + 1);
+    packet.push_back(offset + size < bytes.size() ? 1 : 0);
+    packet.insert(packet.end(), bytes.begin() + static_cast<std::ptrdiff_t>(offset),
+                  bytes.begin() + static_cast<std::ptrdiff_t>(offset + size));
+    ssize_t sent;
+    do sent = ::send(fd, packet.data(), packet.size(), MSG_NOSIGNAL);
+    while (sent < 0 && errno == EINTR);
+    if (sent != static_cast<ssize_t>(packet.size()))
+      throw std::runtime_error(std::string("the controller's process is gone: ") + std::strerror(errno));
+    offset += size;
+  } while (offset < bytes.size());
 }
 
-// The next packet; nothing when the other side has closed.
+// The next message; nothing when the other side has closed.
 std::optional<Bytes> ReceivePacket(int fd) {
-  Bytes bytes(kMostBytes);
-  ssize_t n;
-  do n = ::recv(fd, bytes.data(), bytes.size(), 0);
-  while (n < 0 && errno == EINTR);
-  if (n <= 0) return std::nullopt;
-  bytes.resize(static_cast<std::size_t>(n));
-  return bytes;
+  Bytes message, packet(kChunk + 1);
+  for (;;) {
+    ssize_t n;
+    do n = ::recv(fd, packet.data(), packet.size(), 0);
+    while (n < 0 && errno == EINTR);
+    if (n <= 0 || message.size() + static_cast<std::size_t>(n) > kMostBytes) return std::nullopt;
+    message.insert(message.end(), packet.begin() + 1, packet.begin() + n);
+    if (packet[0] == 0) return message;
+  }
 }
 
 // The child's question to the parent: a call and its arguments; the answer is the call's result.

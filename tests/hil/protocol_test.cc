@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <tuple>
 
 #include "robot_server/sim_server.h"
+#include "sensors/camera/camera.h"
 #include "sensors/encoders/encoders.h"
 #include "sensors/gnss/gnss.h"
 #include "sensors/imu/imu.h"
@@ -287,6 +290,32 @@ TEST(SensorLines, AFixGoesAsUsarsimsDegreesAndMinutesAndNoFixAsFixZero) {
   const auto nothing = std::get<FixReading>(ThroughTheLine("gnss", none, settings));
   EXPECT_EQ(nothing.status, FixReading::kNoFix);
   EXPECT_TRUE(std::isnan(nothing.latitude));
+}
+
+TEST(SensorLines, APictureGoesAsPngInBase64AndComesBackPixelForPixel) {
+  ImageReading sent;
+  sent.width = 64, sent.height = 48, sent.encoding = "rgb8";
+  for (int i = 0; i < 64 * 48 * 3; ++i) sent.data.push_back(static_cast<std::uint8_t>((i * 37 + i / 191) % 256));
+  const std::string line = FormatLine(LinesOf("camera")->Write("camera", sent, LineContext{}).at(0));
+  EXPECT_NE(line.find("{Type Camera} {Name Camera} {Width 64} {Height 48} {Encoding png} {Data iVBORw0KGgo"),
+            std::string::npos)
+      << line.substr(0, 120);
+  const auto back = std::get<ImageReading>(ThroughTheLine("camera", sent, sensors::CameraSettings{}));
+  EXPECT_EQ((std::tuple{back.width, back.height, back.encoding}), (std::tuple{64, 48, std::string("rgb8")}));
+  EXPECT_EQ(back.data, sent.data);
+  ImageReading large = sent;  // noise does not compress: past the line's 256 KiB
+  large.width = 400, large.height = 300, large.data.resize(400 * 300 * 3);
+  std::mt19937 noise(7);
+  for (std::uint8_t& c : large.data) c = static_cast<std::uint8_t>(noise());
+  EXPECT_TRUE(LinesOf("camera")->Write("camera", large, LineContext{}).empty());
+  for (const char* fields :
+       {"{Width 64} {Height 48} {Encoding png} {Data !!!!}", "{Width 64} {Height 48} {Encoding jpeg} {Data aaaa}",
+        "{Width 65} {Height 48} {Encoding png} {Data iVBORw0KGgo=}", "{Width 64} {Height 48} {Encoding png}"}) {
+    std::string error;
+    const auto parsed = ParseLine(std::string("SEN {Type Camera} {Name Camera} ") + fields, &error);
+    ASSERT_TRUE(parsed) << error;
+    EXPECT_FALSE(LinesOf("camera")->Read(*parsed, sensors::CameraSettings{}, LineContext{})) << fields;
+  }
 }
 
 TEST(SensorLines, AMalformedFixIsNoReading) {

@@ -1,28 +1,97 @@
-// The camera has no SEN line yet: USARSim serves pictures on a port of its own (its image server),
-// not in the robot protocol, and agents will get them in a later step (docs/scenario.md#sensors).
+// sanet extension: SEN {Time t} {Type Camera} {Name camera} {Width w} {Height h} {Encoding png}
+// {Data base64}, the picture as PNG (lossless) in base64, for agents. USARSim serves pictures on an
+// image server of its own, not in the robot protocol, so there is no USARSim line to follow. A
+// picture whose line would pass kMostLine bytes is not sent (lower the resolution or the noise):
+// the agent reads lines of up to 1 MiB, and the server drops a client more than 1 MiB behind.
+// Depth does not travel.
+#include <openssl/evp.h>
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
 #include "sensors/camera/camera.h"
 #include "wire/sensor_lines.h"
 
 namespace sanet::wire {
 namespace {
 
-class NoCameraLines : public SensorLines {
+constexpr std::size_t kMostLine = 256 * 1024;
+
+std::string Base64(const std::vector<std::uint8_t>& bytes) {
+  std::string text(4 * ((bytes.size() + 2) / 3) + 1, '\0');
+  const int n =
+      EVP_EncodeBlock(reinterpret_cast<unsigned char*>(text.data()), bytes.data(), static_cast<int>(bytes.size()));
+  text.resize(static_cast<std::size_t>(n));
+  return text;
+}
+
+// Nothing for text that is not base64 (of whole groups of four).
+std::optional<std::vector<std::uint8_t>> FromBase64(const std::string& text) {
+  if (text.size() % 4 != 0) return std::nullopt;
+  std::vector<std::uint8_t> bytes(text.size() / 4 * 3);
+  const int n =
+      EVP_DecodeBlock(bytes.data(), reinterpret_cast<const unsigned char*>(text.data()), static_cast<int>(text.size()));
+  if (n < 0) return std::nullopt;
+  std::size_t padding = 0;
+  for (std::size_t i = text.size(); i > 0 && text[i - 1] == '=' && padding < 2; --i) ++padding;
+  bytes.resize(static_cast<std::size_t>(n) - padding);
+  return bytes;
+}
+
+std::vector<std::uint8_t> Png(const ImageReading& picture) {
+  std::vector<std::uint8_t> png;
+  stbi_write_png_to_func(
+      [](void* to, void* bytes, int size) {
+        auto& out = *static_cast<std::vector<std::uint8_t>*>(to);
+        out.insert(out.end(), static_cast<std::uint8_t*>(bytes), static_cast<std::uint8_t*>(bytes) + size);
+      },
+      &png, picture.width, picture.height, 3, picture.data.data(), picture.width * 3);
+  return png;
+}
+
+class CameraLines : public SensorLines {
  public:
-  std::vector<ProtocolMessage> Write(const std::string& /*instance*/, const SensorReading& /*reading*/,
-                                     const LineContext& /*context*/) const override {
-    return {};
+  std::vector<ProtocolMessage> Write(const std::string& instance, const SensorReading& reading,
+                                     const LineContext& context) const override {
+    const auto& picture = std::get<ImageReading>(reading);
+    std::string data = Base64(Png(picture));
+    if (data.size() > kMostLine) return {};
+    ProtocolMessage line = SenLine(context.time, "Camera");
+    line.Add("Name", WireName(instance, "camera", "Camera"))
+        .Add("Width", std::to_string(picture.width))
+        .Add("Height", std::to_string(picture.height))
+        .Add("Encoding", "png")
+        .Add("Data", std::move(data));
+    return {line};
   }
-  bool IsFrom(const ProtocolMessage& /*line*/, const std::string& /*instance*/) const override { return false; }
-  std::optional<SensorReading> Read(const ProtocolMessage& /*line*/, const std::any& /*settings*/,
+  bool IsFrom(const ProtocolMessage& line, const std::string& instance) const override {
+    return NamesInstance(line, "Camera", instance, "camera", "Camera");
+  }
+  std::optional<SensorReading> Read(const ProtocolMessage& line, const std::any& /*settings*/,
                                     const LineContext& /*context*/) const override {
-    return std::nullopt;
+    const std::string *encoding = line.Get("Encoding"), *data = line.Get("Data");
+    const auto width = line.Count("Width", 4096), height = line.Count("Height", 4096);
+    if (!encoding || *encoding != "png" || !data || !width || !height) return std::nullopt;
+    const auto png = FromBase64(*data);
+    if (!png || png->empty() || png->size() > kMostLine) return std::nullopt;
+    int w = 0, h = 0, channels = 0;  // the size the PNG says, before decoding it
+    if (!stbi_info_from_memory(png->data(), static_cast<int>(png->size()), &w, &h, &channels) ||
+        static_cast<std::uint64_t>(w) != *width || static_cast<std::uint64_t>(h) != *height)
+      return std::nullopt;
+    stbi_uc* pixels = stbi_load_from_memory(png->data(), static_cast<int>(png->size()), &w, &h, &channels, 3);
+    if (!pixels) return std::nullopt;
+    ImageReading r;
+    r.width = w, r.height = h, r.encoding = "rgb8";
+    r.data.assign(pixels, pixels + static_cast<std::size_t>(w) * h * 3);
+    stbi_image_free(pixels);
+    return r;
   }
+  bool Extension() const override { return true; }
 };
 
 }  // namespace
 
 const SensorLines& CameraSensorLines() {
-  static const NoCameraLines lines;
+  static const CameraLines lines;
   return lines;
 }
 

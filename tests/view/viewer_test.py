@@ -402,6 +402,35 @@ class ViewerTest(unittest.TestCase):
         routes = self.viewer.browser.execute_script("return window.sanet.state().routesDrawn")
         self.assertGreater(routes, 0)
 
+    def test_a_robots_panel_shows_its_latest_recorded_picture(self):
+        """camera-stream records a picture a second (record_rate 1) in trace.mcap: at t = 10.5 s
+        the rover's panel shows the one taken at 10 s, decoded by the browser itself."""
+        results = os.path.join(self.tmp.name, "camera-stream")
+        subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "camera-stream.yaml"), "-q", "-o", results,
+                        "--duration", "12"], check=True)
+        viewer = Viewer(results, os.path.join(self.tmp.name, "cam"))
+        try:
+            viewer.call("window.sanet.seek(10.5)")
+            viewer.call("window.sanet.select('rover')")
+            picture = None
+            for _ in range(100):
+                picture = viewer.browser.execute_script(
+                    "const i = document.getElementById('panel-camera');"
+                    "return i && i.complete ? [i.naturalWidth, i.naturalHeight, i.getAttribute('src'),"
+                    " document.getElementById('panel-camera-note').textContent] : null")
+                if picture and picture[0]:
+                    break
+                time.sleep(0.1)
+            self.assertEqual(picture[:2], [160, 120], picture)
+            self.assertIn("t=10", picture[2])
+            self.assertIn("taken at 10.00 s", picture[3])
+            viewer.call("window.sanet.select('operator')")
+            self.assertFalse(viewer.browser.execute_script("return Boolean(document.getElementById('panel-camera'))"),
+                             "the operator has no camera")
+            self.assertEqual(viewer.errors(), [])
+        finally:
+            viewer.close()
+
     def test_screenshots_of_both_case_studies(self):
         formation = os.path.join(self.tmp.name, "formation")
         subprocess.run([SANET, "run", os.path.join(SOURCE, "scenarios", "formation.yaml"), "-q", "-o", formation,

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/json_text.h"
+#include "view/camera_frames.h"
 #include "view/page_routes.h"
 #include "view/radio_ranges.h"
 #include "view/trace_reader.h"
@@ -30,6 +31,20 @@ void AddRangeRoutes(httplib::Server& server, RadioRanges& ranges) {
   server.Get("/api/radio_ranges", [&](const httplib::Request&, httplib::Response& r) { Json(r, ranges.Ranges()); });
   server.Get("/api/radio_range_shape", [&](const httplib::Request& q, httplib::Response& r) {
     Json(r, ranges.Shape(static_cast<std::size_t>(Number(q, "radio", 0)), Number(q, "x", 0), Number(q, "y", 0)));
+  });
+}
+
+// The robots' recorded pictures: their times, and the picture at or before a time.
+void AddCameraRoutes(httplib::Server& server, CameraFrames& cameras) {
+  server.Get("/api/cameras", [&](const httplib::Request&, httplib::Response& r) { Json(r, cameras.Times()); });
+  server.Get("/api/camera", [&](const httplib::Request& q, httplib::Response& r) {
+    const auto picture = cameras.At(q.get_param_value("node"), Number(q, "t", 0));
+    if (!picture) {
+      r.status = 404;
+      return r.set_content("no picture of that robot at or before that time in trace.mcap", "text/plain");
+    }
+    r.set_header("Cache-Control", "max-age=3600");  // a picture at a time never changes
+    r.set_content(std::string(picture->second.begin(), picture->second.end()), "image/" + picture->first);
   });
 }
 
@@ -78,6 +93,8 @@ void ServeViewer(const ViewerSettings& settings, const std::function<void(int po
   httplib::Server server;
   AddRoutes(server, trace, settings.javascript);
   AddRangeRoutes(server, *ranges);
+  CameraFrames cameras((std::filesystem::path(settings.results) / "trace.mcap").string());
+  AddCameraRoutes(server, cameras);
   ListenAlone(server);
   const int port = settings.port == 0 ? server.bind_to_any_port(settings.bind)
                                       : (server.bind_to_port(settings.bind, settings.port) ? settings.port : -1);

@@ -187,6 +187,19 @@ function battery(n) {
   return (n.charge !== null ? `; battery: ${Math.round(100 * n.charge)} %` : "") + (n.dead ? " (dead)" : "");
 }
 
+// The robot's latest picture at or before `t` from trace.mcap's compressed camera topic (its
+// camera's record_rate), where the run recorded one: the log names robots by their ROS token.
+function cameraPanel(world, n, t) {
+  const token = n.node.name.replace(/[^A-Za-z0-9_]/g, "_");
+  const times = (world.pictures || {})[token];
+  if (!times) return "";
+  let at = null;
+  for (const time of times) if (time <= t + 1e-9) at = time; else break;
+  if (at === null) return `<h4>Camera</h4><p id="panel-camera-note">no picture yet</p>`;
+  return `<h4>Camera</h4><img id="panel-camera" alt="${n.node.name}'s picture" src="/api/camera?node=${token}&t=${at}">` +
+    `<p id="panel-camera-note">taken at ${at.toFixed(2)} s (trace.mcap, at the camera's record rate)</p>`;
+}
+
 async function showPanel(world, n, t) {
   // Renders overlap (playback and seek): every render waits for the answer for the latest time
   // asked, and only that answer is kept.
@@ -211,7 +224,7 @@ async function showPanel(world, n, t) {
     ["sent", "received", "forwarded", "dropped"].map((k) => `<tr><th>${k}</th><td data-key="${k}">${p[k] ?? "-"}</td></tr>`).join("") +
     `</table><h4>Messages up to now</h4><p>${sent} sent, ${received} received</p>` +
     `<h4>Routing table</h4><table><tr><th>to</th><th>via</th><th>hops</th></tr>${routes}</table>` +
-    `<h4>States</h4><table><tr><th>t</th><th>state</th><th>why</th></tr>${states}</table>`;
+    `<h4>States</h4><table><tr><th>t</th><th>state</th><th>why</th></tr>${states}</table>` + cameraPanel(world, n, t);
 }
 
 // The selected node's routes: a dashed line to the next hop of each destination it has a route to.
@@ -365,9 +378,9 @@ function showNotice(text) {
 async function main() {
   const run = await api("/api/run");
   if (run.info.live) return live(run);
-  const [poses, messages, transitions, distances, energy, metrics] = await Promise.all(
+  const [poses, messages, transitions, distances, energy, metrics, pictures] = await Promise.all(
     [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance"), api("/api/energy"),
-     api("/api/metrics")]);
+     api("/api/metrics"), api("/api/cameras")]);
   // The run may have ended before the scenario's duration (an end condition).
   const duration = Number((run.summary && run.summary.simulated_s) || run.info.duration_s);
   document.getElementById("title").textContent = run.info.name;
@@ -375,7 +388,7 @@ async function main() {
   const element = document.getElementById("world");
   const renderer = makeRenderer(element);
   const box = bounds(run, poses);
-  const world = { ...buildScene(run, poses, box), messages, transitions, distances, radio: [], linksUp: 0,
+  const world = { ...buildScene(run, poses, box), messages, transitions, distances, pictures, radio: [], linksUp: 0,
                   dotSize: Math.max(0.15, box.size / 200), moteLift: Math.max(0.05, box.size / 240) };
   for (const n of world.nodes) {
     n.levels = energy.levels[n.node.id] || [];

@@ -22,6 +22,8 @@ void RegisterBuiltinControllers(ControllerRegistry& registry) {
   registry.Add(DataMuleSinkInfo());
   registry.Add(ChargedMoteInfo());
   registry.Add(ChargerRobotInfo());
+  registry.Add(CameraStreamerInfo());
+  registry.Add(PictureReceiverInfo());
 }
 
 }  // namespace sanet::controllers

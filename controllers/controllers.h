@@ -22,5 +22,7 @@ ControllerInfo DataMuleCollectorInfo();
 ControllerInfo DataMuleSinkInfo();
 ControllerInfo ChargedMoteInfo();
 ControllerInfo ChargerRobotInfo();
+ControllerInfo CameraStreamerInfo();
+ControllerInfo PictureReceiverInfo();
 
 }  // namespace sanet::controllers

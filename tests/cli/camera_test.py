@@ -120,6 +120,28 @@ class Camera(unittest.TestCase):
         self.assertEqual([r["sha"] for r in here], [r["sha"] for r in isolated])
         self.assertEqual([r["depth"] for r in here], [r["depth"] for r in isolated])
 
+    def test_the_second_thread_renders_the_same_pictures(self):
+        one = run(self.tmp, CAMERA, turn=0.3)
+        two = run(self.tmp, CAMERA, turn=0.3, args=("--set", "world.threads=2"))
+        self.assertEqual([r["sha"] for r in one], [r["sha"] for r in two])
+
+    def test_a_mote_camera_in_a_world_without_vehicles_is_recorded_in_time_order(self):
+        if not os.path.isdir(MODULES):
+            self.skipTest("the MCAP reader's npm packages are not installed")
+        path = os.path.join(self.tmp, "motes.yaml")
+        with open(path, "w") as f:
+            f.write("name: motes\nduration: 5\nworld:\n  obstacles:\n"
+                    "    - box: {center: [3, 0], size: [1, 1, 1], color: \"#c81e1e\"}\n"
+                    "nodes:\n  - {name: m, model: mote, pose: [0, 0, 0], sensors: {camera: {rate: 4, mount_z: 0.5}}}\n"
+                    "  - {name: n, model: mote, pose: [0, 2, 0]}\n")
+        out = os.path.join(self.tmp, "motes")
+        subprocess.run([SANET, "run", path, "-q", "-o", out], check=True, timeout=120)
+        done = subprocess.run(["node", os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs"), MODULES,
+                               os.path.join(out, "trace.mcap")], capture_output=True, text=True, timeout=120)
+        log = json.loads(done.stdout)
+        self.assertEqual(log["counts"]["/m/camera/image_raw/compressed"], 21, "every picture of 5 s at 4 Hz")
+        self.assertEqual(log["backwards"], 0)
+
     def test_other_bodies_in_their_colours_and_not_its_own(self):
         others = ("  - {name: m, model: mote, pose: [2, 0, 0], body: {size: 0.5, color: \"#10e020\"}}\n")
         rows = run(self.tmp, "{mount_x: 0.18, mount_z: 0.2, pitch: 0.0}", extra_nodes=others)

@@ -11,6 +11,7 @@ namespace sanet::view {
 namespace {
 
 constexpr const char* kSuffix = "/image_raw/compressed";
+constexpr std::size_t kMostBytes = std::size_t{512} << 20;  // of pictures kept: later ones are left out
 
 // "/rover/camera/image_raw/compressed" -> "rover" (the robot's name as the log writes it).
 std::string RobotOf(const std::string& topic) { return topic.substr(1, topic.find('/', 1) - 1); }
@@ -27,14 +28,21 @@ void CameraFrames::Load() {
     if (c.schema_name == "sensor_msgs/msg/CompressedImage" && n > k && c.topic.compare(n - k, k, kSuffix) == 0)
       robots[c.id] = RobotOf(c.topic);
   };
+  std::size_t kept = 0;
   visit.message = [&](const trace::McapMessage& m) {
     const auto robot = robots.find(m.channel);
     if (robot == robots.end()) return true;
-    if (auto picture = ros2msg::Decode<ros2msg::sensor_msgs::CompressedImage>(m.data))
+    if (auto picture = ros2msg::Decode<ros2msg::sensor_msgs::CompressedImage>(m.data)) {
+      kept += picture->data.size();
       frames_[robot->second].push_back({m.log_time / 1e9, picture->format, std::move(picture->data)});
-    return true;
+    }
+    return kept < kMostBytes;
   };
-  trace::ReadMcap(path_, visit);
+  try {
+    trace::ReadMcap(path_, visit);
+  } catch (const std::exception&) {
+    // A file cut short (a run killed): the pictures before the cut are shown.
+  }
   for (auto& [robot, frames] : frames_)
     std::stable_sort(frames.begin(), frames.end(), [](const Frame& a, const Frame& b) { return a.t < b.t; });
 }

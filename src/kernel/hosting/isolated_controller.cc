@@ -44,7 +44,7 @@ enum Call : std::uint8_t {
 // follows: a SOCK_SEQPACKET packet past the socket's send buffer (about 208 KiB) is refused, and a
 // camera's picture with its depth is larger than that.
 constexpr std::size_t kChunk = 64 * 1024;
-constexpr std::size_t kMostBytes = std::size_t{1} << 30;  // a message, whole
+constexpr std::size_t kMostBytes = std::size_t{256} << 20;  // a message, whole: past it, the peer is faulty
 
 void SendPacket(int fd, const Bytes& bytes) {
   std::size_t offset = 0;
@@ -248,9 +248,12 @@ class IsolatedController : public Controller {
     }
   }
 
-  // Why the child is gone, once it is.
+  // Why the child is gone, once it is. It is killed first, in case it is not gone but stuck (a
+  // message too large to take, a send the parent will never read): a child that has exited
+  // keeps its status.
   std::string Crash() {
     int status = 0;
+    ::kill(child_, SIGKILL);
     ::waitpid(child_, &status, 0);
     if (WIFSIGNALED(status))
       return "its process (" + name_ + ", run apart with --isolate-controllers) crashed: signal " +

@@ -58,8 +58,12 @@ void SimulatedNode::SwitchOn() {
 
 bool SimulatedNode::Fits(const Bytes& payload) {
   if (payload.size() <= net::kMostMessageBytes) return true;
-  Log("message of " + std::to_string(payload.size()) + " bytes refused: a message holds at most " +
-      std::to_string(net::kMostMessageBytes) + " bytes (one UDP datagram less sanet's header); split it");
+  if (!said_too_large_)
+    Log("message of " + std::to_string(payload.size()) + " bytes refused: a message holds at most " +
+        std::to_string(net::kMostMessageBytes) +
+        " bytes (one UDP datagram less sanet's header); split it (said once: "
+        "later ones are refused too)");
+  said_too_large_ = true;
   return false;
 }
 

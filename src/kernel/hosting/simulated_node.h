@@ -106,6 +106,7 @@ class SimulatedNode : public Node {
 
  private:
   bool Fits(const Bytes& payload);
+  bool said_too_large_ = false;
   sensors::ReadContext Context(std::optional<NodeId> target = std::nullopt) const;
   LastReads last_;
 

@@ -101,7 +101,7 @@ void Stepper::StopNow(const std::string& why) {
 
 void Stepper::End() {
   ApplyAftermath(0);
-  PublishUnsentSamples();
+  PublishUnsentSamples(Now());
   world_.batteries().SettleMotion();
   // Controllers finish while the run can still record what they log and measure.
   for (NodeId id = 0; id < world_.size(); ++id) world_.host(id).Finish();
@@ -257,17 +257,16 @@ void Stepper::Leave(Aftermath& aftermath) {
   }
 }
 
-// At the end, with the physics settled: the samples due by now that no step took (a world
-// without vehicles has no steps), a second at a time so that a long run's backlog never piles up.
-void Stepper::PublishUnsentSamples() {
+// The samples due by `until` that no step took, published: at each trajectory sample of a world
+// without vehicles (it has no physics steps), and at the end, with the physics settled.
+void Stepper::PublishUnsentSamples(double until) {
   std::vector<sensors::SensorSet::Sample> taken;
-  for (NodeId id : samplers_)
-    for (double t = 0, end = Now(); t < end + 1; t += 1) {
-      world_.sensors(id).SampleOwnClocks(std::min(t, end));
-      taken.clear();
-      world_.sensors(id).TakeSamples(taken);
-      for (const sensors::SensorSet::Sample& sample : taken) world_.Sampled(id, sample);
-    }
+  for (NodeId id : samplers_) {
+    world_.sensors(id).SampleOwnClocks(until);
+    taken.clear();
+    world_.sensors(id).TakeSamples(taken);
+    for (const sensors::SensorSet::Sample& sample : taken) world_.Sampled(id, sample);
+  }
 }
 
 // The radios learn where the bodies were at the end of each step that has ended.
@@ -333,6 +332,7 @@ void Stepper::Record() {
   {
     WallTimer timer(profile_.recording);
     outputs_.Sample(Now(), false, Poses());
+    if (vehicles_.empty()) PublishUnsentSamples(Now());
     LookAtRoutes();
   }
   if (vehicles_.empty()) Notify();  // no physics steps: observers see the world at each sample

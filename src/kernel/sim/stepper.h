@@ -85,7 +85,7 @@ class Stepper {
   };
   void Integrate(StepOutcome& outcome, Aftermath* aftermath);
   void Leave(Aftermath& aftermath);
-  void PublishUnsentSamples();  // at the end: those reads took after the last step
+  void PublishUnsentSamples(double until);  // those no physics step took
   void CatchUp();
   void ApplyAftermath(std::size_t keep);  // all steps' but the last `keep`
   void NoteDrive(NodeId id);              // whether its drive draws on a battery, its sensors sample

@@ -190,7 +190,7 @@ function battery(n) {
 // The robot's latest picture at or before `t` from trace.mcap's compressed camera topic (its
 // camera's record_rate), where the run recorded one: the log names robots by their ROS token.
 function cameraPanel(world, n, t) {
-  const token = n.node.name.replace(/[^A-Za-z0-9_]/g, "_");
+  const token = (/^[0-9]/.test(n.node.name) ? "_" : "") + n.node.name.replace(/[^A-Za-z0-9_]/g, "_");
   const times = (world.pictures || {})[token];
   if (!times) return "";
   let at = null;
@@ -380,7 +380,7 @@ async function main() {
   if (run.info.live) return live(run);
   const [poses, messages, transitions, distances, energy, metrics, pictures] = await Promise.all(
     [api("/api/poses"), api("/api/messages"), api("/api/transitions"), api("/api/min_distance"), api("/api/energy"),
-     api("/api/metrics"), api("/api/cameras")]);
+     api("/api/metrics"), api("/api/cameras").catch(() => ({}))]);
   // The run may have ended before the scenario's duration (an end condition).
   const duration = Number((run.summary && run.summary.simulated_s) || run.info.duration_s);
   document.getElementById("title").textContent = run.info.name;

@@ -23,8 +23,6 @@ using msg::sensor_msgs::Image;
 
 enum Topic : std::size_t { kImage, kInfo, kCompressed, kDepth };
 
-std::string Base(const std::string& instance) { return instance == "camera" ? "camera" : instance; }
-
 // The pinhole of square pixels over `fov`, its axis through the picture's middle (pixel centres at
 // whole coordinates, as image_geometry counts them).
 CameraInfo InfoOf(const sensors::CameraSettings& s) {
@@ -66,11 +64,11 @@ Image DepthImage(const Image& like, const ImageReading& picture) {
 class CameraMessages : public SensorMessages {
  public:
   std::vector<SensorTopic> Topics(const std::string& instance, const std::any& settings) const override {
-    std::vector<SensorTopic> topics = {TopicFor<Image>(Base(instance) + "/image_raw"),
-                                       TopicFor<CameraInfo>(Base(instance) + "/camera_info"),
-                                       TopicFor<CompressedImage>(Base(instance) + "/image_raw/compressed")};
+    std::vector<SensorTopic> topics = {TopicFor<Image>(instance + "/image_raw"),
+                                       TopicFor<CameraInfo>(instance + "/camera_info"),
+                                       TopicFor<CompressedImage>(instance + "/image_raw/compressed")};
     if (std::any_cast<const sensors::CameraSettings&>(settings).depth)
-      topics.push_back(TopicFor<Image>(Base(instance) + "/depth/image_raw"));
+      topics.push_back(TopicFor<Image>(instance + "/depth/image_raw"));
     return topics;
   }
   std::vector<SensorMessage> Messages(const std::string& instance, const std::any& settings,

@@ -1,41 +1,20 @@
 // sanet extension: SEN {Time t} {Type Camera} {Name camera} {Width w} {Height h} {Encoding png}
-// {Data base64}, the picture as PNG (lossless) in base64, for agents. USARSim serves pictures on an
+// {Data base64}, the picture as PNG (lossless) in base64 (wire/base64.h), for agents. USARSim serves pictures on an
 // image server of its own, not in the robot protocol, so there is no USARSim line to follow. A
 // picture whose line would pass kMostLine bytes is not sent (lower the resolution or the noise):
 // the agent reads lines of up to 1 MiB, and the server drops a client more than 1 MiB behind.
 // Depth does not travel.
-#include <openssl/evp.h>
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
 #include "sensors/camera/camera.h"
+#include "wire/base64.h"
 #include "wire/sensor_lines.h"
 
 namespace sanet::wire {
 namespace {
 
 constexpr std::size_t kMostLine = 256 * 1024;
-
-std::string Base64(const std::vector<std::uint8_t>& bytes) {
-  std::string text(4 * ((bytes.size() + 2) / 3) + 1, '\0');
-  const int n =
-      EVP_EncodeBlock(reinterpret_cast<unsigned char*>(text.data()), bytes.data(), static_cast<int>(bytes.size()));
-  text.resize(static_cast<std::size_t>(n));
-  return text;
-}
-
-// Nothing for text that is not base64 (of whole groups of four).
-std::optional<std::vector<std::uint8_t>> FromBase64(const std::string& text) {
-  if (text.size() % 4 != 0) return std::nullopt;
-  std::vector<std::uint8_t> bytes(text.size() / 4 * 3);
-  const int n =
-      EVP_DecodeBlock(bytes.data(), reinterpret_cast<const unsigned char*>(text.data()), static_cast<int>(text.size()));
-  if (n < 0) return std::nullopt;
-  std::size_t padding = 0;
-  for (std::size_t i = text.size(); i > 0 && text[i - 1] == '=' && padding < 2; --i) ++padding;
-  bytes.resize(static_cast<std::size_t>(n) - padding);
-  return bytes;
-}
 
 std::vector<std::uint8_t> Png(const ImageReading& picture) {
   std::vector<std::uint8_t> png;

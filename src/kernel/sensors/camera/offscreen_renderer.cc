@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -80,7 +81,8 @@ void LoadCamera(const CameraView& v) {
 
 OffscreenRenderer::OffscreenRenderer(int width, int height)
     : width_(width), height_(height), rgba_(static_cast<std::size_t>(width) * height * 4) {
-  setenv("LP_NATIVE_VECTOR_WIDTH", "128", /*overwrite=*/0);  // before llvmpipe starts: the same pixels everywhere
+  static std::once_flag vector_width;  // before llvmpipe starts: the same pixels everywhere
+  std::call_once(vector_width, [] { setenv("LP_NATIVE_VECTOR_WIDTH", "128", /*overwrite=*/0); });
   context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
   if (!context_) throw std::runtime_error("OSMesa could not make an OpenGL context (Mesa's libOSMesa)");
 }
@@ -98,10 +100,13 @@ void OffscreenRenderer::Render(const CameraView& view, const Scenery& scenery, c
   glClearColor(scenery.sky.r / 255.0f, scenery.sky.g / 255.0f, scenery.sky.b / 255.0f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   LoadCamera(view);
-  Color(scenery.ground);  // as far as the camera sees, around it
+  // The ground, as far as the camera sees: the far plane's corners lie this far from the eye.
+  const double across = std::tan(view.fov / 2), up = across * view.height / view.width;
+  const double reach = view.far * std::sqrt(1 + across * across + up * up);
+  Color(scenery.ground);
   glBegin(GL_QUADS);
   for (const auto& [dx, dy] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-    glVertex3d(view.eye.x + dx * view.far, view.eye.y + dy * view.far, 0);
+    glVertex3d(view.eye.x + dx * reach, view.eye.y + dy * reach, 0);
   glEnd();
   for (const SceneBox& b : scenery.boxes) {
     Color(b.color);
@@ -111,6 +116,7 @@ void OffscreenRenderer::Render(const CameraView& view, const Scenery& scenery, c
     if (b.node != skip) DrawBody(b);
   glFinish();
   ReadBack(view, depth, out);
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);  // free to be made current on another thread
 }
 
 // OSMesa's rows run bottom to top, an image's top to bottom. Depth from the buffer's [0, 1] to

@@ -814,6 +814,8 @@ void DriveLimits(Fields<ModelSpec>& f, const char* speed_meaning, const char* tu
 }
 
 Rgb ReadColor(const Field& v) {
+  if (v.node().IsNull())
+    v.Fail("is empty: write the colour in quotes, \"#rrggbb\" (without them YAML reads # as the start of a comment)");
   const auto color = ParseRgb(v.Text());
   if (!color) v.Fail("is not a colour: write \"#rrggbb\", red, green and blue in two hexadecimal digits each");
   return *color;

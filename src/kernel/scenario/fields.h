@@ -92,6 +92,12 @@ class Fields {
     entries_.back().info.default_text = kRequired;
     return *this;
   }
+  // The field declared last has a default that depends on more than its settings (the model's
+  // body): the docs say it in words.
+  Fields& DefaultSaid(std::string text) {
+    entries_.back().info.default_text = std::move(text);
+    return *this;
+  }
 
   std::vector<std::string> Keys() const {
     std::vector<std::string> keys;

@@ -17,10 +17,12 @@ const Fields<CameraSettings>& CameraFields() {
     f.Number("fov", Member(&CameraSettings::fov), "rad", 0, 3.1, "horizontal field of view (square pixels)", true);
     f.Number("rate", Member(&CameraSettings::rate), "Hz", 0, 1000, "pictures a second, on the simulated clock", true);
     f.Number("mount_x", Member(&CameraSettings::mount_x), "m", -10, 10,
-             "the optical centre ahead of the reference point");
+             "the optical centre ahead of the reference point")
+        .DefaultSaid("the front of the body (0.18 on a diffdrive, 0.19 on an omni3)");
     f.Number("mount_y", Member(&CameraSettings::mount_y), "m", -10, 10,
              "the optical centre left of the reference point");
-    f.Number("mount_z", Member(&CameraSettings::mount_z), "m", 0, 100, "the optical centre above the ground");
+    f.Number("mount_z", Member(&CameraSettings::mount_z), "m", 0, 100, "the optical centre above the ground")
+        .DefaultSaid("5 cm above the body (0.32 on a diffdrive, 0.27 on an omni3)");
     f.Number("pitch", Member(&CameraSettings::pitch), "rad", -1.5707963267948966, 1.5707963267948966,
              "down from level");
     f.Number("near", Member(&CameraSettings::near), "m", 0, 10, "nothing nearer is drawn", true);

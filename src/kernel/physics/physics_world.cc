@@ -21,6 +21,15 @@ double DistanceFromAbove(Vec2 p, const StaticBox& box) {
   return std::hypot(out_along, out_across);
 }
 
+std::array<Vec2, 4> FootprintCorners(const StaticBox& box) {
+  const double c = std::cos(box.yaw), s = std::sin(box.yaw), hx = box.size.x / 2, hy = box.size.y / 2;
+  std::array<Vec2, 4> corners;
+  int i = 0;
+  for (const auto& [u, v] : {std::pair{hx, hy}, {-hx, hy}, {-hx, -hy}, {hx, -hy}})
+    corners[i++] = {box.center.x + c * u - s * v, box.center.y + s * u + c * v};
+  return corners;
+}
+
 std::unique_ptr<PhysicsWorld> CreatePhysicsWorld(const WorldSettings& settings) {
   return settings.engine == Engine::k2d ? CreateBox2dWorld(settings) : CreateOdeWorld(settings);
 }

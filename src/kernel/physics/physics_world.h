@@ -46,6 +46,8 @@ struct StaticBox {
 
 // The distance from `p` to the box, seen from above (0 inside it).
 double DistanceFromAbove(Vec2 p, const StaticBox& box);
+// The box's corners seen from above, counter-clockwise (a polygon).
+std::array<Vec2, 4> FootprintCorners(const StaticBox& box);
 
 // Robertino-like omnidirectional robot: two stacked cylinders, three sphere wheels on radial
 // hinges; anisotropic friction (grip along the rolling direction, slip along the wheel axis)

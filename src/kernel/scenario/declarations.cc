@@ -171,9 +171,8 @@ sensors::Region ReadDeniedRegion(const Field& v) {
   const std::vector<double> size = v.Require("size").Numbers(2);
   if (size[0] <= 0 || size[1] <= 0) v.Require("size").Fail("both sides must be greater than 0");
   const double yaw = v.Get("yaw") ? v.Require("yaw").Number(-kInf, kInf) : 0;
-  const double c = std::cos(yaw), s = std::sin(yaw);
-  for (const auto& [u, w] : {std::pair{0.5, 0.5}, {-0.5, 0.5}, {-0.5, -0.5}, {0.5, -0.5}})
-    region.push_back({center.x + c * u * size[0] - s * w * size[1], center.y + s * u * size[0] + c * w * size[1]});
+  for (const Vec2 corner : physics::FootprintCorners({{center.x, center.y, 0}, {size[0], size[1], 0}, yaw}))
+    region.push_back(corner);
   return region;
 }
 

@@ -19,17 +19,6 @@ struct Bounds {
   }
 };
 
-// A box's corners seen from above.
-std::array<Vec2, 4> Corners(const physics::StaticBox& b) {
-  const double c = std::cos(b.yaw), s = std::sin(b.yaw), hx = b.size.x / 2, hy = b.size.y / 2;
-  std::array<Vec2, 4> out;
-  int i = 0;
-  for (const double sx : {-1.0, 1.0})
-    for (const double sy : {-1.0, 1.0})
-      out[i++] = {b.center.x + c * sx * hx - s * sy * hy, b.center.y + s * sx * hx + c * sy * hy};
-  return out;
-}
-
 // Whether the box's footprint and the square cell centred at `p` (side `side`) overlap by more
 // than a hair (boxes made of cells do not spill into their neighbours): separating axes, the
 // cell's two and the box's two.
@@ -49,7 +38,7 @@ bool Overlaps(const physics::StaticBox& b, Vec2 p, double side) {
 Bounds WorldBounds(const sim::RunSpec& spec) {
   Bounds b;
   for (const sim::Obstacle& o : spec.obstacles)
-    for (const Vec2 corner : Corners(o.box)) b.Add(corner);
+    for (const Vec2 corner : physics::FootprintCorners(o.box)) b.Add(corner);
   for (const sim::NodeSpec& n : spec.nodes) b.Add({n.pose.x, n.pose.y});
   if (b.low.x > b.high.x) b.Add({0, 0});
   b.low = b.low - Vec2{kMargin, kMargin}, b.high = b.high + Vec2{kMargin, kMargin};
@@ -84,7 +73,7 @@ OccupancyMap RasterizeWorld(const sim::RunSpec& spec, double resolution) {
   map.cells.assign(static_cast<std::size_t>(map.width) * map.height, OccupancyMap::kFree);
   for (const sim::Obstacle& o : spec.obstacles) {
     Bounds box;
-    for (const Vec2 corner : Corners(o.box)) box.Add(corner);
+    for (const Vec2 corner : physics::FootprintCorners(o.box)) box.Add(corner);
     const int c0 = std::max(0, static_cast<int>(std::floor((box.low.x - x0) / resolution)));
     const int c1 = std::min(map.width - 1, static_cast<int>(std::floor((box.high.x - x0) / resolution)));
     const int r0 = std::max(0, static_cast<int>(std::floor((box.low.y - y0) / resolution)));

@@ -11,12 +11,8 @@ namespace {
 using sensors::Region;
 
 Region Footprint(const physics::StaticBox& box) {
-  const double c = std::cos(box.yaw), s = std::sin(box.yaw);
-  const double hx = box.size.x / 2, hy = box.size.y / 2;
-  Region corners;
-  for (const auto& [u, v] : {std::pair{hx, hy}, {-hx, hy}, {-hx, -hy}, {hx, -hy}})
-    corners.push_back({box.center.x + c * u - s * v, box.center.y + s * u + c * v});
-  return corners;
+  const auto corners = physics::FootprintCorners(box);
+  return Region(corners.begin(), corners.end());
 }
 
 double Cross(Vec2 o, Vec2 a, Vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }

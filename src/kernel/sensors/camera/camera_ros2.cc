@@ -6,13 +6,12 @@
 // the optical frame on it. The run's record (trace.mcap, the Foxglove stream) takes the pictures
 // at `record_rate` as image_transport's compressed topic does, image_raw/compressed
 // (sensor_msgs/CompressedImage, PNG: lossless), with their camera_info and depth.
-#include <stb/stb_image_write.h>
-
 #include <cmath>
 #include <cstring>
 
 #include "ros2_presentation/sensor_messages.h"
 #include "sensors/camera/camera.h"
+#include "sensors/camera/png.h"
 
 namespace sanet::ros2_presentation {
 namespace {
@@ -37,17 +36,12 @@ CameraInfo InfoOf(const sensors::CameraSettings& s) {
   return info;
 }
 
-// The picture as PNG, through stb_image_write (deterministic: the same pixels, the same bytes).
+// The picture as image_transport's compressed topic carries it, PNG.
 CompressedImage Png(const msg::std_msgs::Header& header, const ImageReading& picture) {
   CompressedImage m;
   m.header = header;
   m.format = "png";
-  stbi_write_png_to_func(
-      [](void* to, void* bytes, int size) {
-        auto& data = *static_cast<std::vector<std::uint8_t>*>(to);
-        data.insert(data.end(), static_cast<std::uint8_t*>(bytes), static_cast<std::uint8_t*>(bytes) + size);
-      },
-      &m.data, picture.width, picture.height, 3, picture.data.data(), picture.width * 3);
+  m.data = sensors::EncodePng(picture);
   return m;
 }
 

@@ -5,9 +5,9 @@
 // the agent reads lines of up to 1 MiB, and the server drops a client more than 1 MiB behind.
 // Depth does not travel.
 #include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
 
 #include "sensors/camera/camera.h"
+#include "sensors/camera/png.h"
 #include "wire/base64.h"
 #include "wire/sensor_lines.h"
 
@@ -16,23 +16,12 @@ namespace {
 
 constexpr std::size_t kMostLine = 256 * 1024;
 
-std::vector<std::uint8_t> Png(const ImageReading& picture) {
-  std::vector<std::uint8_t> png;
-  stbi_write_png_to_func(
-      [](void* to, void* bytes, int size) {
-        auto& out = *static_cast<std::vector<std::uint8_t>*>(to);
-        out.insert(out.end(), static_cast<std::uint8_t*>(bytes), static_cast<std::uint8_t*>(bytes) + size);
-      },
-      &png, picture.width, picture.height, 3, picture.data.data(), picture.width * 3);
-  return png;
-}
-
 class CameraLines : public SensorLines {
  public:
   std::vector<ProtocolMessage> Write(const std::string& instance, const SensorReading& reading,
                                      const LineContext& context) const override {
     const auto& picture = std::get<ImageReading>(reading);
-    std::string data = Base64(Png(picture));
+    std::string data = Base64(sensors::EncodePng(picture));
     if (data.size() > kMostLine) return {};
     ProtocolMessage line = SenLine(context.time, "Camera");
     line.Add("Name", WireName(instance, "camera", "Camera"))

@@ -29,8 +29,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "ros2_example.h"
 #include "ros2_types.h"
 
+#define PROGRAM "pose_team"
 #define MAX_TEAM 16
 #define MAX_ROUTE 32
 #define SPACING 1.5      /* m between followers along the line to the leader */
@@ -59,12 +61,6 @@ typedef struct {
   long count[MAX_TEAM];
   FILE *log;
 } Robot;
-
-static volatile sig_atomic_t stopping = 0;
-static void on_signal(int signal_number) {
-  (void)signal_number;
-  stopping = 1;
-}
 
 static void usage(FILE *to, int status) {
   fprintf(to,
@@ -135,45 +131,15 @@ static int index_in_team(const Options *o, const char *name) {
   return -1;
 }
 
-static dds_entity_t endpoint(dds_entity_t participant, const dds_topic_descriptor_t *type, const char *robot,
-                             const char *topic, int writer, int reliable) {
-  char name[256];
-  snprintf(name, sizeof name, "rt/%s/%s", robot, topic); /* ROS 2 topic /robot/topic */
-  const dds_entity_t t = dds_create_topic(participant, type, name, NULL, NULL);
-  dds_qos_t *q = dds_create_qos(); /* ROS 2's default profile, or its sensor-data one */
-  dds_qset_reliability(q, reliable ? DDS_RELIABILITY_RELIABLE : DDS_RELIABILITY_BEST_EFFORT, DDS_MSECS(100));
-  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, reliable ? 10 : 5);
-  const dds_entity_t e =
-      writer ? dds_create_writer(participant, t, q, NULL) : dds_create_reader(participant, t, q, NULL);
-  dds_delete_qos(q);
-  if (t < 0 || e < 0) {
-    fprintf(stderr, "pose_team: cannot use %s: %s\n", name, dds_strretcode(t < 0 ? t : e));
-    exit(1);
-  }
-  return e;
-}
-
-static dds_entity_t join(int domain) {
-  const dds_entity_t participant = dds_create_participant((dds_domainid_t)domain, NULL, NULL);
-  if (participant < 0) {
-    fprintf(stderr, "pose_team: cannot join DDS domain %d: %s (does CYCLONEDDS_URI name interfaces here?)\n", domain,
-            dds_strretcode(participant));
-    exit(1);
-  }
-  return participant;
-}
-
 static void open_endpoints(Robot *r, const Options *o) {
-  const dds_entity_t face = join(o->face_domain), team = join(o->team_domain);
-  r->truth = endpoint(face, &nav_msgs_msg_dds__Odometry__desc, o->robot, "ground_truth", 0, 0);
-  r->cmd_vel = endpoint(face, &geometry_msgs_msg_dds__Twist__desc, o->robot, "cmd_vel", 1, 1);
-  r->pose_out = endpoint(team, &geometry_msgs_msg_dds__PoseStamped__desc, o->robot, "pose", 1, 0);
+  const dds_entity_t face = join(PROGRAM, o->face_domain), team = join(PROGRAM, o->team_domain);
+  r->truth = endpoint(PROGRAM, face, &nav_msgs_msg_dds__Odometry__desc, o->robot, "ground_truth", 0, 0, 5);
+  r->cmd_vel = endpoint(PROGRAM, face, &geometry_msgs_msg_dds__Twist__desc, o->robot, "cmd_vel", 1, 1, 10);
+  r->pose_out = endpoint(PROGRAM, team, &geometry_msgs_msg_dds__PoseStamped__desc, o->robot, "pose", 1, 0, 5);
   for (int i = 0; i < o->team_size; ++i)
     if (strcmp(o->team[i], o->robot) != 0)
-      r->pose_in[i] = endpoint(team, &geometry_msgs_msg_dds__PoseStamped__desc, o->team[i], "pose", 0, 0);
+      r->pose_in[i] = endpoint(PROGRAM, team, &geometry_msgs_msg_dds__PoseStamped__desc, o->team[i], "pose", 0, 0, 5);
 }
-
-static double seconds(builtin_interfaces_msg_dds__Time_ t) { return t.sec + t.nanosec * 1e-9; }
 
 static Pose2 pose_of(const geometry_msgs_msg_dds__Pose_ *p, builtin_interfaces_msg_dds__Time_ stamp) {
   const geometry_msgs_msg_dds__Quaternion_ q = p->orientation;
@@ -306,8 +272,7 @@ int main(int argc, char **argv) {
     return 2;
   }
   setvbuf(stdout, NULL, _IOLBF, 0);
-  signal(SIGTERM, on_signal);
-  signal(SIGINT, on_signal);
+  stop_on_signals();
   Robot r;
   memset(&r, 0, sizeof r);
   open_endpoints(&r, &o);

@@ -37,6 +37,7 @@ PINNED = {
     "swarm-1k": (5, "b78520b232205dd8"),
     "urdf-robot": (120, "00b37c5e79d6f33f"),  # a diffdrive and an omni3 from URDF files (issue 54)
     "camera-stream": (90, "33554d2a3ed13161"),  # a rover streams its camera's pictures over 802.11g (issue 57)
+    "ros2-camera-radio": (75, "4d1b3182c0f714af"),  # the robots stand (driven in launch only), the camera samples
     "swarm-1k-abstract": (5, "19afe3bebbc920a0"),  # the abstract radio, calibrated by the full model (issue 53)
     "swarm-10k": (2, "1a7825e66ad97414"),  # on the abstract radio since issue 53; a few seconds are enough
 }

@@ -4,7 +4,6 @@ line every sensor period naming each node within the sensor's range, its distanc
 within the sensor's noise; a stock USARSim client, which would not know the line, never sees it.
 A client written from docs/protocol.md, standard library only."""
 import math
-import os
 import sys
 import tempfile
 import unittest

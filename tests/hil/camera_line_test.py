@@ -5,7 +5,6 @@ an independent decoder (Pillow) turns into the picture: the red box ahead fills 
 stock USARSim client never sees the line. A client written from docs/protocol.md."""
 import base64
 import io
-import os
 import sys
 import tempfile
 import unittest

@@ -7,7 +7,6 @@ that of `sanet run` on the same scenario, where nobody asks."""
 import json
 import math
 import os
-import socket
 import subprocess
 import sys
 import tempfile

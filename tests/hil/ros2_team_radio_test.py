@@ -13,27 +13,18 @@ import csv
 import json
 import math
 import os
-import re
-import subprocess
 import sys
 import tempfile
 import unittest
 
-from dds_ports import BridgeSniffer, domain_of, pcap_datagrams
+from dds_ports import domain_of, pcap_datagrams
+from radio_launch import SniffedLaunch, permitted, ros2_team_environment
 
 SANET, SOURCE, POSE_TEAM = sys.argv.pop(1), sys.argv.pop(1), sys.argv.pop(1)
 SCENARIO = os.path.join(SOURCE, "scenarios", "ros2-team-radio.yaml")
 TX_POWER = -5  # dBm, the scenario's
 RANGE = 10 ** ((TX_POWER - 46.6777 + 82) / 30)  # m: log-distance (exponent 3, 46.6777 dB at 1 m) meets -82 dBm
 FACE, TEAM = 0, 1  # DDS domains, as examples/ros2/cyclonedds-team.xml has them
-
-
-def permitted():
-    if os.geteuid() != 0:
-        return "not root"
-    if not os.path.exists("/dev/net/tun"):
-        return "no /dev/net/tun"
-    return None
 
 
 def rows(path):
@@ -57,24 +48,9 @@ class TeamOverTheRadio(unittest.TestCase):
     def setUpClass(cls):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.out, cls.heard = os.path.join(cls.tmp.name, "out"), os.path.join(cls.tmp.name, "heard")
-        env = dict(os.environ, CYCLONEDDS_URI="file://" + os.path.join(SOURCE, "examples", "ros2", "cyclonedds-team.xml"))
-        env.pop("ROS_LOCALHOST_ONLY", None)
-        env.pop("ROS_DOMAIN_ID", None)
-        launch = subprocess.Popen([SANET, "launch", SCENARIO, "-o", cls.out, "--exec", "all", "--", POSE_TEAM,
-                                   "--team", "leader,f1,f2", "--route", "24,0:8,0", "--log", cls.heard],
-                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
-        cls.lines = []
-        for line in launch.stdout:  # the bridge is named before the programs start
-            cls.lines.append(line)
-            m = re.match(r"\s*bridge (\S+): the server at (\S+),", line)  # this launch's own
-            if m:
-                cls.sniffer = BridgeSniffer(m.group(1))
-                cls.sniffer.start()
-                cls.server_address = m.group(2)
-                break
-        cls.lines += launch.communicate(timeout=200)[0].splitlines(keepends=True)
-        cls.sniffer.finish()
-        cls.said = "".join(cls.lines)
+        launch = SniffedLaunch([SANET, "launch", SCENARIO, "-o", cls.out, "--exec", "all", "--", POSE_TEAM, "--team",
+                                "leader,f1,f2", "--route", "24,0:8,0", "--log", cls.heard], ros2_team_environment(SOURCE))
+        cls.lines, cls.said, cls.sniffer, cls.server_address = launch.lines, launch.said, launch.sniffer, launch.server_address
         assert launch.returncode == 0, cls.said
 
     @classmethod

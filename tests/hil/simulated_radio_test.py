@@ -24,6 +24,8 @@ import tempfile
 import time
 import unittest
 
+from radio_launch import permitted
+
 from dds_ports import BridgeSniffer
 
 SANET = sys.argv.pop(1)
@@ -121,14 +123,6 @@ nodes:
 UNICAST_PEERS = """<CycloneDDS><Domain Id="any"><General><Interfaces><NetworkInterface name="radio0" multicast="false"/>
 </Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery><Peers><Peer address="10.0.0.1"/>
 <Peer address="10.0.0.2"/></Peers><ParticipantIndex>auto</ParticipantIndex></Discovery></Domain></CycloneDDS>"""
-
-
-def permitted():
-    if os.geteuid() != 0:
-        return "not root"
-    if not os.path.exists("/dev/net/tun"):
-        return "no /dev/net/tun"
-    return None
 
 
 class Launch:

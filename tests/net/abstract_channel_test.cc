@@ -157,7 +157,7 @@ TEST(AbstractChannel, AUnicastIsRetriedAsTheMacRetriesIt) {
   const double airtime = kPreamble + (kBytes + AbstractChannel::kMacOverhead) * 8 / kDataRate;
   const double failed = airtime + r.sifs_s + r.slot_s + r.ack_s + r.sifs_s + 2 * r.slot_s;
   double most = 0;
-  for (int k = 1; k < r.attempts; ++k) most += failed + std::min((r.cw_min + 1 << k) - 1, r.cw_max) * r.slot_s;
+  for (int k = 1; k < r.attempts; ++k) most += failed + std::min(((r.cw_min + 1) << k) - 1, r.cw_max) * r.slot_s;
   int at_first = 0, retried = 0;
   for (double t : arrivals) {
     const double late = std::fmod(t - first + 1e-12, kEveryMs * 1e-3) - 1e-12;

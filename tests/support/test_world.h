@@ -80,12 +80,17 @@ inline sim::RunSpec On(physics::Engine engine, sim::RunSpec spec) {
 
 inline sim::Obstacle Wall(Vec2 a, Vec2 b, double height = 1.0, double thickness = 0.2) {
   const Vec2 mid = (a + b) * 0.5;
-  return {
-      "wall", {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)}, {}, {}};
+  sim::Obstacle wall;
+  wall.kind = "wall";
+  wall.box = {{mid.x, mid.y, height / 2}, {Norm(b - a), thickness, height}, std::atan2(b.y - a.y, b.x - a.x)};
+  return wall;
 }
 
 inline sim::Obstacle Box(Vec2 center, double lx, double ly, double h, double yaw = 0) {
-  return {"box", {{center.x, center.y, h / 2}, {lx, ly, h}, yaw}, {}, {}};
+  sim::Obstacle box;
+  box.kind = "box";
+  box.box = {{center.x, center.y, h / 2}, {lx, ly, h}, yaw};
+  return box;
 }
 
 inline hosting::Registry& BuiltinRegistry() {

@@ -30,7 +30,8 @@ struct Ros2Face::Robot {
   std::shared_ptr<const robots::UrdfSource> urdf;  // a robot from a URDF: its description and links
   DdsDomain::Entity cmd_vel = 0, description = 0;
   std::map<std::string, std::vector<DdsDomain::Entity>> sensors;  // by instance: a writer per topic
-  double period = 0.1;                                            // s between its sensor messages
+  std::map<std::string, double> published_sample;  // by instance sampling on its own clock: the last one's time
+  double period = 0.1;                             // s between its sensor messages
   double next_sensors = 0;
   std::uint64_t last_writer = 0;
   double last_writer_at = -1e9;  // simulated time of its last sample
@@ -166,13 +167,14 @@ void Ros2Face::Publish(Robot& r) {
   tf.transforms.push_back(OdomToBase(readings.time, readings.odometry(), r.start, r.frames));
   dds_.Write(tf_, ros2msg::Encode(tf));
   ++r.published;
-  const ros2_presentation::MessageContext context{readings.time, &r.frames, r.start, readings.ground_truth,
-                                                  readings.velocity};
+  ros2_presentation::MessageContext context{readings.time, &r.frames, r.start, readings.ground_truth,
+                                            readings.velocity};
   const robots::SensorConfigs& sensors = driver_.Spec(r.id).model.sensors;
   for (const auto& [instance, reading] : readings.by_instance) {
     const auto writers = r.sensors.find(instance);
     const auto config = sensors.find(instance);
-    if (writers == r.sensors.end() || config == sensors.end()) continue;
+    if (writers == r.sensors.end() || config == sensors.end() || !IsNewSample(r, instance, readings)) continue;
+    context.time = readings.SampledAt(instance).value_or(readings.time);  // as a driver stamps: when taken
     for (const ros2_presentation::SensorMessage& m :
          ros2_presentation::MessagesOf(config->second.kind)
              ->Messages(instance, config->second.settings, reading, context)) {
@@ -180,6 +182,18 @@ void Ros2Face::Publish(Robot& r) {
       ++r.published;
     }
   }
+}
+
+// A sensor that samples on its own clock (a camera at 5 Hz read at the face's 10) is published
+// once a sample, not again at each period while it is the latest.
+bool Ros2Face::IsNewSample(Robot& r, const std::string& instance, const sim::SensorReadings& readings) {
+  const std::optional<double> at = readings.SampledAt(instance);
+  if (!at) return true;  // read now, not sampled
+  const auto [last, first] = r.published_sample.try_emplace(instance, *at);
+  if (first) return true;
+  if (last->second == *at) return false;
+  last->second = *at;
+  return true;
 }
 
 void Ros2Face::TakeCommands(Robot& r) {

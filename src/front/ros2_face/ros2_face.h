@@ -64,6 +64,7 @@ class Ros2Face {
   void Describe(Robot& robot, const sim::NodeSpec& node, const std::string& ns);
   void PublishWheels(const sim::WorldSnapshot& snapshot);
   void Publish(Robot& robot);
+  static bool IsNewSample(Robot& robot, const std::string& instance, const sim::SensorReadings& readings);
   void TakeCommands(Robot& robot);
   void StopIfQuiet(Robot& robot);
   void Apply(Robot& robot, const DdsDomain::Sample& sample);

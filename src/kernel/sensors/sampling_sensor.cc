@@ -17,6 +17,7 @@ void SamplingSensor::SampleUntil(double time) {
   // Each due time a whole number of periods from 0, so that they do not drift.
   for (double due = taken_ * period_; due <= time + 1e-9; due = ++taken_ * period_) {
     latest_ = Sample(period_);
+    latest_at_ = due;
     unsent_.push_back({due, *latest_});
   }
 }

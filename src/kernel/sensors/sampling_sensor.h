@@ -20,6 +20,7 @@ class SamplingSensor : public SensorInstance {
   std::optional<SensorReading> Read(const ReadContext& context) final;
   void AfterPhysicsStep(double time) final { SampleUntil(time); }
   void TakeSamples(std::vector<TimedReading>& out) final;
+  std::optional<double> SampledAt() const final { return latest_at_; }
   // Takes every sample due by `time` (s, simulated).
   void SampleUntil(double time);
 
@@ -32,6 +33,7 @@ class SamplingSensor : public SensorInstance {
   physics::PhysicsWorld& world_;
   std::uint64_t taken_ = 0;  // samples so far: the next is due at taken_ * period_
   std::optional<SensorReading> latest_;
+  std::optional<double> latest_at_;   // s: when latest_ was due
   std::vector<TimedReading> unsent_;  // not yet taken to log
 };
 

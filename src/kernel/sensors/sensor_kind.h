@@ -58,6 +58,9 @@ class SensorInstance {
   // The samples taken on the sensor's own clock since the last call, oldest first (a kind that
   // SamplesOnItsOwn; others take none): the run logs each one.
   virtual void TakeSamples(std::vector<TimedReading>& /*out*/) {}
+  // When the reading the last read got was taken (s, simulated), for a sensor that samples on its
+  // own clock: a read gets the latest sample, which may be older than the read.
+  virtual std::optional<double> SampledAt() const { return std::nullopt; }
 };
 
 // Where an instance sits and what it draws its noise from.

@@ -34,6 +34,11 @@ std::optional<SensorReading> SensorSet::Read(const std::string& name, const Read
   return e->instance->Read(context);
 }
 
+std::optional<double> SensorSet::SampledAt(const std::string& name) const {
+  const Entry* e = Find(name);
+  return e ? e->instance->SampledAt() : std::nullopt;
+}
+
 void SensorSet::SampleOwnClocks(double time) {
   for (SamplingSensor* s : samplers_) s->SampleUntil(time);
 }

@@ -27,6 +27,8 @@ class SensorSet {
   std::string KindOf(const std::string& name) const;
   // Empty when there is no such instance or it has nothing to say.
   std::optional<SensorReading> Read(const std::string& name, const ReadContext& context);
+  // When instance `name`'s last reading was taken, if it samples on its own clock.
+  std::optional<double> SampledAt(const std::string& name) const;
   void AfterPhysicsStep(double time);
   // A sample of a sensor that samples on its own clock; the names live as long as the set.
   struct Sample {

@@ -68,9 +68,13 @@ std::vector<std::pair<NodeId, double>> Chargers::SharesOf(NodeId robot) {
 // off for the trickle a full mote draws, radiating watts to give it milliwatts.
 bool Chargers::NeedsCharge(NodeId mote, const energy::NodeEnergy& energy) {
   topping_up_.resize(world_.size(), 1);
-  if (energy.full()) return topping_up_[mote] = 0;
+  if (energy.full()) {
+    topping_up_[mote] = 0;
+    return false;
+  }
   if (!topping_up_[mote] && energy.remaining_j() >= kTopUpBelow * energy.spec().battery_j) return false;
-  return topping_up_[mote] = 1;
+  topping_up_[mote] = 1;
+  return true;
 }
 
 bool Chargers::Alive(NodeId id) const { return !world_.batteries().dead(id) && !world_.SwitchedOff(id); }

@@ -109,8 +109,13 @@ const SensorReadings& Driver::TakeReadings(NodeId robot, const std::string& owne
   r.height = parts_.model(robot).body().position3().z;
   r.velocity = parts_.Body(robot).velocity;
   r.by_instance.clear();
-  for (const std::string& name : node.sensors().names())
-    if (std::optional<SensorReading> reading = node.Sensor(name)) r.by_instance.emplace_back(name, std::move(*reading));
+  r.sampled_at.clear();
+  for (const std::string& name : node.sensors().names()) {
+    std::optional<SensorReading> reading = node.Sensor(name);
+    if (!reading) continue;
+    r.by_instance.emplace_back(name, std::move(*reading));
+    if (const std::optional<double> at = node.sensors().SampledAt(name)) r.sampled_at.emplace_back(name, *at);
+  }
   if (const Pose2D* truth = r.Get<Pose2D>("ground_truth")) r.ground_truth = *truth;
   return r;
 }

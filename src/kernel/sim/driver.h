@@ -30,6 +30,8 @@ struct SensorReadings {
   Twist2D velocity;     // world frame
   // Every instance that gave a reading, in the order of sensors::PresentationOrder.
   std::vector<std::pair<std::string, SensorReading>> by_instance;
+  // When each instance that samples on its own clock took the reading it gave (s, simulated).
+  std::vector<std::pair<std::string, double>> sampled_at;
 
   // Instance `name`'s reading if it is a T; null otherwise.
   template <typename T>
@@ -44,6 +46,12 @@ struct SensorReadings {
     return pose ? std::optional<Pose2D>(*pose) : std::nullopt;
   }
   const RangeScan* laser() const { return Get<RangeScan>("laser"); }
+  // When instance `name`'s reading was taken, if it samples on its own clock (else at the read).
+  std::optional<double> SampledAt(const std::string& name) const {
+    for (const auto& [instance, at] : sampled_at)
+      if (instance == name) return at;
+    return std::nullopt;
+  }
   const RangeScan* ir() const { return Get<RangeScan>("ir"); }
 };
 

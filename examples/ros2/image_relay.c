@@ -1,0 +1,326 @@
+/* Camera pictures of a ROS 2 robot, relayed to its team over sanet's simulated radio: the example
+ * of docs/camera.md ("ROS 2 pictures over the radio"). Plain C on Cyclone DDS, speaking ROS 2's
+ * topics, types and QoS, so that it runs where ROS 2 is not installed; a ROS 2 user would write
+ * the same with rclcpp and image_transport's compressed publisher.
+ *
+ * On a robot named in --senders:
+ *   face's domain (--face-domain, 0; Cyclone on sim0, the link to the simulator):
+ *     reads  /ROBOT/camera/image_raw             sensor_msgs/msg/Image (rgb8)
+ *     writes /ROBOT/cmd_vel                      with --drive V: V m/s straight ahead, at most 10 times a second
+ *   team's domain (--team-domain, 1; Cyclone on radio0, the simulated radio):
+ *     writes /ROBOT/camera/image_raw/compressed  sensor_msgs/msg/CompressedImage, PNG, sensor-data QoS:
+ *                                                every picture the face publishes, or at most --rate a
+ *                                                second of simulated time
+ * On every other robot:
+ *   face's domain: reads /clock (rosgraph_msgs/msg/Clock), the simulated time
+ *   team's domain: reads /SENDER/camera/image_raw/compressed of every sender, and decodes each picture
+ * With --log DIR: DIR/ROBOT-sent.csv, each picture relayed (its stamp, PNG bytes, CRC-32 of its
+ * pixels); DIR/ROBOT.csv, each picture heard (the sender, its stamp, the simulated time it was
+ * heard at, PNG bytes, width, height, CRC-32 of the decoded pixels: equal to the sender's when
+ * the picture arrived whole).
+ *
+ *   image_relay --senders a[,b...] [--robot R] [--rate HZ] [--drive V] [--face-domain 0] [--team-domain 1]
+ *               [--log DIR]
+ * ROBOT defaults to $SANET_ROBOT (sanet launch --exec sets it). Ends on SIGTERM or SIGINT. */
+#include <dds/dds.h>
+#include <getopt.h>
+#include <math.h>
+#include <signal.h>
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include "ros2_example.h"
+#include "ros2_types.h"
+
+#define PROGRAM "image_relay"
+#define MAX_SENDERS 16
+#define QUIET 3.0 /* s of simulated time without a picture after which a sender is said to be unheard */
+
+typedef struct {
+  const char *robot, *log_dir;
+  char *senders[MAX_SENDERS];
+  int sender_count;
+  double rate, drive;
+  int face_domain, team_domain;
+} Options;
+
+typedef struct {
+  dds_entity_t waitset, image_in, cmd_vel, image_out; /* a sender's */
+  double relayed_at, driven_at;                       /* simulated stamp; monotonic s */
+  long relayed;
+} Sender;
+
+typedef struct {
+  dds_entity_t waitset, clock_in, images_in[MAX_SENDERS];
+  double clock, clock_taken_at; /* the latest /clock, and the monotonic s it came at */
+  double last_heard[MAX_SENDERS];
+  long heard[MAX_SENDERS];
+} Receiver;
+
+static void usage(FILE *to, int status) {
+  fprintf(to,
+          "usage: image_relay --senders a[,b...] [--robot R] [--rate HZ] [--drive V] [--face-domain 0] "
+          "[--team-domain 1] [--log DIR]\n"
+          "Relays the camera pictures of the --senders from the ROS 2 face's domain to the team's, as PNG\n"
+          "(/R/camera/image_raw -> /R/camera/image_raw/compressed), and on every other robot receives them\n"
+          "(docs/camera.md, \"ROS 2 pictures over the radio\"). R defaults to $SANET_ROBOT.\n"
+          "  --rate HZ     at most HZ pictures a second of simulated time (default: every picture)\n"
+          "  --drive V     a sender also drives straight ahead at V m/s (default: it does not move)\n"
+          "  --log DIR     DIR/R-sent.csv: the pictures relayed; DIR/R.csv: the pictures heard\n");
+  exit(status);
+}
+
+static double number(const char *option, const char *text) {
+  char *end;
+  const double value = strtod(text, &end);
+  if (*text == '\0' || *end != '\0' || !isfinite(value)) {
+    fprintf(stderr, "image_relay: %s takes a number, not '%s'\n", option, text);
+    exit(2);
+  }
+  return value;
+}
+
+static Options parse(int argc, char **argv) {
+  Options o = {getenv("SANET_ROBOT"), NULL, {NULL}, 0, 0.0, 0.0, 0, 1};
+  static const struct option options[] = {
+      {"robot", 1, NULL, 'r'}, {"senders", 1, NULL, 's'},     {"rate", 1, NULL, 'q'},
+      {"drive", 1, NULL, 'v'}, {"face-domain", 1, NULL, 'f'}, {"team-domain", 1, NULL, 'd'},
+      {"log", 1, NULL, 'o'},   {"help", 0, NULL, 'h'},        {NULL, 0, NULL, 0}};
+  for (int c; (c = getopt_long(argc, argv, "", options, NULL)) != -1;) {
+    if (c == 'r')
+      o.robot = optarg;
+    else if (c == 'o')
+      o.log_dir = optarg;
+    else if (c == 'q')
+      o.rate = number("--rate", optarg);
+    else if (c == 'v')
+      o.drive = number("--drive", optarg);
+    else if (c == 'f')
+      o.face_domain = (int)number("--face-domain", optarg);
+    else if (c == 'd')
+      o.team_domain = (int)number("--team-domain", optarg);
+    else if (c == 's')
+      for (char *name = strtok(strdup(optarg), ","); name && o.sender_count < MAX_SENDERS; name = strtok(NULL, ","))
+        o.senders[o.sender_count++] = name;
+    else
+      usage(c == 'h' ? stdout : stderr, c == 'h' ? 0 : 2);
+  }
+  if (!o.robot || !o.sender_count) usage(stderr, 2);
+  if (o.rate < 0) {
+    fprintf(stderr, "image_relay: --rate must be 0 (every picture) or more\n");
+    exit(2);
+  }
+  return o;
+}
+
+static double monotonic(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec + t.tv_nsec * 1e-9;
+}
+
+/* Wakes the loop when `reader` has data. */
+static void wake_on(dds_entity_t waitset, dds_entity_t reader) {
+  const dds_entity_t condition = dds_create_readcondition(reader, DDS_ANY_STATE);
+  dds_waitset_attach(waitset, condition, reader);
+}
+
+static FILE *open_log(const Options *o, const char *suffix, const char *header) {
+  if (!o->log_dir) return NULL;
+  mkdir(o->log_dir, 0777); /* each robot's program may be first */
+  char path[1024];
+  snprintf(path, sizeof path, "%s/%s%s.csv", o->log_dir, o->robot, suffix);
+  FILE *log = fopen(path, "w");
+  if (!log) {
+    perror(path);
+    exit(1);
+  }
+  fprintf(log, "%s\n", header);
+  return log;
+}
+
+static int is_sender(const Options *o, const char *name) {
+  for (int i = 0; i < o->sender_count; ++i)
+    if (strcmp(o->senders[i], name) == 0) return 1;
+  return 0;
+}
+
+/* ---- On a sender ---- */
+
+typedef struct {
+  unsigned char *bytes;
+  size_t size, capacity;
+} Buffer;
+
+static void append(void *to, void *bytes, int size) {
+  Buffer *b = to;
+  if (b->size + (size_t)size > b->capacity) {
+    b->capacity = 2 * (b->size + (size_t)size);
+    b->bytes = realloc(b->bytes, b->capacity);
+  }
+  memcpy(b->bytes + b->size, bytes, (size_t)size);
+  b->size += (size_t)size;
+}
+
+/* The picture as image_transport's compressed publisher sends an rgb8 image: PNG, and the format
+ * its subscriber reads back to rgb8. */
+static void relay(Sender *s, const Options *o, const sensor_msgs_msg_dds__Image_ *image, FILE *log) {
+  Buffer png = {NULL, 0, 0};
+  stbi_write_png_to_func(append, &png, (int)image->width, (int)image->height, 3, image->data._buffer, (int)image->step);
+  sensor_msgs_msg_dds__CompressedImage_ out;
+  memset(&out, 0, sizeof out);
+  out.header = image->header;
+  out.format = "rgb8; png compressed bgr8";
+  out.data._buffer = png.bytes;
+  out.data._length = out.data._maximum = (uint32_t)png.size;
+  dds_write(s->image_out, &out);
+  if (log) {
+    const uLong crc = crc32(0L, image->data._buffer, image->data._length);
+    fprintf(log, "%.3f,%zu,%08lx\n", seconds(image->header.stamp), png.size, crc);
+    fflush(log);
+  }
+  free(png.bytes);
+  if (++s->relayed == 1) printf("%s: relaying its camera's pictures to the team\n", o->robot);
+}
+
+static void relay_new_pictures(Sender *s, const Options *o, FILE *log) {
+  void *samples[4] = {NULL};
+  dds_sample_info_t info[4];
+  int n;
+  while ((n = dds_take(s->image_in, samples, info, 4, 4)) > 0) {
+    for (int k = 0; k < n; ++k) {
+      const sensor_msgs_msg_dds__Image_ *image = samples[k];
+      if (!info[k].valid_data || strcmp(image->encoding, "rgb8") != 0) continue;
+      const double stamp = seconds(image->header.stamp);
+      if (o->rate > 0 && stamp - s->relayed_at < 1 / o->rate - 1e-6) continue;
+      s->relayed_at = stamp;
+      relay(s, o, image, log);
+    }
+    dds_return_loan(s->image_in, samples, n);
+  }
+}
+
+static void drive(Sender *s, double forward) {
+  geometry_msgs_msg_dds__Twist_ twist;
+  memset(&twist, 0, sizeof twist);
+  twist.linear.x = forward;
+  dds_write(s->cmd_vel, &twist);
+}
+
+static void run_sender(const Options *o) {
+  const dds_entity_t face = join(PROGRAM, o->face_domain), team = join(PROGRAM, o->team_domain);
+  Sender s = {dds_create_waitset(face), 0, 0, 0, -INFINITY, 0, 0};
+  s.image_in = endpoint(PROGRAM, face, &sensor_msgs_msg_dds__Image__desc, o->robot, "camera/image_raw", 0, 0, 1);
+  s.image_out = endpoint(PROGRAM, team, &sensor_msgs_msg_dds__CompressedImage__desc, o->robot,
+                         "camera/image_raw/compressed", 1, 0, 1);
+  if (o->drive != 0)
+    s.cmd_vel = endpoint(PROGRAM, face, &geometry_msgs_msg_dds__Twist__desc, o->robot, "cmd_vel", 1, 1, 1);
+  wake_on(s.waitset, s.image_in);
+  FILE *log = open_log(o, "-sent", "stamp,bytes,crc32");
+  while (!stopping) {
+    dds_waitset_wait(s.waitset, NULL, 0, DDS_MSECS(100));
+    relay_new_pictures(&s, o, log);
+    if (s.cmd_vel && monotonic() - s.driven_at >= 0.1) drive(&s, o->drive), s.driven_at = monotonic();
+  }
+  if (s.cmd_vel) drive(&s, 0);
+  printf("%s: relayed %ld pictures\n", o->robot, s.relayed);
+  if (log) fclose(log);
+}
+
+/* ---- On a receiver ---- */
+
+/* The simulated time now: the latest /clock and the time since it came (the run keeps real time). */
+static double now(const Receiver *r) { return r->clock + (monotonic() - r->clock_taken_at); }
+
+static void read_clock(Receiver *r) {
+  void *samples[8] = {NULL};
+  dds_sample_info_t info[8];
+  int n;
+  while ((n = dds_take(r->clock_in, samples, info, 8, 8)) > 0) {
+    for (int k = 0; k < n; ++k)
+      if (info[k].valid_data) {
+        r->clock = seconds(((const rosgraph_msgs_msg_dds__Clock_ *)samples[k])->clock);
+        r->clock_taken_at = monotonic();
+      }
+    dds_return_loan(r->clock_in, samples, n);
+  }
+}
+
+static void heard(Receiver *r, const Options *o, int i, const sensor_msgs_msg_dds__CompressedImage_ *picture,
+                  FILE *log) {
+  const double at = now(r);
+  if (r->heard[i] == 0 || at - r->last_heard[i] > QUIET)
+    printf("%s %.1f s: hearing %s's pictures\n", o->robot, at, o->senders[i]);
+  r->last_heard[i] = at;
+  ++r->heard[i];
+  int width = 0, height = 0, channels = 0;
+  unsigned char *pixels =
+      stbi_load_from_memory(picture->data._buffer, (int)picture->data._length, &width, &height, &channels, 3);
+  const uLong crc = pixels ? crc32(0L, pixels, (uInt)(width * height * 3)) : 0;
+  stbi_image_free(pixels);
+  if (log)
+    fprintf(log, "%s,%.3f,%.3f,%u,%d,%d,%08lx\n", o->senders[i], seconds(picture->header.stamp), at,
+            picture->data._length, width, height, crc);
+}
+
+static void hear_pictures(Receiver *r, const Options *o, FILE *log) {
+  for (int i = 0; i < o->sender_count; ++i) {
+    void *samples[4] = {NULL};
+    dds_sample_info_t info[4];
+    int n;
+    while ((n = dds_take(r->images_in[i], samples, info, 4, 4)) > 0) {
+      for (int k = 0; k < n; ++k)
+        if (info[k].valid_data) heard(r, o, i, samples[k], log);
+      dds_return_loan(r->images_in[i], samples, n);
+    }
+    if (r->heard[i] && r->last_heard[i] > 0 && now(r) - r->last_heard[i] > QUIET) {
+      printf("%s %.1f s: nothing of %s's for %.0f s\n", o->robot, now(r), o->senders[i], QUIET);
+      r->last_heard[i] = -1; /* said once until heard again */
+    }
+  }
+  if (log) fflush(log);
+}
+
+static void run_receiver(const Options *o) {
+  const dds_entity_t face = join(PROGRAM, o->face_domain), team = join(PROGRAM, o->team_domain);
+  Receiver r;
+  memset(&r, 0, sizeof r);
+  r.waitset = dds_create_waitset(team);
+  r.clock_in = endpoint(PROGRAM, face, &rosgraph_msgs_msg_dds__Clock__desc, NULL, "clock", 0, 0, 1);
+  for (int i = 0; i < o->sender_count; ++i) {
+    r.images_in[i] = endpoint(PROGRAM, team, &sensor_msgs_msg_dds__CompressedImage__desc, o->senders[i],
+                              "camera/image_raw/compressed", 0, 0, 1);
+    wake_on(r.waitset, r.images_in[i]);
+  }
+  r.clock_taken_at = monotonic();
+  FILE *log = open_log(o, "", "peer,stamp,heard_at,bytes,width,height,crc32");
+  while (!stopping) {
+    dds_waitset_wait(r.waitset, NULL, 0, DDS_MSECS(20));
+    read_clock(&r);
+    hear_pictures(&r, o, log);
+  }
+  for (int i = 0; i < o->sender_count; ++i)
+    printf("%s: heard %ld pictures of %s\n", o->robot, r.heard[i], o->senders[i]);
+  if (log) fclose(log);
+}
+
+int main(int argc, char **argv) {
+  const Options o = parse(argc, argv);
+  setvbuf(stdout, NULL, _IOLBF, 0);
+  stop_on_signals();
+  if (is_sender(&o, o.robot))
+    run_sender(&o);
+  else
+    run_receiver(&o);
+  /* No dds_delete: when the run ends, radio0 goes with the server, and Cyclone's shutdown would
+   * wait for a packet on it that can no longer come. The process's end frees everything. */
+  fflush(stdout);
+  _exit(0);
+}

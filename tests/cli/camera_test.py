@@ -14,7 +14,6 @@ OSMesa:
 import csv
 import hashlib
 import io
-import json
 import math
 import os
 import shutil
@@ -22,6 +21,8 @@ import subprocess
 import sys
 import tempfile
 import unittest
+
+from mcap_log import decoded
 
 SANET, SOURCE = os.path.abspath(sys.argv.pop(1)), os.path.abspath(sys.argv.pop(1))
 MODULES = os.path.join(SOURCE, "build", "npm", "node_modules")
@@ -136,9 +137,7 @@ class Camera(unittest.TestCase):
                     "  - {name: n, model: mote, pose: [0, 2, 0]}\n")
         out = os.path.join(self.tmp, "motes")
         subprocess.run([SANET, "run", path, "-q", "-o", out], check=True, timeout=120)
-        done = subprocess.run(["node", os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs"), MODULES,
-                               os.path.join(out, "trace.mcap")], capture_output=True, text=True, timeout=120)
-        log = json.loads(done.stdout)
+        log = decoded(SOURCE, MODULES, os.path.join(out, "trace.mcap"))
         self.assertEqual(log["counts"]["/m/camera/image_raw/compressed"], 21, "every picture of 5 s at 4 Hz")
         self.assertEqual(log["backwards"], 0)
 
@@ -156,12 +155,7 @@ class Camera(unittest.TestCase):
         rows = run(self.tmp, CAMERA[:-1] + ", rate: 10, record_rate: 5}", trace="true")
         saved = os.path.join(self.tmp, "saved")
         os.makedirs(saved)
-        done = subprocess.run(["node", os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs"), MODULES,
-                               os.path.join(self.tmp, "out", "trace.mcap"), saved],
-                              capture_output=True, text=True, timeout=120)
-        self.assertEqual(done.returncode, 0, done.stderr)
-        log = json.loads(done.stdout)
-        self.assertEqual(log["errorCount"], 0, log["errors"])
+        log = decoded(SOURCE, MODULES, os.path.join(self.tmp, "out", "trace.mcap"), saved)
         self.assertEqual(log["backwards"], 0)
         self.assertEqual(log["channels"]["/r/camera/image_raw/compressed"]["schema"], "sensor_msgs/msg/CompressedImage")
         self.assertEqual(log["channels"]["/r/camera/camera_info"]["schema"], "sensor_msgs/msg/CameraInfo")

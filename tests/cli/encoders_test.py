@@ -5,13 +5,14 @@ distance its odometry says it went; a tick `resolution` counts whole ticks; a UR
 keep the file's names; trace.mcap's /<robot>/joint_states (sensor_msgs/msg/JointState) decodes
 with the independent MCAP reader; a mote is refused."""
 import csv
-import json
 import os
 import shutil
 import subprocess
 import sys
 import tempfile
 import unittest
+
+from mcap_log import decoded
 
 SANET, SOURCE = sys.argv.pop(1), sys.argv.pop(1)
 MODULES = os.path.join(SOURCE, "build", "npm", "node_modules")
@@ -85,12 +86,7 @@ class Encoders(unittest.TestCase):
             self.joint_states_decode(out)
 
     def joint_states_decode(self, out):
-        decoder = os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs")
-        done = subprocess.run(["node", decoder, MODULES, os.path.join(out, "trace.mcap")], capture_output=True,
-                              text=True, timeout=120)
-        self.assertEqual(done.returncode, 0, done.stderr)
-        log = json.loads(done.stdout)
-        self.assertEqual(log["errorCount"], 0, log["errors"])
+        log = decoded(SOURCE, MODULES, os.path.join(out, "trace.mcap"))
         self.assertEqual(log["channels"]["/r/joint_states"]["schema"], "sensor_msgs/msg/JointState")
         self.assertEqual(log["counts"]["/r/joint_states"], 6 * 50 + 1, "every sample of 6 s at 50 Hz")
         last = log["last"]["/r/joint_states"]

@@ -10,7 +10,6 @@
 - a scenario with a fix and no world.datum is refused at the sensor's line;
 - sensor_msgs/NavSatFix in trace.mcap, through the independent reader."""
 import csv
-import json
 import math
 import os
 import shutil
@@ -19,6 +18,8 @@ import subprocess
 import sys
 import tempfile
 import unittest
+
+from mcap_log import decoded
 
 SANET, SOURCE = os.path.abspath(sys.argv.pop(1)), os.path.abspath(sys.argv.pop(1))
 MODULES = os.path.join(SOURCE, "build", "npm", "node_modules")
@@ -190,11 +191,7 @@ class Gnss(unittest.TestCase):
         world = DATUM_LINE + "  gnss_denied:\n    - {polygon: [[-1, -1], [1, -1], [0, 1]]}\n"
         run(self.tmp, robot("r", 10, 0, gnss="{horizontal_noise: 1.5, vertical_noise: 3, height: 0.4}")
             + robot("hidden", 0, 0), 2, world, trace="true")
-        done = subprocess.run(["node", os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs"), MODULES,
-                               os.path.join(self.tmp, "out", "trace.mcap")], capture_output=True, text=True, timeout=120)
-        self.assertEqual(done.returncode, 0, done.stderr)
-        log = json.loads(done.stdout)
-        self.assertEqual(log["errorCount"], 0, log["errors"])
+        log = decoded(SOURCE, MODULES, os.path.join(self.tmp, "out", "trace.mcap"))
         self.assertEqual(log["channels"]["/r/fix"]["schema"], "sensor_msgs/msg/NavSatFix")
         self.assertEqual(log["counts"]["/r/fix"], 11, "every fix of 2 s at 5 Hz, at its own time")
         fix = log["last"]["/r/fix"]

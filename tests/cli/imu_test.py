@@ -8,7 +8,6 @@
   and PX4 define them) at short and long averaging times;
 - a mount off the centre feels the turn's centripetal acceleration."""
 import csv
-import json
 import math
 import os
 import shutil
@@ -16,6 +15,8 @@ import subprocess
 import sys
 import tempfile
 import unittest
+
+from mcap_log import decoded
 
 SANET, SOURCE = sys.argv.pop(1), sys.argv.pop(1)
 MODULES = os.path.join(SOURCE, "build", "npm", "node_modules")
@@ -83,11 +84,7 @@ class Imu(unittest.TestCase):
         if not os.path.isdir(MODULES):
             return
         # sensor_msgs/msg/Imu in trace.mcap, through the independent reader: no orientation given.
-        done = subprocess.run(["node", os.path.join(SOURCE, "tests", "mcap", "decode_mcap.mjs"), MODULES,
-                               os.path.join(self.tmp, "out", "trace.mcap")], capture_output=True, text=True, timeout=120)
-        self.assertEqual(done.returncode, 0, done.stderr)
-        log = json.loads(done.stdout)
-        self.assertEqual(log["errorCount"], 0, log["errors"])
+        log = decoded(SOURCE, MODULES, os.path.join(self.tmp, "out", "trace.mcap"))
         self.assertEqual(log["channels"]["/r/imu"]["schema"], "sensor_msgs/msg/Imu")
         self.assertEqual(log["counts"]["/r/imu"], 201, "every sample of 2 s at 100 Hz, at its own time")
         last = log["last"]["/r/imu"]

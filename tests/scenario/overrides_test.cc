@@ -40,6 +40,17 @@ TEST(Overrides, AnIndexReachesAnItemWithoutAName) {
   EXPECT_EQ(sc.run.obstacles.at(2).box.size.z, 2.5);
 }
 
+TEST(Overrides, AnItemMayBeNamedAsErrorsPrintIt) {
+  const auto sc = scenario::LoadScenario(
+      Shipped("help-request.yaml"), {"nodes[robot].controller.params.speed=0.3", "world.obstacles[0].wall.height=2.5"});
+  EXPECT_EQ(Param(NodeNamed(sc, "robot"), "speed"), 0.3);
+  EXPECT_EQ(sc.run.obstacles.at(0).box.size.z, 2.5);
+  const auto by_index = scenario::LoadScenario(Shipped("help-request.yaml"), {"nodes[3].controller.params.speed=0.4"});
+  EXPECT_EQ(Param(NodeNamed(by_index, "robot"), "speed"), 0.4);  // the fourth item: the robot
+  EXPECT_THROW(scenario::LoadScenario(Shipped("help-request.yaml"), {"nodes[robot]x.pose=[1, 2, 0]"}),
+               scenario::ScenarioError);
+}
+
 TEST(Overrides, MissingMappingsAreCreated) {
   const auto sc = scenario::LoadScenario(Shipped("around-the-wall.yaml"), {"outputs.folder=/tmp/elsewhere"});
   EXPECT_EQ(sc.output_folder, "/tmp/elsewhere");

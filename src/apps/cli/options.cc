@@ -59,7 +59,7 @@ void AddSet(CLI::App* cmd, std::vector<std::string>& sets) {
   cmd->add_option("--set", sets,
                   "PATH=VALUE: change one value of the scenario, checked like the file (repeatable), e.g. "
                   "--set network.tx_power=25 --set nodes.robot.controller.params.speed=0.5; a list item by its "
-                  "name, a grid by its grid name (docs/scenario.md)")
+                  "name or index (nodes.robot, nodes[0]), a grid by its grid name (docs/scenario.md)")
       ->allow_extra_args(false);
 }
 

@@ -11,7 +11,21 @@ namespace {
   throw ScenarioError("--set " + o.text, 0, field, message);
 }
 
-std::vector<std::string> Split(const std::string& path) {
+// Errors name a list's item as the file's readers print it, `nodes[0].pose`; a path may name it
+// so too: `[K]` is `.K`.
+std::string DotsForBrackets(const std::string& path) {
+  std::string dotted;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] == '[')
+      dotted += '.';
+    else if (path[i] != ']' || (i + 1 < path.size() && path[i + 1] != '.' && path[i + 1] != '['))
+      dotted += path[i];  // a ']' inside a key stays, and the key then names nothing
+  }
+  return dotted;
+}
+
+std::vector<std::string> Split(const std::string& bracketed) {
+  const std::string path = DotsForBrackets(bracketed);
   std::vector<std::string> parts;
   std::stringstream s(path);
   for (std::string part; std::getline(s, part, '.');) parts.push_back(part);

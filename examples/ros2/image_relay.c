@@ -54,12 +54,12 @@ typedef struct {
 typedef struct {
   dds_entity_t waitset, image_in, cmd_vel, image_out; /* a sender's */
   double relayed_at, driven_at;                       /* simulated stamp; monotonic s */
-  long relayed;
+  long relayed, said_unfit;
 } Sender;
 
 typedef struct {
   dds_entity_t waitset, clock_in, images_in[MAX_SENDERS];
-  double clock, clock_taken_at; /* the latest /clock, and the monotonic s it came at */
+  double clock, clock_taken_at; /* the latest /clock, and the monotonic s it came at (0: none yet) */
   double last_heard[MAX_SENDERS];
   long heard[MAX_SENDERS];
 } Receiver;
@@ -107,8 +107,13 @@ static Options parse(int argc, char **argv) {
     else if (c == 'd')
       o.team_domain = (int)number("--team-domain", optarg);
     else if (c == 's')
-      for (char *name = strtok(strdup(optarg), ","); name && o.sender_count < MAX_SENDERS; name = strtok(NULL, ","))
+      for (char *name = strtok(strdup(optarg), ","); name; name = strtok(NULL, ",")) {
+        if (o.sender_count == MAX_SENDERS) {
+          fprintf(stderr, "image_relay: --senders: at most %d robots\n", MAX_SENDERS);
+          exit(2);
+        }
         o.senders[o.sender_count++] = name;
+      }
     else
       usage(c == 'h' ? stdout : stderr, c == 'h' ? 0 : 2);
   }
@@ -164,16 +169,43 @@ static void append(void *to, void *bytes, int size) {
   if (b->size + (size_t)size > b->capacity) {
     b->capacity = 2 * (b->size + (size_t)size);
     b->bytes = realloc(b->bytes, b->capacity);
+    if (!b->bytes) {
+      fprintf(stderr, "image_relay: out of memory\n");
+      exit(1);
+    }
   }
   memcpy(b->bytes + b->size, bytes, (size_t)size);
   b->size += (size_t)size;
+}
+
+/* The CRC-32 of a picture's pixels, row by row (`step` bytes apart), without any row padding:
+ * what the receiver computes from the decoded PNG. */
+static uLong pixels_crc(const unsigned char *pixels, size_t width, size_t height, size_t step) {
+  uLong crc = crc32(0L, Z_NULL, 0);
+  for (size_t row = 0; row < height; ++row) crc = crc32(crc, pixels + row * step, (uInt)(width * 3));
+  return crc;
+}
+
+/* Whether an Image is an rgb8 picture whose data holds its rows: another publisher on the topic
+ * may send anything. */
+static int is_whole_rgb8(const sensor_msgs_msg_dds__Image_ *image) {
+  const uint64_t row = (uint64_t)image->width * 3;
+  return strcmp(image->encoding, "rgb8") == 0 && image->width > 0 && image->height > 0 && image->width < (1u << 16) &&
+         image->height < (1u << 16) && image->step >= row &&
+         (uint64_t)image->data._length >= (uint64_t)image->step * (image->height - 1) + row;
 }
 
 /* The picture as image_transport's compressed publisher sends an rgb8 image: PNG, and the format
  * its subscriber reads back to rgb8. */
 static void relay(Sender *s, const Options *o, const sensor_msgs_msg_dds__Image_ *image, FILE *log) {
   Buffer png = {NULL, 0, 0};
-  stbi_write_png_to_func(append, &png, (int)image->width, (int)image->height, 3, image->data._buffer, (int)image->step);
+  if (!stbi_write_png_to_func(append, &png, (int)image->width, (int)image->height, 3, image->data._buffer,
+                              (int)image->step)) {
+    fprintf(stderr, "%s: a picture of %u x %u did not encode as PNG; not relayed\n", o->robot, image->width,
+            image->height);
+    free(png.bytes);
+    return;
+  }
   sensor_msgs_msg_dds__CompressedImage_ out;
   memset(&out, 0, sizeof out);
   out.header = image->header;
@@ -182,7 +214,7 @@ static void relay(Sender *s, const Options *o, const sensor_msgs_msg_dds__Image_
   out.data._length = out.data._maximum = (uint32_t)png.size;
   dds_write(s->image_out, &out);
   if (log) {
-    const uLong crc = crc32(0L, image->data._buffer, image->data._length);
+    const uLong crc = pixels_crc(image->data._buffer, image->width, image->height, image->step);
     fprintf(log, "%.3f,%zu,%08lx\n", seconds(image->header.stamp), png.size, crc);
     fflush(log);
   }
@@ -197,7 +229,13 @@ static void relay_new_pictures(Sender *s, const Options *o, FILE *log) {
   while ((n = dds_take(s->image_in, samples, info, 4, 4)) > 0) {
     for (int k = 0; k < n; ++k) {
       const sensor_msgs_msg_dds__Image_ *image = samples[k];
-      if (!info[k].valid_data || strcmp(image->encoding, "rgb8") != 0) continue;
+      if (!info[k].valid_data) continue;
+      if (!is_whole_rgb8(image)) {
+        if (!s->said_unfit++)
+          fprintf(stderr, "%s: an Image that is not a whole rgb8 picture (%s, %u x %u, step %u, %u bytes); skipped\n",
+                  o->robot, image->encoding, image->width, image->height, image->step, image->data._length);
+        continue;
+      }
       const double stamp = seconds(image->header.stamp);
       if (o->rate > 0 && stamp - s->relayed_at < 1 / o->rate - 1e-6) continue;
       s->relayed_at = stamp;
@@ -216,7 +254,7 @@ static void drive(Sender *s, double forward) {
 
 static void run_sender(const Options *o) {
   const dds_entity_t face = join(PROGRAM, o->face_domain), team = join(PROGRAM, o->team_domain);
-  Sender s = {dds_create_waitset(face), 0, 0, 0, -INFINITY, 0, 0};
+  Sender s = {dds_create_waitset(face), 0, 0, 0, -INFINITY, 0, 0, 0};
   s.image_in = endpoint(PROGRAM, face, &sensor_msgs_msg_dds__Image__desc, o->robot, "camera/image_raw", 0, 0, 1);
   s.image_out = endpoint(PROGRAM, team, &sensor_msgs_msg_dds__CompressedImage__desc, o->robot,
                          "camera/image_raw/compressed", 1, 0, 1);
@@ -237,7 +275,9 @@ static void run_sender(const Options *o) {
 /* ---- On a receiver ---- */
 
 /* The simulated time now: the latest /clock and the time since it came (the run keeps real time). */
-static double now(const Receiver *r) { return r->clock + (monotonic() - r->clock_taken_at); }
+static double now(const Receiver *r) {
+  return r->clock_taken_at > 0 ? r->clock + (monotonic() - r->clock_taken_at) : 0;
+}
 
 static void read_clock(Receiver *r) {
   void *samples[8] = {NULL};
@@ -263,11 +303,12 @@ static void heard(Receiver *r, const Options *o, int i, const sensor_msgs_msg_dd
   int width = 0, height = 0, channels = 0;
   unsigned char *pixels =
       stbi_load_from_memory(picture->data._buffer, (int)picture->data._length, &width, &height, &channels, 3);
-  const uLong crc = pixels ? crc32(0L, pixels, (uInt)(width * height * 3)) : 0;
+  const uLong crc = pixels ? pixels_crc(pixels, (size_t)width, (size_t)height, (size_t)width * 3) : 0;
   stbi_image_free(pixels);
-  if (log)
-    fprintf(log, "%s,%.3f,%.3f,%u,%d,%d,%08lx\n", o->senders[i], seconds(picture->header.stamp), at,
-            picture->data._length, width, height, crc);
+  if (!log) return;
+  fprintf(log, "%s,%.3f,", o->senders[i], seconds(picture->header.stamp));
+  if (r->clock_taken_at > 0) fprintf(log, "%.3f", at); /* before the first /clock, no time to give */
+  fprintf(log, ",%u,%d,%d,%08lx\n", picture->data._length, width, height, crc);
 }
 
 static void hear_pictures(Receiver *r, const Options *o, FILE *log) {
@@ -299,7 +340,6 @@ static void run_receiver(const Options *o) {
                               "camera/image_raw/compressed", 0, 0, 1);
     wake_on(r.waitset, r.images_in[i]);
   }
-  r.clock_taken_at = monotonic();
   FILE *log = open_log(o, "", "peer,stamp,heard_at,bytes,width,height,crc32");
   while (!stopping) {
     dds_waitset_wait(r.waitset, NULL, 0, DDS_MSECS(20));

@@ -61,7 +61,8 @@ def ros2_pictures(run, pictures):
         points.append((float(r["x"]), float(r["y"])))
     sent = {r["stamp"]: (distance_at(trajectories, float(r["stamp"])), int(r["bytes"]), r["crc32"])
             for r in rows_of(os.path.join(pictures, "rover-sent.csv"))}
-    received = {r["stamp"]: (float(r["heard_at"]) - float(r["stamp"]), r["crc32"] == sent.get(r["stamp"], (0, 0, ""))[2])
+    received = {r["stamp"]: (float(r["heard_at"]) - float(r["stamp"]) if r["heard_at"] else None,  # none before /clock
+                             r["crc32"] == sent.get(r["stamp"], (0, 0, ""))[2])
                 for r in rows_of(os.path.join(pictures, "operator.csv")) if r["peer"] == "rover"}
     return {k: v[:2] for k, v in sent.items()}, received
 
@@ -74,8 +75,9 @@ def by_distance(sent, received):
     rows = []
     for b in sorted(bins):
         frames = bins[b]
-        delays = [received[f][0] * 1000 for f in frames if f in received]
-        rows.append(((b + 0.5) * BIN, len(frames), len(delays), statistics.median(delays) if delays else None))
+        delivered = [f for f in frames if f in received]
+        delays = [received[f][0] * 1000 for f in delivered if received[f][0] is not None]
+        rows.append(((b + 0.5) * BIN, len(frames), len(delivered), statistics.median(delays) if delays else None))
     return rows
 
 

@@ -2,6 +2,7 @@
 and a `sanet launch --exec` run whose bridge is watched from before its programs start."""
 import os
 import re
+import signal
 import subprocess
 
 from dds_ports import BridgeSniffer
@@ -40,8 +41,16 @@ class SniffedLaunch:
                 self.sniffer.start()
                 self.server_address = m.group(2)
                 break
-        self.lines += launch.communicate(timeout=timeout)[0].splitlines(keepends=True)
-        if self.sniffer:
-            self.sniffer.finish()
+        try:
+            self.lines += launch.communicate(timeout=timeout)[0].splitlines(keepends=True)
+        except subprocess.TimeoutExpired:
+            launch.send_signal(signal.SIGINT)  # launch then ends its run and removes its namespaces
+            self.lines += launch.communicate(timeout=60)[0].splitlines(keepends=True)
+            raise AssertionError(f"sanet launch still ran after {timeout} s:\n" + "".join(self.lines))
+        finally:
+            if self.sniffer:
+                self.sniffer.finish()
         self.said = "".join(self.lines)
         self.returncode = launch.returncode
+        if not self.sniffer:
+            raise AssertionError("sanet launch named no bridge:\n" + self.said)

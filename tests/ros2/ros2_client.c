@@ -72,8 +72,8 @@ int main(int argc, char **argv) {
 
   long n_odom = 0, n_scan = 0, n_range = 0, n_tf = 0, n_static = 0, n_clock = 0, steps = (long)(seconds * 50);
   double first_x = NAN, last_x = NAN, last_y = NAN, last_yaw = NAN, first_clock = NAN, last_clock = NAN;
-  char odom_frame[64] = "", odom_child[64] = "", scan_frame[64] = "", range_frame[64] = "", tf_child[64] = "",
-       tf_parent[64] = "";
+  char odom_frame[64] = "", odom_child[64] = "", scan_frame[64] = "", range_frame[64] = "", tf_child[128] = "",
+       tf_parent[128] = "";
   int static_has_odom = 0, tf_has_base = 0, range_type = -1, battery_status = -1;
   long n_battery = 0, n_description = 0, description_bytes = 0, urdf_static = 0, urdf_moving = 0;
   char urdf_prefix[128];

@@ -185,10 +185,13 @@ void Ros2Face::Publish(Robot& r) {
 }
 
 // A sensor that samples on its own clock (a camera at 5 Hz read at the face's 10) is published
-// once a sample, not again at each period while it is the latest.
+// once a sample, not again at each period while it is the latest. A sample due in the physics
+// step in flight (up to one step after the read) waits for the next period: its stamp would be
+// ahead of /clock and of the odom transform published with it.
 bool Ros2Face::IsNewSample(Robot& r, const std::string& instance, const sim::SensorReadings& readings) {
   const std::optional<double> at = readings.SampledAt(instance);
   if (!at) return true;  // read now, not sampled
+  if (*at > readings.time + 1e-9) return false;
   const auto [last, first] = r.published_sample.try_emplace(instance, *at);
   if (first) return true;
   if (last->second == *at) return false;

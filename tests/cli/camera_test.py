@@ -162,6 +162,7 @@ class Camera(unittest.TestCase):
         self.assertEqual(log["counts"]["/r/camera/image_raw/compressed"], 6, "1 s at record_rate 5 Hz")
         self.assertEqual(log["counts"]["/r/camera/camera_info"], 6)
         self.assertNotIn("/r/camera/image_raw", log["counts"], "the record keeps the compressed pictures")
+        self.assertNotIn("/r/camera/image_raw", log["channels"], "and has no channel for the raw ones")
         compressed = log["first"]["/r/camera/image_raw/compressed"]
         self.assertEqual((compressed["format"], compressed["header"]["frame_id"]), ("png", "r/camera_optical"))
         with open(os.path.join(saved, "_r_camera_image_raw_compressed.bin"), "rb") as f:

@@ -82,9 +82,10 @@ void Ros2Face::AddRobots() {
     const std::string ns = "/" + name;
     for (const auto& [instance, config] : sensors::PresentationOrder(node.model))
       if (const ros2_presentation::SensorMessages* kind = ros2_presentation::MessagesOf(config->kind))
-        for (const ros2_presentation::SensorTopic& t : kind->Topics(instance, config->settings))
+        for (const ros2_presentation::SensorTopic& t : kind->Topics(instance, config->settings))  // 0: the record's
           r->sensors[instance].push_back(
-              dds_.Writer(ns + "/" + t.name, t.dds_type, t.reliable ? Qos::kDefault : Qos::kSensorData));
+              t.on_face ? dds_.Writer(ns + "/" + t.name, t.dds_type, t.reliable ? Qos::kDefault : Qos::kSensorData)
+                        : 0);
     Describe(*r, node, ns);
     r->cmd_vel = dds_.Reader(
         ns + "/cmd_vel",
@@ -178,7 +179,9 @@ void Ros2Face::Publish(Robot& r) {
     for (const ros2_presentation::SensorMessage& m :
          ros2_presentation::MessagesOf(config->second.kind)
              ->Messages(instance, config->second.settings, reading, context)) {
-      dds_.Write(writers->second.at(m.topic), m.cdr);
+      const DdsDomain::Entity writer = writers->second.at(m.topic);
+      if (!writer) continue;
+      dds_.Write(writer, m.cdr);
       ++r.published;
     }
   }

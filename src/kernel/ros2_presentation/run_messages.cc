@@ -169,8 +169,8 @@ void RunMessages::AdvertiseNode(NodeId node) {
     const SensorMessages* kind = MessagesOf(config->kind);
     if (!kind) continue;
     std::vector<const Topic*>& topics = sensor_topics_[node][instance];
-    for (const SensorTopic& t : kind->Topics(instance, config->settings))
-      topics.push_back(&TopicOf(ns + t.name, t.type, t.definition));
+    for (const SensorTopic& t : kind->Topics(instance, config->settings))  // null: the face's alone
+      topics.push_back(t.recorded ? &TopicOf(ns + t.name, t.type, t.definition) : nullptr);
   }
 }
 
@@ -219,9 +219,10 @@ void RunMessages::PublishReading(NodeId node, const std::string& instance, const
   const auto config = nodes_[node].model.sensors.find(instance);
   if (topics == sensor_topics_[node].end() || config == nodes_[node].model.sensors.end()) return;
   const SensorMessages* kind = MessagesOf(config->second.kind);
-  if (!kind || topics->second.empty() || !Listened(*topics->second.front())) return;
+  const auto listened = [this](const Topic* t) { return t && Listened(*t); };
+  if (!kind || std::none_of(topics->second.begin(), topics->second.end(), listened)) return;
   for (const SensorMessage& m : kind->Messages(instance, config->second.settings, reading, context))
-    Publish(*topics->second.at(m.topic), context.time, m.cdr);
+    if (const Topic* topic = topics->second.at(m.topic)) Publish(*topic, context.time, m.cdr);
 }
 
 void RunMessages::Frame(const net::FrameEvent& f) {

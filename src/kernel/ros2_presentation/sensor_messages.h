@@ -28,6 +28,9 @@ struct SensorTopic {
   std::string dds_type;    // "sensor_msgs::msg::dds_::LaserScan_"
   std::string definition;  // the ros2msg schema text
   bool reliable = false;   // QoS on DDS: best effort (ROS 2's sensor-data profile) unless reliable
+  // Where the topic is: on the ROS 2 face, in the run's record (trace.mcap, the Foxglove stream),
+  // or both (a camera's raw pictures go to the face, its compressed ones to the record).
+  bool on_face = true, recorded = true;
 };
 
 // One message of a reading, on topic `topic` (an index into the instance's topics), CDR-encoded.
@@ -68,6 +71,18 @@ const SensorMessages* MessagesOf(const std::string& kind);
 template <typename M>
 SensorTopic TopicFor(std::string name) {
   return {std::move(name), ros2msg::TypeOf<M>::kName, ros2msg::TypeOf<M>::kDdsName, ros2msg::TypeOf<M>::Definition()};
+}
+template <typename M>
+SensorTopic FaceTopicFor(std::string name) {
+  SensorTopic topic = TopicFor<M>(std::move(name));
+  topic.recorded = false;
+  return topic;
+}
+template <typename M>
+SensorTopic RecordTopicFor(std::string name) {
+  SensorTopic topic = TopicFor<M>(std::move(name));
+  topic.on_face = false;
+  return topic;
 }
 template <typename M>
 SensorMessage MessageOn(std::size_t topic, const M& message) {

@@ -58,9 +58,9 @@ Image DepthImage(const Image& like, const ImageReading& picture) {
 class CameraMessages : public SensorMessages {
  public:
   std::vector<SensorTopic> Topics(const std::string& instance, const std::any& settings) const override {
-    std::vector<SensorTopic> topics = {TopicFor<Image>(instance + "/image_raw"),
+    std::vector<SensorTopic> topics = {FaceTopicFor<Image>(instance + "/image_raw"),
                                        TopicFor<CameraInfo>(instance + "/camera_info"),
-                                       TopicFor<CompressedImage>(instance + "/image_raw/compressed")};
+                                       RecordTopicFor<CompressedImage>(instance + "/image_raw/compressed")};
     if (std::any_cast<const sensors::CameraSettings&>(settings).depth)
       topics.push_back(TopicFor<Image>(instance + "/depth/image_raw"));
     return topics;

@@ -71,10 +71,18 @@ static void usage(FILE *to, int status) {
           "Relays the camera pictures of the --senders from the ROS 2 face's domain to the team's, as PNG\n"
           "(/R/camera/image_raw -> /R/camera/image_raw/compressed), and on every other robot receives them\n"
           "(docs/camera.md, \"ROS 2 pictures over the radio\"). R defaults to $SANET_ROBOT.\n"
-          "  --rate HZ     at most HZ pictures a second of simulated time (default: every picture)\n"
+          "  --rate HZ     a picture at least 1/HZ s of simulated time after the last relayed (default: every\n"
+          "                picture; a 5 Hz camera with --rate 2 gives one every 0.6 s)\n"
           "  --drive V     a sender also drives straight ahead at V m/s (default: it does not move)\n"
           "  --log DIR     DIR/R-sent.csv: the pictures relayed; DIR/R.csv: the pictures heard\n");
   exit(status);
+}
+
+static void refuse(const char *format, const char *detail) {
+  fprintf(stderr, "image_relay: ");
+  fprintf(stderr, format, detail);
+  fprintf(stderr, " (--help says more)\n");
+  exit(2);
 }
 
 static double number(const char *option, const char *text) {
@@ -117,11 +125,11 @@ static Options parse(int argc, char **argv) {
     else
       usage(c == 'h' ? stdout : stderr, c == 'h' ? 0 : 2);
   }
-  if (!o.robot || !o.sender_count) usage(stderr, 2);
-  if (o.rate < 0) {
-    fprintf(stderr, "image_relay: --rate must be 0 (every picture) or more\n");
-    exit(2);
-  }
+  if (optind < argc) refuse("unexpected argument '%s' (options only)", argv[optind]);
+  if (!o.robot)
+    refuse("which robot? give --robot R, or run it under sanet launch --exec, which sets $SANET_ROBOT%s", "");
+  if (!o.sender_count) refuse("give the robots whose pictures are relayed: --senders a[,b...]%s", "");
+  if (o.rate < 0) refuse("--rate must be 0 (every picture) or more%s", "");
   return o;
 }
 
@@ -129,6 +137,19 @@ static double monotonic(void) {
   struct timespec t;
   clock_gettime(CLOCK_MONOTONIC, &t);
   return t.tv_sec + t.tv_nsec * 1e-9;
+}
+
+#define UNMATCHED_AFTER 10.0 /* s of wall time before a reader that found no publisher says so */
+
+/* Says once, `UNMATCHED_AFTER` s after `since`, that `reader` of `topic` has found no publisher,
+ * and what may be wrong (`hint`): a typo in a robot's name otherwise waits silently to the end. */
+static void say_if_unmatched(dds_entity_t reader, double since, int *said, const char *robot, const char *topic,
+                             const char *hint) {
+  dds_subscription_matched_status_t status;
+  if (*said || monotonic() - since < UNMATCHED_AFTER) return;
+  *said = 1;
+  if (dds_get_subscription_matched_status(reader, &status) == DDS_RETCODE_OK && status.total_count == 0)
+    printf("%s: no publisher of %s found in %.0f s: %s\n", robot, topic, UNMATCHED_AFTER, hint);
 }
 
 /* Wakes the loop when `reader` has data. */
@@ -262,9 +283,15 @@ static void run_sender(const Options *o) {
     s.cmd_vel = endpoint(PROGRAM, face, &geometry_msgs_msg_dds__Twist__desc, o->robot, "cmd_vel", 1, 1, 1);
   wake_on(s.waitset, s.image_in);
   FILE *log = open_log(o, "-sent", "stamp,bytes,crc32");
+  char topic[256];
+  snprintf(topic, sizeof topic, "/%s/camera/image_raw", o->robot);
+  const double started = monotonic();
+  int said_unmatched = 0;
   while (!stopping) {
     dds_waitset_wait(s.waitset, NULL, 0, DDS_MSECS(100));
     relay_new_pictures(&s, o, log);
+    say_if_unmatched(s.image_in, started, &said_unmatched, o->robot, topic,
+                     "does this robot have a camera (sensors: {camera: ...}), and is the face in --face-domain?");
     if (s.cmd_vel && monotonic() - s.driven_at >= 0.1) drive(&s, o->drive), s.driven_at = monotonic();
   }
   if (s.cmd_vel) drive(&s, 0);
@@ -341,10 +368,18 @@ static void run_receiver(const Options *o) {
     wake_on(r.waitset, r.images_in[i]);
   }
   FILE *log = open_log(o, "", "peer,stamp,heard_at,bytes,width,height,crc32");
+  const double started = monotonic();
+  int said_unmatched[MAX_SENDERS] = {0};
   while (!stopping) {
     dds_waitset_wait(r.waitset, NULL, 0, DDS_MSECS(20));
     read_clock(&r);
     hear_pictures(&r, o, log);
+    for (int i = 0; i < o->sender_count; ++i) {
+      char topic[256];
+      snprintf(topic, sizeof topic, "/%s/camera/image_raw/compressed", o->senders[i]);
+      say_if_unmatched(r.images_in[i], started, &said_unmatched[i], o->robot, topic,
+                       "is it a robot's name (a robot, not a mote), relaying, and in radio range?");
+    }
   }
   for (int i = 0; i < o->sender_count; ++i)
     printf("%s: heard %ld pictures of %s\n", o->robot, r.heard[i], o->senders[i]);

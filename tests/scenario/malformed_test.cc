@@ -28,6 +28,10 @@ constexpr const char* kHeader = "duration: 10\n";  // line 1 of every case below
 
 const Case kCases[] = {
     {"syntax_error", "nodes: [\n  - {name: a, model: mote, pose: [0, 0, 0]\n", 3, "", "YAML syntax error"},
+    {"unquoted_colour_in_flow",
+     "world:\n  obstacles:\n    - box: {center: [5, 0], size: [1, 1, 1], color: #ff0000}\n"
+     "    - box: {center: [9, 0], size: [1, 1, 1]}\nnodes: []\n",
+     5, "", "line 4 has a value that starts with '#', which YAML reads as a comment"},
     {"unknown_key", "duraton: 10\nnodes: []\n", 2, "duraton", "unknown key"},
     {"wrong_type", "world:\n  physics_step: fast\nnodes: []\n", 3, "world.physics_step", "must be a number"},
     {"out_of_range", "world:\n  physics_step: 0.5\nnodes: []\n", 3, "world.physics_step",

@@ -166,16 +166,32 @@ void CountValues(const YAML::Node& node, std::size_t& count, const std::string& 
 
 namespace {
 
+// A value that starts with '#' (an unquoted colour, `color: #ff0000`) is a comment to YAML, which
+// in a flow mapping ({...}) breaks the syntax a line or two later: say so where it is near the error.
+std::string CommentedValueNear(const std::string& text, int error_line) {
+  std::istringstream lines(text);
+  std::string line;
+  for (int n = 1; std::getline(lines, line) && n <= error_line; ++n) {
+    const std::size_t at = line.find(": #");
+    if (n >= error_line - 2 && at != std::string::npos)
+      return " (line " + std::to_string(n) +
+             " has a value that starts with '#', which YAML reads as a comment: " + "write it in quotes, \"#rrggbb\")";
+  }
+  return "";
+}
+
 Field ParseYaml(std::istream& in, const std::string& name, const std::string& what = "a scenario") {
   auto file = std::make_shared<const std::string>(name);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   try {
-    YAML::Node root = YAML::Load(in);
+    YAML::Node root = YAML::Load(text);
     if (!root.IsMap()) throw ScenarioError(name, 1, "", what + " must be a mapping of keys to values");
     std::size_t count = 0;
     CountValues(root, count, name);
     return Field(root, "", file);
   } catch (const YAML::Exception& e) {
-    throw ScenarioError(name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
+    throw ScenarioError(name, e.mark.line + 1, "",
+                        "YAML syntax error: " + e.msg + CommentedValueNear(text, e.mark.line + 1));
   }
 }
 

@@ -71,5 +71,6 @@ int main(int argc, char **argv) {
     }
   }
   dds_delete(participant);
+  for (int i = 0; i < count; ++i) free(topics[i]);
   return 0;
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The camera in the loop: a client that said SANET (as sanet's agents do) gets the robot's
-picture every sensor period as a SEN {Type Camera} line, PNG in base64 (docs/protocol.md), which
-an independent decoder (Pillow) turns into the picture: the red box ahead fills its middle; a
-stock USARSim client never sees the line. A client written from docs/protocol.md."""
+picture as a SEN {Type Camera} line, PNG in base64 (docs/protocol.md), which an independent
+decoder (Pillow) turns into the picture: the red box ahead fills its middle; each picture once
+(a 2 Hz camera under the 10 Hz sensor period: a fifth of the periods carry one); a stock
+USARSim client never sees the line. A client written from docs/protocol.md."""
 import base64
 import io
 import sys
@@ -18,7 +19,7 @@ world:
   obstacles:
     - box: {center: [5, 0], size: [0.5, 2.0, 2.0], color: "#c81e1e"}
 nodes:
-  - {name: r1, model: diffdrive, pose: [0, 0, 0], sensors: {camera: {width: 160, height: 120, mount_z: 0.4}}}
+  - {name: r1, model: diffdrive, pose: [0, 0, 0], sensors: {camera: {width: 160, height: 120, mount_z: 0.4, rate: 2}}}
   - {name: r2, model: diffdrive, pose: [0, 3, 0]}
 """
 
@@ -47,6 +48,10 @@ class CameraInTheLoop(unittest.TestCase):
             self.assertEqual((picture.mode, picture.size), ("RGB", (160, 120)))
             self.assertEqual(picture.getpixel((80, 60)), (200, 30, 30), "the red box ahead")
             self.assertNotEqual(picture.getpixel((80, 2)), (200, 30, 30), "the sky above it")
+        kinds = []
+        while kinds.count("GroundTruth") < 20:  # 2 s of sensor periods
+            kinds.append(field(agent.next("SEN"), "Type"))
+        self.assertIn(kinds.count("Camera"), (3, 4, 5), "a 2 Hz camera's pictures, each once")
         stock = Client(self.port)
         stock.send("INIT {Name r2}")
         kinds = {field(stock.next("SEN"), "Type") for _ in range(6)}

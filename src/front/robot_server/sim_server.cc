@@ -357,7 +357,8 @@ void SimServer::Drive(Client& c, const wire::ProtocolMessage& m) {
 void SimServer::SendSensors(Client& c, double now) {
   if (now + 1e-9 >= c.next_sensors) {
     c.next_sensors = now + settings_.sensor_period;
-    for (const wire::ProtocolMessage& line : SenLines(*c.robot, driver_.TakeReadings(*c.robot, Owner(c)), c.sanet))
+    for (const wire::ProtocolMessage& line :
+         SenLines(*c.robot, driver_.TakeReadings(*c.robot, Owner(c)), c.sanet, c.fresh))
       Send(c, line);
   }
   if (now + 1e-9 >= c.next_status) {
@@ -375,7 +376,10 @@ void SimServer::SendSensors(Client& c, double now) {
   }
 }
 
-std::vector<wire::ProtocolMessage> SimServer::SenLines(NodeId robot, const sim::SensorReadings& r, bool sanet) const {
+// A sample of a sensor on its own clock goes once (sim/fresh_samples.h), in the line of the read
+// that first finds it.
+std::vector<wire::ProtocolMessage> SimServer::SenLines(NodeId robot, const sim::SensorReadings& r, bool sanet,
+                                                       sim::FreshSamples& fresh) const {
   const wire::LineContext context{r.time, r.height, [this](NodeId node) { return driver_.NameOf(node); },
                                   [this](const std::string& name) { return driver_.Lookup(name); }};
   const robots::SensorConfigs& sensors = driver_.Spec(robot).model.sensors;
@@ -383,7 +387,7 @@ std::vector<wire::ProtocolMessage> SimServer::SenLines(NodeId robot, const sim::
   for (const auto& [instance, reading] : r.by_instance) {
     const auto config = sensors.find(instance);
     const wire::SensorLines* kind = config == sensors.end() ? nullptr : wire::LinesOf(config->second.kind);
-    if (!kind || (kind->Extension() && !sanet)) continue;
+    if (!kind || (kind->Extension() && !sanet) || !fresh.TakeIfNew(instance, r)) continue;
     for (wire::ProtocolMessage& line : kind->Write(instance, reading, context)) lines.push_back(std::move(line));
   }
   return lines;

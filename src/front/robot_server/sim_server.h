@@ -21,6 +21,7 @@
 #include "robot_server/attendance.h"
 #include "sections/spawn_section.h"
 #include "sim/driver.h"
+#include "sim/fresh_samples.h"
 #include "trace/results_folder.h"
 #include "wire/agent_datagram.h"
 #include "wire/line_server.h"
@@ -89,12 +90,13 @@ class SimServer {
     bool open = true;  // until the line server says it is gone
     std::optional<NodeId> robot;
     double next_sensors = 0, next_status = 0;
-    bool told_off = false;   // told once that its robot is switched off
-    bool agent = false;      // it has sent STATS: a sanet agent, which speaks five times a second
-    bool sanet = false;      // it has said SANET: it understands sanet's extension lines
-    bool net_asked = false;  // it has sent GETNET, not answered yet
-    bool finished = false;   // it has said FINISHED after the run's END
-    double next_net = 0;     // the rate limit's: no NET answer before this time
+    bool told_off = false;    // told once that its robot is switched off
+    bool agent = false;       // it has sent STATS: a sanet agent, which speaks five times a second
+    bool sanet = false;       // it has said SANET: it understands sanet's extension lines
+    bool net_asked = false;   // it has sent GETNET, not answered yet
+    bool finished = false;    // it has said FINISHED after the run's END
+    double next_net = 0;      // the rate limit's: no NET answer before this time
+    sim::FreshSamples fresh;  // the samples of sensors on their own clocks already sent
   };
   void Poll();
   void FinishAgents();
@@ -128,7 +130,8 @@ class SimServer {
   void SendSensors(Client& c, double now);
   // `sanet`: the client said SANET: it understands sanet's extension lines (SensorLines::Extension).
   // The SEN lines of a robot's readings, each instance's by its kind (wire/sensor_lines.h).
-  std::vector<wire::ProtocolMessage> SenLines(NodeId robot, const sim::SensorReadings& readings, bool sanet) const;
+  std::vector<wire::ProtocolMessage> SenLines(NodeId robot, const sim::SensorReadings& readings, bool sanet,
+                                              sim::FreshSamples& fresh) const;
   void Send(Client& c, const wire::ProtocolMessage& m);
   void Error(Client& c, const std::string& why);
   void Drop(Client& c, const std::string& why);

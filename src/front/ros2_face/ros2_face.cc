@@ -30,8 +30,8 @@ struct Ros2Face::Robot {
   std::shared_ptr<const robots::UrdfSource> urdf;  // a robot from a URDF: its description and links
   DdsDomain::Entity cmd_vel = 0, description = 0;
   std::map<std::string, std::vector<DdsDomain::Entity>> sensors;  // by instance: a writer per topic
-  std::map<std::string, double> published_sample;  // by instance sampling on its own clock: the last one's time
-  double period = 0.1;                             // s between its sensor messages
+  sim::FreshSamples fresh;  // the samples of sensors on their own clocks already published
+  double period = 0.1;      // s between its sensor messages
   double next_sensors = 0;
   std::uint64_t last_writer = 0;
   double last_writer_at = -1e9;  // simulated time of its last sample
@@ -174,7 +174,7 @@ void Ros2Face::Publish(Robot& r) {
   for (const auto& [instance, reading] : readings.by_instance) {
     const auto writers = r.sensors.find(instance);
     const auto config = sensors.find(instance);
-    if (writers == r.sensors.end() || config == sensors.end() || !IsNewSample(r, instance, readings)) continue;
+    if (writers == r.sensors.end() || config == sensors.end() || !r.fresh.TakeIfNew(instance, readings)) continue;
     context.time = readings.SampledAt(instance).value_or(readings.time);  // as a driver stamps: when taken
     for (const ros2_presentation::SensorMessage& m :
          ros2_presentation::MessagesOf(config->second.kind)
@@ -185,21 +185,6 @@ void Ros2Face::Publish(Robot& r) {
       ++r.published;
     }
   }
-}
-
-// A sensor that samples on its own clock (a camera at 5 Hz read at the face's 10) is published
-// once a sample, not again at each period while it is the latest. A sample due in the physics
-// step in flight (up to one step after the read) waits for the next period: its stamp would be
-// ahead of /clock and of the odom transform published with it.
-bool Ros2Face::IsNewSample(Robot& r, const std::string& instance, const sim::SensorReadings& readings) {
-  const std::optional<double> at = readings.SampledAt(instance);
-  if (!at) return true;  // read now, not sampled
-  if (*at > readings.time + 1e-9) return false;
-  const auto [last, first] = r.published_sample.try_emplace(instance, *at);
-  if (first) return true;
-  if (last->second == *at) return false;
-  last->second = *at;
-  return true;
 }
 
 void Ros2Face::TakeCommands(Robot& r) {

@@ -26,6 +26,7 @@
 #include "ros2_presentation/robot_messages.h"
 #include "sections/ros2_section.h"
 #include "sim/driver.h"
+#include "sim/fresh_samples.h"
 
 namespace sanet::ros2_face {
 
@@ -64,7 +65,6 @@ class Ros2Face {
   void Describe(Robot& robot, const sim::NodeSpec& node, const std::string& ns);
   void PublishWheels(const sim::WorldSnapshot& snapshot);
   void Publish(Robot& robot);
-  static bool IsNewSample(Robot& robot, const std::string& instance, const sim::SensorReadings& readings);
   void TakeCommands(Robot& robot);
   void StopIfQuiet(Robot& robot);
   void Apply(Robot& robot, const DdsDomain::Sample& sample);

@@ -10,7 +10,6 @@ DDS, types from IDL written from ROS 2's definitions):
 - a domain that cannot be used (out of range, ROS_DOMAIN_ID not a number, no interface for DDS)
   and a robot name that is no ROS name are clear errors at start."""
 import json
-import math
 import os
 import socket
 import subprocess
@@ -19,6 +18,8 @@ import tempfile
 import threading
 import time
 import unittest
+
+from socket_drain import drain
 
 SANET, CLIENT, BAD_CLIENT, SOURCE = sys.argv.pop(1), sys.argv.pop(1), sys.argv.pop(1), sys.argv.pop(1)
 DOMAIN = 21  # its own: tests run side by side (ros2_agent has 22; launches take 101 down)
@@ -58,15 +59,6 @@ class Served:
         assert self.process.returncode == 0, self.stderr
         with open(os.path.join(self.out, "summary.json")) as f:
             return json.load(f)
-
-
-def drain(sock):
-    """Reads what the server sends until the connection ends."""
-    try:
-        while sock.recv(65536):
-            pass
-    except OSError:
-        pass
 
 
 def client(robot, seconds, vx, omega, mode=""):

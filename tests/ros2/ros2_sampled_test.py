@@ -3,13 +3,18 @@
 it was taken, as a driver stamps its data (tests/ros2/ros2_stamps.c, an independent DDS client,
 reads the stamps): a 5 Hz camera under the face's 10 Hz gives every picture once, at multiples
 of 0.2 s (before, each came twice, stamped at the face's reads); a 100 Hz IMU gives one sample a
-period, each at a multiple of 0.01 s."""
+period, each at a multiple of 0.01 s. A robot a USARSim client owns goes the same way, from what
+its owner reads."""
 import os
+import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import unittest
+
+from socket_drain import drain
 
 SANET, STAMPS = sys.argv.pop(1), sys.argv.pop(1)
 DOMAIN = 24  # its own: tests run side by side (ros2_face has 21, ros2_agent 22, ros2_discovery 23)
@@ -23,6 +28,7 @@ nodes:
     sensors:
       camera: {width: 32, height: 24, rate: 5}
       imu: {rate: 100}
+  - {name: owned, model: diffdrive, pose: [0, 3, 0], sensors: {camera: {width: 32, height: 24, rate: 5}}}
 """
 
 
@@ -45,11 +51,16 @@ class SampledSensorsOnTheFace(unittest.TestCase):
             while not os.path.exists(port_file):
                 assert time.time() < deadline and served.poll() is None, served.communicate()
                 time.sleep(0.02)
-            read = subprocess.run([STAMPS, str(DOMAIN), "8", "/r/camera/image_raw=image", "/r/imu=imu"],
-                                  capture_output=True, text=True, timeout=60)
+            with open(port_file) as f:
+                owner = socket.create_connection(("127.0.0.1", int(f.read())))
+            owner.sendall(b"INIT {Name owned}\r\n")  # a USARSim client: the face publishes what it reads
+            threading.Thread(target=drain, args=(owner,), daemon=True).start()
+            read = subprocess.run([STAMPS, str(DOMAIN), "8", "/r/camera/image_raw=image", "/r/imu=imu",
+                                   "/owned/camera/image_raw=image"], capture_output=True, text=True, timeout=60)
+            owner.close()
             served.communicate(timeout=60)
         assert read.returncode == 0, read.stderr
-        cls.stamps = {"/r/camera/image_raw": [], "/r/imu": []}
+        cls.stamps = {"/r/camera/image_raw": [], "/r/imu": [], "/owned/camera/image_raw": []}
         for line in read.stdout.splitlines():
             topic, stamp = line.split()
             cls.stamps[topic].append(float(stamp))
@@ -61,6 +72,12 @@ class SampledSensorsOnTheFace(unittest.TestCase):
         self.assertTrue(multiples(pictures, 0.2), pictures[:10])
         gaps = [round(b - a, 6) for a, b in zip(pictures, pictures[1:])]
         self.assertEqual(set(gaps), {0.2}, "every picture, in order")
+
+    def test_a_robot_another_client_owns_gives_each_picture_once_too(self):
+        pictures = self.stamps["/owned/camera/image_raw"]
+        self.assertGreater(len(pictures), 30, "5 a second for most of 8 s, from what its owner reads")
+        self.assertEqual(len(pictures), len(set(pictures)), "none twice")
+        self.assertTrue(multiples(pictures, 0.2), pictures[:10])
 
     def test_a_faster_sensor_gives_one_sample_a_period_at_its_own_time(self):
         samples = self.stamps["/r/imu"]

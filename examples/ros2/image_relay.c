@@ -25,13 +25,11 @@
 #include <dds/dds.h>
 #include <getopt.h>
 #include <math.h>
-#include <signal.h>
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -158,20 +156,6 @@ static void wake_on(dds_entity_t waitset, dds_entity_t reader) {
   dds_waitset_attach(waitset, condition, reader);
 }
 
-static FILE *open_log(const Options *o, const char *suffix, const char *header) {
-  if (!o->log_dir) return NULL;
-  mkdir(o->log_dir, 0777); /* each robot's program may be first */
-  char path[1024];
-  snprintf(path, sizeof path, "%s/%s%s.csv", o->log_dir, o->robot, suffix);
-  FILE *log = fopen(path, "w");
-  if (!log) {
-    perror(path);
-    exit(1);
-  }
-  fprintf(log, "%s\n", header);
-  return log;
-}
-
 static int is_sender(const Options *o, const char *name) {
   for (int i = 0; i < o->sender_count; ++i)
     if (strcmp(o->senders[i], name) == 0) return 1;
@@ -282,7 +266,7 @@ static void run_sender(const Options *o) {
   if (o->drive != 0)
     s.cmd_vel = endpoint(PROGRAM, face, &geometry_msgs_msg_dds__Twist__desc, o->robot, "cmd_vel", 1, 1, 1);
   wake_on(s.waitset, s.image_in);
-  FILE *log = open_log(o, "-sent", "stamp,bytes,crc32");
+  FILE *log = open_log(o->log_dir, o->robot, "-sent", "stamp,bytes,crc32");
   char topic[256];
   snprintf(topic, sizeof topic, "/%s/camera/image_raw", o->robot);
   const double started = monotonic();
@@ -367,7 +351,7 @@ static void run_receiver(const Options *o) {
                               "camera/image_raw/compressed", 0, 0, 1);
     wake_on(r.waitset, r.images_in[i]);
   }
-  FILE *log = open_log(o, "", "peer,stamp,heard_at,bytes,width,height,crc32");
+  FILE *log = open_log(o->log_dir, o->robot, "", "peer,stamp,heard_at,bytes,width,height,crc32");
   const double started = monotonic();
   int said_unmatched[MAX_SENDERS] = {0};
   while (!stopping) {

@@ -22,11 +22,9 @@
 #include <dds/dds.h>
 #include <getopt.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "ros2_example.h"
@@ -244,20 +242,6 @@ static void follow(Robot *r, const Options *o, const Pose2 *me, int *following) 
     drive(r, 0, 0);
 }
 
-static FILE *open_log(const Options *o) {
-  if (!o->log_dir) return NULL;
-  mkdir(o->log_dir, 0777); /* each robot's program may be first */
-  char path[1024];
-  snprintf(path, sizeof path, "%s/%s.csv", o->log_dir, o->robot);
-  FILE *log = fopen(path, "w");
-  if (!log) {
-    perror(path);
-    exit(1);
-  }
-  fprintf(log, "peer,stamp,heard_at,x,y\n");
-  return log;
-}
-
 static void say_what_was_heard(const Robot *r, const Options *o) {
   printf("%s: heard", o->robot);
   for (int i = 0; i < o->team_size; ++i)
@@ -276,7 +260,7 @@ int main(int argc, char **argv) {
   Robot r;
   memset(&r, 0, sizeof r);
   open_endpoints(&r, &o);
-  r.log = open_log(&o);
+  r.log = open_log(o.log_dir, o.robot, "", "peer,stamp,heard_at,x,y");
   Pose2 me = {0, 0, 0, 0, 0};
   double published = -1;
   int next = 0, following = 0;

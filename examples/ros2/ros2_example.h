@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 
 #include "ros2_types.h"
 
@@ -55,6 +56,21 @@ static dds_entity_t endpoint(const char *program, dds_entity_t participant, cons
     exit(1);
   }
   return e;
+}
+
+/* DIR/ROBOTSUFFIX.csv with its header line, for writing (`dir` NULL: no log, NULL). */
+static FILE *open_log(const char *dir, const char *robot, const char *suffix, const char *header) {
+  if (!dir) return NULL;
+  mkdir(dir, 0777); /* each robot's program may be first */
+  char path[1024];
+  snprintf(path, sizeof path, "%s/%s%s.csv", dir, robot, suffix);
+  FILE *log = fopen(path, "w");
+  if (!log) {
+    perror(path);
+    exit(1);
+  }
+  fprintf(log, "%s\n", header);
+  return log;
 }
 
 #endif

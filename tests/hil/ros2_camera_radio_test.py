@@ -39,13 +39,21 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
-def distance_at(out, t):
-    """The rover's distance from the operator at simulated time t (trajectories every 0.5 s)."""
+def tracks(out):
+    """{node: ([time], [(x, y)])} of the run's trajectories.csv (a sample every 0.5 s)."""
+    found = {}
+    for r in rows(os.path.join(out, "trajectories.csv")):
+        times, points = found.setdefault(r["node"], ([], []))
+        times.append(float(r["time"]))
+        points.append((float(r["x"]), float(r["y"])))
+    return found
+
+
+def distance_at(tracks, t):
+    """The rover's distance from the operator at simulated time t: their first samples at or after it."""
     def position(node):
-        samples = [(float(r["time"]), float(r["x"]), float(r["y"])) for r in rows(os.path.join(out, "trajectories.csv"))
-                   if r["node"] == node]
-        i = min(bisect.bisect_left([s[0] for s in samples], t), len(samples) - 1)
-        return samples[i][1:]
+        times, points = tracks[node]
+        return points[min(bisect.bisect_left(times, t), len(times) - 1)]
     return math.dist(position("rover"), position("operator"))
 
 
@@ -62,6 +70,7 @@ class PicturesOverTheRadio(unittest.TestCase):
         assert launch.returncode == 0, cls.said
         cls.sent = {r["stamp"]: r for r in rows(os.path.join(cls.pictures, "rover-sent.csv"))}
         cls.heard = rows(os.path.join(cls.pictures, "operator.csv"))
+        cls.tracks = tracks(cls.out)
 
     @classmethod
     def tearDownClass(cls):
@@ -88,7 +97,7 @@ class PicturesOverTheRadio(unittest.TestCase):
     def test_near_every_picture_arrives_far_none_and_the_delay_grows_at_the_edge(self):
         # heard_at is empty for a picture heard before the operator's first /clock
         heard = {r["stamp"]: float(r["heard_at"] or "nan") - float(r["stamp"]) for r in self.heard}
-        by_distance = [(distance_at(self.out, float(s)), heard.get(s)) for s in self.sent]
+        by_distance = [(distance_at(self.tracks, float(s)), heard.get(s)) for s in self.sent]
         near = [d for m, d in by_distance if 5 < m < 30]
         self.assertGreater(len([d for d in near if d is not None]), 0.9 * len(near), "nearly every picture, 5 to 30 m")
         self.assertFalse([m for m, d in by_distance if m > 55 and d is not None], "none past 55 m")
@@ -112,7 +121,7 @@ class PicturesOverTheRadio(unittest.TestCase):
         with open(os.path.join(self.out, "summary.json")) as f:
             robots = json.load(f)["ros2"]["robots"]
         self.assertGreater(robots["rover"]["cmd_vel_taken"], 300, "the relay drove the rover over the face")
-        self.assertGreater(distance_at(self.out, DURATION), 60)
+        self.assertGreater(distance_at(self.tracks, DURATION), 60)
 
     def test_the_studys_table_takes_the_run(self):
         messages = os.path.join(self.tmp.name, "camera-stream")

@@ -172,10 +172,9 @@ std::string CommentedValueNear(const std::string& text, int error_line) {
   std::istringstream lines(text);
   std::string line;
   for (int n = 1; std::getline(lines, line) && n <= error_line; ++n) {
-    const std::size_t at = line.find(": #");
-    if (n >= error_line - 2 && at != std::string::npos)
+    if (n >= error_line - 2 && line.find(": #") != std::string::npos)
       return " (line " + std::to_string(n) +
-             " has a value that starts with '#', which YAML reads as a comment: " + "write it in quotes, \"#rrggbb\")";
+             " has a value that starts with '#', which YAML reads as a comment: write it in quotes, \"#rrggbb\")";
   }
   return "";
 }
